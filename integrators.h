@@ -1,0 +1,713 @@
+/* integrators.h -- time integration of constrained mechanical systems:
+   generalized-alpha family (Newmark, HHT-alpha, Chung-Hulbert generalized-alpha
+   in the Arnold-Bruls form, index 3) and variable-step variable-order BDF 1..5
+   on the stabilized index-2 (GGL) form -- part of vlbe v0.1.0
+                                                   SPDX-License-Identifier: MIT
+USAGE
+   #include "integrators.h"    (vlbe.h must sit in the same directory)
+   No IMPLEMENTATION macro: every function is static inline; link with -lm.
+
+     vlbe_dae sys = {0};  sys.n = ...; sys.m = ...; sys.user = &my;
+     sys.mass = my_mass; sys.force = my_force; sys.constr = my_c; sys.constr_jac = my_cq;
+     vlbe_hht_params par;  vlbe_hht_params_genalpha(&par, 0.8);
+     size_t lw = vlbe_hht_work_len(n, m), liw = vlbe_hht_iwork_len(n, m);
+     ... allocate lw vlbe_real and liw int ...
+     vlbe_hht st;
+     if (vlbe_hht_init(&st, &sys, &par, t0, q0, v0, work, lw, iwork, liw)) fail;
+     while (st.t < t_end) if (vlbe_hht_step(&st, h)) break;   (state in st.q, st.v)
+
+CONFIG
+   Nothing beyond vlbe.h.
+
+CONVENTIONS
+   The system (any consistent units):
+        M(t,q,v) q'' + C_q(t,q)^T lambda = Q(t,q,v),      C(t,q) = 0,
+   n coordinates q, m holonomic (possibly rheonomic) constraints.  Q is the
+   applied-minus-internal generalized force (positive in the sense of q'').
+   Matrices are row-major.  Callbacks return 0 on success; any other value
+   stops the integrator with VLBE_ECALLBACK.  Missing Jacobians are formed by
+   forward differences (step sqrt(eps) max(|x_j|, 1)).
+   The integrators know nothing of elements: they see only the callbacks.
+   Failure of a step (Newton divergence, singular iteration matrix,
+   non-finite values, step below minimum) is returned as a vlbe_status and
+   leaves the state at the last accepted step.  No allocation: the caller
+   gives a real and an int workspace whose sizes the *_work_len() and
+   *_iwork_len() queries return.
+
+API
+   vlbe_status vlbe_dae_check(sys)                        validate a problem
+   vlbe_status vlbe_dae_consistent_acc(sys,t,q,v,a,lam,st,w,lw,iw,liw)  q'', lambda at start
+   void vlbe_hht_params_newmark(p, beta, gamma)           classic Newmark
+   vlbe_status vlbe_hht_params_hht(p, alpha)              HHT-alpha, alpha in [-1/3, 0]
+   vlbe_status vlbe_hht_params_genalpha(p, rho_inf)       generalized-alpha, rho_inf in [0, 1]
+   size_t vlbe_hht_work_len(n, m), vlbe_hht_iwork_len(n, m)
+   vlbe_status vlbe_hht_init(st, sys, par, t0, q0, v0, w, lw, iw, liw)
+   vlbe_status vlbe_hht_step(st, h)                       one step (halving inside if enabled)
+
+REFERENCES
+   M. Arnold, O. Bruls, Convergence of the generalized-alpha scheme for
+   constrained mechanical systems, Multibody Syst. Dyn. 18 (2007) 185-202.
+   J. Chung, G. Hulbert, J. Appl. Mech. 60 (1993) 371-375.
+   H. Hilber, T. Hughes, R. Taylor, Earthq. Eng. Struct. Dyn. 5 (1977) 283-292.
+   C. W. Gear, B. Leimkuhler, G. K. Gupta, J. Comput. Appl. Math. 12 (1985).
+   K. Brenan, S. Campbell, L. Petzold, Numerical Solution of Initial-Value
+   Problems in DAEs (DASSL), SIAM 1996.
+*/
+#ifndef VLBE_INTEGRATORS_H
+#define VLBE_INTEGRATORS_H
+#include "vlbe.h"
+
+#if !defined(VLBE_VERSION_MAJOR) || VLBE_VERSION_MAJOR != 0 || VLBE_VERSION_MINOR < 1
+#error "integrators.h needs vlbe.h 0.1 or newer in the same directory"
+#endif
+
+/* -- constants ---------------------------------------------------------- */
+/* vlbe_dae.flags */
+#define VLBE_DAE_MASS_CONST 1u /* M does not depend on q or v: no dM/dq terms   */
+#define VLBE_DAE_MASS_V 2u     /* M depends on v too (FD of M a in v)          */
+#define VLBE_DAE_NO_CHESS 4u   /* drop d(C_q^T lambda)/dq from the iteration matrix */
+
+/* -- types -------------------------------------------------------------- */
+/* The problem: callbacks with a user context.  mass, force are required;
+   constr and constr_jac when m > 0.  The rest is optional (NULL). */
+typedef struct vlbe_dae {
+    int n;        /* number of coordinates q                */
+    int m;        /* number of constraints                  */
+    unsigned flags;
+    void *user;
+    /* M(t,q,v), n*n */
+    int (*mass)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M);
+    /* Q(t,q,v), n */
+    int (*force)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q);
+    /* C(t,q), m */
+    int (*constr)(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C);
+    /* C_q (m*n) and C_t (m); Ct may be NULL when the caller does not need it */
+    int (*constr_jac)(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct);
+    /* optional: gamma = -( (C_q v)_q v + 2 C_qt v + C_tt ), the right side of
+       C_q q'' = gamma; default: central differences of C_q v + C_t along (1, v) */
+    int (*constr_acc)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                      vlbe_real *gamma);
+    /* optional: K = dQ/dq and D = dQ/dv, n*n each */
+    int (*force_jac)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                     vlbe_real *K, vlbe_real *D);
+    /* optional: Mq = d(M a)/dq and (if flag MASS_V) Mv = d(M a)/dv, n*n each; Mv may be NULL */
+    int (*mass_jac)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                    const vlbe_real *a, vlbe_real *Mq, vlbe_real *Mv);
+    /* optional: H = d(C_q^T lambda)/dq, n*n */
+    int (*constr_hess)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
+                       vlbe_real *H);
+} vlbe_dae;
+
+/* Counters of one run (cumulative from init). */
+typedef struct vlbe_dae_stats {
+    long steps;          /* accepted steps                                  */
+    long rejected;       /* rejected steps (error test or Newton failure)   */
+    long newton_iters;   /* Newton iterations                               */
+    long newton_fails;   /* Newton failures                                 */
+    long force_calls;    /* calls of force                                  */
+    long mass_calls;     /* calls of mass                                   */
+    long constr_calls;   /* calls of constr, constr_jac, constr_acc         */
+    long jac_evals;      /* iteration-matrix (Jacobian) evaluations         */
+    long lu_factors;     /* LU factorizations                               */
+    long lu_solves;      /* LU solves (one per right-hand side set)         */
+} vlbe_dae_stats;
+
+/* Generalized-alpha family parameters (Arnold-Bruls form):
+   (1-alpha_m) a_{n+1} + alpha_m a_n = (1-alpha_f) q''_{n+1} + alpha_f q''_n. */
+typedef struct vlbe_hht_params {
+    vlbe_real alpha_m, alpha_f, beta, gamma;
+    vlbe_real rtol, atol;   /* Newton: estimated error of the position and velocity
+                               increments <= atol + rtol |x| (default 1e-9, 1e-11) */
+    int newton_max;         /* iterations per attempt (default 10)                     */
+    int modified;           /* 1: keep the LU while the iteration contracts (default 1) */
+    int max_halvings;       /* step halvings on Newton failure (default 0 = off)        */
+} vlbe_hht_params;
+
+/* Integrator state.  q, v, qdd (= q''), a (algorithmic acceleration), lambda
+   point into the caller's workspace and hold the last accepted step. */
+typedef struct vlbe_hht {
+    const vlbe_dae *sys;
+    vlbe_hht_params par;
+    int n, m;
+    vlbe_real t;
+    vlbe_real *q, *v, *qdd, *a, *lambda;
+    vlbe_dae_stats stats;
+    /* private */
+    vlbe_real *w_;     /* rest of the real workspace */
+    int *piv_;
+    vlbe_real h_lu_;   /* step size of the stored LU (0 = none) */
+    int have_lu_;
+} vlbe_hht;
+
+/* -- API prototypes ----------------------------------------------------- */
+VLBE_API vlbe_status vlbe_dae_check(const vlbe_dae *sys);
+VLBE_API size_t vlbe_dae_work_len(int n, int m);
+VLBE_API size_t vlbe_dae_iwork_len(int n, int m);
+VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, const vlbe_real *q,
+                                             const vlbe_real *v, vlbe_real *qdd,
+                                             vlbe_real *lambda, vlbe_dae_stats *stats,
+                                             vlbe_real *work, size_t work_len, int *iwork,
+                                             size_t iwork_len);
+
+VLBE_API void vlbe_hht_params_newmark(vlbe_hht_params *p, vlbe_real beta, vlbe_real gamma);
+VLBE_API vlbe_status vlbe_hht_params_hht(vlbe_hht_params *p, vlbe_real alpha);
+VLBE_API vlbe_status vlbe_hht_params_genalpha(vlbe_hht_params *p, vlbe_real rho_inf);
+VLBE_API size_t vlbe_hht_work_len(int n, int m);
+VLBE_API size_t vlbe_hht_iwork_len(int n, int m);
+VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe_hht_params *par,
+                                   vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
+                                   vlbe_real *work, size_t work_len, int *iwork,
+                                   size_t iwork_len);
+VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h);
+
+/* ===== implementation =================================================== */
+
+/* -- counted callback wrappers ------------------------------------------ */
+VLBE_INLINE vlbe_status vlbe__int_mass(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                       const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+{
+    ++c->mass_calls;
+    return s->mass(s->user, t, q, v, M) ? VLBE_ECALLBACK : VLBE_OK;
+}
+VLBE_INLINE vlbe_status vlbe__int_force(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                        const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+{
+    ++c->force_calls;
+    return s->force(s->user, t, q, v, Q) ? VLBE_ECALLBACK : VLBE_OK;
+}
+VLBE_INLINE vlbe_status vlbe__int_constr(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                         const vlbe_real *q, vlbe_real *C)
+{
+    if (s->m == 0) return VLBE_OK;
+    ++c->constr_calls;
+    return s->constr(s->user, t, q, C) ? VLBE_ECALLBACK : VLBE_OK;
+}
+VLBE_INLINE vlbe_status vlbe__int_cjac(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                       const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
+{
+    if (s->m == 0) return VLBE_OK;
+    ++c->constr_calls;
+    return s->constr_jac(s->user, t, q, Cq, Ct) ? VLBE_ECALLBACK : VLBE_OK;
+}
+
+/* Forward-difference increment for coordinate x. */
+VLBE_INLINE vlbe_real vlbe__int_fd_step(vlbe_real x)
+{
+    vlbe_real ax = vlbe_fabs(x);
+    return vlbe_sqrt(VLBE_EPS) * (ax > VLBE_R(1.0) ? ax : VLBE_R(1.0));
+}
+
+/* gamma = -( (C_q v)_q v + 2 C_qt v + C_tt ) (m).  From the callback if given,
+   else as minus the central difference of g(e) = C_q(t+e, q+e v) v + C_t(t+e, q+e v)
+   at e = 0 (g'(0) = (C_q v)_q v + 2 C_qt v + C_tt), step eps^(1/3) scaled.
+   w: m*n + 2m + n reals. */
+VLBE_INLINE vlbe_status vlbe__int_gamma(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                        const vlbe_real *q, const vlbe_real *v, vlbe_real *g,
+                                        vlbe_real *w)
+{
+    int n = s->n, m = s->m, i, k;
+    vlbe_real *Cq = w, *Ct = w + (size_t)m * n, *gp = Ct + m, *qe = gp + m;
+    vlbe_real scale = vlbe_fabs(t), e;
+    vlbe_status rc;
+    if (m == 0) return VLBE_OK;
+    if (s->constr_acc) {
+        ++c->constr_calls;
+        return s->constr_acc(s->user, t, q, v, g) ? VLBE_ECALLBACK : VLBE_OK;
+    }
+    for (i = 0; i < n; ++i) {
+        vlbe_real r = vlbe_fabs(q[i]);
+        if (r > scale) scale = r;
+    }
+    if (scale < VLBE_R(1.0)) scale = VLBE_R(1.0);
+    e = vlbe_pow(VLBE_EPS, VLBE_R(1.0) / VLBE_R(3.0)) * scale /
+        (VLBE_R(1.0) + vlbe_vec_norm_inf(n, v));
+    for (k = 0; k < 2; ++k) {
+        vlbe_real sg = k == 0 ? e : -e;
+        for (i = 0; i < n; ++i) qe[i] = q[i] + sg * v[i];
+        if ((rc = vlbe__int_cjac(s, c, t + sg, qe, Cq, Ct)) != VLBE_OK) return rc;
+        for (i = 0; i < m; ++i) {
+            vlbe_real gi = vlbe_vec_dot(n, Cq + (size_t)i * n, v) + Ct[i];
+            if (k == 0) gp[i] = gi;
+            else g[i] = -(gp[i] - gi) / (VLBE_R(2.0) * e);
+        }
+    }
+    return VLBE_OK;
+}
+
+/* Adds  cq * d(M a + C_q^T lambda - Q)/dq + cv * d(M a - Q)/dv  to the n x n
+   block J (leading dimension ld), using the optional Jacobian callbacks and
+   forward differences for those missing.  Qbase = Q(t,q,v) and Mbase = M(t,q,v)
+   must be given (they are at hand in every caller).
+   w: 3 n*n + m*n + 3n + m reals (scratch). */
+VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                          const vlbe_real *q, const vlbe_real *v,
+                                          const vlbe_real *a, const vlbe_real *lam,
+                                          const vlbe_real *Qbase, const vlbe_real *Mbase,
+                                          vlbe_real cq, vlbe_real cv, vlbe_real *J, int ld,
+                                          vlbe_real *w)
+{
+    int n = s->n, m = s->m, i, j, pass;
+    size_t nn = (size_t)n * (size_t)n;
+    vlbe_real *K = w, *D = K + nn, *T = D + nn, *Cq = T + nn, *x = Cq + (size_t)m * n,
+              *f = x + n, *f0 = f + n, *Ct = f0 + n;
+    vlbe_status rc;
+    ++c->jac_evals;
+    (void)Ct;
+    /* -K and -D */
+    if (s->force_jac) {
+        ++c->force_calls;
+        if (s->force_jac(s->user, t, q, v, K, D)) return VLBE_ECALLBACK;
+        for (i = 0; i < n; ++i)
+            for (j = 0; j < n; ++j)
+                J[(size_t)i * ld + j] -= cq * K[(size_t)i * n + j] + cv * D[(size_t)i * n + j];
+    } else {
+        for (pass = 0; pass < 2; ++pass) {
+            vlbe_real cc = pass == 0 ? cq : cv;
+            const vlbe_real *base = pass == 0 ? q : v;
+            if (cc == VLBE_R(0.0)) continue;
+            vlbe_vec_copy(n, base, x);
+            for (j = 0; j < n; ++j) {
+                vlbe_real d = vlbe__int_fd_step(base[j]);
+                x[j] = base[j] + d;
+                d = x[j] - base[j]; /* exactly representable step */
+                rc = pass == 0 ? vlbe__int_force(s, c, t, x, v, f) : vlbe__int_force(s, c, t, q, x, f);
+                x[j] = base[j];
+                if (rc != VLBE_OK) return rc;
+                for (i = 0; i < n; ++i) J[(size_t)i * ld + j] -= cc * (f[i] - Qbase[i]) / d;
+            }
+        }
+    }
+    /* d(M a)/dq, d(M a)/dv */
+    if (!(s->flags & VLBE_DAE_MASS_CONST)) {
+        if (s->mass_jac) {
+            ++c->mass_calls;
+            if (s->mass_jac(s->user, t, q, v, a, K, (s->flags & VLBE_DAE_MASS_V) ? D : NULL))
+                return VLBE_ECALLBACK;
+            for (i = 0; i < n; ++i)
+                for (j = 0; j < n; ++j) {
+                    vlbe_real add = cq * K[(size_t)i * n + j];
+                    if (s->flags & VLBE_DAE_MASS_V) add += cv * D[(size_t)i * n + j];
+                    J[(size_t)i * ld + j] += add;
+                }
+        } else {
+            vlbe_mat_vec(n, n, Mbase, a, f0);
+            for (pass = 0; pass < 2; ++pass) {
+                vlbe_real cc = pass == 0 ? cq : cv;
+                const vlbe_real *base = pass == 0 ? q : v;
+                if (pass == 1 && !(s->flags & VLBE_DAE_MASS_V)) break;
+                if (cc == VLBE_R(0.0)) continue;
+                vlbe_vec_copy(n, base, x);
+                for (j = 0; j < n; ++j) {
+                    vlbe_real d = vlbe__int_fd_step(base[j]);
+                    x[j] = base[j] + d;
+                    d = x[j] - base[j];
+                    rc = pass == 0 ? vlbe__int_mass(s, c, t, x, v, T) : vlbe__int_mass(s, c, t, q, x, T);
+                    x[j] = base[j];
+                    if (rc != VLBE_OK) return rc;
+                    vlbe_mat_vec(n, n, T, a, f);
+                    for (i = 0; i < n; ++i) J[(size_t)i * ld + j] += cc * (f[i] - f0[i]) / d;
+                }
+            }
+        }
+    }
+    /* d(C_q^T lambda)/dq */
+    if (m > 0 && !(s->flags & VLBE_DAE_NO_CHESS) && cq != VLBE_R(0.0)) {
+        if (s->constr_hess) {
+            ++c->constr_calls;
+            if (s->constr_hess(s->user, t, q, lam, K)) return VLBE_ECALLBACK;
+            for (i = 0; i < n; ++i)
+                for (j = 0; j < n; ++j) J[(size_t)i * ld + j] += cq * K[(size_t)i * n + j];
+        } else {
+            if ((rc = vlbe__int_cjac(s, c, t, q, Cq, NULL)) != VLBE_OK) return rc;
+            vlbe_mat_tvec(m, n, Cq, lam, f0);
+            vlbe_vec_copy(n, q, x);
+            for (j = 0; j < n; ++j) {
+                vlbe_real d = vlbe__int_fd_step(q[j]);
+                x[j] = q[j] + d;
+                d = x[j] - q[j];
+                rc = vlbe__int_cjac(s, c, t, x, Cq, NULL);
+                x[j] = q[j];
+                if (rc != VLBE_OK) return rc;
+                vlbe_mat_tvec(m, n, Cq, lam, f);
+                for (i = 0; i < n; ++i) J[(size_t)i * ld + j] += cq * (f[i] - f0[i]) / d;
+            }
+        }
+    }
+    return VLBE_OK;
+}
+
+/* -- problem checks and consistent start -------------------------------- */
+VLBE_API vlbe_status vlbe_dae_check(const vlbe_dae *sys)
+{
+    if (!sys || sys->n < 1 || sys->m < 0 || sys->m > sys->n || !sys->mass || !sys->force)
+        return VLBE_EARG;
+    if (sys->m > 0 && (!sys->constr || !sys->constr_jac)) return VLBE_EARG;
+    if ((size_t)sys->n > (size_t)46340) return VLBE_EARG; /* (n+m)^2 must fit an int index */
+    return VLBE_OK;
+}
+
+VLBE_API size_t vlbe_dae_work_len(int n, int m)
+{
+    size_t N = (size_t)n + (size_t)m;
+    /* system matrix N*N, rhs N, M n*n, Q n, Cq m*n, gamma scratch m*n + 2m + n */
+    return N * N + N + (size_t)n * n + (size_t)n + 2 * (size_t)m * n + 2 * (size_t)m + (size_t)n;
+}
+VLBE_API size_t vlbe_dae_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
+
+/* Solves [M C_q^T; C_q 0] [qdd; lambda] = [Q; gamma] at (t, q, v). */
+VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, const vlbe_real *q,
+                                             const vlbe_real *v, vlbe_real *qdd,
+                                             vlbe_real *lambda, vlbe_dae_stats *stats,
+                                             vlbe_real *work, size_t work_len, int *iwork,
+                                             size_t iwork_len)
+{
+    int n, m, N, i, j;
+    vlbe_real *A, *b, *M, *Q, *Cq, *sc;
+    vlbe_dae_stats dummy;
+    vlbe_status rc;
+    if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
+    n = sys->n;
+    m = sys->m;
+    N = n + m;
+    if (work_len < vlbe_dae_work_len(n, m) || iwork_len < vlbe_dae_iwork_len(n, m))
+        return VLBE_EWORK;
+    if (!stats) {
+        stats = &dummy;
+        dummy.mass_calls = dummy.force_calls = dummy.constr_calls = 0;
+        dummy.lu_factors = dummy.lu_solves = 0;
+    }
+    A = work;
+    b = A + (size_t)N * N;
+    M = b + N;
+    Q = M + (size_t)n * n;
+    Cq = Q + n;
+    sc = Cq + (size_t)m * n;
+    if ((rc = vlbe__int_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_force(sys, stats, t, q, v, Q)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_cjac(sys, stats, t, q, Cq, NULL)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_gamma(sys, stats, t, q, v, b + n, sc)) != VLBE_OK) return rc;
+    for (i = 0; i < N; ++i)
+        for (j = 0; j < N; ++j) {
+            vlbe_real x = VLBE_R(0.0);
+            if (i < n && j < n) x = M[(size_t)i * n + j];
+            else if (i < n && j >= n) x = Cq[(size_t)(j - n) * n + i];
+            else if (i >= n && j < n) x = Cq[(size_t)(i - n) * n + j];
+            A[(size_t)i * N + j] = x;
+        }
+    vlbe_vec_copy(n, Q, b);
+    if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
+    ++stats->lu_factors;
+    if ((rc = vlbe_lu_factor(N, A, A, iwork, NULL)) != VLBE_OK) return rc;
+    ++stats->lu_solves;
+    vlbe_lu_solve(N, A, iwork, 1, b);
+    if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
+    vlbe_vec_copy(n, b, qdd);
+    if (m > 0) vlbe_vec_copy(m, b + n, lambda);
+    return VLBE_OK;
+}
+
+/* ===== generalized-alpha family ========================================= */
+
+VLBE_INLINE void vlbe__hht_defaults(vlbe_hht_params *p)
+{
+    p->rtol = VLBE_R(1e-9);
+    p->atol = VLBE_R(1e-11);
+    p->newton_max = 10;
+    p->modified = 1;
+    p->max_halvings = 0;
+}
+
+VLBE_API void vlbe_hht_params_newmark(vlbe_hht_params *p, vlbe_real beta, vlbe_real gamma)
+{
+    VLBE_ASSERT(p != NULL);
+    vlbe__hht_defaults(p);
+    p->alpha_m = p->alpha_f = VLBE_R(0.0);
+    p->beta = beta;
+    p->gamma = gamma;
+}
+
+/* HHT-alpha (Hilber-Hughes-Taylor) with alpha in [-1/3, 0], expressed in the
+   generalized-alpha family: alpha_m = 0, alpha_f = -alpha, gamma = 1/2 - alpha,
+   beta = (1 - alpha)^2 / 4.  Spectral radius at infinity (1 + alpha)/(1 - alpha). */
+VLBE_API vlbe_status vlbe_hht_params_hht(vlbe_hht_params *p, vlbe_real alpha)
+{
+    VLBE_ASSERT(p != NULL);
+    if (!(alpha >= -VLBE_R(1.0) / VLBE_R(3.0) && alpha <= VLBE_R(0.0))) return VLBE_EARG;
+    vlbe__hht_defaults(p);
+    p->alpha_m = VLBE_R(0.0);
+    p->alpha_f = -alpha;
+    p->gamma = VLBE_R(0.5) - alpha;
+    p->beta = VLBE_R(0.25) * (VLBE_R(1.0) - alpha) * (VLBE_R(1.0) - alpha);
+    return VLBE_OK;
+}
+
+/* Chung-Hulbert generalized-alpha with spectral radius rho_inf in [0, 1]
+   (Arnold-Bruls parameters, eq. 10 of their paper):
+   alpha_m = (2 rho - 1)/(rho + 1), alpha_f = rho/(rho + 1),
+   gamma = 1/2 + alpha_f - alpha_m, beta = (gamma + 1/2)^2 / 4. */
+VLBE_API vlbe_status vlbe_hht_params_genalpha(vlbe_hht_params *p, vlbe_real rho_inf)
+{
+    VLBE_ASSERT(p != NULL);
+    if (!(rho_inf >= VLBE_R(0.0) && rho_inf <= VLBE_R(1.0))) return VLBE_EARG;
+    vlbe__hht_defaults(p);
+    p->alpha_m = (VLBE_R(2.0) * rho_inf - VLBE_R(1.0)) / (rho_inf + VLBE_R(1.0));
+    p->alpha_f = rho_inf / (rho_inf + VLBE_R(1.0));
+    p->gamma = VLBE_R(0.5) + p->alpha_f - p->alpha_m;
+    p->beta = VLBE_R(0.25) * (p->gamma + VLBE_R(0.5)) * (p->gamma + VLBE_R(0.5));
+    return VLBE_OK;
+}
+
+/* Workspace layout (reals): state q v qdd a (4n) lambda (m); trial q v qdd a
+   (4n) lambda (m); backup for halving (4n + m); iteration LU (N*N); rhs (N);
+   M (n*n); Q (n); Cq (m*n); C (m); tangent scratch (3n*n + m*n + 3n + m). */
+VLBE_API size_t vlbe_hht_work_len(int n, int m)
+{
+    size_t N = (size_t)n + (size_t)m, nn = (size_t)n * (size_t)n, mn = (size_t)m * (size_t)n;
+    return 3 * (4 * (size_t)n + (size_t)m) + N * N + N + nn + (size_t)n + mn + (size_t)m +
+           3 * nn + mn + 3 * (size_t)n + (size_t)m;
+}
+VLBE_API size_t vlbe_hht_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
+
+VLBE_INLINE vlbe_real *vlbe__hht_trial(const vlbe_hht *st) { return st->w_; }
+VLBE_INLINE vlbe_real *vlbe__hht_backup(const vlbe_hht *st)
+{
+    return st->w_ + 4 * st->n + st->m;
+}
+VLBE_INLINE vlbe_real *vlbe__hht_lu(const vlbe_hht *st)
+{
+    return st->w_ + 2 * (4 * st->n + st->m);
+}
+
+VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe_hht_params *par,
+                                   vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
+                                   vlbe_real *work, size_t work_len, int *iwork,
+                                   size_t iwork_len)
+{
+    int n, m;
+    vlbe_status rc;
+    vlbe_real *scratch;
+    VLBE_ASSERT(st != NULL && par != NULL && q0 != NULL && v0 != NULL);
+    if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
+    n = sys->n;
+    m = sys->m;
+    if (!work || !iwork || work_len < vlbe_hht_work_len(n, m) ||
+        iwork_len < vlbe_hht_iwork_len(n, m))
+        return VLBE_EWORK;
+    if (!(par->alpha_m < VLBE_R(1.0)) || !(par->alpha_f < VLBE_R(1.0)) || !(par->beta > VLBE_R(0.0)) ||
+        !(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
+        !(par->rtol + par->atol > VLBE_R(0.0)) || par->newton_max < 1 || par->max_halvings < 0)
+        return VLBE_EARG;
+    if (!vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n)) return VLBE_ENONFINITE;
+    st->sys = sys;
+    st->par = *par;
+    st->n = n;
+    st->m = m;
+    st->t = t0;
+    st->q = work;
+    st->v = st->q + n;
+    st->qdd = st->v + n;
+    st->a = st->qdd + n;
+    st->lambda = st->a + n;
+    st->w_ = st->lambda + m;
+    st->piv_ = iwork;
+    st->have_lu_ = 0;
+    st->h_lu_ = VLBE_R(0.0);
+    st->stats.steps = st->stats.rejected = st->stats.newton_iters = st->stats.newton_fails = 0;
+    st->stats.force_calls = st->stats.mass_calls = st->stats.constr_calls = 0;
+    st->stats.jac_evals = st->stats.lu_factors = st->stats.lu_solves = 0;
+    vlbe_vec_copy(n, q0, st->q);
+    vlbe_vec_copy(n, v0, st->v);
+    /* consistent q'' and lambda: the scratch after the LU area is large enough */
+    scratch = vlbe__hht_lu(st);
+    rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, st->qdd, st->lambda, &st->stats, scratch,
+                                 (size_t)(work + work_len - scratch), iwork, iwork_len);
+    if (rc != VLBE_OK) return rc;
+    vlbe_vec_copy(n, st->qdd, st->a); /* a_0 = q''_0 (Arnold-Bruls) */
+    return VLBE_OK;
+}
+
+/* Weighted RMS norm of x with weights atol + rtol |ref|. */
+VLBE_INLINE vlbe_real vlbe__int_wrms(int n, const vlbe_real *x, const vlbe_real *ref,
+                                     vlbe_real rtol, vlbe_real atol)
+{
+    vlbe_real s = VLBE_R(0.0);
+    int i;
+    for (i = 0; i < n; ++i) {
+        vlbe_real r = x[i] / (atol + rtol * vlbe_fabs(ref[i]));
+        s += r * r;
+    }
+    return vlbe_sqrt(s / (vlbe_real)(n > 0 ? n : 1));
+}
+
+/* One attempt of one step of size h from the accepted state into the trial
+   arrays; the accepted state is not touched. */
+VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
+{
+    const vlbe_dae *s = st->sys;
+    const vlbe_hht_params *p = &st->par;
+    int n = st->n, m = st->m, N = n + m, i, j, it, fresh;
+    size_t NN = (size_t)N * (size_t)N;
+    vlbe_real *tq = vlbe__hht_trial(st), *tv = tq + n, *tqdd = tv + n, *ta = tqdd + n, *tl = ta + n;
+    vlbe_real *LU = vlbe__hht_lu(st), *r = LU + NN, *M = r + N, *Q = M + (size_t)n * n,
+              *Cq = Q + n, *C = Cq + (size_t)m * n, *scr = C + m;
+    vlbe_real am = p->alpha_m, af = p->alpha_f;
+    vlbe_real bp = h * h * p->beta * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am); /* dq/dq''  */
+    vlbe_real gp = h * p->gamma * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);    /* dv/dq''  */
+    vlbe_real t1 = st->t + h, prev = VLBE_R(0.0), theta = VLBE_R(0.0);
+    vlbe_status rc;
+
+    /* predictor: q''_{n+1} = q''_n, lambda_{n+1} = lambda_n */
+    vlbe_vec_copy(n, st->qdd, tqdd);
+    if (m) vlbe_vec_copy(m, st->lambda, tl);
+    for (i = 0; i < n; ++i) {
+        ta[i] = ((VLBE_R(1.0) - af) * tqdd[i] + af * st->qdd[i] - am * st->a[i]) / (VLBE_R(1.0) - am);
+        tq[i] = st->q[i] + h * st->v[i] +
+                h * h * ((VLBE_R(0.5) - p->beta) * st->a[i] + p->beta * ta[i]);
+        tv[i] = st->v[i] + h * ((VLBE_R(1.0) - p->gamma) * st->a[i] + p->gamma * ta[i]);
+    }
+    /* the stored LU belongs to another step size: drop it */
+    if (st->have_lu_ && st->h_lu_ != h) st->have_lu_ = 0;
+    fresh = 0;
+    for (it = 0; it < p->newton_max; ++it) {
+        vlbe_real nrm, nv;
+        /* residual: r_q = M q'' + C_q^T lambda - Q, r_c = C / bp (scaled) */
+        if ((rc = vlbe__int_mass(s, &st->stats, t1, tq, tv, M)) != VLBE_OK) return rc;
+        if ((rc = vlbe__int_force(s, &st->stats, t1, tq, tv, Q)) != VLBE_OK) return rc;
+        if ((rc = vlbe__int_cjac(s, &st->stats, t1, tq, Cq, NULL)) != VLBE_OK) return rc;
+        if ((rc = vlbe__int_constr(s, &st->stats, t1, tq, C)) != VLBE_OK) return rc;
+        vlbe_mat_vec(n, n, M, tqdd, r);
+        for (i = 0; i < n; ++i) r[i] -= Q[i];
+        for (j = 0; j < m; ++j) {
+            vlbe_vec_axpy(n, tl[j], Cq + (size_t)j * n, r);
+            r[n + j] = C[j] / bp;
+        }
+        if (!vlbe_all_finite(r, N)) return VLBE_ENONFINITE;
+        /* iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v, C_q^T; C_q, 0] */
+        if (!st->have_lu_ || !p->modified) {
+            for (i = 0; i < n; ++i) {
+                for (j = 0; j < n; ++j) LU[(size_t)i * N + j] = M[(size_t)i * n + j];
+                for (j = 0; j < m; ++j) LU[(size_t)i * N + n + j] = Cq[(size_t)j * n + i];
+            }
+            for (i = 0; i < m; ++i) {
+                for (j = 0; j < n; ++j) LU[(size_t)(n + i) * N + j] = Cq[(size_t)i * n + j];
+                for (j = 0; j < m; ++j) LU[(size_t)(n + i) * N + n + j] = VLBE_R(0.0);
+            }
+            rc = vlbe__int_tangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, gp, LU, N, scr);
+            if (rc != VLBE_OK) return rc;
+            if (!vlbe_all_finite(LU, (int)NN)) return VLBE_ENONFINITE;
+            ++st->stats.lu_factors;
+            rc = vlbe_lu_factor(N, LU, LU, st->piv_, NULL);
+            if (rc != VLBE_OK) {
+                st->have_lu_ = 0;
+                return rc;
+            }
+            st->have_lu_ = 1;
+            st->h_lu_ = h;
+            fresh = 1;
+            prev = VLBE_R(0.0);
+        }
+        ++st->stats.lu_solves;
+        ++st->stats.newton_iters;
+        vlbe_lu_solve(N, LU, st->piv_, 1, r);
+        /* update: q'' -= dx, lambda -= dl, and a, q, v along */
+        for (i = 0; i < n; ++i) {
+            vlbe_real d = r[i];
+            tqdd[i] -= d;
+            ta[i] -= d * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);
+            tq[i] -= bp * d;
+            tv[i] -= gp * d;
+            r[i] = bp * d; /* position increment, for the norm */
+        }
+        for (j = 0; j < m; ++j) tl[j] -= r[n + j];
+        if (!vlbe_all_finite(tq, n) || !vlbe_all_finite(tv, n) || (m && !vlbe_all_finite(tl, m)))
+            return VLBE_ENONFINITE;
+        /* Convergence is judged on the position and velocity increments
+           bp dq'', gp dq'' (the
+           multipliers are coupled to it through the same linear solve and
+           converge at the same rate), with the contraction estimate theta
+           (Hairer-Wanner IV.8): theta/(1-theta) |dx| <= 1 in the weighted norm. */
+        nrm = vlbe__int_wrms(n, r, tq, p->rtol, p->atol);
+        for (i = 0; i < n; ++i) r[i] *= gp / bp; /* velocity increment */
+        nv = vlbe__int_wrms(n, r, tv, p->rtol, p->atol);
+        if (nv > nrm) nrm = nv;
+        if (prev > VLBE_R(0.0)) {
+            theta = nrm / prev;
+            if (theta >= VLBE_R(0.5)) {
+                /* slow or diverging: a stale LU gets a fresh one */
+                if (!fresh) {
+                    st->have_lu_ = 0;
+                    prev = VLBE_R(0.0);
+                    it = -1; /* the fresh matrix gets the full iteration budget */
+                    continue;
+                }
+                if (theta >= VLBE_R(1.0)) return VLBE_ENOCONV;
+            }
+            if (theta / (VLBE_R(1.0) - theta) * nrm <= VLBE_R(1.0)) goto done;
+            /* will it converge within the iterations left?  If not, a stale
+               matrix is refreshed now rather than after the budget is spent */
+            if (!fresh && vlbe_pow(theta, (vlbe_real)(p->newton_max - 1 - it)) /
+                                  (VLBE_R(1.0) - theta) * nrm > VLBE_R(1.0)) {
+                st->have_lu_ = 0;
+                prev = VLBE_R(0.0);
+                it = -1;
+                continue;
+            }
+        } else if (nrm <= VLBE_R(1e-2)) {
+            goto done; /* a very small first increment: converged */
+        }
+        prev = nrm;
+    }
+    return VLBE_ENOCONV;
+done:
+    return VLBE_OK;
+}
+
+VLBE_INLINE void vlbe__hht_copy_state(int n, int m, const vlbe_real *src, vlbe_real *dst)
+{
+    vlbe_vec_copy(4 * n + m, src, dst);
+}
+
+/* Step of size h with up to `depth` levels of halving. */
+VLBE_INLINE vlbe_status vlbe__hht_step_rec(vlbe_hht *st, vlbe_real h, int depth)
+{
+    int n = st->n, m = st->m;
+    vlbe_status rc = vlbe__hht_attempt(st, h);
+    if (rc == VLBE_OK) {
+        vlbe__hht_copy_state(n, m, vlbe__hht_trial(st), st->q); /* q v qdd a lambda are contiguous */
+        st->t += h;
+        ++st->stats.steps;
+        return VLBE_OK;
+    }
+    if (rc == VLBE_ENOCONV) ++st->stats.newton_fails;
+    ++st->stats.rejected;
+    st->have_lu_ = 0;
+    if (depth <= 0 || rc == VLBE_ECALLBACK || rc == VLBE_EARG) return rc;
+    {
+        vlbe_real t0 = st->t;
+        vlbe_real *bk = vlbe__hht_backup(st);
+        /* the backup area is shared by all levels: only the outermost level
+           restores, inner levels return their status upwards */
+        if (depth == st->par.max_halvings) vlbe__hht_copy_state(n, m, st->q, bk);
+        rc = vlbe__hht_step_rec(st, VLBE_R(0.5) * h, depth - 1);
+        if (rc == VLBE_OK) rc = vlbe__hht_step_rec(st, VLBE_R(0.5) * h, depth - 1);
+        if (rc != VLBE_OK && depth == st->par.max_halvings) {
+            vlbe__hht_copy_state(n, m, bk, st->q);
+            st->t = t0;
+        }
+        return rc;
+    }
+}
+
+/* Advances the state by one step of size h > 0 (with halving on Newton
+   failure when par.max_halvings > 0).  On failure the state is the one before
+   the call and the status says why; a step below h / 2^max_halvings that still
+   fails returns its Newton status (VLBE_ENOCONV, VLBE_ESINGULAR, ...). */
+VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
+{
+    VLBE_ASSERT(st != NULL && st->sys != NULL);
+    if (!(h > VLBE_R(0.0)) || !isfinite(h)) return VLBE_EARG;
+    if (st->t + h == st->t) return VLBE_ESTEP;
+    return vlbe__hht_step_rec(st, h, st->par.max_halvings);
+}
+
+#endif /* VLBE_INTEGRATORS_H */
