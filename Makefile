@@ -1,0 +1,195 @@
+# vlbe -- build, test, benchmark.  GNU make + a C99 compiler.
+#
+#   make test           header checks, then every tests/test_*.c in four builds
+#                       (double -O2, double -O0, float -O2, ASan+UBSan) and
+#                       the double -O2 build under valgrind when it is installed
+#   make demo           build the examples and run the paper scenes (out/demo/)
+#   make bench          build and run bench/*.c (-O3 -march=native), out/bench/
+#   make examples       build examples/*.c with the full warning set
+#   make check-headers  each header alone, twice, as C++, in float mode
+#   make lint           cppcheck
+#   make cmocka         make sure cmocka is usable (installs it with apt-get
+#                       when run as root on Debian)
+#   make clean
+#
+# cmocka from somewhere else: make test CMOCKA_CFLAGS=-I/opt/cmocka/include \
+#                                       CMOCKA_LIBS="-L/opt/cmocka/lib -lcmocka"
+
+ifeq ($(origin CC),default)
+CC = cc
+endif
+ifeq ($(origin CXX),default)
+CXX = c++
+endif
+CSTD = -std=c99
+WARN = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes -Wmissing-prototypes \
+       -Wcast-qual -Wvla -Wdouble-promotion -Wfloat-conversion -Werror
+CXXWARN = -Wall -Wextra -Werror
+CMOCKA_CFLAGS ?=
+CMOCKA_LIBS ?= -lcmocka
+VALGRIND ?= valgrind
+CPPCHECK ?= cppcheck
+
+BUILD = build
+OUT = out
+
+HEADERS := $(wildcard vlbe.h ancf_ale.h rancf.h corot2d.h integrators.h)
+reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
+
+# -- tests: one binary per tests/test_*.c and build configuration ----------
+TEST_DIR = tests
+TEST_SRCS := $(wildcard $(TEST_DIR)/test_*.c)
+TEST_NAMES := $(basename $(notdir $(TEST_SRCS)))
+TEST_DEPS := $(HEADERS) $(wildcard $(TEST_DIR)/*.h)
+TEST_CFGS := dbl dbl-O0 flt san
+CFG_dbl := -O2
+CFG_dbl-O0 := -O0
+CFG_flt := -O2 -DVLBE_USE_FLOAT
+CFG_san := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all
+TEST_BINS := $(foreach c,$(TEST_CFGS),$(addprefix $(BUILD)/$(c)/,$(TEST_NAMES)))
+
+# -- examples and benchmarks ------------------------------------------------
+EXAMPLE_SRCS := $(wildcard examples/*.c)
+EXAMPLE_NAMES := $(basename $(notdir $(EXAMPLE_SRCS)))
+EXAMPLE_BINS := $(addprefix $(BUILD)/examples/,$(EXAMPLE_NAMES))
+EXAMPLE_DEPS := $(HEADERS) $(wildcard examples/*.h) bench/svgplot.h
+DEMO_SCENES ?= $(EXAMPLE_NAMES)
+
+BENCH_SRCS := $(wildcard bench/*.c)
+BENCH_NAMES := $(basename $(notdir $(BENCH_SRCS)))
+BENCH_FLAGS = -O3 -march=native
+BENCH_PORTABLE_FLAGS = -O2
+BENCH_BINS := $(addprefix $(BUILD)/bench/,$(BENCH_NAMES))
+BENCH_PORTABLE_BINS := $(addprefix $(BUILD)/bench/portable/,$(BENCH_NAMES))
+BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h)
+
+.PHONY: all check test check-headers cmocka test-build examples demo bench \
+        bench-portable lint clean
+
+all: test examples
+
+check: test
+
+# -- header hygiene ---------------------------------------------------------
+check-headers:
+	@set -e; for h in $(HEADERS); do \
+	  echo "check-headers: $$h (C99 twice, C++11, float)"; \
+	  printf '#include "%s"\n#include "%s"\n' $$h $$h | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -; \
+	  printf '#include "%s"\n' $$h | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -; \
+	  printf '#include "%s"\n#include "%s"\n' $$h $$h | $(CC) $(CSTD) $(WARN) -DVLBE_USE_FLOAT -I. -x c -fsyntax-only -; \
+	done
+	@echo "check-headers: all together, reverse order:$(call reverse,$(HEADERS))"
+	@printf '#include "%s"\n' $(call reverse,$(HEADERS)) | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -
+	@printf '#include "%s"\n' $(call reverse,$(HEADERS)) | $(CC) $(CSTD) $(WARN) -DVLBE_USE_FLOAT -I. -x c -fsyntax-only -
+	@printf '#include "%s"\n' $(call reverse,$(HEADERS)) | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -
+	@echo "check-headers: bench/svgplot.h (C99 twice, C++11)"
+	@printf '#include "bench/svgplot.h"\n#include "bench/svgplot.h"\n' | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -
+	@printf '#include "bench/svgplot.h"\n' | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -
+
+# -- cmocka -------------------------------------------------------------------
+CMOCKA_PROBE = printf '\#include <stdarg.h>\n\#include <stddef.h>\n\#include <setjmp.h>\n\#include <stdint.h>\n\#include <cmocka.h>\nint main(void) { print_message("%%s", ""); return 0; }\n' | \
+  $(CC) $(CMOCKA_CFLAGS) -x c - -o $(BUILD)/.cmocka-probe $(CMOCKA_LIBS) >/dev/null 2>&1
+
+cmocka:
+	@mkdir -p $(BUILD)
+	@if $(CMOCKA_PROBE); then exit 0; fi; \
+	if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	  echo "cmocka: not found, installing libcmocka-dev with apt-get"; \
+	  { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y libcmocka-dev; } || true; \
+	fi; \
+	if $(CMOCKA_PROBE); then exit 0; fi; \
+	echo "vlbe tests need cmocka (Debian: apt-get install libcmocka-dev; or set CMOCKA_CFLAGS/CMOCKA_LIBS)" >&2; \
+	exit 1
+
+# -- tests ------------------------------------------------------------------
+# $(1) = configuration: the rule that builds build/$(1)/test_x from tests/test_x.c
+define TEST_RULE
+$(BUILD)/$(1)/%: $(TEST_DIR)/%.c $(TEST_DEPS) | cmocka
+	@mkdir -p $$(@D)
+	$$(CC) $$(CSTD) $$(WARN) $$(CFG_$(1)) -I. $$(CMOCKA_CFLAGS) $$< -o $$@ $$(CMOCKA_LIBS) -lm
+endef
+$(foreach c,$(TEST_CFGS),$(eval $(call TEST_RULE,$(c))))
+
+test-build: $(TEST_BINS)
+
+# Runs every binary, build by build; each log is kept next to its binary.
+# cmocka's closing lines "[  PASSED  ] N test(s)." / "[  FAILED  ] N test(s)"
+# are summed into the last line.  Stops at the first failing run.
+TEST_SUMMARY = awk '/^\[  PASSED  \] [0-9]+ test/ { p += $$4 } \
+  /^\[  FAILED  \] [0-9]+ test/ { f += $$4 } \
+  END { if (f == 0 && fail != 0) f = 1; printf "tests: %d passed, %d failed\n", p, f }'
+
+test: check-headers test-build
+	@set -u; fail=0; logs=""; \
+	if [ -z "$(TEST_NAMES)" ]; then echo "test: no $(TEST_DIR)/test_*.c yet"; fi; \
+	run() { log=$$1; shift; logs="$$logs $$log"; rc=0; \
+	  echo "== $$*"; "$$@" > "$$log" 2>&1 || rc=$$?; cat "$$log"; \
+	  if [ $$rc -ne 0 ]; then echo "FAILED (exit $$rc): $$*"; fail=1; fi; }; \
+	for c in $(TEST_CFGS); do for t in $(TEST_NAMES); do \
+	  [ $$fail = 0 ] || break 2; \
+	  run $(BUILD)/$$c/$$t.log ./$(BUILD)/$$c/$$t; \
+	done; done; \
+	if [ $$fail = 0 ] && command -v $(VALGRIND) >/dev/null 2>&1; then \
+	  for t in $(TEST_NAMES); do \
+	    [ $$fail = 0 ] || break; \
+	    run $(BUILD)/dbl/$$t.vg.log $(VALGRIND) -q --error-exitcode=1 --leak-check=full ./$(BUILD)/dbl/$$t; \
+	  done; \
+	elif [ $$fail = 0 ]; then echo "test: valgrind not found, valgrind runs skipped"; fi; \
+	if [ -n "$$logs" ]; then $(TEST_SUMMARY) fail=$$fail $$logs; \
+	else echo "tests: 0 passed, 0 failed"; fi; \
+	exit $$fail
+
+# -- examples and demo ------------------------------------------------------
+$(BUILD)/examples/%: examples/%.c $(EXAMPLE_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(WARN) -O2 -I. $< -o $@ -lm
+
+examples: $(EXAMPLE_BINS)
+	@echo "examples: $(words $(EXAMPLE_BINS)) built$(if $(EXAMPLE_BINS),: $(EXAMPLE_NAMES))"
+
+# Each example prints, besides its own report, comparison rows of the form
+#   ROW|scene|quantity|published|ours|unit
+# (published may be "-"); the demo collects them into one table.
+demo: examples
+	@mkdir -p $(OUT)/demo
+	@set -e; rm -f $(OUT)/demo/rows.txt; : > $(OUT)/demo/rows.txt; \
+	if [ -z "$(strip $(DEMO_SCENES))" ]; then echo "demo: no examples yet (examples/*.c)"; fi; \
+	for s in $(DEMO_SCENES); do \
+	  echo "== $$s"; \
+	  $(BUILD)/examples/$$s > $(OUT)/demo/$$s.txt 2>&1 || { cat $(OUT)/demo/$$s.txt; echo "demo: $$s failed"; exit 1; }; \
+	  grep -v '^ROW|' $(OUT)/demo/$$s.txt || true; \
+	  grep '^ROW|' $(OUT)/demo/$$s.txt >> $(OUT)/demo/rows.txt || true; \
+	done; \
+	echo; echo "== comparison with the papers (all scenes)"; \
+	awk -F'|' 'BEGIN { printf "%-22s %-34s %14s %14s %9s  %s\n", "scene", "quantity", "published", "vlbe", "rel.diff", "unit" } \
+	  { d = "-"; if ($$4 != "-" && $$4 + 0 != 0) d = sprintf("%.2e", ($$5 - $$4) / ($$4 < 0 ? -$$4 : $$4)); \
+	    printf "%-22s %-34s %14s %14s %9s  %s\n", $$2, $$3, $$4, $$5, d, $$6 }' $(OUT)/demo/rows.txt \
+	  | tee $(OUT)/demo/table.txt; \
+	echo "demo: outputs and charts in $(OUT)/"
+
+# -- benchmarks ---------------------------------------------------------------
+$(BUILD)/bench/%: bench/%.c $(BENCH_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(WARN) $(BENCH_FLAGS) -DVLBE_BENCH_FLAGS='"$(BENCH_FLAGS)"' -I. $< -o $@ -lm
+
+$(BUILD)/bench/portable/%: bench/%.c $(BENCH_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(WARN) $(BENCH_PORTABLE_FLAGS) -DVLBE_BENCH_FLAGS='"$(BENCH_PORTABLE_FLAGS)"' -I. $< -o $@ -lm
+
+bench: $(BENCH_BINS)
+	@mkdir -p $(OUT)/bench
+	@set -e; for b in $(BENCH_NAMES); do echo "== $$b ($(BENCH_FLAGS))"; $(BUILD)/bench/$$b; done
+
+# the same benchmarks built without -march=native; files get the tag "portable"
+bench-portable: $(BENCH_PORTABLE_BINS)
+	@mkdir -p $(OUT)/bench
+	@set -e; for b in $(BENCH_NAMES); do echo "== $$b ($(BENCH_PORTABLE_FLAGS))"; $(BUILD)/bench/portable/$$b portable; done
+
+# -- lint ---------------------------------------------------------------------
+LINT_FILES := $(HEADERS) $(wildcard bench/*.h bench/*.c tests/*.h tests/*.c examples/*.h examples/*.c)
+lint:
+	$(CPPCHECK) --enable=warning,performance,portability --error-exitcode=1 --inline-suppr -q \
+	  --std=c99 --suppress=missingIncludeSystem -I. $(LINT_FILES)
+
+clean:
+	rm -rf $(BUILD) $(OUT)
