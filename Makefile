@@ -49,10 +49,11 @@ CFG_san := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all
 TEST_BINS := $(foreach c,$(TEST_CFGS),$(addprefix $(BUILD)/$(c)/,$(TEST_NAMES)))
 
 # -- examples and benchmarks ------------------------------------------------
-EXAMPLE_SRCS := $(wildcard examples/*.c)
+EXAMPLE_DIR = examples
+EXAMPLE_SRCS := $(wildcard $(EXAMPLE_DIR)/*.c)
 EXAMPLE_NAMES := $(basename $(notdir $(EXAMPLE_SRCS)))
 EXAMPLE_BINS := $(addprefix $(BUILD)/examples/,$(EXAMPLE_NAMES))
-EXAMPLE_DEPS := $(HEADERS) $(wildcard examples/*.h) bench/svgplot.h
+EXAMPLE_DEPS := $(HEADERS) $(wildcard $(EXAMPLE_DIR)/*.h) bench/svgplot.h
 DEMO_SCENES ?= $(EXAMPLE_NAMES)
 
 BENCH_SRCS := $(wildcard bench/*.c)
@@ -140,7 +141,7 @@ test: check-headers test-build
 	exit $$fail
 
 # -- examples and demo ------------------------------------------------------
-$(BUILD)/examples/%: examples/%.c $(EXAMPLE_DEPS)
+$(BUILD)/examples/%: $(EXAMPLE_DIR)/%.c $(EXAMPLE_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(CSTD) $(WARN) -O2 -I. $< -o $@ -lm
 
@@ -149,11 +150,13 @@ examples: $(EXAMPLE_BINS)
 
 # Each example prints, besides its own report, comparison rows of the form
 #   ROW|scene|quantity|published|ours|unit
-# (published may be "-"); the demo collects them into one table.
+# (published may be "-"; svgp_compare_row() in bench/svgplot.h writes one);
+# the demo collects them into one table.  Examples run from the repository
+# root and write their charts to out/<name>*.svg (out/ exists by then).
 demo: examples
 	@mkdir -p $(OUT)/demo
 	@set -e; rm -f $(OUT)/demo/rows.txt; : > $(OUT)/demo/rows.txt; \
-	if [ -z "$(strip $(DEMO_SCENES))" ]; then echo "demo: no examples yet (examples/*.c)"; fi; \
+	if [ -z "$(strip $(DEMO_SCENES))" ]; then echo "demo: no examples yet ($(EXAMPLE_DIR)/*.c)"; fi; \
 	for s in $(DEMO_SCENES); do \
 	  echo "== $$s"; \
 	  $(BUILD)/examples/$$s > $(OUT)/demo/$$s.txt 2>&1 || { cat $(OUT)/demo/$$s.txt; echo "demo: $$s failed"; exit 1; }; \
