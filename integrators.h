@@ -234,36 +234,120 @@ VLBE_INLINE vlbe_status vlbe__int_gamma(const vlbe_dae *s, vlbe_dae_stats *c, vl
     return VLBE_OK;
 }
 
-/* Adds  cq * d(M a + C_q^T lambda - Q)/dq + cv * d(M a - Q)/dv  to the n x n
-   block J (leading dimension ld), using the optional Jacobian callbacks and
-   forward differences for those missing.  Qbase = Q(t,q,v) and Mbase = M(t,q,v)
-   must be given (they are at hand in every caller).
-   w: 3 n*n + m*n + 3n + m reals (scratch). */
-VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
-                                          const vlbe_real *q, const vlbe_real *v,
-                                          const vlbe_real *a, const vlbe_real *lam,
-                                          const vlbe_real *Qbase, const vlbe_real *Mbase,
-                                          vlbe_real cq, vlbe_real cv, vlbe_real *J, int ld,
-                                          vlbe_real *w)
+/* Row j of the constraint quantities used by the Jacobian helpers below:
+   f = [C_q^T u_0; ...; C_q^T u_{nu-1}; C_q v + C_t] (the last block only if v). */
+VLBE_INLINE void vlbe__int_constr_vals(int n, int m, const vlbe_real *Cq, const vlbe_real *Ct,
+                                       int nu, const vlbe_real *const *u, const vlbe_real *v,
+                                       vlbe_real *f)
+{
+    int k, i;
+    for (k = 0; k < nu; ++k) vlbe_mat_tvec(m, n, Cq, u[k], f + (size_t)k * n);
+    if (v)
+        for (i = 0; i < m; ++i)
+            f[(size_t)nu * n + i] = vlbe_vec_dot(n, Cq + (size_t)i * n, v) + Ct[i];
+}
+
+/* Adds the q-derivatives of constraint terms (m > 0):
+     cl d(C_q^T lam)/dq   to the n x n block Jl (leading dim. ldl)  if lam != NULL,
+     cu d(C_q^T mu)/dq    to the n x n block Ju (leading dim. ldu)  if mu != NULL,
+     d(C_q v + C_t)/dq    to the m x n block Jg (leading dim. ldg)  if Jg != NULL,
+   the first two from constr_hess when given, the rest by forward differences
+   in q with one constr_jac call per coordinate shared by all terms (plus one
+   at q).  VLBE_DAE_NO_CHESS drops the first two.
+   w: n*n + m*n + m + n + 2 nf reals, nf = n [lam] + n [mu] + m [Jg]. */
+VLBE_INLINE vlbe_status vlbe__int_constr_q(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *lam,
+                                           vlbe_real cl, vlbe_real *Jl, int ldl,
+                                           const vlbe_real *mu, vlbe_real cu, vlbe_real *Ju,
+                                           int ldu, const vlbe_real *v, vlbe_real *Jg, int ldg,
+                                           vlbe_real *w)
+{
+    int n = s->n, m = s->m, i, j, k, nu = 0, nf;
+    size_t nn = (size_t)n * (size_t)n;
+    vlbe_real *H = w, *Cq = H + nn, *Ct = Cq + (size_t)m * n, *x = Ct + m, *f0 = x + n, *f;
+    const vlbe_real *u[2];
+    vlbe_real cu_[2], *Ju_[2];
+    int ldu_[2];
+    vlbe_status rc;
+    if ((s->flags & VLBE_DAE_NO_CHESS) || cl == VLBE_R(0.0)) lam = NULL;
+    if ((s->flags & VLBE_DAE_NO_CHESS) || cu == VLBE_R(0.0)) mu = NULL;
+    for (k = 0; k < 2; ++k) {
+        const vlbe_real *uk = k == 0 ? lam : mu;
+        if (!uk) continue;
+        u[nu] = uk;
+        cu_[nu] = k == 0 ? cl : cu;
+        Ju_[nu] = k == 0 ? Jl : Ju;
+        ldu_[nu] = k == 0 ? ldl : ldu;
+        ++nu;
+    }
+    if (s->constr_hess && nu > 0) {
+        for (k = 0; k < nu; ++k) {
+            ++c->constr_calls;
+            if (s->constr_hess(s->user, t, q, u[k], H)) return VLBE_ECALLBACK;
+            for (i = 0; i < n; ++i)
+                for (j = 0; j < n; ++j) Ju_[k][(size_t)i * ldu_[k] + j] += cu_[k] * H[(size_t)i * n + j];
+        }
+        nu = 0;
+    }
+    if (nu == 0 && !Jg) return VLBE_OK;
+    if (!Jg) v = NULL;
+    nf = nu * n + (v ? m : 0);
+    f = f0 + nf;
+    if ((rc = vlbe__int_cjac(s, c, t, q, Cq, v ? Ct : NULL)) != VLBE_OK) return rc;
+    vlbe__int_constr_vals(n, m, Cq, Ct, nu, u, v, f0);
+    vlbe_vec_copy(n, q, x);
+    for (j = 0; j < n; ++j) {
+        vlbe_real d = vlbe__int_fd_step(q[j]);
+        x[j] = q[j] + d;
+        d = x[j] - q[j]; /* exactly representable step */
+        rc = vlbe__int_cjac(s, c, t, x, Cq, v ? Ct : NULL);
+        x[j] = q[j];
+        if (rc != VLBE_OK) return rc;
+        vlbe__int_constr_vals(n, m, Cq, Ct, nu, u, v, f);
+        for (k = 0; k < nu; ++k)
+            for (i = 0; i < n; ++i)
+                Ju_[k][(size_t)i * ldu_[k] + j] +=
+                    cu_[k] * (f[(size_t)k * n + i] - f0[(size_t)k * n + i]) / d;
+        if (v)
+            for (i = 0; i < m; ++i)
+                Jg[(size_t)i * ldg + j] += (f[(size_t)nu * n + i] - f0[(size_t)nu * n + i]) / d;
+    }
+    return VLBE_OK;
+}
+
+/* Adds  cq * d(M a + C_q^T lambda - Q)/dq  to the n x n block Jq (leading
+   dimension ldq) and  cv * d(M a - Q)/dv  to the n x n block Jv (ldv; may be
+   the same block as Jq), using the optional Jacobian callbacks and forward
+   differences for those missing.  lam == NULL leaves out the C_q^T lambda
+   term.  Qbase = Q(t,q,v) and Mbase = M(t,q,v) must be given (they are at
+   hand in every caller).  w: 3 n*n + m*n + 3n + m reals (scratch). */
+VLBE_INLINE vlbe_status vlbe__int_tangent2(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v,
+                                           const vlbe_real *a, const vlbe_real *lam,
+                                           const vlbe_real *Qbase, const vlbe_real *Mbase,
+                                           vlbe_real cq, vlbe_real *Jq, int ldq, vlbe_real cv,
+                                           vlbe_real *Jv, int ldv, vlbe_real *w)
 {
     int n = s->n, m = s->m, i, j, pass;
     size_t nn = (size_t)n * (size_t)n;
-    vlbe_real *K = w, *D = K + nn, *T = D + nn, *Cq = T + nn, *x = Cq + (size_t)m * n,
-              *f = x + n, *f0 = f + n, *Ct = f0 + n;
+    vlbe_real *K = w, *D = K + nn, *T = D + nn, *x = T + nn, *f = x + n, *f0 = f + n;
     vlbe_status rc;
     ++c->jac_evals;
-    (void)Ct;
     /* -K and -D */
     if (s->force_jac) {
         ++c->force_calls;
         if (s->force_jac(s->user, t, q, v, K, D)) return VLBE_ECALLBACK;
         for (i = 0; i < n; ++i)
-            for (j = 0; j < n; ++j)
-                J[(size_t)i * ld + j] -= cq * K[(size_t)i * n + j] + cv * D[(size_t)i * n + j];
+            for (j = 0; j < n; ++j) {
+                Jq[(size_t)i * ldq + j] -= cq * K[(size_t)i * n + j];
+                Jv[(size_t)i * ldv + j] -= cv * D[(size_t)i * n + j];
+            }
     } else {
         for (pass = 0; pass < 2; ++pass) {
             vlbe_real cc = pass == 0 ? cq : cv;
             const vlbe_real *base = pass == 0 ? q : v;
+            vlbe_real *J = pass == 0 ? Jq : Jv;
+            int ld = pass == 0 ? ldq : ldv;
             if (cc == VLBE_R(0.0)) continue;
             vlbe_vec_copy(n, base, x);
             for (j = 0; j < n; ++j) {
@@ -285,15 +369,16 @@ VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, 
                 return VLBE_ECALLBACK;
             for (i = 0; i < n; ++i)
                 for (j = 0; j < n; ++j) {
-                    vlbe_real add = cq * K[(size_t)i * n + j];
-                    if (s->flags & VLBE_DAE_MASS_V) add += cv * D[(size_t)i * n + j];
-                    J[(size_t)i * ld + j] += add;
+                    Jq[(size_t)i * ldq + j] += cq * K[(size_t)i * n + j];
+                    if (s->flags & VLBE_DAE_MASS_V) Jv[(size_t)i * ldv + j] += cv * D[(size_t)i * n + j];
                 }
         } else {
             vlbe_mat_vec(n, n, Mbase, a, f0);
             for (pass = 0; pass < 2; ++pass) {
                 vlbe_real cc = pass == 0 ? cq : cv;
                 const vlbe_real *base = pass == 0 ? q : v;
+                vlbe_real *J = pass == 0 ? Jq : Jv;
+                int ld = pass == 0 ? ldq : ldv;
                 if (pass == 1 && !(s->flags & VLBE_DAE_MASS_V)) break;
                 if (cc == VLBE_R(0.0)) continue;
                 vlbe_vec_copy(n, base, x);
@@ -310,30 +395,24 @@ VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, 
             }
         }
     }
-    /* d(C_q^T lambda)/dq */
-    if (m > 0 && !(s->flags & VLBE_DAE_NO_CHESS) && cq != VLBE_R(0.0)) {
-        if (s->constr_hess) {
-            ++c->constr_calls;
-            if (s->constr_hess(s->user, t, q, lam, K)) return VLBE_ECALLBACK;
-            for (i = 0; i < n; ++i)
-                for (j = 0; j < n; ++j) J[(size_t)i * ld + j] += cq * K[(size_t)i * n + j];
-        } else {
-            if ((rc = vlbe__int_cjac(s, c, t, q, Cq, NULL)) != VLBE_OK) return rc;
-            vlbe_mat_tvec(m, n, Cq, lam, f0);
-            vlbe_vec_copy(n, q, x);
-            for (j = 0; j < n; ++j) {
-                vlbe_real d = vlbe__int_fd_step(q[j]);
-                x[j] = q[j] + d;
-                d = x[j] - q[j];
-                rc = vlbe__int_cjac(s, c, t, x, Cq, NULL);
-                x[j] = q[j];
-                if (rc != VLBE_OK) return rc;
-                vlbe_mat_tvec(m, n, Cq, lam, f);
-                for (i = 0; i < n; ++i) J[(size_t)i * ld + j] += cq * (f[i] - f0[i]) / d;
-            }
-        }
-    }
+    /* d(C_q^T lambda)/dq (scratch: w, the K D T area is free again) */
+    if (m > 0 && lam && cq != VLBE_R(0.0))
+        return vlbe__int_constr_q(s, c, t, q, lam, cq, Jq, ldq, NULL, VLBE_R(0.0), NULL, 0, NULL,
+                                  NULL, 0, w);
     return VLBE_OK;
+}
+
+/* Adds  cq * d(M a + C_q^T lambda - Q)/dq + cv * d(M a - Q)/dv  to the n x n
+   block J (leading dimension ld); see vlbe__int_tangent2.
+   w: 3 n*n + m*n + 3n + m reals (scratch). */
+VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                          const vlbe_real *q, const vlbe_real *v,
+                                          const vlbe_real *a, const vlbe_real *lam,
+                                          const vlbe_real *Qbase, const vlbe_real *Mbase,
+                                          vlbe_real cq, vlbe_real cv, vlbe_real *J, int ld,
+                                          vlbe_real *w)
+{
+    return vlbe__int_tangent2(s, c, t, q, v, a, lam, Qbase, Mbase, cq, J, ld, cv, J, ld, w);
 }
 
 /* -- problem checks and consistent start -------------------------------- */
@@ -626,6 +705,11 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
            multipliers are coupled to it through the same linear solve and
            converge at the same rate), with the contraction estimate theta
            (Hairer-Wanner IV.8): theta/(1-theta) |dx| <= 1 in the weighted norm. */
+        /* rounding floor: a position increment of a few ulps of |q| cannot be
+           improved on (the velocity increment, gamma/(beta h) times larger,
+           may still exceed a tight atol, and in float mode the default rtol is
+           below eps): accept rather than stall and report VLBE_ENOCONV */
+        if (vlbe_vec_norm_inf(n, r) <= VLBE_R(8.0) * VLBE_EPS * vlbe_vec_norm_inf(n, tq)) goto done;
         nrm = vlbe__int_wrms(n, r, tq, p->rtol, p->atol);
         for (i = 0; i < n; ++i) r[i] *= gp / bp; /* velocity increment */
         nv = vlbe__int_wrms(n, r, tv, p->rtol, p->atol);
