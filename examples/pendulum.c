@@ -1,0 +1,404 @@
+/* pendulum.c -- index-3 Cartesian pendulum with Newmark, HHT-alpha and
+   generalized-alpha: period, constraint drift, multipliers -- part of vlbe
+                                                   SPDX-License-Identifier: MIT
+   build:  cc -O2 examples/pendulum.c -lm          (from any directory)
+
+   The problem: a point mass m on a massless rod of length L in gravity g,
+   in Cartesian coordinates q = (x, y) (y up), released at rest from the
+   horizontal position q0 = (L, 0):
+
+        m q'' + C_q^T lambda = (0, -m g),    C(q) = (x^2 + y^2 - L^2) / 2 = 0,
+
+   an index-3 DAE with C_q = (x, y).  The multiplier follows from the
+   constraint differentiated twice, x x'' + y y'' + |v|^2 = 0, which with the
+   equations of motion gives  lambda = (m |v|^2 - m g y) / L^2;  energy
+   conservation from rest at y = 0 gives |v|^2 = -2 g y, hence
+
+        lambda = -3 m g y / L^2      (rod tension lambda L, >= 0 below y = 0).
+
+   The exact period for the amplitude theta0 = pi/2 is
+        T = 4 K(k) sqrt(L/g),  k = sin(theta0/2),  K(k) = pi / (2 AGM(1, sqrt(1-k^2))),
+   2.367841947576 s for L = 1 m, g = 9.81 m/s^2; pend_period_exact() computes it
+   independently with the arithmetic-geometric mean.
+
+   The period is measured from the crossings of x = 0 in the same direction
+   (x from + to -): inside the step where x changes sign the crossing time is
+   the root of the cubic Hermite interpolant of (x, x') at both ends of the
+   step, whose own error O(h^4) is far below the O(h^2) integration error.
+
+   Reuse: tests and benchmarks #define VLBE_EXAMPLE_NO_MAIN and #include this
+   file to get the problem (pend_setup, pend_initial), the exact reference
+   values and pend_run(), without main().
+
+   Output: a table, then one comparison row per line for `make demo`:
+     ROW|pendulum|<quantity>|<published>|<computed>|<relative error>|<cpu seconds> */
+#include "../integrators.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+/* -- the problem ---------------------------------------------------------- */
+#define PEND_T_PUBLISHED 2.367841947576 /* s, 4 K(sin(pi/4)) sqrt(L/g), L = 1 m, g = 9.81 */
+#define PEND_L 1.0                      /* m      */
+#define PEND_G 9.81                     /* m/s^2  */
+#define PEND_M 1.0                      /* kg     */
+
+typedef struct pend_par {
+    vlbe_real m, L, g; /* kg, m, m/s^2 */
+} pend_par;
+
+static pend_par pend_default(void)
+{
+    pend_par p;
+    p.m = (vlbe_real)PEND_M;
+    p.L = (vlbe_real)PEND_L;
+    p.g = (vlbe_real)PEND_G;
+    return p;
+}
+
+static int pend_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+{
+    const pend_par *p = (const pend_par *)user;
+    (void)t;
+    (void)q;
+    (void)v;
+    M[0] = p->m;
+    M[1] = VLBE_R(0.0);
+    M[2] = VLBE_R(0.0);
+    M[3] = p->m;
+    return 0;
+}
+
+static int pend_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+{
+    const pend_par *p = (const pend_par *)user;
+    (void)t;
+    (void)q;
+    (void)v;
+    Q[0] = VLBE_R(0.0);
+    Q[1] = -p->m * p->g;
+    return 0;
+}
+
+static int pend_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+{
+    const pend_par *p = (const pend_par *)user;
+    (void)t;
+    C[0] = VLBE_R(0.5) * (q[0] * q[0] + q[1] * q[1] - p->L * p->L);
+    return 0;
+}
+
+static int pend_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
+{
+    (void)user;
+    (void)t;
+    Cq[0] = q[0];
+    Cq[1] = q[1];
+    if (Ct) Ct[0] = VLBE_R(0.0);
+    return 0;
+}
+
+/* gamma = -(C_q v)_q v = -|v|^2 */
+static int pend_constr_acc(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                           vlbe_real *gamma)
+{
+    (void)user;
+    (void)t;
+    (void)q;
+    gamma[0] = -(v[0] * v[0] + v[1] * v[1]);
+    return 0;
+}
+
+/* Q is constant: K = D = 0 */
+static int pend_force_jac(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                          vlbe_real *K, vlbe_real *D)
+{
+    int i;
+    (void)user;
+    (void)t;
+    (void)q;
+    (void)v;
+    for (i = 0; i < 4; ++i) K[i] = D[i] = VLBE_R(0.0);
+    return 0;
+}
+
+/* d(C_q^T lambda)/dq = lambda I */
+static int pend_constr_hess(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
+                            vlbe_real *H)
+{
+    (void)user;
+    (void)t;
+    (void)q;
+    H[0] = H[3] = lambda[0];
+    H[1] = H[2] = VLBE_R(0.0);
+    return 0;
+}
+
+/* Fills sys for the pendulum with parameters *p (p must outlive sys), with
+   the analytic Jacobians; a caller may set the optional ones to NULL to use
+   the integrator's finite differences instead. */
+static void pend_setup(vlbe_dae *sys, pend_par *p)
+{
+    vlbe_dae z = {0};
+    *sys = z;
+    sys->n = 2;
+    sys->m = 1;
+    sys->flags = VLBE_DAE_MASS_CONST;
+    sys->user = p;
+    sys->mass = pend_mass;
+    sys->force = pend_force;
+    sys->constr = pend_constr;
+    sys->constr_jac = pend_constr_jac;
+    sys->constr_acc = pend_constr_acc;
+    sys->force_jac = pend_force_jac;
+    sys->constr_hess = pend_constr_hess;
+}
+
+/* At rest, rod horizontal. */
+static void pend_initial(const pend_par *p, vlbe_real q0[2], vlbe_real v0[2])
+{
+    q0[0] = p->L;
+    q0[1] = VLBE_R(0.0);
+    v0[0] = v0[1] = VLBE_R(0.0);
+}
+
+/* Exact multiplier at height y (energy from rest at y = 0). */
+static double pend_lambda_exact(const pend_par *p, double y)
+{
+    return -3.0 * (double)p->m * (double)p->g * y / ((double)p->L * (double)p->L);
+}
+
+/* Exact period for the release from the horizontal (theta0 = pi/2):
+   T = 4 K(k) sqrt(L/g) with k = sin(pi/4), K(k) = pi / (2 AGM(1, k')),
+   k' = cos(pi/4) = sqrt(1/2).  The AGM converges quadratically; it stops
+   when a and b agree to the last bit (or after 64 rounds). */
+static double pend_period_exact(double L, double g)
+{
+    const double pi = 3.14159265358979323846;
+    double a = 1.0, b = sqrt(0.5);
+    int i;
+    for (i = 0; i < 64 && a != b; ++i) {
+        double an = 0.5 * (a + b), bn = sqrt(a * b);
+        if (an == a && bn == b) break;
+        a = an;
+        b = bn;
+    }
+    return 4.0 * (pi / (2.0 * a)) * sqrt(L / g);
+}
+
+/* -- period measurement --------------------------------------------------- */
+/* Crossings of x = 0 from x > 0 to x <= 0.  Feed every accepted step. */
+typedef struct pend_period {
+    int have_prev, n_cross;
+    double t0, x0, v0;        /* previous sample */
+    double t_first, t_last;   /* first and last crossing times */
+} pend_period;
+
+static void pend_period_init(pend_period *pp)
+{
+    pp->have_prev = 0;
+    pp->n_cross = 0;
+    pp->t0 = pp->x0 = pp->v0 = 0.0;
+    pp->t_first = pp->t_last = 0.0;
+}
+
+/* Value of the cubic Hermite interpolant on [t0, t0 + tau] at s in [0, 1]. */
+static double pend_hermite(double s, double tau, double x0, double v0, double x1, double v1)
+{
+    double s2 = s * s, s3 = s2 * s;
+    return (2.0 * s3 - 3.0 * s2 + 1.0) * x0 + (s3 - 2.0 * s2 + s) * tau * v0 +
+           (-2.0 * s3 + 3.0 * s2) * x1 + (s3 - s2) * tau * v1;
+}
+
+static void pend_period_add(pend_period *pp, double t, double x, double v)
+{
+    if (pp->have_prev && pp->x0 > 0.0 && x <= 0.0) {
+        /* bisection on the Hermite cubic: p(0) = x0 > 0 >= x1 = p(1) */
+        double tau = t - pp->t0, lo = 0.0, hi = 1.0, tc;
+        int k;
+        for (k = 0; k < 200; ++k) {
+            double mid = 0.5 * (lo + hi);
+            if (mid <= lo || mid >= hi) break;
+            if (pend_hermite(mid, tau, pp->x0, pp->v0, x, v) > 0.0) lo = mid;
+            else hi = mid;
+        }
+        tc = pp->t0 + 0.5 * (lo + hi) * tau;
+        if (pp->n_cross == 0) pp->t_first = tc;
+        pp->t_last = tc;
+        ++pp->n_cross;
+    }
+    pp->have_prev = 1;
+    pp->t0 = t;
+    pp->x0 = x;
+    pp->v0 = v;
+}
+
+/* Mean period over the crossings seen; NaN if fewer than two. */
+static double pend_period_value(const pend_period *pp)
+{
+    if (pp->n_cross < 2) return NAN;
+    return (pp->t_last - pp->t_first) / (double)(pp->n_cross - 1);
+}
+
+/* -- one run -------------------------------------------------------------- */
+typedef struct pend_result {
+    vlbe_status status; /* of the first failing call, VLBE_OK if none     */
+    double t_reached;   /* time of the last accepted step [s]            */
+    double period;      /* measured period [s] (NaN if < 2 crossings)    */
+    double max_c;       /* max |C| over the accepted steps [m^2]         */
+    double max_cv;      /* max |C_q v| [m^2/s]                           */
+    double max_lam_err; /* max |lambda - (-3 m g y / L^2)| [N/m]         */
+    double lam_err_early, lam_err_late; /* the same over t in (0, 1] and
+                                            (t_end - 1, t_end] [N/m]     */
+    double cpu;         /* seconds                                       */
+    vlbe_dae_stats stats;
+} pend_result;
+
+/* Integrates the pendulum with parameters par and fixed step h up to t_end
+   (rounded to a whole number of steps) and fills *res, also when a step
+   fails (then with the data up to the failure).  The workspace is
+   malloc'ed here (examples may allocate; the headers never do). */
+static vlbe_status pend_run_sys(const vlbe_dae *sys, const vlbe_hht_params *par, double h,
+                                double t_end, pend_result *res)
+{
+    const pend_par *p = (const pend_par *)sys->user;
+    size_t lw = vlbe_hht_work_len(sys->n, sys->m), liw = vlbe_hht_iwork_len(sys->n, sys->m);
+    vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
+    int *iw = (int *)malloc(liw * sizeof *iw);
+    vlbe_real q0[2], v0[2];
+    vlbe_hht st;
+    pend_period pp;
+    long k, nsteps = (long)floor(t_end / h + 0.5);
+    clock_t c0 = clock();
+    vlbe_status rc;
+
+    res->status = VLBE_OK;
+    res->period = NAN;
+    res->max_c = res->max_cv = res->max_lam_err = 0.0;
+    res->lam_err_early = res->lam_err_late = 0.0;
+    res->t_reached = 0.0;
+    res->cpu = 0.0;
+    if (!w || !iw) {
+        free(w);
+        free(iw);
+        return res->status = VLBE_EWORK;
+    }
+    pend_initial(p, q0, v0);
+    rc = vlbe_hht_init(&st, sys, par, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
+    if (rc == VLBE_OK) {
+        pend_period_init(&pp);
+        pend_period_add(&pp, 0.0, (double)st.q[0], (double)st.v[0]);
+        for (k = 1; k <= nsteps; ++k) {
+            double x, y, vx, vy, c, cv, le, t = (double)k * h;
+            if ((rc = vlbe_hht_step(&st, (vlbe_real)h)) != VLBE_OK) break;
+            res->t_reached = t;
+            x = (double)st.q[0];
+            y = (double)st.q[1];
+            vx = (double)st.v[0];
+            vy = (double)st.v[1];
+            /* constraint residual in the working precision, as the integrator sees it */
+            c = fabs((double)(VLBE_R(0.5) * (st.q[0] * st.q[0] + st.q[1] * st.q[1] - p->L * p->L)));
+            cv = fabs(x * vx + y * vy);
+            le = fabs((double)st.lambda[0] - pend_lambda_exact(p, y));
+            if (c > res->max_c) res->max_c = c;
+            if (cv > res->max_cv) res->max_cv = cv;
+            if (le > res->max_lam_err) res->max_lam_err = le;
+            if (t <= 1.0 && le > res->lam_err_early) res->lam_err_early = le;
+            if (t > t_end - 1.0 && le > res->lam_err_late) res->lam_err_late = le;
+            pend_period_add(&pp, t, x, vx);
+        }
+        res->period = pend_period_value(&pp);
+    }
+    res->cpu = (double)(clock() - c0) / (double)CLOCKS_PER_SEC;
+    res->stats = st.stats;
+    res->status = rc;
+    free(w);
+    free(iw);
+    return rc;
+}
+
+/* The same for the default problem (analytic Jacobians). */
+static vlbe_status pend_run(const vlbe_hht_params *par, double h, double t_end, pend_result *res)
+{
+    pend_par p = pend_default();
+    vlbe_dae sys;
+    pend_setup(&sys, &p);
+    return pend_run_sys(&sys, par, h, t_end, res);
+}
+
+#ifndef VLBE_EXAMPLE_NO_MAIN
+int main(void)
+{
+    enum { NMETH = 3, NH = 4 };
+    static const char *const name[NMETH] = {"HHT-a", "gen-a", "Newmark"};
+    static const char *const label[NMETH] = {"HHT-alpha, alpha = -0.05",
+                                             "generalized-alpha, rho_inf = 0.8",
+                                             "Newmark trapezoidal (beta 1/4, gamma 1/2)"};
+    static const double hs[NH] = {4e-3, 2e-3, 1e-3, 5e-4};
+    const double t_end = 12.0; /* about 5 periods: 5 crossings, 4 full periods */
+    double T_agm = pend_period_exact(PEND_L, PEND_G);
+    int im, ih;
+    char rows[NMETH * NH][160];
+    int nrows = 0;
+
+    printf("Index-3 Cartesian pendulum: m = %g kg, L = %g m, g = %g m/s^2, "
+           "released at rest from the horizontal, t in [0, %g] s\n",
+           PEND_M, PEND_L, PEND_G, t_end);
+    printf("exact period: AGM %.15f s, published %.12f s, relative difference %.1e\n", T_agm,
+           PEND_T_PUBLISHED, fabs(T_agm - PEND_T_PUBLISHED) / PEND_T_PUBLISHED);
+    printf("Newton: rtol = atol = 1e-12 (the multiplier error of an index-3 scheme is about\n"
+           "the Newton tolerance / (beta h^2); the defaults 1e-9 would hide its h^2 convergence)\n\n");
+
+    for (im = 0; im < NMETH; ++im) {
+        double prev_err = 0.0;
+        printf("%s\n", label[im]);
+        printf("  %-7s %-15s %-8s %-5s %-8s %-8s %-8s %-8s %-8s %6s %7s %5s %7s\n", "h [s]",
+               "period [s]", "rel.err", "ratio", "max|C|", "max|Cqv|", "max|dl|", "dl(t<1)",
+               "dl(end)", "steps", "newton", "LU", "cpu [s]");
+        for (ih = 0; ih < NH; ++ih) {
+            vlbe_hht_params par;
+            pend_result r;
+            double err;
+            if (im == 0) vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+            else if (im == 1) vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
+            else vlbe_hht_params_newmark(&par, VLBE_R(0.25), VLBE_R(0.5));
+#ifndef VLBE_USE_FLOAT
+            par.rtol = par.atol = VLBE_R(1e-12);
+#endif
+            pend_run(&par, hs[ih], t_end, &r);
+            err = fabs(r.period - T_agm) / T_agm;
+            printf("  %-7g %-15.12f %-8.2e ", hs[ih], r.period, err);
+            if (prev_err > 0.0 && r.status == VLBE_OK) printf("%-5.2f ", prev_err / err);
+            else printf("%-5s ", "-");
+            printf("%-8.1e %-8.1e %-8.1e %-8.1e ", r.max_c, r.max_cv, r.max_lam_err,
+                   r.lam_err_early);
+            if (r.status == VLBE_OK) printf("%-8.1e ", r.lam_err_late);
+            else printf("%-8s ", "-");
+            printf("%6ld %7ld %5ld %7.4f\n", r.stats.steps, r.stats.newton_iters,
+                   r.stats.lu_factors, r.cpu);
+            if (r.status != VLBE_OK)
+                printf("          stopped at t = %.3f s: %s (period from the crossings before)\n",
+                       r.t_reached, vlbe_status_str(r.status));
+            prev_err = r.status == VLBE_OK ? err : 0.0;
+            sprintf(rows[nrows++], "ROW|pendulum|period %s h=%g%s [s]|%.12f|%.12f|%.1e|%.4f",
+                    name[im], hs[ih], r.status == VLBE_OK ? "" : " (failed)", PEND_T_PUBLISHED,
+                    r.period,
+                    fabs(r.period - PEND_T_PUBLISHED) / PEND_T_PUBLISHED, r.cpu);
+        }
+        printf("\n");
+    }
+    printf("rel.err: against the AGM period; ratio: error at the previous h over this one "
+           "(4 for 2nd order).\n"
+           "max|dl|: largest |lambda - (-3 m g y / L^2)| [N/m] over the run, dl(t<1) over t <= 1 s,\n"
+           "dl(end) over the last second (3 m g / L = %.2f N/m at the bottom).  Trapezoidal\n"
+           "Newmark has no damping of the multiplier mode (eigenvalue -1): its error grows until\n"
+           "Newton fails (Cardona & Geradin 1989); HHT and generalized-alpha damp it.\n\n",
+           3.0 * PEND_M * PEND_G / PEND_L);
+    printf("ROW|pendulum|period AGM [s]|%.12f|%.15f|%.1e|0\n", PEND_T_PUBLISHED, T_agm,
+           fabs(T_agm - PEND_T_PUBLISHED) / PEND_T_PUBLISHED);
+    for (im = 0; im < nrows; ++im) printf("%s\n", rows[im]);
+    return 0;
+}
+#endif /* VLBE_EXAMPLE_NO_MAIN */
