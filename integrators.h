@@ -43,6 +43,11 @@ API
    size_t vlbe_hht_work_len(n, m), vlbe_hht_iwork_len(n, m)
    vlbe_status vlbe_hht_init(st, sys, par, t0, q0, v0, w, lw, iw, liw)
    vlbe_status vlbe_hht_step(st, h)                       one step (halving inside if enabled)
+   void vlbe_bdf_params_default(p)                        BDF defaults (rtol 1e-6, order <= 5)
+   size_t vlbe_bdf_work_len(n, m), vlbe_bdf_iwork_len(n, m)
+   vlbe_status vlbe_bdf_init(st, sys, par, t0, q0, v0, w, lw, iw, liw)  consistent start, order 1
+   vlbe_status vlbe_bdf_step(st, t_stop)                  one accepted step, never past t_stop
+   vlbe_status vlbe_bdf_advance(st, t_out)                steps until t == t_out exactly
 
 REFERENCES
    M. Arnold, O. Bruls, Convergence of the generalized-alpha scheme for
@@ -139,6 +144,53 @@ typedef struct vlbe_hht {
     int have_lu_;
 } vlbe_hht;
 
+/* BDF (orders 1..5, variable step and order, DASSL-style) on the stabilized
+   index-2 form of Gear, Gupta and Leimkuhler (GGL):
+       q' = v - C_q^T mu,   M v' + C_q^T lambda = Q,   C_q v + C_t = 0,   C = 0,
+   unknowns y = (q, v, lambda, mu), 2n + 2m. */
+#define VLBE_BDF_MAXORD 5
+
+typedef struct vlbe_bdf_params {
+    vlbe_real rtol, atol; /* local error per step on q and v (lambda, mu excluded):
+                             weighted RMS with weights atol + rtol |y_i| <= 1
+                             (default 1e-6, 1e-8)                                  */
+    vlbe_real h0;         /* first step; 0: estimated from |y'(t0)| (default 0)    */
+    vlbe_real h_min;      /* smallest step; 0: 4 eps |t| (default 0)               */
+    vlbe_real h_max;      /* largest step; 0: unbounded (default 0)                */
+    int max_order;        /* highest order, 1..5 (default 5; 2 keeps A-stability)  */
+    int newton_max;       /* Newton iterations per attempt (default 4, as DASSL)   */
+    int fixed_step;       /* 1: every step is h0 (h_min, h_max, rtol/atol for the
+                             error test unused), order 1, 2, ... up to max_order;
+                             for stability studies (default 0)                     */
+} vlbe_bdf_params;
+
+/* BDF integrator state.  q, v, lambda, mu point into the caller's workspace
+   (contiguous, in this order) and hold the last accepted step at time t. */
+typedef struct vlbe_bdf {
+    const vlbe_dae *sys;
+    vlbe_bdf_params par;
+    int n, m;
+    vlbe_real t;        /* time of the last accepted step                  */
+    vlbe_real h;        /* step size the next step will try                */
+    vlbe_real h_last;   /* size of the last accepted step (0 before any)   */
+    int order;          /* order the next step will use                    */
+    int order_last;     /* order of the last accepted step (0 before any)  */
+    vlbe_real *q, *v, *lambda, *mu;
+    vlbe_dae_stats stats;
+    /* private: modified divided differences phi_1..phi_{k+1} (phi_j at
+       phi_ + (j-1)(2n+2m)) and the coefficients of Brenan-Campbell-Petzold
+       sec. 5.2 (1-based, index 0 unused) */
+    vlbe_real *phi_, *w_;
+    int *piv_;
+    vlbe_real psi_[VLBE_BDF_MAXORD + 2], alpha_[VLBE_BDF_MAXORD + 2],
+        beta_[VLBE_BDF_MAXORD + 2], gamma_[VLBE_BDF_MAXORD + 2], sigma_[VLBE_BDF_MAXORD + 2];
+    vlbe_real hold_;    /* step size of the last accepted step             */
+    vlbe_real cj_;      /* leading coefficient alpha_s/h of the last attempt */
+    vlbe_real cj_lu_;   /* cj of the stored iteration matrix               */
+    vlbe_real rate_;    /* Newton convergence factor estimate s            */
+    int kold_, ns_, phase_, jcalc_; /* jcalc_: -1 matrix needed, 0 fresh, 1 old */
+} vlbe_bdf;
+
 /* -- API prototypes ----------------------------------------------------- */
 VLBE_API vlbe_status vlbe_dae_check(const vlbe_dae *sys);
 VLBE_API size_t vlbe_dae_work_len(int n, int m);
@@ -159,6 +211,16 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
                                    vlbe_real *work, size_t work_len, int *iwork,
                                    size_t iwork_len);
 VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h);
+
+VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p);
+VLBE_API size_t vlbe_bdf_work_len(int n, int m);
+VLBE_API size_t vlbe_bdf_iwork_len(int n, int m);
+VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe_bdf_params *par,
+                                   vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
+                                   vlbe_real *work, size_t work_len, int *iwork,
+                                   size_t iwork_len);
+VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop);
+VLBE_API vlbe_status vlbe_bdf_advance(vlbe_bdf *st, vlbe_real t_out);
 
 /* ===== implementation =================================================== */
 
@@ -792,6 +854,558 @@ VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
     if (!(h > VLBE_R(0.0)) || !isfinite(h)) return VLBE_EARG;
     if (st->t + h == st->t) return VLBE_ESTEP;
     return vlbe__hht_step_rec(st, h, st->par.max_halvings);
+}
+
+/* ===== BDF orders 1..5, variable step and order (GGL index-2 form) ======= */
+/* The method is the variable-coefficient, fixed-leading-coefficient BDF in
+   modified divided-difference form of DASSL (Brenan, Campbell, Petzold,
+   ch. 5): with psi_i = t_{n+1} - t_{n+1-i}, the predictor interpolates the
+   last k+1 solution points,
+       y_pred = sum_{j=1}^{k+1} phi*_j,   y'_pred = sum_{j=2}^{k+1} gamma_j phi*_j,
+   and the corrector solves G(t, y, y') = 0 with
+       y' = y'_pred + cj (y - y_pred),   cj = -alpha_s / h,  alpha_s = -sum_{j<=k} 1/j
+   (eq. 5.2.8-5.2.13 of the book).  The local error of order k is
+   ck |y - y_pred|, and the terms at orders k-2..k+1 (sec. 5.2.2) drive the
+   order and step selection.  The residual of the GGL form (Gear, Gupta,
+   Leimkuhler 1985, eq. 2.6) is
+       G_q = q' - v + C_q^T mu,   G_v = M v' + C_q^T lambda - Q,
+       G_l = C_q v + C_t,         G_m = C(t, q);
+   lambda and mu are algebraic (index 2): they are predicted and corrected
+   with the rest and left out of the error test (their local error is not
+   O(h^(k+1)); Hairer-Wanner VII.3), but they are in the Newton convergence
+   test: an unconverged q of size d puts an error d / h^2 into lambda, and
+   that noise then spoils the order selection through the differences. */
+
+/* Defaults: rtol 1e-6, atol 1e-8, h0, h_min, h_max 0 (automatic), order <= 5,
+   4 Newton iterations, variable step. */
+VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
+{
+    VLBE_ASSERT(p != NULL);
+    p->rtol = VLBE_R(1e-6);
+    p->atol = VLBE_R(1e-8);
+    p->h0 = p->h_min = p->h_max = VLBE_R(0.0);
+    p->max_order = VLBE_BDF_MAXORD;
+    p->newton_max = 4;
+    p->fixed_step = 0;
+}
+
+/* Scratch shared by the Jacobian helpers (and by vlbe_dae_consistent_acc at
+   init, which gets the whole area from the iteration matrix on). */
+VLBE_INLINE size_t vlbe__bdf_scr_len(int n, int m)
+{
+    size_t N = (size_t)n, Mm = (size_t)m;
+    size_t a = 3 * N * N + Mm * N + 3 * N + Mm;      /* vlbe__int_tangent2 */
+    size_t b = N * N + Mm * N + 5 * N + 3 * Mm;      /* vlbe__int_constr_q (lam, mu, g) */
+    return a > b ? a : b;
+}
+
+/* Workspace layout (reals), N2 = 2n + 2m: y (N2); phi (MAXORD+1 columns of
+   N2); trial y, trial y', e = y - y_pred, delta (4 N2); then the tail:
+   iteration matrix (N2*N2), M (n*n), Q (n), Cq (m*n), Ct (m), scratch. */
+VLBE_API size_t vlbe_bdf_work_len(int n, int m)
+{
+    size_t N2 = 2 * (size_t)n + 2 * (size_t)m;
+    size_t tail = N2 * N2 + (size_t)n * (size_t)n + (size_t)n + (size_t)m * (size_t)n +
+                  (size_t)m + vlbe__bdf_scr_len(n, m);
+    size_t dae = vlbe_dae_work_len(n, m);
+    return N2 * (size_t)(VLBE_BDF_MAXORD + 1 + 5) + (tail > dae ? tail : dae);
+}
+VLBE_API size_t vlbe_bdf_iwork_len(int n, int m) { return 2 * (size_t)n + 2 * (size_t)m; }
+
+VLBE_INLINE int vlbe__bdf_n2(const vlbe_bdf *st) { return 2 * st->n + 2 * st->m; }
+VLBE_INLINE vlbe_real *vlbe__bdf_phi(const vlbe_bdf *st, int j) /* 1-based column */
+{
+    return st->phi_ + (size_t)(j - 1) * (size_t)vlbe__bdf_n2(st);
+}
+/* trial y, trial y', e, delta */
+VLBE_INLINE vlbe_real *vlbe__bdf_vec(const vlbe_bdf *st, int i)
+{
+    return st->w_ + (size_t)i * (size_t)vlbe__bdf_n2(st);
+}
+VLBE_INLINE vlbe_real *vlbe__bdf_tail(const vlbe_bdf *st) { return vlbe__bdf_vec(st, 4); }
+
+/* Weighted RMS norm of the q and v parts of x (error test); weights from
+   the last accepted step. */
+VLBE_INLINE vlbe_real vlbe__bdf_norm(const vlbe_bdf *st, const vlbe_real *x)
+{
+    return vlbe__int_wrms(2 * st->n, x, st->q, st->par.rtol, st->par.atol);
+}
+
+VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe_bdf_params *par,
+                                   vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
+                                   vlbe_real *work, size_t work_len, int *iwork,
+                                   size_t iwork_len)
+{
+    int n, m, N2, i;
+    vlbe_status rc;
+    vlbe_real *tail, *phi2, ypn;
+    VLBE_ASSERT(st != NULL && par != NULL && q0 != NULL && v0 != NULL);
+    if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
+    n = sys->n;
+    m = sys->m;
+    if (!work || !iwork || work_len < vlbe_bdf_work_len(n, m) ||
+        iwork_len < vlbe_bdf_iwork_len(n, m))
+        return VLBE_EWORK;
+    if (!(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
+        !(par->rtol + par->atol > VLBE_R(0.0)) || !(par->h0 >= VLBE_R(0.0)) ||
+        !(par->h_min >= VLBE_R(0.0)) || !(par->h_max >= VLBE_R(0.0)) ||
+        !isfinite(par->h0) || !isfinite(par->h_max) || par->max_order < 1 ||
+        par->max_order > VLBE_BDF_MAXORD || par->newton_max < 1 ||
+        (par->fixed_step && !(par->h0 > VLBE_R(0.0))) ||
+        (par->h_max > VLBE_R(0.0) && par->h_min > par->h_max))
+        return VLBE_EARG;
+    if (!isfinite(t0) || !vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n))
+        return VLBE_ENONFINITE;
+    N2 = 2 * n + 2 * m;
+    st->sys = sys;
+    st->par = *par;
+    st->n = n;
+    st->m = m;
+    st->t = t0;
+    st->q = work;
+    st->v = st->q + n;
+    st->lambda = st->v + n;
+    st->mu = st->lambda + m;
+    st->phi_ = work + N2;
+    st->w_ = st->phi_ + (size_t)N2 * (VLBE_BDF_MAXORD + 1);
+    st->piv_ = iwork;
+    st->stats.steps = st->stats.rejected = st->stats.newton_iters = st->stats.newton_fails = 0;
+    st->stats.force_calls = st->stats.mass_calls = st->stats.constr_calls = 0;
+    st->stats.jac_evals = st->stats.lu_factors = st->stats.lu_solves = 0;
+    vlbe_vec_copy(n, q0, st->q);
+    vlbe_vec_copy(n, v0, st->v);
+    /* y'(t0) = (v0, q''0, 0, 0) into phi_2, with q''0 and lambda0 from the
+       consistent-acceleration system; mu0 = 0 */
+    phi2 = vlbe__bdf_phi(st, 2);
+    tail = vlbe__bdf_tail(st);
+    rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, phi2 + n, st->lambda, &st->stats, tail,
+                                 (size_t)(work + work_len - tail), iwork, iwork_len);
+    if (rc != VLBE_OK) return rc;
+    vlbe_vec_copy(n, v0, phi2);
+    for (i = 0; i < 2 * m; ++i) phi2[2 * n + i] = VLBE_R(0.0);
+    for (i = 0; i < m; ++i) st->mu[i] = VLBE_R(0.0);
+    vlbe_vec_copy(N2, st->q, vlbe__bdf_phi(st, 1));
+    /* phi_2 = psi_1 y'(t0): psi_1 = 1 until the first step sets h */
+    st->psi_[1] = VLBE_R(1.0);
+    /* first step: h0, else the DASSL estimate 0.5 / |y'(t0)| (capped again
+       by 1e-3 |t_stop - t0| at the first step) */
+    ypn = vlbe__bdf_norm(st, phi2);
+    if (par->h0 > VLBE_R(0.0)) st->h = par->h0;
+    else st->h = ypn > VLBE_R(0.0) ? VLBE_R(0.5) / ypn : VLBE_REAL_MAX;
+    if (par->h_max > VLBE_R(0.0) && st->h > par->h_max) st->h = par->h_max;
+    st->h_last = VLBE_R(0.0);
+    st->order = 1;
+    st->order_last = 0;
+    st->hold_ = VLBE_R(0.0);
+    st->cj_ = st->cj_lu_ = VLBE_R(0.0);
+    st->rate_ = VLBE_R(100.0);
+    st->kold_ = 0;
+    st->ns_ = 0;
+    st->phase_ = 0;
+    st->jcalc_ = -1;
+    return VLBE_OK;
+}
+
+/* G(t, y, y') of the GGL form into G (N2).  Leaves M, Q, Cq, Ct at (t, y) in
+   the workspace tail for the iteration matrix. */
+VLBE_INLINE vlbe_status vlbe__bdf_res(vlbe_bdf *st, vlbe_real t, const vlbe_real *y,
+                                      const vlbe_real *yp, vlbe_real *G)
+{
+    const vlbe_dae *s = st->sys;
+    int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i;
+    const vlbe_real *q = y, *v = y + n, *lam = v + n, *mu = lam + m;
+    vlbe_real *M = vlbe__bdf_tail(st) + (size_t)N2 * N2, *Q = M + (size_t)n * n,
+              *Cq = Q + n, *Ct = Cq + (size_t)m * n;
+    vlbe_status rc;
+    if ((rc = vlbe__int_mass(s, &st->stats, t, q, v, M)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_force(s, &st->stats, t, q, v, Q)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_cjac(s, &st->stats, t, q, Cq, Ct)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_constr(s, &st->stats, t, q, G + 2 * n + m)) != VLBE_OK) return rc;
+    vlbe_mat_vec(n, n, M, yp + n, G + n);
+    for (i = 0; i < n; ++i) {
+        G[i] = yp[i] - v[i];
+        G[n + i] -= Q[i];
+    }
+    for (i = 0; i < m; ++i) {
+        const vlbe_real *ci = Cq + (size_t)i * n;
+        vlbe_vec_axpy(n, mu[i], ci, G);
+        vlbe_vec_axpy(n, lam[i], ci, G + n);
+        G[2 * n + i] = vlbe_vec_dot(n, ci, v) + Ct[i];
+    }
+    return vlbe_all_finite(G, N2) ? VLBE_OK : VLBE_ENONFINITE;
+}
+
+/* Iteration matrix dG/dy + cj dG/dy' at (t, y, y') (M, Q, Cq, Ct from the
+   residual just evaluated there), scaled for conditioning: the q and v rows
+   are divided by cj and the lambda and mu columns multiplied by cj, so that
+   every block stays O(1) as h -> 0 (the unscaled matrix has blocks O(1/h)
+   next to O(1) constraint rows, and Schur complements O(h)):
+       [ I + (C_q^T mu)_q/cj     -I/cj                    0      C_q^T ]
+       [ (Ma+C_q^T l-Q)_q/cj     M + (Ma-Q)_v/cj          C_q^T  0     ]
+       [ (C_q v + C_t)_q         C_q                      0      0     ]
+       [ C_q                     0                        0      0     ]
+   Factored in place; the solve undoes the scaling (vlbe__bdf_solve). */
+VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_real *y,
+                                         const vlbe_real *yp, vlbe_real cj)
+{
+    const vlbe_dae *s = st->sys;
+    int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i, j;
+    size_t NN = (size_t)N2 * (size_t)N2, ld = (size_t)N2;
+    vlbe_real *A = vlbe__bdf_tail(st), *M = A + NN, *Q = M + (size_t)n * n, *Cq = Q + n,
+              *Ct = Cq + (size_t)m * n, *scr = Ct + m, ic = VLBE_R(1.0) / cj;
+    vlbe_status rc;
+    st->jcalc_ = -1;
+    for (i = 0; i < (int)NN; ++i) A[i] = VLBE_R(0.0);
+    for (i = 0; i < n; ++i) {
+        A[(size_t)i * ld + (size_t)i] = VLBE_R(1.0);
+        A[(size_t)i * ld + (size_t)(n + i)] = -ic;
+        for (j = 0; j < n; ++j) A[(size_t)(n + i) * ld + (size_t)(n + j)] = M[(size_t)i * n + j];
+        for (j = 0; j < m; ++j) {
+            vlbe_real c = Cq[(size_t)j * n + i];
+            A[(size_t)i * ld + (size_t)(2 * n + m + j)] = c;   /* (q, mu)     */
+            A[(size_t)(n + i) * ld + (size_t)(2 * n + j)] = c; /* (v, lambda) */
+            A[(size_t)(2 * n + j) * ld + (size_t)(n + i)] = c; /* (lambda, v) */
+            A[(size_t)(2 * n + m + j) * ld + (size_t)i] = c;   /* (mu, q)     */
+        }
+    }
+    rc = vlbe__int_tangent2(s, &st->stats, t, y, y + n, yp + n, NULL, Q, M, ic, A + ld * n,
+                            N2, ic, A + ld * n + n, N2, scr);
+    if (rc != VLBE_OK) return rc;
+    if (m > 0) {
+        rc = vlbe__int_constr_q(s, &st->stats, t, y, y + 2 * n, ic, A + ld * n, N2,
+                                y + 2 * n + m, ic, A, N2, y + n, A + ld * (size_t)(2 * n), N2,
+                                scr);
+        if (rc != VLBE_OK) return rc;
+    }
+    if (!vlbe_all_finite(A, (int)NN)) return VLBE_ENONFINITE;
+    ++st->stats.lu_factors;
+    if ((rc = vlbe_lu_factor(N2, A, A, st->piv_, NULL)) != VLBE_OK) return rc;
+    st->cj_lu_ = cj;
+    st->jcalc_ = 0;
+    return VLBE_OK;
+}
+
+/* delta <- (iteration matrix)^-1 delta, with the scaling of vlbe__bdf_matrix. */
+VLBE_INLINE void vlbe__bdf_solve(vlbe_bdf *st, vlbe_real *d)
+{
+    int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i;
+    vlbe_real c = st->cj_lu_, ic = VLBE_R(1.0) / c;
+    for (i = 0; i < 2 * n; ++i) d[i] *= ic;
+    ++st->stats.lu_solves;
+    vlbe_lu_solve(N2, vlbe__bdf_tail(st), st->piv_, 1, d);
+    for (i = 2 * n; i < 2 * n + 2 * m; ++i) d[i] *= c;
+}
+
+/* Step-size dependent coefficients for a step h at order k (book sec. 5.2.1)
+   and phi -> phi* (phi_j times beta_j).  ns: steps taken with constant h and k
+   (counting this one); while ns > k+1 the coefficients do not change. */
+VLBE_INLINE void vlbe__bdf_coef(vlbe_bdf *st, vlbe_real h, int k, int ns)
+{
+    int N2 = vlbe__bdf_n2(st), i, j;
+    if (k + 1 >= ns) {
+        vlbe_real pn = h; /* psi_i(n+1) */
+        st->beta_[1] = st->alpha_[1] = st->sigma_[1] = VLBE_R(1.0);
+        st->gamma_[1] = VLBE_R(0.0);
+        for (i = 2; i <= k + 1; ++i) {
+            vlbe_real po = st->psi_[i - 1]; /* psi_{i-1}(n) */
+            st->psi_[i - 1] = pn;
+            st->beta_[i] = st->beta_[i - 1] * pn / po;
+            pn = po + h;
+            st->alpha_[i] = h / pn;
+            st->sigma_[i] = (vlbe_real)(i - 1) * st->sigma_[i - 1] * st->alpha_[i];
+            st->gamma_[i] = st->gamma_[i - 1] + st->alpha_[i - 1] / h;
+        }
+        st->psi_[k + 1] = pn;
+    }
+    for (j = ns + 1; j <= k + 1; ++j) vlbe_vec_scale(N2, st->beta_[j], vlbe__bdf_phi(st, j));
+}
+
+/* Undoes vlbe__bdf_coef after a failed attempt (phi* -> phi, psi back). */
+VLBE_INLINE void vlbe__bdf_restore(vlbe_bdf *st, vlbe_real h, int k, int ns)
+{
+    int N2 = vlbe__bdf_n2(st), i, j;
+    for (j = ns + 1; j <= k + 1; ++j)
+        vlbe_vec_scale(N2, VLBE_R(1.0) / st->beta_[j], vlbe__bdf_phi(st, j));
+    for (i = 2; i <= k + 1; ++i) st->psi_[i - 1] = st->psi_[i] - h;
+}
+
+/* Predictor and Newton corrector for the step to t1 at order k (coefficients
+   set).  The iteration matrix is kept across steps and only re-formed when
+   none is stored (jcalc_ = -1: first step, failure, cj/cj_lu outside
+   [0.6, 1/0.6]) or when the iteration with the stored one fails to converge
+   (then the attempt is repeated from the predictor with a fresh one).
+   Convergence (book sec. 5.2.3), in the weighted RMS norm of all of
+   (q, v, lambda, mu): rate rho = (|d_m| / |d_0|)^(1/m),
+   s = rho / (1 - rho), converged when s |d_m| <= 0.33 or |d_m| <= 100 eps |y|;
+   rho > 0.9 or newton_max iterations fail.  With a stale cj the correction is
+   scaled by 2 / (1 + cj / cj_lu).  Returns VLBE_OK with trial y, y' and
+   e = y - y_pred, or ENOCONV / ENONFINITE / ESINGULAR / ECALLBACK. */
+VLBE_INLINE vlbe_status vlbe__bdf_corrector(vlbe_bdf *st, vlbe_real t1, int k)
+{
+    int N2 = vlbe__bdf_n2(st), i, j, it;
+    vlbe_real *y = vlbe__bdf_vec(st, 0), *yp = vlbe__bdf_vec(st, 1), *e = vlbe__bdf_vec(st, 2),
+              *d = vlbe__bdf_vec(st, 3);
+    vlbe_real cj = st->cj_, s = st->rate_, pnorm, dn, dn0 = VLBE_R(1.0);
+    vlbe_status rc;
+    for (;;) {
+        /* predictor */
+        vlbe_vec_copy(N2, vlbe__bdf_phi(st, 1), y);
+        vlbe_vec_zero(N2, yp);
+        for (j = 2; j <= k + 1; ++j) {
+            const vlbe_real *pj = vlbe__bdf_phi(st, j);
+            vlbe_vec_axpy(N2, VLBE_R(1.0), pj, y);
+            vlbe_vec_axpy(N2, st->gamma_[j], pj, yp);
+        }
+        vlbe_vec_zero(N2, e);
+        pnorm = vlbe__int_wrms(N2, y, st->q, st->par.rtol, st->par.atol);
+        if ((rc = vlbe__bdf_res(st, t1, y, yp, d)) != VLBE_OK) return rc;
+        if (st->jcalc_ == -1) {
+            if ((rc = vlbe__bdf_matrix(st, t1, y, yp, cj)) != VLBE_OK) return rc;
+            s = VLBE_R(100.0);
+        }
+        for (it = 0;;) {
+            ++st->stats.newton_iters;
+            vlbe__bdf_solve(st, d);
+            if (cj != st->cj_lu_) vlbe_vec_scale(N2, VLBE_R(2.0) / (VLBE_R(1.0) + cj / st->cj_lu_), d);
+            for (i = 0; i < N2; ++i) {
+                y[i] -= d[i];
+                e[i] -= d[i];
+                yp[i] -= cj * d[i];
+            }
+            if (!vlbe_all_finite(y, N2)) return VLBE_ENONFINITE;
+            dn = vlbe__int_wrms(N2, d, st->q, st->par.rtol, st->par.atol);
+            if (dn <= VLBE_R(100.0) * VLBE_EPS * pnorm) goto converged;
+            if (it > 0) {
+                vlbe_real rho = vlbe_pow(dn / dn0, VLBE_R(1.0) / (vlbe_real)it);
+                if (rho > VLBE_R(0.9)) break;
+                s = rho / (VLBE_R(1.0) - rho);
+            } else {
+                dn0 = dn;
+            }
+            if (s * dn <= VLBE_R(0.33)) goto converged;
+            if (++it >= st->par.newton_max) break;
+            if ((rc = vlbe__bdf_res(st, t1, y, yp, d)) != VLBE_OK) return rc;
+        }
+        /* not converged: a stale matrix is re-formed and the attempt repeated */
+        if (st->jcalc_ == 0) {
+            st->rate_ = s;
+            return VLBE_ENOCONV;
+        }
+        st->jcalc_ = -1;
+    }
+converged:
+    st->rate_ = s;
+    return VLBE_OK;
+}
+
+/* One accepted step (several attempts if needed) with t + h <= t_stop. */
+VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
+{
+    const vlbe_bdf_params *p;
+    int N2, k, kmax, ns, knew, nef = 0, ncf = 0, nsf = 0, to_stop, shortened;
+    vlbe_real h, hnat, hmin, t1, est, terk, terkm1 = VLBE_R(0.0), erkm1 = VLBE_R(0.0), dist;
+    vlbe_real *e, *d;
+    vlbe_status rc;
+    VLBE_ASSERT(st != NULL && st->sys != NULL);
+    p = &st->par;
+    N2 = vlbe__bdf_n2(st);
+    e = vlbe__bdf_vec(st, 2);
+    d = vlbe__bdf_vec(st, 3);
+    kmax = p->max_order;
+    dist = t_stop - st->t;
+    if (!(dist > VLBE_R(0.0)) || !isfinite(t_stop)) return VLBE_EARG;
+    k = st->order;
+    h = p->fixed_step ? p->h0 : st->h;
+    if (!p->fixed_step) {
+        if (st->kold_ == 0 && p->h0 == VLBE_R(0.0) && h > VLBE_R(1e-3) * dist)
+            h = VLBE_R(1e-3) * dist; /* first step without h0 (DASSL) */
+        if (p->h_max > VLBE_R(0.0) && h > p->h_max) h = p->h_max;
+        if (h < p->h_min) h = p->h_min;
+    }
+    hnat = h;
+    hmin = VLBE_R(4.0) * VLBE_EPS *
+           (vlbe_fabs(st->t) > vlbe_fabs(t_stop) ? vlbe_fabs(st->t) : vlbe_fabs(t_stop));
+    if (p->h_min > hmin) hmin = p->h_min;
+    /* land on t_stop exactly; avoid leaving a sliver (< 10% of h) behind */
+    to_stop = shortened = 0;
+    if (h >= dist) {
+        h = dist;
+        to_stop = 1;
+    } else if (!p->fixed_step && VLBE_R(1.1) * h > dist) {
+        h = VLBE_R(0.5) * dist;
+    }
+    shortened = h < hnat;
+    for (;;) {
+        vlbe_real enorm, ck, alphas = VLBE_R(0.0), alpha0 = VLBE_R(0.0), cj;
+        int j, failed_newton = 0, lower;
+        t1 = to_stop ? t_stop : st->t + h;
+        if (t1 == st->t) return VLBE_ESTEP;
+        /* first step: phi_2 = h y'(t0) */
+        if (st->kold_ == 0 && st->psi_[1] != h) {
+            vlbe_vec_scale(N2, h / st->psi_[1], vlbe__bdf_phi(st, 2));
+            st->psi_[1] = h;
+        }
+        ns = (h == st->hold_ && k == st->kold_) ? st->ns_ + 1 : 1;
+        if (ns > st->kold_ + 2) ns = st->kold_ + 2;
+        vlbe__bdf_coef(st, h, k, ns);
+        for (j = 1; j <= k; ++j) {
+            alphas -= VLBE_R(1.0) / (vlbe_real)j;
+            alpha0 -= st->alpha_[j];
+        }
+        cj = -alphas / h;
+        ck = vlbe_fabs(st->alpha_[k + 1] + alphas - alpha0);
+        if (ck < st->alpha_[k + 1]) ck = st->alpha_[k + 1];
+        if (cj != st->cj_) st->rate_ = VLBE_R(100.0);
+        st->cj_ = cj;
+        if (st->jcalc_ != -1) {
+            vlbe_real ratio = cj / st->cj_lu_;
+            st->jcalc_ = (ratio < VLBE_R(0.6) || ratio > VLBE_R(1.0) / VLBE_R(0.6)) ? -1 : 1;
+        }
+        rc = vlbe__bdf_corrector(st, t1, k);
+        knew = k;
+        est = VLBE_R(0.0);
+        terk = VLBE_R(0.0);
+        if (rc == VLBE_OK) {
+            /* error estimates at orders k, k-1, k-2 (book sec. 5.2.2) */
+            enorm = vlbe__bdf_norm(st, e);
+            est = st->sigma_[k + 1] * enorm;
+            terk = (vlbe_real)(k + 1) * est;
+            if (k > 1) {
+                vlbe_real *pk1 = vlbe__bdf_phi(st, k + 1);
+                for (j = 0; j < N2; ++j) d[j] = pk1[j] + e[j];
+                erkm1 = st->sigma_[k] * vlbe__bdf_norm(st, d);
+                terkm1 = (vlbe_real)k * erkm1;
+                if (k > 2) {
+                    vlbe_vec_axpy(N2, VLBE_R(1.0), vlbe__bdf_phi(st, k), d);
+                    vlbe_real terkm2 = (vlbe_real)(k - 1) * st->sigma_[k - 1] * vlbe__bdf_norm(st, d);
+                    lower = (terkm1 > terkm2 ? terkm1 : terkm2) <= terk;
+                } else {
+                    lower = terkm1 <= VLBE_R(0.5) * terk;
+                }
+                if (lower) {
+                    knew = k - 1;
+                    est = erkm1;
+                }
+            }
+            if (p->fixed_step || ck * enorm <= VLBE_R(1.0)) break; /* accepted */
+        } else {
+            if (rc == VLBE_ECALLBACK || rc == VLBE_EARG) {
+                vlbe__bdf_restore(st, h, k, ns);
+                return rc;
+            }
+            failed_newton = 1;
+        }
+        /* failed attempt: back to the last accepted step, smaller h */
+        vlbe__bdf_restore(st, h, k, ns);
+        ++st->stats.rejected;
+        st->phase_ = 1;
+        if (failed_newton) {
+            if (rc == VLBE_ESINGULAR) {
+                if (++nsf >= 3) return rc;
+            } else {
+                ++st->stats.newton_fails;
+                if (++ncf >= 10) return rc;
+            }
+            st->jcalc_ = -1;
+            if (p->fixed_step) return rc;
+            h *= VLBE_R(0.25);
+            if (h < hmin) return rc;
+        } else {
+            ++nef;
+            if (nef == 1) {
+                vlbe_real r;
+                k = knew;
+                r = VLBE_R(0.9) * vlbe_pow(VLBE_R(2.0) * est + VLBE_R(1e-4),
+                                           -VLBE_R(1.0) / (vlbe_real)(k + 1));
+                r = r < VLBE_R(0.25) ? VLBE_R(0.25) : (r > VLBE_R(0.9) ? VLBE_R(0.9) : r);
+                h *= r;
+            } else {
+                k = nef == 2 ? knew : 1;
+                h *= VLBE_R(0.25);
+            }
+            if (h < hmin) return VLBE_ESTEP;
+        }
+        to_stop = 0;
+    }
+
+    /* accepted: new state, then order and step for the next step */
+    {
+        int kdiff = k - st->kold_, kstep = k, j;
+        vlbe_real hnew = h, r;
+        vlbe_real *y = vlbe__bdf_vec(st, 0);
+        vlbe_vec_copy(N2, y, st->q);
+        st->t = t1;
+        ++st->stats.steps;
+        st->h_last = h;
+        st->order_last = k;
+        st->kold_ = k;
+        st->hold_ = h;
+        st->ns_ = ns;
+        if (p->fixed_step) {
+            if (k < kmax) ++k;
+        } else {
+            if (knew == k - 1 || k == kmax) st->phase_ = 1;
+            if (st->phase_ == 0) {
+                /* start-up phase: raise the order and double h every step */
+                ++k;
+                hnew = shortened ? (hnat > VLBE_R(2.0) * h ? hnat : VLBE_R(2.0) * h)
+                                 : VLBE_R(2.0) * h;
+            } else {
+                if (knew == k - 1) {
+                    k = knew;
+                    est = erkm1;
+                } else if (k < kmax && k + 1 < ns && kdiff != 1) {
+                    /* try order k+1: phi_{k+2} holds the previous e */
+                    vlbe_real *pk2 = vlbe__bdf_phi(st, k + 2), terkp1;
+                    for (j = 0; j < N2; ++j) d[j] = e[j] - pk2[j];
+                    terkp1 = vlbe__bdf_norm(st, d); /* (k+2) * erkp1 */
+                    if (k == 1) {
+                        if (terkp1 < VLBE_R(0.5) * terk) {
+                            ++k;
+                            est = terkp1 / (vlbe_real)(k + 1);
+                        }
+                    } else if (terkm1 <= (terk < terkp1 ? terk : terkp1)) {
+                        --k;
+                        est = erkm1;
+                    } else if (terkp1 < terk) {
+                        ++k;
+                        est = terkp1 / (vlbe_real)(k + 1);
+                    }
+                }
+                r = vlbe_pow(VLBE_R(2.0) * est + VLBE_R(1e-4), -VLBE_R(1.0) / (vlbe_real)(k + 1));
+                if (r >= VLBE_R(2.0)) {
+                    hnew = VLBE_R(2.0) * h;
+                    /* after a step cut short for t_stop, go back up to the
+                       step the estimate allows, at most the one planned */
+                    if (shortened && h * r > hnew) hnew = h * r < hnat ? h * r : hnat;
+                } else if (r <= VLBE_R(1.0)) {
+                    r = r < VLBE_R(0.5) ? VLBE_R(0.5) : (r > VLBE_R(0.9) ? VLBE_R(0.9) : r);
+                    hnew = h * r;
+                }
+            }
+        }
+        /* divided differences for the next step */
+        if (kstep < kmax) vlbe_vec_copy(N2, e, vlbe__bdf_phi(st, kstep + 2));
+        vlbe_vec_axpy(N2, VLBE_R(1.0), e, vlbe__bdf_phi(st, kstep + 1));
+        for (j = kstep; j >= 1; --j)
+            vlbe_vec_axpy(N2, VLBE_R(1.0), vlbe__bdf_phi(st, j + 1), vlbe__bdf_phi(st, j));
+        st->order = k;
+        st->h = hnew;
+    }
+    return VLBE_OK;
+}
+
+/* Steps until st->t == t_out exactly (the last step is shortened to land
+   there).  t_out == t returns at once; t_out < t is VLBE_EARG.  On failure
+   the state is the last accepted step (which may lie past the start). */
+VLBE_API vlbe_status vlbe_bdf_advance(vlbe_bdf *st, vlbe_real t_out)
+{
+    vlbe_status rc;
+    VLBE_ASSERT(st != NULL && st->sys != NULL);
+    if (!isfinite(t_out) || t_out < st->t) return VLBE_EARG;
+    while (st->t < t_out)
+        if ((rc = vlbe_bdf_step(st, t_out)) != VLBE_OK) return rc;
+    return VLBE_OK;
 }
 
 #endif /* VLBE_INTEGRATORS_H */
