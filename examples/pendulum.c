@@ -49,7 +49,7 @@ typedef struct pend_par {
     vlbe_real m, L, g; /* kg, m, m/s^2 */
 } pend_par;
 
-static pend_par pend_default(void)
+static inline pend_par pend_default(void)
 {
     pend_par p;
     p.m = (vlbe_real)PEND_M;
@@ -58,7 +58,7 @@ static pend_par pend_default(void)
     return p;
 }
 
-static int pend_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+static inline int pend_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
 {
     const pend_par *p = (const pend_par *)user;
     (void)t;
@@ -71,7 +71,7 @@ static int pend_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_rea
     return 0;
 }
 
-static int pend_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+static inline int pend_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
 {
     const pend_par *p = (const pend_par *)user;
     (void)t;
@@ -82,7 +82,7 @@ static int pend_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_re
     return 0;
 }
 
-static int pend_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+static inline int pend_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C)
 {
     const pend_par *p = (const pend_par *)user;
     (void)t;
@@ -90,7 +90,7 @@ static int pend_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C
     return 0;
 }
 
-static int pend_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
+static inline int pend_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
 {
     (void)user;
     (void)t;
@@ -101,7 +101,7 @@ static int pend_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_rea
 }
 
 /* gamma = -(C_q v)_q v = -|v|^2 */
-static int pend_constr_acc(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+static inline int pend_constr_acc(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                            vlbe_real *gamma)
 {
     (void)user;
@@ -112,7 +112,7 @@ static int pend_constr_acc(void *user, vlbe_real t, const vlbe_real *q, const vl
 }
 
 /* Q is constant: K = D = 0 */
-static int pend_force_jac(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+static inline int pend_force_jac(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                           vlbe_real *K, vlbe_real *D)
 {
     int i;
@@ -125,7 +125,7 @@ static int pend_force_jac(void *user, vlbe_real t, const vlbe_real *q, const vlb
 }
 
 /* d(C_q^T lambda)/dq = lambda I */
-static int pend_constr_hess(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
+static inline int pend_constr_hess(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
                             vlbe_real *H)
 {
     (void)user;
@@ -139,7 +139,7 @@ static int pend_constr_hess(void *user, vlbe_real t, const vlbe_real *q, const v
 /* Fills sys for the pendulum with parameters *p (p must outlive sys), with
    the analytic Jacobians; a caller may set the optional ones to NULL to use
    the integrator's finite differences instead. */
-static void pend_setup(vlbe_dae *sys, pend_par *p)
+static inline void pend_setup(vlbe_dae *sys, pend_par *p)
 {
     vlbe_dae z = {0};
     *sys = z;
@@ -157,7 +157,7 @@ static void pend_setup(vlbe_dae *sys, pend_par *p)
 }
 
 /* At rest, rod horizontal. */
-static void pend_initial(const pend_par *p, vlbe_real q0[2], vlbe_real v0[2])
+static inline void pend_initial(const pend_par *p, vlbe_real q0[2], vlbe_real v0[2])
 {
     q0[0] = p->L;
     q0[1] = VLBE_R(0.0);
@@ -165,7 +165,7 @@ static void pend_initial(const pend_par *p, vlbe_real q0[2], vlbe_real v0[2])
 }
 
 /* Exact multiplier at height y (energy from rest at y = 0). */
-static double pend_lambda_exact(const pend_par *p, double y)
+static inline double pend_lambda_exact(const pend_par *p, double y)
 {
     return -3.0 * (double)p->m * (double)p->g * y / ((double)p->L * (double)p->L);
 }
@@ -174,7 +174,7 @@ static double pend_lambda_exact(const pend_par *p, double y)
    T = 4 K(k) sqrt(L/g) with k = sin(pi/4), K(k) = pi / (2 AGM(1, k')),
    k' = cos(pi/4) = sqrt(1/2).  The AGM converges quadratically; it stops
    when a and b agree to the last bit (or after 64 rounds). */
-static double pend_period_exact(double L, double g)
+static inline double pend_period_exact(double L, double g)
 {
     const double pi = 3.14159265358979323846;
     double a = 1.0, b = sqrt(0.5);
@@ -196,7 +196,7 @@ typedef struct pend_period {
     double t_first, t_last;   /* first and last crossing times */
 } pend_period;
 
-static void pend_period_init(pend_period *pp)
+static inline void pend_period_init(pend_period *pp)
 {
     pp->have_prev = 0;
     pp->n_cross = 0;
@@ -205,14 +205,14 @@ static void pend_period_init(pend_period *pp)
 }
 
 /* Value of the cubic Hermite interpolant on [t0, t0 + tau] at s in [0, 1]. */
-static double pend_hermite(double s, double tau, double x0, double v0, double x1, double v1)
+static inline double pend_hermite(double s, double tau, double x0, double v0, double x1, double v1)
 {
     double s2 = s * s, s3 = s2 * s;
     return (2.0 * s3 - 3.0 * s2 + 1.0) * x0 + (s3 - 2.0 * s2 + s) * tau * v0 +
            (-2.0 * s3 + 3.0 * s2) * x1 + (s3 - s2) * tau * v1;
 }
 
-static void pend_period_add(pend_period *pp, double t, double x, double v)
+static inline void pend_period_add(pend_period *pp, double t, double x, double v)
 {
     if (pp->have_prev && pp->x0 > 0.0 && x <= 0.0) {
         /* bisection on the Hermite cubic: p(0) = x0 > 0 >= x1 = p(1) */
@@ -236,7 +236,7 @@ static void pend_period_add(pend_period *pp, double t, double x, double v)
 }
 
 /* Mean period over the crossings seen; NaN if fewer than two. */
-static double pend_period_value(const pend_period *pp)
+static inline double pend_period_value(const pend_period *pp)
 {
     if (pp->n_cross < 2) return NAN;
     return (pp->t_last - pp->t_first) / (double)(pp->n_cross - 1);
@@ -260,7 +260,7 @@ typedef struct pend_result {
    (rounded to a whole number of steps) and fills *res, also when a step
    fails (then with the data up to the failure).  The workspace is
    malloc'ed here (examples may allocate; the headers never do). */
-static vlbe_status pend_run_sys(const vlbe_dae *sys, const vlbe_hht_params *par, double h,
+static inline vlbe_status pend_run_sys(const vlbe_dae *sys, const vlbe_hht_params *par, double h,
                                 double t_end, pend_result *res)
 {
     const pend_par *p = (const pend_par *)sys->user;
@@ -320,7 +320,7 @@ static vlbe_status pend_run_sys(const vlbe_dae *sys, const vlbe_hht_params *par,
 }
 
 /* The same for the default problem (analytic Jacobians). */
-static vlbe_status pend_run(const vlbe_hht_params *par, double h, double t_end, pend_result *res)
+static inline vlbe_status pend_run(const vlbe_hht_params *par, double h, double t_end, pend_result *res)
 {
     pend_par p = pend_default();
     vlbe_dae sys;
