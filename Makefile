@@ -148,14 +148,22 @@ $(BUILD)/examples/%: $(EXAMPLE_DIR)/%.c $(EXAMPLE_DEPS)
 examples: $(EXAMPLE_BINS)
 	@echo "examples: $(words $(EXAMPLE_BINS)) built$(if $(EXAMPLE_BINS),: $(EXAMPLE_NAMES))"
 
-# Each example prints, besides its own report, comparison rows of the form
-#   ROW|scene|quantity|published|ours|unit
-# (published may be "-"; svgp_compare_row() in bench/svgplot.h writes one);
-# the demo collects them into one table.  Examples run from the repository
-# root and write their charts to out/<name>*.svg (out/ exists by then).
+# Each example prints, besides its own report, comparison rows
+#   ROW|<scene>|<quantity [unit]>|<published>|<computed>|<relative error>|<cpu seconds>
+# (svgp_compare_row() in bench/svgplot.h writes one; "-" for no value); the
+# demo collects them into one table, out/demo/table.txt.  Examples run from
+# the repository root and write their charts to out/<name>*.svg.
+DEMO_TABLE = awk -F'|' '{ n++; for (i = 2; i <= 7; i++) { c[n, i] = $$i; if (length($$i) > w[i]) w[i] = length($$i) } } \
+  END { split("scene|quantity|published|vlbe|rel.err|cpu [s]", h, "|"); \
+    for (i = 2; i <= 7; i++) if (length(h[i - 1]) > w[i]) w[i] = length(h[i - 1]); \
+    for (r = 0; r <= n; r++) { line = ""; \
+      for (i = 2; i <= 7; i++) { v = r ? c[r, i] : h[i - 1]; \
+        line = line (i > 2 ? "  " : "") sprintf("%" (i <= 3 ? "-" : "") w[i] "s", v) } \
+      print line } }'
+
 demo: examples
 	@mkdir -p $(OUT)/demo
-	@set -e; rm -f $(OUT)/demo/rows.txt; : > $(OUT)/demo/rows.txt; \
+	@set -e; : > $(OUT)/demo/rows.txt; \
 	if [ -z "$(strip $(DEMO_SCENES))" ]; then echo "demo: no examples yet ($(EXAMPLE_DIR)/*.c)"; fi; \
 	for s in $(DEMO_SCENES); do \
 	  echo "== $$s"; \
@@ -163,12 +171,9 @@ demo: examples
 	  grep -v '^ROW|' $(OUT)/demo/$$s.txt || true; \
 	  grep '^ROW|' $(OUT)/demo/$$s.txt >> $(OUT)/demo/rows.txt || true; \
 	done; \
-	echo; echo "== comparison with the papers (all scenes)"; \
-	awk -F'|' 'BEGIN { printf "%-22s %-34s %14s %14s %9s  %s\n", "scene", "quantity", "published", "vlbe", "rel.diff", "unit" } \
-	  { d = "-"; if ($$4 != "-" && $$4 + 0 != 0) d = sprintf("%.2e", ($$5 - $$4) / ($$4 < 0 ? -$$4 : $$4)); \
-	    printf "%-22s %-34s %14s %14s %9s  %s\n", $$2, $$3, $$4, $$5, d, $$6 }' $(OUT)/demo/rows.txt \
-	  | tee $(OUT)/demo/table.txt; \
-	echo "demo: outputs and charts in $(OUT)/"
+	echo; echo "== comparison with the published numbers (all scenes)"; \
+	$(DEMO_TABLE) $(OUT)/demo/rows.txt | tee $(OUT)/demo/table.txt; \
+	echo "demo: tables in $(OUT)/demo/, charts in $(OUT)/"
 
 # -- benchmarks ---------------------------------------------------------------
 $(BUILD)/bench/%: bench/%.c $(BENCH_DEPS)
@@ -189,10 +194,14 @@ bench-portable: $(BENCH_PORTABLE_BINS)
 	@set -e; for b in $(BENCH_NAMES); do echo "== $$b ($(BENCH_PORTABLE_FLAGS))"; $(BUILD)/bench/portable/$$b portable; done
 
 # -- lint ---------------------------------------------------------------------
+LINT_OPTS = --enable=warning,performance,portability --error-exitcode=1 --inline-suppr -q \
+  --std=c99 --suppress=missingIncludeSystem -I.
 LINT_FILES := $(HEADERS) $(wildcard bench/*.h bench/*.c tests/*.h tests/*.c examples/*.h examples/*.c)
+# twice, double and float: cppcheck otherwise mixes both configurations of
+# vlbe_real in its whole-program (ctu) checks and reports false overruns
 lint:
-	$(CPPCHECK) --enable=warning,performance,portability --error-exitcode=1 --inline-suppr -q \
-	  --std=c99 --suppress=missingIncludeSystem -I. $(LINT_FILES)
+	$(CPPCHECK) $(LINT_OPTS) -UVLBE_USE_FLOAT $(LINT_FILES)
+	$(CPPCHECK) $(LINT_OPTS) -DVLBE_USE_FLOAT $(LINT_FILES)
 
 clean:
 	rm -rf $(BUILD) $(OUT)

@@ -33,15 +33,15 @@ API
    int  svgp_write(c, FILE *f) / svgp_write_file(c, path) SVG out (0 ok, -1 I/O error)
    int  svgp_csv_write(path, header, ncols, nrows, cols)  numeric columns -> CSV
    FILE *svgp_csv_open(path, header); int svgp_csv_row(f, n, v)   row by row
-   void svgp_compare_row(f, scene, quantity, published, ours, unit)
+   void svgp_compare_row(f, scene, quantity, published, ours, relerr, cpu_s)
                                                           one row of `make demo`'s table
 
 COMPARISON ROWS
    Every example prints its comparison with a paper as lines
-       ROW|scene|quantity|published|ours|unit
-   (svgp_compare_row writes one; published = NaN prints "-", no reference).
-   `make demo` collects the ROW lines of all scenes into one table with the
-   relative difference.  Fields must not contain '|'.
+       ROW|<scene>|<quantity [unit]>|<published>|<computed>|<relative error>|<cpu seconds>
+   svgp_compare_row() writes one (NaN prints "-": no published value, no
+   error).  `make demo` collects the ROW lines of all scenes into one table.
+   Fields must not contain '|'.
 */
 #ifndef VLBE_SVGPLOT_H
 #define VLBE_SVGPLOT_H
@@ -534,13 +534,24 @@ static inline int svgp_csv_write(const char *path, const char *header, int ncols
 }
 
 /* -- comparison rows for `make demo` ------------------------------------- */
-static inline void svgp_compare_row(FILE *f, const char *scene, const char *quantity,
-                                    double published, double ours, const char *unit)
+static inline void svgp__num(FILE *f, const char *fmt, double v)
 {
-    if (isnan(published))
-        fprintf(f, "ROW|%s|%s|-|%.6g|%s\n", scene, quantity, ours, unit ? unit : "");
+    fputc('|', f);
+    if (isnan(v))
+        fputc('-', f);
     else
-        fprintf(f, "ROW|%s|%s|%.6g|%.6g|%s\n", scene, quantity, published, ours, unit ? unit : "");
+        fprintf(f, fmt, v);
+}
+
+static inline void svgp_compare_row(FILE *f, const char *scene, const char *quantity,
+                                    double published, double ours, double relerr, double cpu_s)
+{
+    fprintf(f, "ROW|%s|%s", scene, quantity);
+    svgp__num(f, "%.10g", published);
+    svgp__num(f, "%.10g", ours);
+    svgp__num(f, "%.2e", relerr);
+    svgp__num(f, "%.3g", cpu_s);
+    fputc('\n', f);
 }
 
 #endif /* VLBE_SVGPLOT_H */
