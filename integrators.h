@@ -16,6 +16,14 @@ USAGE
      if (vlbe_hht_init(&st, &sys, &par, t0, q0, v0, work, lw, iwork, liw)) fail;
      while (st.t < t_end) if (vlbe_hht_step(&st, h)) break;   (state in st.q, st.v)
 
+     BDF with error control (same problem, its own workspace sizes):
+     vlbe_bdf_params bp;  vlbe_bdf_params_default(&bp);  bp.rtol = bp.atol = 1e-8;
+     size_t lw = vlbe_bdf_work_len(n, m), liw = vlbe_bdf_iwork_len(n, m);
+     vlbe_bdf bs;
+     if (vlbe_bdf_init(&bs, &sys, &bp, t0, q0, v0, work, lw, iwork, liw)) fail;
+     for (k = 1; k <= nout; ++k)                       (bs.q, bs.v, bs.lambda at t_k)
+         if (vlbe_bdf_advance(&bs, t0 + k * dt)) break;
+
 CONFIG
    Nothing beyond vlbe.h.
 
@@ -147,7 +155,9 @@ typedef struct vlbe_hht {
 /* BDF (orders 1..5, variable step and order, DASSL-style) on the stabilized
    index-2 form of Gear, Gupta and Leimkuhler (GGL):
        q' = v - C_q^T mu,   M v' + C_q^T lambda = Q,   C_q v + C_t = 0,   C = 0,
-   unknowns y = (q, v, lambda, mu), 2n + 2m. */
+   unknowns y = (q, v, lambda, mu), 2n + 2m.  q0, v0 must satisfy C = 0 and
+   C_q v + C_t = 0 (they are not projected); lambda0 and q''0 come from
+   vlbe_dae_consistent_acc, mu0 = 0.  The first step is taken at order 1. */
 #define VLBE_BDF_MAXORD 5
 
 typedef struct vlbe_bdf_params {
