@@ -1,0 +1,1028 @@
+/* test_integrators.c -- cmocka suite of integrators.h, generalized-alpha
+   family (Newmark, HHT-alpha, generalized-alpha) -- part of vlbe
+                                                   SPDX-License-Identifier: MIT
+   cc -std=c99 -Wall -Wextra -Wpedantic ... -O2 tests/test_integrators.c -lcmocka -lm
+
+   The problems come from the examples (pendulum, Andrews' mechanism), which
+   are included without their main(); the linear oscillator is defined here.
+   Every tolerance says why it has its size.  Checks that need more than
+   float precision sit under #ifndef VLBE_USE_FLOAT with the reason.
+
+   Tests
+     params_presets            preset formulas; HHT alpha, rho_inf out of range -> EARG
+     pendulum_period_order     period error ratio ~4 per halving (HHT, gen-alpha)
+     pendulum_multiplier       lambda vs -3 m g y / L^2 along the run, O(h^2)
+     pendulum_constraint       |C| at Newton-tolerance level (index 3)
+     oscillator_spectral_radius  measured decay per step vs eigenvalues of the
+                               3x3 amplification matrix, omega h = 0.1 .. 1e4
+     newmark_gamma_stability   gamma < 1/2 grows; gamma >= 1/2, beta >= gamma/2 does not
+     trapezoidal_index3_unstable  Newmark's multiplier error grows, HHT damps it
+     fail_nonfinite            NaN force -> ENONFINITE, state bitwise unchanged
+     fail_callback             callback error -> ECALLBACK, state unchanged
+     fail_singular             the same constraint twice -> ESINGULAR at init
+     fail_noconv_and_recovery  huge step -> ENOCONV, unchanged; with halvings: ok
+     fail_args                 workspace too small -> EWORK; h <= 0, NaN -> EARG
+     counters                  identities of the counters; modified vs full Newton
+     andrews_consistent_start  vlbe_dae_consistent_acc vs the Test Set values
+     andrews_jacobians         analytic Jacobians of the example vs differences
+     andrews_reference         HHT and gen-alpha reach the Test Set at 1e-6 */
+#include "test_util.h"
+#include "../integrators.h"
+
+#define VLBE_EXAMPLE_NO_MAIN
+#include "../examples/pendulum.c"
+#include "../examples/andrews.c"
+
+#include <string.h>
+
+#define EPS ((double)VLBE_EPS)
+
+/* ------------------------------------------------------------------------ */
+/* Integrator set-up with a fixed-size workspace (the largest problem here is
+   Andrews', n = 7, m = 6). */
+enum { WLEN = 2048, IWLEN = 64 };
+typedef struct run {
+    vlbe_hht st;
+    vlbe_real w[WLEN];
+    int iw[IWLEN];
+} run;
+
+static vlbe_status run_init(run *r, const vlbe_dae *sys, const vlbe_hht_params *par,
+                            const vlbe_real *q0, const vlbe_real *v0)
+{
+    assert_true(vlbe_hht_work_len(sys->n, sys->m) <= WLEN);
+    assert_true(vlbe_hht_iwork_len(sys->n, sys->m) <= IWLEN);
+    return vlbe_hht_init(&r->st, sys, par, VLBE_R(0.0), q0, v0, r->w,
+                         vlbe_hht_work_len(sys->n, sys->m), r->iw,
+                         vlbe_hht_iwork_len(sys->n, sys->m));
+}
+
+/* The state of one step: t and q v qdd a lambda (contiguous in the workspace). */
+typedef struct snap {
+    vlbe_real t;
+    vlbe_real x[64];
+    int len;
+} snap;
+
+static void snap_take(const vlbe_hht *st, snap *s)
+{
+    s->t = st->t;
+    s->len = 4 * st->n + st->m;
+    assert_true(s->len <= 64);
+    memcpy(s->x, st->q, (size_t)s->len * sizeof(vlbe_real));
+}
+
+/* bitwise comparison: a failed call must leave the state exactly as it was */
+static void snap_assert_same(const vlbe_hht *st, const snap *s)
+{
+    assert_true(memcmp(&s->t, &st->t, sizeof s->t) == 0);
+    assert_true(memcmp(s->x, st->q, (size_t)s->len * sizeof(vlbe_real)) == 0);
+    assert_true(memcmp(s->x + 4 * st->n, st->lambda, (size_t)st->m * sizeof(vlbe_real)) == 0);
+}
+
+/* ------------------------------------------------------------------------ */
+static void test_params_presets(void **state)
+{
+    vlbe_hht_params p;
+    static const double alphas[] = {-1.0 / 3.0, -0.2, -0.05, 0.0};
+    static const double rhos[] = {0.0, 0.5, 0.8, 1.0};
+    int i;
+    (void)state;
+    vlbe_hht_params_newmark(&p, VLBE_R(0.25), VLBE_R(0.5)); /* p defined whatever follows */
+    /* out of range and NaN */
+    assert_int_equal(vlbe_hht_params_hht(&p, VLBE_R(0.01)), VLBE_EARG);
+    assert_int_equal(vlbe_hht_params_hht(&p, VLBE_R(-0.34)), VLBE_EARG);
+    assert_int_equal(vlbe_hht_params_hht(&p, (vlbe_real)NAN), VLBE_EARG);
+    assert_int_equal(vlbe_hht_params_genalpha(&p, VLBE_R(-0.01)), VLBE_EARG);
+    assert_int_equal(vlbe_hht_params_genalpha(&p, VLBE_R(1.01)), VLBE_EARG);
+    assert_int_equal(vlbe_hht_params_genalpha(&p, (vlbe_real)NAN), VLBE_EARG);
+    /* The formulas are a few flops each: agreement to 4 eps (relative, plus
+       4 eps absolute for the zero alpha_m/alpha_f) is all rounding allows. */
+    for (i = 0; i < 4; ++i) {
+        double a = (double)(vlbe_real)alphas[i];
+        assert_int_equal(vlbe_hht_params_hht(&p, (vlbe_real)a), VLBE_OK);
+        ASSERT_CLOSE(p.alpha_m, 0.0, 0.0, 0.0);
+        ASSERT_CLOSE(p.alpha_f, -a, 4 * EPS, 0.0);
+        ASSERT_CLOSE(p.gamma, 0.5 - a, 4 * EPS, 0.0);
+        ASSERT_CLOSE(p.beta, 0.25 * (1.0 - a) * (1.0 - a), 4 * EPS, 0.0);
+        /* gamma = 1/2 + alpha_f - alpha_m holds for HHT as well */
+        ASSERT_CLOSE(p.gamma, 0.5 + (double)p.alpha_f - (double)p.alpha_m, 4 * EPS, 0.0);
+    }
+    for (i = 0; i < 4; ++i) {
+        double r = rhos[i], am = (2.0 * r - 1.0) / (r + 1.0), af = r / (r + 1.0);
+        double g = 0.5 + af - am;
+        assert_int_equal(vlbe_hht_params_genalpha(&p, (vlbe_real)r), VLBE_OK);
+        ASSERT_CLOSE(p.alpha_m, am, 4 * EPS, 4 * EPS);
+        ASSERT_CLOSE(p.alpha_f, af, 4 * EPS, 4 * EPS);
+        ASSERT_CLOSE(p.gamma, g, 4 * EPS, 0.0);
+        ASSERT_CLOSE(p.beta, 0.25 * (g + 0.5) * (g + 0.5), 8 * EPS, 0.0);
+        ASSERT_CLOSE(p.gamma, 0.5 + (double)p.alpha_f - (double)p.alpha_m, 4 * EPS, 0.0);
+    }
+    /* rho_inf = 1 is the trapezoidal rule: alpha_m = alpha_f = 1/2 cancel */
+    vlbe_hht_params_genalpha(&p, VLBE_R(1.0));
+    ASSERT_CLOSE(p.gamma, 0.5, 0.0, 0.0);
+    ASSERT_CLOSE(p.beta, 0.25, 0.0, 0.0);
+    vlbe_hht_params_newmark(&p, VLBE_R(0.3), VLBE_R(0.6));
+    ASSERT_CLOSE(p.alpha_m, 0.0, 0.0, 0.0);
+    ASSERT_CLOSE(p.alpha_f, 0.0, 0.0, 0.0);
+    ASSERT_CLOSE(p.beta, (double)VLBE_R(0.3), 0.0, 0.0);
+    ASSERT_CLOSE(p.gamma, (double)VLBE_R(0.6), 0.0, 0.0);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Pendulum runs with tight Newton tolerances, so that the integration error,
+   not the Newton error, is measured. */
+static void pend_params(int method, vlbe_hht_params *par)
+{
+    if (method == 0) vlbe_hht_params_hht(par, VLBE_R(-0.05));
+    else if (method == 1) vlbe_hht_params_genalpha(par, VLBE_R(0.8));
+    else if (method == 2) vlbe_hht_params_newmark(par, VLBE_R(0.25), VLBE_R(0.5));
+    else vlbe_hht_params_hht(par, VLBE_R(-0.1));
+#ifndef VLBE_USE_FLOAT
+    par->rtol = par->atol = VLBE_R(1e-12);
+#endif
+}
+
+/* In float the period cannot be resolved: the float rounding of q over the
+   1e3..1e4 steps gives period errors near 1e-4, above the O(h^2) error. */
+static void test_pendulum_period_order(void **state)
+{
+#ifndef VLBE_USE_FLOAT
+    const double T = pend_period_exact(PEND_L, PEND_G);
+    static const double hs[3] = {2e-3, 1e-3, 5e-4};
+    int method, k;
+    (void)state;
+    /* the AGM value against the published one: 13 digits are published */
+    ASSERT_CLOSE(T, PEND_T_PUBLISHED, 0.0, 1e-12);
+    for (method = 0; method < 2; ++method) {
+        double err[3];
+        for (k = 0; k < 3; ++k) {
+            vlbe_hht_params par;
+            pend_result r;
+            pend_params(method, &par);
+            /* 2 periods: crossings at T/4, 5T/4, 9T/4 */
+            assert_int_equal(pend_run(&par, hs[k], 6.0, &r), VLBE_OK);
+            err[k] = fabs(r.period - T);
+            /* the error constant is about 3 (HHT) and 2.9 (gen-alpha) s^-2 times T
+               (example's table); 10 T h^2 bounds it with room to spare */
+            assert_true(err[k] <= 10.0 * T * hs[k] * hs[k]);
+        }
+        /* second order: halving h divides the error by 4 (1 + O(h^2)); the
+           Hermite crossing error O(h^4) and the Newton error 1e-12 are far
+           below 1e-8; the measured ratios are 3.97..4.00, so +-10% */
+        ASSERT_CLOSE(err[0] / err[1], 4.0, 0.1, 0.0);
+        ASSERT_CLOSE(err[1] / err[2], 4.0, 0.1, 0.0);
+    }
+#else
+    (void)state;
+#endif
+}
+
+/* lambda along the run.  The index-3 multiplier error is O(h^2) (Arnold &
+   Bruls 2007, with a_0 = q''_0); its Newton part is tol / (beta h^2), hence
+   the tight tolerance and the double-only check (in float eps / (beta h^2)
+   is about 0.5 N/m at h = 1e-3). */
+static void test_pendulum_multiplier(void **state)
+{
+#ifndef VLBE_USE_FLOAT
+    int method;
+    (void)state;
+    for (method = 0; method < 2; ++method) {
+        vlbe_hht_params par;
+        pend_result r1, r2;
+        pend_params(method, &par);
+        assert_int_equal(pend_run(&par, 2e-3, 3.0, &r1), VLBE_OK);
+        assert_int_equal(pend_run(&par, 1e-3, 3.0, &r2), VLBE_OK);
+        /* the largest error is the start transient: 98 h^2 N/m/s^2 measured
+           (example); 200 h^2 is twice that, while lambda itself reaches
+           3 m g / L = 29.4 N/m */
+        assert_true(r2.max_lam_err <= 200.0 * 1e-3 * 1e-3);
+        /* and it is second order: ratio 4 within 15% (the transient's
+           next term is O(h^3), relative O(h) ~ 0.1 at these h) */
+        ASSERT_CLOSE(r1.max_lam_err / r2.max_lam_err, 4.0, 0.15, 0.0);
+    }
+#else
+    (void)state;
+#endif
+}
+
+/* Index 3: the positions satisfy C = 0 up to the Newton tolerance, whatever h.
+   The last Newton increment dq satisfies |dq_i| <= sqrt(n) (atol + rtol |q|)
+   (RMS norm <= 1, n = 2) and the remaining C is at most C_q dq ~ L |dq|;
+   add 16 eps L^2 for the rounding of C itself (the float build, where the
+   default rtol is below eps, relies on it). */
+static void test_pendulum_constraint(void **state)
+{
+    int k;
+    (void)state;
+    for (k = 0; k < 3; ++k) {
+        vlbe_hht_params par;
+        pend_result r;
+        double bound;
+        if (k == 0) vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+        else if (k == 1) vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
+        else vlbe_hht_params_genalpha(&par, VLBE_R(0.0));
+        bound = sqrt(2.0) * ((double)par.atol + (double)par.rtol * PEND_L) * PEND_L +
+                16.0 * EPS * PEND_L * PEND_L;
+        assert_int_equal(pend_run(&par, 4e-3, 3.0, &r), VLBE_OK);
+        assert_true(r.max_c <= bound);
+        /* the velocity constraint is not enforced in index 3: C_q v = O(h^2),
+           measured at h = 4e-3: 1.1e-4 (7 h^2) for HHT and rho_inf = 0.8,
+           4.3e-4 (27 h^2) for rho_inf = 0; 40 h^2 bounds them */
+        assert_true(r.max_cv <= 40.0 * 4e-3 * 4e-3 + 1e3 * EPS);
+        assert_true(r.max_cv > bound); /* and it is not at Newton level */
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Linear undamped oscillator q'' = -omega^2 q (n = 1, m = 0, M = 1). */
+typedef struct osc {
+    vlbe_real w2;
+} osc;
+
+static int osc_mass(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+{
+    (void)u;
+    (void)t;
+    (void)q;
+    (void)v;
+    M[0] = VLBE_R(1.0);
+    return 0;
+}
+static int osc_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+{
+    (void)t;
+    (void)v;
+    Q[0] = -((const osc *)u)->w2 * q[0];
+    return 0;
+}
+/* exact Jacobian, so that one Newton iteration solves the linear step */
+static int osc_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                         vlbe_real *K, vlbe_real *D)
+{
+    (void)t;
+    (void)q;
+    (void)v;
+    K[0] = -((const osc *)u)->w2;
+    D[0] = VLBE_R(0.0);
+    return 0;
+}
+static void osc_setup(vlbe_dae *sys, osc *o)
+{
+    vlbe_dae z = {0};
+    *sys = z;
+    sys->n = 1;
+    sys->m = 0;
+    sys->flags = VLBE_DAE_MASS_CONST;
+    sys->user = o;
+    sys->mass = osc_mass;
+    sys->force = osc_force;
+    sys->force_jac = osc_force_jac;
+}
+
+/* Amplification matrix of one step for x = (q, h v, h^2 a), Omega = omega h:
+   the scheme (integrators.h, Arnold-Bruls form)
+     q1 = q0 + h v0 + h^2 ((1/2 - beta) a0 + beta a1)
+     v1 = v0 + h ((1 - gamma) a0 + gamma a1)
+     (1 - am) a1 + am a0 = (1 - af) q''1 + af q''0,   q'' = -omega^2 q
+   is L x1 = R x0; A = L^-1 R (L inverted by its adjugate). */
+static void amp_matrix(const vlbe_hht_params *p, double W, double A[9])
+{
+    double am = (double)p->alpha_m, af = (double)p->alpha_f, b = (double)p->beta,
+           g = (double)p->gamma, W2 = W * W;
+    double L[9], R[9], Li[9], det;
+    int i, j, k;
+    L[0] = 1.0, L[1] = 0.0, L[2] = -b;
+    L[3] = 0.0, L[4] = 1.0, L[5] = -g;
+    L[6] = (1.0 - af) * W2, L[7] = 0.0, L[8] = 1.0 - am;
+    R[0] = 1.0, R[1] = 1.0, R[2] = 0.5 - b;
+    R[3] = 0.0, R[4] = 1.0, R[5] = 1.0 - g;
+    R[6] = -af * W2, R[7] = 0.0, R[8] = -am;
+    Li[0] = L[4] * L[8] - L[5] * L[7];
+    Li[1] = L[2] * L[7] - L[1] * L[8];
+    Li[2] = L[1] * L[5] - L[2] * L[4];
+    Li[3] = L[5] * L[6] - L[3] * L[8];
+    Li[4] = L[0] * L[8] - L[2] * L[6];
+    Li[5] = L[2] * L[3] - L[0] * L[5];
+    Li[6] = L[3] * L[7] - L[4] * L[6];
+    Li[7] = L[1] * L[6] - L[0] * L[7];
+    Li[8] = L[0] * L[4] - L[1] * L[3];
+    det = L[0] * Li[0] + L[1] * Li[3] + L[2] * Li[6];
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) {
+            double s = 0.0;
+            for (k = 0; k < 3; ++k) s += Li[i * 3 + k] * R[k * 3 + j];
+            A[i * 3 + j] = s / det;
+        }
+}
+
+/* Moduli of the eigenvalues of a 3x3 matrix from its characteristic cubic
+   mu^3 - c2 mu^2 + c1 mu - c0 (c2 trace, c1 sum of principal 2x2 minors,
+   c0 determinant): a real root by bisection on [-B, B] (Cauchy bound), the
+   other two from the deflated quadratic.  mod[0] >= mod[1] >= mod[2]. */
+static void eig3_moduli(const double A[9], double mod[3], double *sin_arg)
+{
+    double c2 = A[0] + A[4] + A[8];
+    double c1 = A[0] * A[4] - A[1] * A[3] + A[0] * A[8] - A[2] * A[6] + A[4] * A[8] - A[5] * A[7];
+    double c0 = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
+                A[2] * (A[3] * A[7] - A[4] * A[6]);
+    double B = 1.0 + fmax(fabs(c2), fmax(fabs(c1), fabs(c0))), lo = -B, hi = B, r, b, c, d, t;
+    int k;
+    for (k = 0; k < 2000; ++k) {
+        double mid = 0.5 * (lo + hi), pm;
+        if (mid <= lo || mid >= hi) break;
+        pm = ((mid - c2) * mid + c1) * mid - c0;
+        if (pm < 0.0) lo = mid;
+        else hi = mid;
+    }
+    r = 0.5 * (lo + hi);
+    b = r - c2;     /* p = (mu - r)(mu^2 + b mu + c) */
+    c = c1 + r * b;
+    d = b * b - 4.0 * c;
+    mod[0] = fabs(r);
+    *sin_arg = 1.0; /* |sin arg mu| of the complex pair, 1 if all are real */
+    if (d < 0.0) {
+        mod[1] = mod[2] = sqrt(c);
+        *sin_arg = 0.5 * sqrt(-d) / sqrt(c);
+    } else {
+        double s = sqrt(d), q = -0.5 * (b + (b >= 0.0 ? s : -s));
+        mod[1] = fabs(q);
+        mod[2] = q != 0.0 ? fabs(c / q) : 0.0;
+    }
+    /* sort descending */
+    if (mod[1] > mod[0]) t = mod[0], mod[0] = mod[1], mod[1] = t;
+    if (mod[2] > mod[1]) t = mod[1], mod[1] = mod[2], mod[2] = t;
+    if (mod[1] > mod[0]) t = mod[0], mod[0] = mod[1], mod[1] = t;
+}
+
+/* Spectral radius of the amplification matrix; *second: modulus of the
+   spurious (third) eigenvalue, *sin_arg: |sin| of the argument of the pair. */
+static double rho_theory(const vlbe_hht_params *p, double W, double *second, double *sin_arg)
+{
+    double A[9], mod[3], sa;
+    amp_matrix(p, W, A);
+    eig3_moduli(A, mod, &sa);
+    if (second) *second = mod[1] == mod[0] ? mod[2] : mod[1];
+    if (sin_arg) *sin_arg = sa;
+    return mod[0];
+}
+
+/* Measured amplitude ratio per step of the integrator on the oscillator.
+   After the third (spurious) mode has decayed, q_n = Re(c mu^n) of the
+   dominant pair mu, |mu| = rho, and the Casoratian D_n = q_n^2 - q_{n+1} q_{n-1}
+   is D_0 rho^(2n) exactly (no beating), so rho = (D_N / D_M)^(1/(2(N-M))).
+   (For a real dominant pair the same identity holds.)  The state is
+   rescaled by powers of two, exactly and linearly, to stay in range.
+   skip: steps before M; span: N - M. */
+static double rho_measured(const vlbe_hht_params *par, double W, long skip, long span)
+{
+    osc o;
+    vlbe_dae sys;
+    run *r = (run *)malloc(sizeof *r);
+    vlbe_real q0 = VLBE_R(1.0), v0 = VLBE_R(0.0), h = VLBE_R(1.0);
+    double qm1 = 0.0, q = 0.0, D = 0.0, lD = 0.0, lDM = 0.0, lF = 0.0;
+    long n;
+    assert_non_null(r);
+    o.w2 = (vlbe_real)(W * W); /* h = 1: omega = Omega */
+    osc_setup(&sys, &o);
+    assert_int_equal(run_init(r, &sys, par, &q0, &v0), VLBE_OK);
+    for (n = 0; n <= skip + span + 1; ++n) {
+        double qp1, mag, f = 0.0;
+        if (n > 0) assert_int_equal(vlbe_hht_step(&r->st, h), VLBE_OK);
+        qp1 = (double)r->st.q[0];
+        if (n >= 2) {
+            /* D_(n-1) from q_(n-2), q_(n-1), q_n, all stored with the factor
+               exp(lF): log |D_true| = log |D| - 2 lF */
+            D = q * q - qp1 * qm1;
+            lD = log(fabs(D)) - 2.0 * lF;
+            if (n == skip + 1) lDM = lD;
+        }
+        qm1 = q;
+        q = qp1;
+        /* keep |x| near 1: multiply q v q'' a (contiguous) by 2^30 or 2^-30,
+           exactly; the step is linear in the state */
+        mag = fabs((double)r->st.q[0]) + fabs((double)r->st.v[0]) + fabs((double)r->st.a[0]);
+        if (mag < 0x1p-30) f = 0x1p30;
+        else if (mag > 0x1p30) f = 0x1p-30;
+        if (f != 0.0) {
+            int i;
+            for (i = 0; i < 4; ++i) r->st.q[i] *= (vlbe_real)f;
+            qm1 *= f;
+            q *= f;
+            lF += log(f);
+        }
+    }
+    free(r);
+    assert_true(D != 0.0);
+    return exp((lD - lDM) / (2.0 * (double)span));
+}
+
+static void osc_params(int k, vlbe_hht_params *p)
+{
+    if (k == 0) vlbe_hht_params_hht(p, VLBE_R(-0.05));
+    else if (k == 1) vlbe_hht_params_hht(p, VLBE_R(-0.3));
+    else if (k == 2) vlbe_hht_params_genalpha(p, VLBE_R(0.8));
+    else if (k == 3) vlbe_hht_params_genalpha(p, VLBE_R(0.5));
+    else vlbe_hht_params_newmark(p, VLBE_R(0.25), VLBE_R(0.5));
+}
+
+static void test_oscillator_spectral_radius(void **state)
+{
+    static const double Ws[] = {0.1, 1.0, 10.0, 1e4};
+#ifdef VLBE_USE_FLOAT
+    /* at omega h = 1e4 the pair is -rho exp(+-i phi), phi ~ 4e-4: the
+       Casoratian loses eps / phi^2 ~ 1 in float */
+    const int nW = 3;
+#else
+    const int nW = 4;
+#endif
+    int k, j;
+    (void)state;
+    for (k = 0; k < 5; ++k) {
+        vlbe_hht_params p;
+        double rinf;
+        osc_params(k, &p);
+        /* rho_inf of each scheme (limit omega h -> inf) */
+        if (k < 2) rinf = (1.0 - (double)p.alpha_f) / (1.0 + (double)p.alpha_f); /* (1+a)/(1-a) */
+        else if (k == 2) rinf = 0.8;
+        else if (k == 3) rinf = 0.5;
+        else rinf = 1.0;
+        for (j = 0; j < nW; ++j) {
+            double second, sa, rt = rho_theory(&p, Ws[j], &second, &sa), rm, tol;
+            long skip = 2, span = 2000;
+            /* skip the spurious mode down to eps^2 of the pair (it is
+               exactly 0 for Newmark) */
+            if (second > 0.0 && second < rt)
+                skip += (long)ceil(2.0 * log(EPS) / log(second / rt));
+            assert_true(skip < 40000);
+            rm = rho_measured(&p, Ws[j], skip, span);
+            /* D = q_n^2 - q_(n+1) q_(n-1) is a difference of terms |sin arg|^-2
+               larger than itself: rounding eps / sin^2 relative in D, an
+               error 1/(2 span) of that in rho; plus eps-level rounding of the
+               steps themselves; a factor 64 on both.  The theoretical root
+               (double) of a cubic whose roots lie d = rho - |mu_3| apart is
+               itself good to about DBL_EPSILON / d^2 (5e-12 for
+               generalized-alpha at omega h = 1e4, d = 5e-3): 64 times that. */
+            tol = 64.0 * EPS * (1.0 + 1.0 / (sa * sa)) / (2.0 * (double)span) + 64.0 * EPS +
+                  64.0 * DBL_EPSILON / ((rt - second) * (rt - second));
+            ASSERT_CLOSE(rm, rt, tol, 0.0);
+            if (k == 4) {
+                /* trapezoidal: no numerical damping at any omega h; c0 = det,
+                   the cubic's rounding is eps-level: 64 eps */
+                ASSERT_CLOSE(rt, 1.0, 64.0 * EPS, 0.0);
+            } else {
+                assert_true(rt < 1.0); /* dissipative for every omega h > 0 */
+            }
+        }
+        /* the theoretical radius at omega h = 1e4 is rho_inf: for HHT (and
+           Newmark) the correction is O((omega h)^-2), 150 (omega h)^-2 =
+           1.5e-6 for alpha = -0.3: 1e-5; for generalized-alpha the three
+           roots meet at -rho_inf (a triple root) and split like
+           (omega h)^(-2/3): 1.7e-3 at 1e4: 5e-3 */
+#ifndef VLBE_USE_FLOAT
+        /* (not in float: there the rounded beta, gamma miss the relation
+           beta = (1 - alpha)^2 / 4, gamma = 1/2 - alpha by ~eps, an error
+           that the limit magnifies by (omega h)^2) */
+        ASSERT_CLOSE(rho_theory(&p, 1e4, NULL, NULL), rinf, (k == 2 || k == 3) ? 5e-3 : 1e-5,
+                     0.0);
+#endif
+        if (k == 2 || k == 3)
+            assert_true(fabs(rho_theory(&p, 1e8, NULL, NULL) - rinf) <
+                        fabs(rho_theory(&p, 1e4, NULL, NULL) - rinf));
+    }
+}
+
+/* Newmark's stability: gamma < 1/2 amplifies (rho > 1), gamma >= 1/2 with
+   beta >= gamma/2 ... (gamma + 1/2)^2 / 4 does not. */
+static void test_newmark_gamma_stability(void **state)
+{
+    static const double Ws[] = {0.5, 1.0, 3.0, 100.0};
+    int j;
+    (void)state;
+    for (j = 0; j < 4; ++j) {
+        vlbe_hht_params p;
+        double rt, rm, second, sa, tol;
+        /* unstable: gamma = 0.4 */
+        vlbe_hht_params_newmark(&p, VLBE_R(0.25), VLBE_R(0.4));
+        rt = rho_theory(&p, Ws[j], &second, &sa);
+        assert_true(rt > 1.0 + 1e-3); /* grows by more than 1e-3 per step */
+        rm = rho_measured(&p, Ws[j], 4, 500);
+        /* same tolerance argument as in the spectral radius test */
+        tol = 64.0 * EPS * (1.0 + 1.0 / (sa * sa)) / 1000.0 + 64.0 * EPS;
+        ASSERT_CLOSE(rm, rt, tol, 0.0);
+        assert_true(rm > 1.0 + 1e-3);
+        /* stable: gamma = 1/2, beta = 1/4 (rho = 1) and gamma = 0.6 with
+           beta = gamma/2 = 0.3 and beta = (gamma + 1/2)^2/4 = 0.3025 */
+        vlbe_hht_params_newmark(&p, VLBE_R(0.25), VLBE_R(0.5));
+        assert_true(rho_measured(&p, Ws[j], 4, 500) <= 1.0 + 64.0 * EPS);
+        vlbe_hht_params_newmark(&p, VLBE_R(0.3), VLBE_R(0.6));
+        assert_true(rho_theory(&p, Ws[j], NULL, NULL) <= 1.0 + 64.0 * EPS);
+        assert_true(rho_measured(&p, Ws[j], 40, 500) <= 1.0 + 64.0 * EPS);
+        vlbe_hht_params_newmark(&p, VLBE_R(0.3025), VLBE_R(0.6));
+        assert_true(rho_theory(&p, Ws[j], NULL, NULL) < 1.0);
+        assert_true(rho_measured(&p, Ws[j], 40, 500) < 1.0);
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Trapezoidal Newmark on the index-3 pendulum: the multiplier mode has the
+   eigenvalue -1 (no damping), the nonlinear coupling makes its error grow
+   (Cardona & Geradin 1989) until Newton fails; HHT alpha = -0.1 damps it. */
+static void test_trapezoidal_index3_unstable(void **state)
+{
+    vlbe_hht_params par;
+    pend_result rn, rh, rf;
+    (void)state;
+    pend_params(2, &par);
+    pend_run(&par, 1e-3, 5.0, &rn);
+    pend_params(3, &par);
+    assert_int_equal(pend_run(&par, 1e-3, 5.0, &rh), VLBE_OK);
+    /* HHT: the start transient is damped: the late error is below the early one */
+    assert_true(rh.lam_err_late < rh.lam_err_early);
+#ifndef VLBE_USE_FLOAT
+    /* Newmark: the error in the last second is far above that of the first
+       (measured: 1.7e-4 in the first second, then growing to ~1 N/m by 5 s) */
+    assert_int_equal(rn.status, VLBE_OK);
+    assert_true(rn.lam_err_late > 100.0 * rn.lam_err_early);
+    /* and the positions of both are fine (period within 1e-5 relative: the
+       O(h^2) error at h = 1e-3 is 3e-6; not in float, see the period test) */
+    ASSERT_CLOSE(rn.period, PEND_T_PUBLISHED, 1e-5, 0.0);
+    ASSERT_CLOSE(rh.period, PEND_T_PUBLISHED, 1e-5, 0.0);
+#else
+    /* float: the mode starts from rounding errors 1e4 times larger and
+       Newmark's Newton may fail before 5 s; either way it is the growth */
+    assert_true(rn.status == VLBE_ENOCONV || rn.lam_err_late > 100.0 * rn.lam_err_early);
+#endif
+    /* left to itself, Newmark's run ends in a Newton failure, reported */
+    pend_params(2, &par);
+    assert_int_equal(pend_run(&par, 1e-3, 15.0, &rf), VLBE_ENOCONV);
+    assert_true(rf.t_reached < 15.0);
+    assert_true(rf.t_reached >= rn.t_reached);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Faulty variants of the pendulum. */
+typedef struct faulty {
+    pend_par p;
+    int mode;       /* 0 none, 1 NaN force, 2 force returns error, 3 mass returns error */
+    long after;     /* number of good force calls before the fault */
+    long calls;
+} faulty;
+
+static int faulty_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+{
+    faulty *f = (faulty *)u;
+    int rc = pend_force(&f->p, t, q, v, Q);
+    if (f->mode != 0 && f->calls++ >= f->after) {
+        if (f->mode == 1) Q[1] = (vlbe_real)NAN;
+        if (f->mode == 2) return 7;
+    }
+    return rc;
+}
+static int faulty_mass(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+{
+    faulty *f = (faulty *)u;
+    if (f->mode == 3 && f->calls++ >= f->after) return -1;
+    return pend_mass(&f->p, t, q, v, M);
+}
+static int faulty_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+{
+    return pend_constr(&((faulty *)u)->p, t, q, C);
+}
+
+static void faulty_setup(vlbe_dae *sys, faulty *f, int mode)
+{
+    f->p = pend_default();
+    f->mode = 0;
+    f->after = 0;
+    f->calls = 0;
+    pend_setup(sys, &f->p);
+    sys->user = f;
+    sys->force = faulty_force;
+    sys->mass = faulty_mass;
+    sys->constr = faulty_constr;
+    (void)mode;
+}
+
+/* Runs 10 good steps, then arms the fault and checks the status of the
+   next step and that the state is bitwise unchanged. */
+static void check_fault(int mode, vlbe_status expect)
+{
+    faulty f;
+    vlbe_dae sys;
+    vlbe_hht_params par;
+    vlbe_real q0[2], v0[2];
+    run *r = (run *)malloc(sizeof *r);
+    snap s;
+    int k, halv;
+    assert_non_null(r);
+    for (halv = 0; halv < 2; ++halv) {
+        faulty_setup(&sys, &f, mode);
+        vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+        par.max_halvings = 3 * halv; /* halving must not hide the fault */
+        pend_initial(&f.p, q0, v0);
+        assert_int_equal(run_init(r, &sys, &par, q0, v0), VLBE_OK);
+        for (k = 0; k < 10; ++k) assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(1e-2)), VLBE_OK);
+        snap_take(&r->st, &s);
+        f.mode = mode;
+        f.after = 1; /* the fault hits inside the Newton iteration */
+        f.calls = 0;
+        assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(1e-2)), expect);
+        snap_assert_same(&r->st, &s);
+        /* repaired, the integrator goes on from there */
+        f.mode = 0;
+        assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(1e-2)), VLBE_OK);
+    }
+    free(r);
+}
+
+static void test_fail_nonfinite(void **state)
+{
+    (void)state;
+    check_fault(1, VLBE_ENONFINITE);
+}
+
+static void test_fail_callback(void **state)
+{
+    (void)state;
+    check_fault(2, VLBE_ECALLBACK);
+    check_fault(3, VLBE_ECALLBACK);
+}
+
+/* The same constraint twice: C_q has rank 1 < m = 2. */
+static int twice_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+{
+    pend_constr(u, t, q, C);
+    C[1] = C[0];
+    return 0;
+}
+static int twice_constr_jac(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
+{
+    pend_constr_jac(u, t, q, Cq, NULL);
+    Cq[2] = Cq[0];
+    Cq[3] = Cq[1];
+    if (Ct) Ct[0] = Ct[1] = VLBE_R(0.0);
+    return 0;
+}
+
+static void test_fail_singular(void **state)
+{
+    pend_par p = pend_default();
+    vlbe_dae sys;
+    vlbe_hht_params par;
+    vlbe_real q0[2], v0[2];
+    run *r = (run *)malloc(sizeof *r);
+    (void)state;
+    assert_non_null(r);
+    pend_setup(&sys, &p);
+    sys.m = 2;
+    sys.constr = twice_constr;
+    sys.constr_jac = twice_constr_jac;
+    sys.constr_acc = NULL;   /* the FD path of gamma, m = 2 */
+    sys.constr_hess = NULL;
+    vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
+    pend_initial(&p, q0, v0);
+    assert_int_equal(run_init(r, &sys, &par, q0, v0), VLBE_ESINGULAR);
+    free(r);
+}
+
+/* A step of 0.5 s (a fifth of the period) from the horizontal: the predictor
+   is far off and Newton diverges; with halvings the same call succeeds. */
+static void test_fail_noconv_and_recovery(void **state)
+{
+    pend_par p = pend_default();
+    vlbe_dae sys;
+    vlbe_hht_params par;
+    vlbe_real q0[2], v0[2], h = VLBE_R(0.5);
+    run *r = (run *)malloc(sizeof *r);
+    snap s;
+    long f0;
+    (void)state;
+    assert_non_null(r);
+    pend_setup(&sys, &p);
+    vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+    pend_initial(&p, q0, v0);
+    assert_int_equal(run_init(r, &sys, &par, q0, v0), VLBE_OK);
+    assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(0.05)), VLBE_OK);
+    snap_take(&r->st, &s);
+    f0 = r->st.stats.newton_fails;
+    assert_int_equal(vlbe_hht_step(&r->st, h), VLBE_ENOCONV);
+    snap_assert_same(&r->st, &s);
+    assert_true(r->st.stats.newton_fails == f0 + 1);
+    assert_true(r->st.stats.rejected >= 1);
+    assert_true(r->st.stats.steps == 1);
+    /* with halvings: the step goes through as 2^k smaller ones */
+    r->st.par.max_halvings = 6;
+    assert_int_equal(vlbe_hht_step(&r->st, h), VLBE_OK);
+    ASSERT_CLOSE(r->st.t, 0.55, 8 * EPS, 0.0);
+    assert_true(r->st.stats.steps > 2);
+    /* and it lands on the circle: |C| at Newton level (see constraint test) */
+    ASSERT_CLOSE(sqrt((double)(r->st.q[0] * r->st.q[0] + r->st.q[1] * r->st.q[1])), 1.0,
+                 2e-9 + 16 * EPS, 0.0);
+    free(r);
+}
+
+static void test_fail_args(void **state)
+{
+    pend_par p = pend_default();
+    vlbe_dae sys, bad;
+    vlbe_hht_params par;
+    vlbe_real q0[2], v0[2];
+    run *r = (run *)malloc(sizeof *r);
+    size_t lw = vlbe_hht_work_len(2, 1), liw = vlbe_hht_iwork_len(2, 1);
+    snap s;
+    (void)state;
+    assert_non_null(r);
+    pend_setup(&sys, &p);
+    vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+    pend_initial(&p, q0, v0);
+    assert_int_equal(vlbe_hht_init(&r->st, &sys, &par, 0, q0, v0, r->w, lw - 1, r->iw, liw),
+                     VLBE_EWORK);
+    assert_int_equal(vlbe_hht_init(&r->st, &sys, &par, 0, q0, v0, r->w, lw, r->iw, liw - 1),
+                     VLBE_EWORK);
+    assert_int_equal(vlbe_hht_init(&r->st, &sys, &par, 0, q0, v0, NULL, lw, r->iw, liw),
+                     VLBE_EWORK);
+    /* bad problem and parameters */
+    bad = sys;
+    bad.n = 0;
+    assert_int_equal(vlbe_hht_init(&r->st, &bad, &par, 0, q0, v0, r->w, lw, r->iw, liw), VLBE_EARG);
+    bad = sys;
+    bad.constr = NULL;
+    assert_int_equal(vlbe_hht_init(&r->st, &bad, &par, 0, q0, v0, r->w, lw, r->iw, liw), VLBE_EARG);
+    par.beta = VLBE_R(0.0);
+    assert_int_equal(vlbe_hht_init(&r->st, &sys, &par, 0, q0, v0, r->w, lw, r->iw, liw), VLBE_EARG);
+    vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+    q0[0] = (vlbe_real)NAN;
+    assert_int_equal(vlbe_hht_init(&r->st, &sys, &par, 0, q0, v0, r->w, lw, r->iw, liw),
+                     VLBE_ENONFINITE);
+    pend_initial(&p, q0, v0);
+    assert_int_equal(vlbe_hht_init(&r->st, &sys, &par, 0, q0, v0, r->w, lw, r->iw, liw), VLBE_OK);
+    /* h <= 0, NaN, inf: EARG, state untouched */
+    snap_take(&r->st, &s);
+    assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(0.0)), VLBE_EARG);
+    assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(-1e-3)), VLBE_EARG);
+    assert_int_equal(vlbe_hht_step(&r->st, (vlbe_real)NAN), VLBE_EARG);
+    assert_int_equal(vlbe_hht_step(&r->st, (vlbe_real)INFINITY), VLBE_EARG);
+    snap_assert_same(&r->st, &s);
+    assert_true(r->st.stats.steps == 0);
+    free(r);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Counters: exact identities for the pendulum with analytic Jacobians, and
+   modified Newton against full Newton on the same run. */
+static void test_counters(void **state)
+{
+    pend_par p = pend_default();
+    vlbe_dae sys;
+    vlbe_hht_params par;
+    vlbe_real q0[2], v0[2];
+    run *rm = (run *)malloc(sizeof *rm), *rf = (run *)malloc(sizeof *rf);
+    const long nsteps = 300;
+    long k;
+    double tol;
+    (void)state;
+    assert_non_null(rm);
+    assert_non_null(rf);
+    pend_setup(&sys, &p);
+    pend_initial(&p, q0, v0);
+    vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
+    par.modified = 1;
+    assert_int_equal(run_init(rm, &sys, &par, q0, v0), VLBE_OK);
+    par.modified = 0;
+    assert_int_equal(run_init(rf, &sys, &par, q0, v0), VLBE_OK);
+    for (k = 0; k < nsteps; ++k) {
+        assert_int_equal(vlbe_hht_step(&rm->st, VLBE_R(1e-2)), VLBE_OK);
+        assert_int_equal(vlbe_hht_step(&rf->st, VLBE_R(1e-2)), VLBE_OK);
+    }
+    /* both: every step accepted; one LU for the consistent start */
+    assert_true(rm->st.stats.steps == nsteps && rf->st.stats.steps == nsteps);
+    assert_true(rm->st.stats.rejected == 0 && rf->st.stats.rejected == 0);
+    /* full Newton: one Jacobian and one LU per iteration (+ the start's LU);
+       one solve per iteration (+ the start's) */
+    assert_true(rf->st.stats.jac_evals == rf->st.stats.newton_iters);
+    assert_true(rf->st.stats.lu_factors == rf->st.stats.newton_iters + 1);
+    assert_true(rf->st.stats.lu_solves == rf->st.stats.newton_iters + 1);
+    assert_true(rf->st.stats.newton_iters >= nsteps);
+    /* modified Newton: the LU is kept across steps of the same h */
+    assert_true(rm->st.stats.lu_factors == rm->st.stats.jac_evals + 1);
+    assert_true(rm->st.stats.lu_solves == rm->st.stats.newton_iters + 1);
+    assert_true(5 * rm->st.stats.lu_factors < rf->st.stats.lu_factors);
+    assert_true(rm->st.stats.newton_iters >= rf->st.stats.newton_iters);
+    /* analytic Jacobians: a force call per iteration, one per Jacobian
+       (force_jac), one at the start; a mass call per iteration + start */
+    assert_true(rm->st.stats.force_calls ==
+                rm->st.stats.newton_iters + rm->st.stats.jac_evals + 1);
+    assert_true(rm->st.stats.mass_calls == rm->st.stats.newton_iters + 1);
+    /* the same answer: each step's Newton error is below atol + rtol |q|
+       (RMS, sqrt(2) for the max over n = 2; |q| = L = 1), or below the
+       rounding floor 8 eps |q| at which integrators.h accepts, and the
+       pendulum's error propagation is neutral: at most nsteps times that */
+    tol = (double)nsteps * sqrt(2.0) * ((double)par.atol + (double)par.rtol + 8.0 * EPS);
+    ASSERT_VEC_CLOSE(rm->st.q, rf->st.q, 2, 0.0, tol);
+    free(rm);
+    free(rf);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Andrews' mechanism. */
+static void test_andrews_consistent_start(void **state)
+{
+    andr_par p = andr_default();
+    vlbe_dae sys;
+    vlbe_real q0[ANDR_N], v0[ANDR_N], qdd[ANDR_N], lam[ANDR_M];
+    vlbe_real w[512];
+    int iw[16], i;
+    (void)state;
+    andr_setup(&sys, &p);
+    andr_initial(q0, v0);
+    assert_true(vlbe_dae_work_len(ANDR_N, ANDR_M) <= 512);
+    assert_int_equal(vlbe_dae_consistent_acc(&sys, VLBE_R(0.0), q0, v0, qdd, lam, NULL, w, 512, iw,
+                                             16),
+                     VLBE_OK);
+    /* the initial positions are consistent: |g| at rounding level of the
+       0.01..0.1 m lengths (16 eps * 0.1 m) */
+    andr_constr(&p, VLBE_R(0.0), q0, lam);
+    for (i = 0; i < ANDR_M; ++i) ASSERT_CLOSE(lam[i], 0.0, 0.0, 16 * EPS * 0.1);
+    assert_int_equal(vlbe_dae_consistent_acc(&sys, VLBE_R(0.0), q0, v0, qdd, lam, NULL, w, 512, iw,
+                                             16),
+                     VLBE_OK);
+    /* a 13 x 13 saddle-point solve with inertias 1e-7..1e-5 and lengths
+       1e-2: measured 6e-16 relative in double, 3e-7 in float (2.5 eps);
+       1024 eps for the conditioning; the zero ones to 1024 eps of the scale
+       (1.4e4 for q'', 1e2 for lambda) */
+    ASSERT_VEC_CLOSE(qdd, andr_qdd0(), ANDR_N, 1024 * EPS, 1024 * EPS * 1.4e4);
+    ASSERT_VEC_CLOSE(lam, andr_lambda0(), ANDR_M, 1024 * EPS, 1024 * EPS * 1e2);
+}
+
+/* Analytic Jacobians of the example against central differences at a
+   generic state (the Test Set values at 0.03 s, where nothing vanishes).
+   Central differences with step eps^(1/3) x scale err by about eps^(2/3)
+   relative: the tolerance is 100 eps^(2/3) of the column scale. */
+typedef struct andr_fd_ctx {
+    andr_par *p;
+    int which;     /* 0 force in q, 1 force in v, 2 M a in q, 3 C in q, 4 C_q^T lam in q, 5 C_q v in q */
+    int j;
+    const vlbe_real *q, *v, *a, *lam;
+} andr_fd_ctx;
+
+static double andr_fd_fn(void *ctx, double x, double *out)
+{
+    andr_fd_ctx *c = (andr_fd_ctx *)ctx;
+    vlbe_real q[ANDR_N], v[ANDR_N], tmp[ANDR_N * ANDR_N], o[ANDR_N];
+    double used;
+    int i, k;
+    memcpy(q, c->q, sizeof q);
+    memcpy(v, c->v, sizeof v);
+    if (c->which == 1) {
+        v[c->j] = (vlbe_real)x;
+        used = (double)v[c->j];
+    } else {
+        q[c->j] = (vlbe_real)x;
+        used = (double)q[c->j];
+    }
+    switch (c->which) {
+    case 0:
+    case 1: andr_force(c->p, 0, q, v, o); break;
+    case 2:
+        andr_mass(c->p, 0, q, v, tmp);
+        for (i = 0; i < ANDR_N; ++i) {
+            o[i] = VLBE_R(0.0);
+            for (k = 0; k < ANDR_N; ++k) o[i] += tmp[i * ANDR_N + k] * c->a[k];
+        }
+        break;
+    case 3: andr_constr(c->p, 0, q, o); break;
+    case 4:
+        andr_constr_jac(c->p, 0, q, tmp, NULL);
+        for (i = 0; i < ANDR_N; ++i) {
+            o[i] = VLBE_R(0.0);
+            for (k = 0; k < ANDR_M; ++k) o[i] += tmp[k * ANDR_N + i] * c->lam[k];
+        }
+        break;
+    default: /* C_q v, whose derivative along v gives -gamma */
+        andr_constr_jac(c->p, 0, q, tmp, NULL);
+        for (k = 0; k < ANDR_M; ++k) {
+            o[k] = VLBE_R(0.0);
+            for (i = 0; i < ANDR_N; ++i) o[k] += tmp[k * ANDR_N + i] * c->v[i];
+        }
+        break;
+    }
+    for (i = 0; i < (c->which >= 3 && c->which != 4 ? ANDR_M : ANDR_N); ++i) out[i] = (double)o[i];
+    return used;
+}
+
+static void test_andrews_jacobians(void **state)
+{
+    andr_par p = andr_default();
+    vlbe_real q[ANDR_N], v[ANDR_N], a[ANDR_N], lam[ANDR_M];
+    vlbe_real K[49], D[49], Mq[49], G[42], H[49], gam[ANDR_M];
+    double d[ANDR_N], work[ANDR_N], gfd[ANDR_M];
+    double tol_rel = 100.0 * pow(EPS, 2.0 / 3.0);
+    andr_fd_ctx c;
+    int i, j, which;
+    (void)state;
+    for (i = 0; i < ANDR_N; ++i) {
+        q[i] = (vlbe_real)andr_qref()[i];
+        v[i] = (vlbe_real)(andr_vref()[i] * 1e-3); /* O(1) rad/s keeps the terms comparable */
+        a[i] = (vlbe_real)(1.0 + 0.1 * i);
+    }
+    for (i = 0; i < ANDR_M; ++i) lam[i] = (vlbe_real)andr_lambda_ref()[i];
+    andr_force_jac(&p, 0, q, v, K, D);
+    andr_mass_jac(&p, 0, q, v, a, Mq, NULL);
+    andr_constr_jac(&p, 0, q, G, NULL);
+    andr_constr_hess(&p, 0, q, lam, H);
+    andr_constr_acc(&p, 0, q, v, gam);
+    c.p = &p;
+    c.q = q;
+    c.v = v;
+    c.a = a;
+    c.lam = lam;
+    for (i = 0; i < ANDR_M; ++i) gfd[i] = 0.0;
+    for (which = 0; which < 6; ++which) {
+        int rows = (which == 3 || which == 5) ? ANDR_M : ANDR_N;
+        c.which = which;
+        for (j = 0; j < ANDR_N; ++j) {
+            double x = which == 1 ? (double)v[j] : (double)q[j];
+            double scale = 0.0, hstep = tu_fd_step(EPS, fmax(1.0, fabs(x)));
+            const vlbe_real *an = which == 0 ? K : which == 1 ? D : which == 2 ? Mq : which == 4 ? H : G;
+            int ld = which == 3 ? ANDR_N : ANDR_N;
+            c.j = j;
+            tu_central_diff(andr_fd_fn, &c, x, hstep, rows, work, d);
+            if (which == 5) {
+                /* (C_q v)_q v summed over j gives -gamma */
+                for (i = 0; i < ANDR_M; ++i) gfd[i] -= d[i] * (double)v[j];
+                continue;
+            }
+            for (i = 0; i < rows; ++i) scale = fmax(scale, fabs(d[i]));
+            for (i = 0; i < rows; ++i) {
+                double an_ij = (double)an[i * ld + j];
+                ASSERT_CLOSE(an_ij, d[i], tol_rel, tol_rel * fmax(scale, 1e-3));
+            }
+        }
+    }
+    {
+        double gs = 0.0;
+        for (i = 0; i < ANDR_M; ++i) gs = fmax(gs, fabs(gfd[i]));
+        ASSERT_VEC_CLOSE(gam, gfd, ANDR_M, tol_rel, tol_rel * gs);
+    }
+}
+
+/* HHT-alpha and generalized-alpha reach the Test Set positions at 0.03 s to
+   1e-6 relative.  The error is O(h^2): 1.8e-5 (HHT) and 1.6e-5 (gen-alpha)
+   max relative over the 7 angles at h = 1e-5, 1.7e-7 and 1.5e-7 at h = 1e-6
+   (example, Newton rtol 1e-12); h = 1e-6 leaves a factor 6.  A 24-bit
+   mantissa cannot hold the 15.8 rad angle to 1e-6 over 3e4 steps: double only.
+   With -DVLBE_TEST_QUICK (slow tools such as valgrind) h = 5e-6 is checked
+   at 1e-5 instead (4.5e-6 measured). */
+static void test_andrews_reference(void **state)
+{
+#ifndef VLBE_USE_FLOAT
+#ifndef VLBE_TEST_QUICK
+    const long nsteps = 30000;
+    const double tol = 1e-6;
+#else
+    const long nsteps = 6000;
+    const double tol = 1e-5;
+#endif
+    int method;
+    (void)state;
+    for (method = 0; method < 2; ++method) {
+        vlbe_hht_params par;
+        andr_result r;
+        andr_params_for(method, &par);
+        assert_int_equal(andr_run(&par, nsteps, &r), VLBE_OK);
+        ASSERT_VEC_CLOSE(r.q, andr_qref(), ANDR_N, tol, 0.0);
+        /* multipliers are O(h^2) as well: 6.2e-7 (lambda_1) measured at
+           h = 1e-6, 1.3e-5 at 5e-6; 100 tol */
+        ASSERT_CLOSE(r.lambda[0], andr_lambda_ref()[0], 100.0 * tol, 0.0);
+        /* constraints at Newton level (lengths 1e-2 m, rtol 1e-12) */
+        assert_true(r.max_c <= 1e-13);
+        assert_true(r.stats.steps == nsteps);
+    }
+#else
+    (void)state;
+#endif
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_params_presets),
+        cmocka_unit_test(test_pendulum_period_order),
+        cmocka_unit_test(test_pendulum_multiplier),
+        cmocka_unit_test(test_pendulum_constraint),
+        cmocka_unit_test(test_oscillator_spectral_radius),
+        cmocka_unit_test(test_newmark_gamma_stability),
+        cmocka_unit_test(test_trapezoidal_index3_unstable),
+        cmocka_unit_test(test_fail_nonfinite),
+        cmocka_unit_test(test_fail_callback),
+        cmocka_unit_test(test_fail_singular),
+        cmocka_unit_test(test_fail_noconv_and_recovery),
+        cmocka_unit_test(test_fail_args),
+        cmocka_unit_test(test_counters),
+        cmocka_unit_test(test_andrews_consistent_start),
+        cmocka_unit_test(test_andrews_jacobians),
+        cmocka_unit_test(test_andrews_reference),
+    };
+    return cmocka_run_group_tests_name("integrators", tests, NULL, NULL);
+}
