@@ -912,12 +912,13 @@ VLBE_INLINE size_t vlbe__bdf_scr_len(int n, int m)
 
 /* Workspace layout (reals), N2 = 2n + 2m: y (N2); phi (MAXORD+1 columns of
    N2); trial y, trial y', e = y - y_pred, delta (4 N2); then the tail:
-   iteration matrix (N2*N2), M (n*n), Q (n), Cq (m*n), Ct (m), scratch. */
+   iteration matrix (N2*N2), M (n*n), Q (n), Cq (m*n), Ct (m), row scales
+   of the iteration matrix (N2), scratch. */
 VLBE_API size_t vlbe_bdf_work_len(int n, int m)
 {
     size_t N2 = 2 * (size_t)n + 2 * (size_t)m;
     size_t tail = N2 * N2 + (size_t)n * (size_t)n + (size_t)n + (size_t)m * (size_t)n +
-                  (size_t)m + vlbe__bdf_scr_len(n, m);
+                  (size_t)m + N2 + vlbe__bdf_scr_len(n, m);
     size_t dae = vlbe_dae_work_len(n, m);
     return N2 * (size_t)(VLBE_BDF_MAXORD + 1 + 5) + (tail > dae ? tail : dae);
 }
@@ -1076,7 +1077,10 @@ VLBE_INLINE vlbe_status vlbe__bdf_res(vlbe_bdf *st, vlbe_real t, const vlbe_real
    residual just evaluated there), scaled for conditioning: the q and v rows
    are divided by cj and the lambda and mu columns multiplied by cj, so that
    every block stays O(1) as h -> 0 (the unscaled matrix has blocks O(1/h)
-   next to O(1) constraint rows, and Schur complements O(h)):
+   next to O(1) constraint rows, and Schur complements O(h)), then every row
+   divided by its largest entry (M may be small against the identity block,
+   e.g. 1e-6 kg m^2 inertias: without it the LU's relative pivot test
+   fails in float):
        [ I + (C_q^T mu)_q/cj     -I/cj                    0      C_q^T ]
        [ (Ma+C_q^T l-Q)_q/cj     M + (Ma-Q)_v/cj          C_q^T  0     ]
        [ (C_q v + C_t)_q         C_q                      0      0     ]
@@ -1089,7 +1093,7 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
     int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i, j;
     size_t NN = (size_t)N2 * (size_t)N2, ld = (size_t)N2;
     vlbe_real *A = vlbe__bdf_tail(st), *M = A + NN, *Q = M + (size_t)n * n, *Cq = Q + n,
-              *Ct = Cq + (size_t)m * n, *scr = Ct + m, ic = VLBE_R(1.0) / cj;
+              *Ct = Cq + (size_t)m * n, *rs = Ct + m, *scr = rs + N2, ic = VLBE_R(1.0) / cj;
     vlbe_status rc;
     st->jcalc_ = -1;
     for (i = 0; i < (int)NN; ++i) A[i] = VLBE_R(0.0);
@@ -1115,6 +1119,13 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
         if (rc != VLBE_OK) return rc;
     }
     if (!vlbe_all_finite(A, (int)NN)) return VLBE_ENONFINITE;
+    for (i = 0; i < N2; ++i) {
+        vlbe_real *ai = A + (size_t)i * ld, r = vlbe_vec_norm_inf(N2, ai);
+        if (r == VLBE_R(0.0)) return VLBE_ESINGULAR;
+        rs[i] = VLBE_R(1.0) / r;
+        if (i < 2 * n) rs[i] *= ic; /* the 1/cj of the q and v rows, for the solve */
+        vlbe_vec_scale(N2, VLBE_R(1.0) / r, ai);
+    }
     ++st->stats.lu_factors;
     if ((rc = vlbe_lu_factor(N2, A, A, st->piv_, NULL)) != VLBE_OK) return rc;
     st->cj_lu_ = cj;
@@ -1126,8 +1137,10 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
 VLBE_INLINE void vlbe__bdf_solve(vlbe_bdf *st, vlbe_real *d)
 {
     int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i;
-    vlbe_real c = st->cj_lu_, ic = VLBE_R(1.0) / c;
-    for (i = 0; i < 2 * n; ++i) d[i] *= ic;
+    const vlbe_real *rs = vlbe__bdf_tail(st) + (size_t)N2 * N2 + (size_t)n * n + (size_t)n +
+                          (size_t)m * n + (size_t)m;
+    vlbe_real c = st->cj_lu_;
+    for (i = 0; i < N2; ++i) d[i] *= rs[i];
     ++st->stats.lu_solves;
     vlbe_lu_solve(N2, vlbe__bdf_tail(st), st->piv_, 1, d);
     for (i = 2 * n; i < 2 * n + 2 * m; ++i) d[i] *= c;
