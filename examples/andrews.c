@@ -462,8 +462,11 @@ static inline vlbe_status andr_run_sys(const vlbe_dae *sys, const vlbe_hht_param
     int i;
     clock_t c0 = clock();
     vlbe_status rc;
+    vlbe_dae_stats zero_stats = {0};
 
     res->status = VLBE_OK;
+    res->stats = zero_stats;
+    res->cpu = 0.0;
     res->max_rel_err = NAN;
     res->max_c = 0.0;
     res->cpu = 0.0;

@@ -1,4 +1,4 @@
-/* pendulum.c -- index-3 Cartesian pendulum with Newmark, HHT-alpha and
+/* pendulum.c -- index-3 Cartesian pendulum with Newmark, HHT-alpha, BDF and
    generalized-alpha: period, constraint drift, multipliers -- part of vlbe
                                                    SPDX-License-Identifier: MIT
    build:  cc -O2 examples/pendulum.c -lm          (from any directory)
@@ -273,8 +273,11 @@ static inline vlbe_status pend_run_sys(const vlbe_dae *sys, const vlbe_hht_param
     long k, nsteps = (long)floor(t_end / h + 0.5);
     clock_t c0 = clock();
     vlbe_status rc;
+    vlbe_dae_stats zero_stats = {0};
 
     res->status = VLBE_OK;
+    res->stats = zero_stats;
+    res->cpu = 0.0;
     res->period = NAN;
     res->max_c = res->max_cv = res->max_lam_err = 0.0;
     res->lam_err_early = res->lam_err_late = 0.0;
@@ -328,10 +331,76 @@ static inline vlbe_status pend_run(const vlbe_hht_params *par, double h, double 
     return pend_run_sys(&sys, par, h, t_end, res);
 }
 
+/* The same measurements with the variable-step BDF (GGL index-2 form),
+   tolerance rtol, atol = rtol / 100; the crossings use each accepted step. */
+static inline vlbe_status pend_run_bdf(double rtol, double t_end, pend_result *res)
+{
+    pend_par p = pend_default();
+    vlbe_dae sys;
+    size_t lw = vlbe_bdf_work_len(2, 1), liw = vlbe_bdf_iwork_len(2, 1);
+    vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
+    int *iw = (int *)malloc(liw * sizeof *iw);
+    vlbe_real q0[2], v0[2];
+    vlbe_bdf_params par;
+    vlbe_bdf st;
+    pend_period pp;
+    clock_t c0 = clock();
+    vlbe_status rc;
+    vlbe_dae_stats zero_stats = {0};
+
+    pend_setup(&sys, &p);
+    res->status = VLBE_OK;
+    res->stats = zero_stats;
+    res->cpu = 0.0;
+    res->period = NAN;
+    res->max_c = res->max_cv = res->max_lam_err = 0.0;
+    res->lam_err_early = res->lam_err_late = 0.0;
+    res->t_reached = 0.0;
+    if (!w || !iw) {
+        free(w);
+        free(iw);
+        return res->status = VLBE_EWORK;
+    }
+    vlbe_bdf_params_default(&par);
+    par.rtol = (vlbe_real)rtol;
+    par.atol = (vlbe_real)(rtol * 1e-2);
+    pend_initial(&p, q0, v0);
+    rc = vlbe_bdf_init(&st, &sys, &par, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
+    if (rc == VLBE_OK) {
+        pend_period_init(&pp);
+        pend_period_add(&pp, 0.0, (double)st.q[0], (double)st.v[0]);
+        while ((double)st.t < t_end) {
+            double x, y, vx, vy, c, le, t;
+            if ((rc = vlbe_bdf_step(&st, (vlbe_real)t_end)) != VLBE_OK) break;
+            t = (double)st.t;
+            res->t_reached = t;
+            x = (double)st.q[0];
+            y = (double)st.q[1];
+            vx = (double)st.v[0];
+            vy = (double)st.v[1];
+            c = fabs((double)(VLBE_R(0.5) * (st.q[0] * st.q[0] + st.q[1] * st.q[1] - p.L * p.L)));
+            le = fabs((double)st.lambda[0] - pend_lambda_exact(&p, y));
+            if (c > res->max_c) res->max_c = c;
+            if (fabs(x * vx + y * vy) > res->max_cv) res->max_cv = fabs(x * vx + y * vy);
+            if (le > res->max_lam_err) res->max_lam_err = le;
+            if (t <= 1.0 && le > res->lam_err_early) res->lam_err_early = le;
+            if (t > t_end - 1.0 && le > res->lam_err_late) res->lam_err_late = le;
+            pend_period_add(&pp, t, x, vx);
+        }
+        res->period = pend_period_value(&pp);
+    }
+    res->cpu = (double)(clock() - c0) / (double)CLOCKS_PER_SEC;
+    res->stats = st.stats;
+    res->status = rc;
+    free(w);
+    free(iw);
+    return rc;
+}
+
 #ifndef VLBE_EXAMPLE_NO_MAIN
 int main(void)
 {
-    enum { NMETH = 3, NH = 4 };
+    enum { NMETH = 3, NH = 4, NROWS = NMETH * NH + 3 };
     static const char *const name[NMETH] = {"HHT-a", "gen-a", "Newmark"};
     static const char *const label[NMETH] = {"HHT-alpha, alpha = -0.05",
                                              "generalized-alpha, rho_inf = 0.8",
@@ -340,7 +409,7 @@ int main(void)
     const double t_end = 12.0; /* about 5 periods: 5 crossings, 4 full periods */
     double T_agm = pend_period_exact(PEND_L, PEND_G);
     int im, ih;
-    char rows[NMETH * NH][160];
+    char rows[NROWS][160];
     int nrows = 0;
 
     printf("Index-3 Cartesian pendulum: m = %g kg, L = %g m, g = %g m/s^2, "
@@ -386,6 +455,27 @@ int main(void)
                     name[im], hs[ih], r.status == VLBE_OK ? "" : " (failed)", PEND_T_PUBLISHED,
                     r.period,
                     fabs(r.period - PEND_T_PUBLISHED) / PEND_T_PUBLISHED, r.cpu);
+        }
+        printf("\n");
+    }
+    {
+        static const double tols[3] = {1e-6, 1e-8, 1e-10};
+        printf("BDF 1..5, variable step and order (GGL index-2 form), atol = rtol / 100\n");
+        printf("  %-7s %-15s %-8s %-8s %-8s %-8s %6s %7s %5s %7s\n", "rtol", "period [s]",
+               "rel.err", "max|C|", "max|Cqv|", "max|dl|", "steps", "newton", "LU", "cpu [s]");
+        for (ih = 0; ih < 3; ++ih) {
+            pend_result r;
+            pend_run_bdf(tols[ih], t_end, &r);
+            printf("  %-7g %-15.12f %-8.2e %-8.1e %-8.1e %-8.1e %6ld %7ld %5ld %7.4f\n", tols[ih],
+                   r.period, fabs(r.period - T_agm) / T_agm, r.max_c, r.max_cv, r.max_lam_err,
+                   r.stats.steps, r.stats.newton_iters, r.stats.lu_factors, r.cpu);
+            if (r.status != VLBE_OK)
+                printf("          stopped at t = %.3f s: %s\n", r.t_reached,
+                       vlbe_status_str(r.status));
+            if (nrows < NROWS)
+                sprintf(rows[nrows++], "ROW|pendulum|period BDF rtol=%g%s [s]|%.12f|%.12f|%.1e|%.4f",
+                        tols[ih], r.status == VLBE_OK ? "" : " (failed)", PEND_T_PUBLISHED,
+                        r.period, fabs(r.period - PEND_T_PUBLISHED) / PEND_T_PUBLISHED, r.cpu);
         }
         printf("\n");
     }
