@@ -491,26 +491,28 @@ VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int km
    A, LU: n*n row-major.  LU may equal A (in-place); otherwise A is untouched.
    piv[k] = row swapped with row k at step k.
    Fails with VLBE_ESINGULAR when a pivot is 0 or |pivot| <= n eps max|A|
-   (relatively zero: the computed factor would be noise) and writes the
+   (relatively zero: the computed factor would be noise; the test is
+   relative to the whole matrix, so scale rows of very different units to
+   comparable size first, as the integrators do with constraint rows) and writes the
    1-based failing column to *info (if info != NULL; 0 on success);
    VLBE_ENONFINITE when A holds NaN/Inf.  On failure LU holds no factor;
    A is unchanged unless LU == A. */
 VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, int *piv, int *info)
 {
-    size_t nn, N;
+    size_t nn, N, e;
     vlbe_real amax = VLBE_R(0.0), tol;
     int i, j, k;
     VLBE_ASSERT(n >= 1 && A != NULL && LU != NULL && piv != NULL);
     N = (size_t)n;
     nn = N * N;
     if (info) *info = 0;
-    for (i = 0; i < (int)nn; ++i) {
-        vlbe_real t = vlbe_fabs(A[i]);
+    for (e = 0; e < nn; ++e) {
+        vlbe_real t = vlbe_fabs(A[e]);
         if (!isfinite(t)) return VLBE_ENONFINITE;
         if (t > amax) amax = t;
     }
     if (LU != A)
-        for (i = 0; i < (int)nn; ++i) LU[i] = A[i];
+        for (e = 0; e < nn; ++e) LU[e] = A[e];
     tol = (vlbe_real)n * VLBE_EPS * amax;
     for (k = 0; k < n; ++k) {
         vlbe_real *rk = LU + (size_t)k * N, pmax = vlbe_fabs(rk[k]), inv;
