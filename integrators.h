@@ -235,6 +235,12 @@ VLBE_API vlbe_status vlbe_bdf_advance(vlbe_bdf *st, vlbe_real t_out);
 /* ===== implementation =================================================== */
 
 /* -- counted callback wrappers ------------------------------------------ */
+VLBE_INLINE void vlbe__int_stats_zero(vlbe_dae_stats *c)
+{
+    c->steps = c->rejected = c->newton_iters = c->newton_fails = 0;
+    c->force_calls = c->mass_calls = c->constr_calls = 0;
+    c->jac_evals = c->lu_factors = c->lu_solves = 0;
+}
 VLBE_INLINE vlbe_status vlbe__int_mass(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                        const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
 {
@@ -524,8 +530,7 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
         return VLBE_EWORK;
     if (!stats) {
         stats = &dummy;
-        dummy.mass_calls = dummy.force_calls = dummy.constr_calls = 0;
-        dummy.lu_factors = dummy.lu_solves = 0;
+        vlbe__int_stats_zero(&dummy);
     }
     A = work;
     b = A + (size_t)N * N;
@@ -663,9 +668,7 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
     st->piv_ = iwork;
     st->have_lu_ = 0;
     st->h_lu_ = VLBE_R(0.0);
-    st->stats.steps = st->stats.rejected = st->stats.newton_iters = st->stats.newton_fails = 0;
-    st->stats.force_calls = st->stats.mass_calls = st->stats.constr_calls = 0;
-    st->stats.jac_evals = st->stats.lu_factors = st->stats.lu_solves = 0;
+    vlbe__int_stats_zero(&st->stats);
     vlbe_vec_copy(n, q0, st->q);
     vlbe_vec_copy(n, v0, st->v);
     /* consistent q'' and lambda: the scratch after the LU area is large enough */
@@ -995,9 +998,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     st->phi_ = work + N2;
     st->w_ = st->phi_ + (size_t)N2 * (VLBE_BDF_MAXORD + 1);
     st->piv_ = iwork;
-    st->stats.steps = st->stats.rejected = st->stats.newton_iters = st->stats.newton_fails = 0;
-    st->stats.force_calls = st->stats.mass_calls = st->stats.constr_calls = 0;
-    st->stats.jac_evals = st->stats.lu_factors = st->stats.lu_solves = 0;
+    vlbe__int_stats_zero(&st->stats);
     vlbe_vec_copy(n, q0, st->q);
     vlbe_vec_copy(n, v0, st->v);
     /* y'(t0) = (v0, q''0, 0, 0) into phi_2, with q''0 and lambda0 from the
