@@ -256,6 +256,38 @@ typedef struct pend_result {
     vlbe_dae_stats stats;
 } pend_result;
 
+/* Empties *res before a run. */
+static inline void pend_result_reset(pend_result *res)
+{
+    vlbe_dae_stats zero_stats = {0};
+    res->status = VLBE_OK;
+    res->stats = zero_stats;
+    res->period = NAN;
+    res->max_c = res->max_cv = res->max_lam_err = 0.0;
+    res->lam_err_early = res->lam_err_late = 0.0;
+    res->t_reached = 0.0;
+    res->cpu = 0.0;
+}
+
+/* Records one accepted step (t, q, v, lambda) of a run ending at t_end. */
+static inline void pend_observe(const pend_par *p, pend_period *pp, pend_result *res, double t,
+                                double t_end, const vlbe_real *q, const vlbe_real *v,
+                                const vlbe_real *lambda)
+{
+    double x = (double)q[0], y = (double)q[1], vx = (double)v[0], vy = (double)v[1];
+    /* constraint residual in the working precision, as the integrator sees it */
+    double c = fabs((double)(VLBE_R(0.5) * (q[0] * q[0] + q[1] * q[1] - p->L * p->L)));
+    double cv = fabs(x * vx + y * vy);
+    double le = fabs((double)lambda[0] - pend_lambda_exact(p, y));
+    res->t_reached = t;
+    if (c > res->max_c) res->max_c = c;
+    if (cv > res->max_cv) res->max_cv = cv;
+    if (le > res->max_lam_err) res->max_lam_err = le;
+    if (t <= 1.0 && le > res->lam_err_early) res->lam_err_early = le;
+    if (t > t_end - 1.0 && le > res->lam_err_late) res->lam_err_late = le;
+    pend_period_add(pp, t, x, vx);
+}
+
 /* Integrates the pendulum with parameters par and fixed step h up to t_end
    (rounded to a whole number of steps) and fills *res, also when a step
    fails (then with the data up to the failure).  The workspace is
@@ -273,16 +305,8 @@ static inline vlbe_status pend_run_sys(const vlbe_dae *sys, const vlbe_hht_param
     long k, nsteps = (long)floor(t_end / h + 0.5);
     clock_t c0 = clock();
     vlbe_status rc;
-    vlbe_dae_stats zero_stats = {0};
 
-    res->status = VLBE_OK;
-    res->stats = zero_stats;
-    res->cpu = 0.0;
-    res->period = NAN;
-    res->max_c = res->max_cv = res->max_lam_err = 0.0;
-    res->lam_err_early = res->lam_err_late = 0.0;
-    res->t_reached = 0.0;
-    res->cpu = 0.0;
+    pend_result_reset(res);
     if (!w || !iw) {
         free(w);
         free(iw);
@@ -294,23 +318,8 @@ static inline vlbe_status pend_run_sys(const vlbe_dae *sys, const vlbe_hht_param
         pend_period_init(&pp);
         pend_period_add(&pp, 0.0, (double)st.q[0], (double)st.v[0]);
         for (k = 1; k <= nsteps; ++k) {
-            double x, y, vx, vy, c, cv, le, t = (double)k * h;
             if ((rc = vlbe_hht_step(&st, (vlbe_real)h)) != VLBE_OK) break;
-            res->t_reached = t;
-            x = (double)st.q[0];
-            y = (double)st.q[1];
-            vx = (double)st.v[0];
-            vy = (double)st.v[1];
-            /* constraint residual in the working precision, as the integrator sees it */
-            c = fabs((double)(VLBE_R(0.5) * (st.q[0] * st.q[0] + st.q[1] * st.q[1] - p->L * p->L)));
-            cv = fabs(x * vx + y * vy);
-            le = fabs((double)st.lambda[0] - pend_lambda_exact(p, y));
-            if (c > res->max_c) res->max_c = c;
-            if (cv > res->max_cv) res->max_cv = cv;
-            if (le > res->max_lam_err) res->max_lam_err = le;
-            if (t <= 1.0 && le > res->lam_err_early) res->lam_err_early = le;
-            if (t > t_end - 1.0 && le > res->lam_err_late) res->lam_err_late = le;
-            pend_period_add(&pp, t, x, vx);
+            pend_observe(p, &pp, res, (double)k * h, t_end, st.q, st.v, st.lambda);
         }
         res->period = pend_period_value(&pp);
     }
@@ -346,16 +355,9 @@ static inline vlbe_status pend_run_bdf(double rtol, double t_end, pend_result *r
     pend_period pp;
     clock_t c0 = clock();
     vlbe_status rc;
-    vlbe_dae_stats zero_stats = {0};
 
     pend_setup(&sys, &p);
-    res->status = VLBE_OK;
-    res->stats = zero_stats;
-    res->cpu = 0.0;
-    res->period = NAN;
-    res->max_c = res->max_cv = res->max_lam_err = 0.0;
-    res->lam_err_early = res->lam_err_late = 0.0;
-    res->t_reached = 0.0;
+    pend_result_reset(res);
     if (!w || !iw) {
         free(w);
         free(iw);
@@ -370,22 +372,8 @@ static inline vlbe_status pend_run_bdf(double rtol, double t_end, pend_result *r
         pend_period_init(&pp);
         pend_period_add(&pp, 0.0, (double)st.q[0], (double)st.v[0]);
         while ((double)st.t < t_end) {
-            double x, y, vx, vy, c, le, t;
             if ((rc = vlbe_bdf_step(&st, (vlbe_real)t_end)) != VLBE_OK) break;
-            t = (double)st.t;
-            res->t_reached = t;
-            x = (double)st.q[0];
-            y = (double)st.q[1];
-            vx = (double)st.v[0];
-            vy = (double)st.v[1];
-            c = fabs((double)(VLBE_R(0.5) * (st.q[0] * st.q[0] + st.q[1] * st.q[1] - p.L * p.L)));
-            le = fabs((double)st.lambda[0] - pend_lambda_exact(&p, y));
-            if (c > res->max_c) res->max_c = c;
-            if (fabs(x * vx + y * vy) > res->max_cv) res->max_cv = fabs(x * vx + y * vy);
-            if (le > res->max_lam_err) res->max_lam_err = le;
-            if (t <= 1.0 && le > res->lam_err_early) res->lam_err_early = le;
-            if (t > t_end - 1.0 && le > res->lam_err_late) res->lam_err_late = le;
-            pend_period_add(&pp, t, x, vx);
+            pend_observe(&p, &pp, res, (double)st.t, t_end, st.q, st.v, st.lambda);
         }
         res->period = pend_period_value(&pp);
     }
