@@ -40,10 +40,12 @@ CONVENTIONS
    non-finite values, step below minimum) is returned as a vlbe_status and
    leaves the state at the last accepted step.  No allocation: the caller
    gives a real and an int workspace whose sizes the *_work_len() and
-   *_iwork_len() queries return.
+   *_iwork_len() queries return.  Stack: a few hundred bytes per call; all
+   arrays live in the caller's workspace.
 
 API
    vlbe_status vlbe_dae_check(sys)                        validate a problem
+   size_t vlbe_dae_work_len(n, m), vlbe_dae_iwork_len(n, m)   workspace of the next one
    vlbe_status vlbe_dae_consistent_acc(sys,t,q,v,a,lam,st,w,lw,iw,liw)  q'', lambda at start
    void vlbe_hht_params_newmark(p, beta, gamma)           classic Newmark
    vlbe_status vlbe_hht_params_hht(p, alpha)              HHT-alpha, alpha in [-1/3, 0]
