@@ -3,7 +3,9 @@
 #   make test           header checks, then every tests/test_*.c in four builds
 #                       (double -O2, double -O0, float -O2, ASan+UBSan) and
 #                       the double -O2 build under valgrind when it is installed
-#   make demo           build the examples and run the paper scenes (out/demo/)
+#   make demo           build the examples and run the paper scenes (out/demo/),
+#                       then the integrators' work-precision charts (out/wp_*.svg,
+#                       bench/wp_integrators.c at -O2)
 #   make bench          build and run bench/*.c (-O3 -march=native), out/bench/
 #   make examples       build examples/*.c with the full warning set
 #   make check-headers  each header alone, twice, as C++, in float mode
@@ -62,7 +64,13 @@ BENCH_FLAGS = -O3 -march=native
 BENCH_PORTABLE_FLAGS = -O2
 BENCH_BINS := $(addprefix $(BUILD)/bench/,$(BENCH_NAMES))
 BENCH_PORTABLE_BINS := $(addprefix $(BUILD)/bench/portable/,$(BENCH_NAMES))
-BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h)
+# bench files may include the examples (their problem definitions)
+BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(EXAMPLE_SRCS)
+# benchmarks that take an output directory rather than a file tag
+BENCH_DIR_ARG := wp_integrators
+# the work-precision run of `make demo`: portable flags, the examples' warnings
+DEMO_WP_FLAGS = -O2
+DEMO_WP_BIN = $(BUILD)/demo/wp_integrators
 
 .PHONY: all check test check-headers cmocka test-build examples demo bench \
         bench-portable lint clean
@@ -161,7 +169,11 @@ DEMO_TABLE = awk -F'|' '{ n++; for (i = 2; i <= 7; i++) { c[n, i] = $$i; if (len
         line = line (i > 2 ? "  " : "") sprintf("%" (i <= 3 ? "-" : "") w[i] "s", v) } \
       print line } }'
 
-demo: examples
+$(DEMO_WP_BIN): bench/wp_integrators.c $(BENCH_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(WARN) $(DEMO_WP_FLAGS) -DVLBE_BENCH_FLAGS='"$(DEMO_WP_FLAGS)"' -I. $< -o $@ -lm
+
+demo: examples $(DEMO_WP_BIN)
 	@mkdir -p $(OUT)/demo
 	@set -e; : > $(OUT)/demo/rows.txt; \
 	if [ -z "$(strip $(DEMO_SCENES))" ]; then echo "demo: no examples yet ($(EXAMPLE_DIR)/*.c)"; fi; \
@@ -173,6 +185,10 @@ demo: examples
 	done; \
 	echo; echo "== comparison with the published numbers (all scenes)"; \
 	$(DEMO_TABLE) $(OUT)/demo/rows.txt | tee $(OUT)/demo/table.txt; \
+	echo; echo "== work-precision of the integrators ($(DEMO_WP_FLAGS))"; \
+	$(DEMO_WP_BIN) $(OUT) > $(OUT)/demo/wp_integrators.txt 2>&1 || \
+	  { cat $(OUT)/demo/wp_integrators.txt; echo "demo: wp_integrators failed"; exit 1; }; \
+	cat $(OUT)/demo/wp_integrators.txt; \
 	echo "demo: tables in $(OUT)/demo/, charts in $(OUT)/"
 
 # -- benchmarks ---------------------------------------------------------------
@@ -186,12 +202,17 @@ $(BUILD)/bench/portable/%: bench/%.c $(BENCH_DEPS)
 
 bench: $(BENCH_BINS)
 	@mkdir -p $(OUT)/bench
-	@set -e; for b in $(BENCH_NAMES); do echo "== $$b ($(BENCH_FLAGS))"; $(BUILD)/bench/$$b; done
+	@set -e; for b in $(BENCH_NAMES); do echo "== $$b ($(BENCH_FLAGS))"; \
+	  case " $(BENCH_DIR_ARG) " in *" $$b "*) $(BUILD)/bench/$$b $(OUT)/bench;; *) $(BUILD)/bench/$$b;; esac; \
+	done
 
 # the same benchmarks built without -march=native; files get the tag "portable"
 bench-portable: $(BENCH_PORTABLE_BINS)
 	@mkdir -p $(OUT)/bench
-	@set -e; for b in $(BENCH_NAMES); do echo "== $$b ($(BENCH_PORTABLE_FLAGS))"; $(BUILD)/bench/portable/$$b portable; done
+	@set -e; for b in $(BENCH_NAMES); do echo "== $$b ($(BENCH_PORTABLE_FLAGS))"; \
+	  case " $(BENCH_DIR_ARG) " in *" $$b "*) $(BUILD)/bench/portable/$$b $(OUT)/bench/portable;; \
+	  *) $(BUILD)/bench/portable/$$b portable;; esac; \
+	done
 
 # -- lint ---------------------------------------------------------------------
 LINT_OPTS = --enable=warning,performance,portability --error-exitcode=1 --inline-suppr -q \
