@@ -219,7 +219,7 @@ static void csv_job(FILE *f, const job *j)
 {
     const vlbe_dae_stats *c = &j->stats;
     if (!f) return;
-    fprintf(f, "%s,%s,%s,%.10g,%.10g,%.10g,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%d,%.10g,%.10g,%.10g,%.10g\n",
+    fprintf(f, "%s,\"%s\",%s,%.10g,%.10g,%.10g,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%d,%.10g,%.10g,%.10g,%.10g\n",
             j->scene, j->name, j->bdf ? "bdf" : "genalpha", j->bdf ? DNAN : j->h,
             j->bdf ? j->rtol : DNAN, j->t_end, c->steps, c->rejected, c->newton_iters,
             c->newton_fails, c->force_calls, c->mass_calls, c->constr_calls, c->jac_evals,

@@ -289,7 +289,7 @@ static void write_csv(const scene *sc, const char *dir)
         const series *s = &sc->s[k];
         for (i = 0; i < s->n; ++i) {
             const point *p = &s->p[i];
-            fprintf(f, "%s,%s,%.10g,%s,%.10g,%.10g,%d,%ld,%ld,%ld,%ld,%ld,%ld,%.10g,%.10g,%.10g\n",
+            fprintf(f, "\"%s\",%s,%.10g,\"%s\",%.10g,%.10g,%d,%ld,%ld,%ld,%ld,%ld,%ld,%.10g,%.10g,%.10g\n",
                     s->name, s->fam == FAM_BDF ? "rtol" : "h", p->x, vlbe_status_str(p->status),
                     p->err, p->cpu, p->reps, p->stats.steps, p->stats.rejected,
                     p->stats.newton_iters, p->stats.jac_evals, p->stats.lu_factors,
