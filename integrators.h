@@ -785,7 +785,13 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
         /* rounding floor: a position increment of a few ulps of |q| cannot be
            improved on (the velocity increment, gamma/(beta h) times larger,
            may still exceed a tight atol, and in float mode the default rtol is
-           below eps): accept rather than stall and report VLBE_ENOCONV */
+           below eps): accept rather than stall and report VLBE_ENOCONV.
+           This is the index-3 floor: the rounding of C (eps |q|) is divided by
+           bp ~ h^2, so q'' carries noise of eps/h^2 that no iteration removes.
+           Full Newton ends far below it; modified Newton leaves a bias up to
+           that size per step, which sums to O(eps/h^2) over a run: for very
+           small steps (pendulum h < 5e-5, Andrews h < 5e-7) use full Newton
+           (modified = 0) or BDF, as the work-precision charts show. */
         if (vlbe_vec_norm_inf(n, r) <= VLBE_R(8.0) * VLBE_EPS * vlbe_vec_norm_inf(n, tq)) goto done;
         nrm = vlbe__int_wrms(n, r, tq, p->rtol, p->atol);
         for (i = 0; i < n; ++i) r[i] *= gp / bp; /* velocity increment */
