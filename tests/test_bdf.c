@@ -16,6 +16,10 @@
 #include "test_util.h"
 #include "../integrators.h"
 
+#define VLBE_EXAMPLE_NO_MAIN
+#include "../examples/pendulum.c"
+#include "pend_faults.h"
+
 #include <complex.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,83 +27,21 @@
 #define EPS ((double)VLBE_EPS)
 
 /* -- the pendulum ----------------------------------------------------------
-   q = (x, y), M = I, Q = (0, -g), C = (x^2 + y^2 - 1)/2, C_q = (x, y).
-   x'' = -lambda x, y'' = -g - lambda y; differentiating C twice gives
-   lambda = |v|^2 - g y, and energy from rest at y = 0 gives |v|^2 = -2 g y,
-   so lambda = -3 g y exactly.  Period for a 90 degree amplitude:
-   T = 4 sqrt(L/g) K(sin 45 deg) = 2.367841947576 s. */
-#define PEND_G 9.81
-#define PEND_T 2.367841947576
-
-typedef struct pend_ctx {
-    int nan_force;  /* 1: force returns NaN                 */
-    int fail_force; /* 1: force callback reports failure    */
-    int fail_constr;
-    long force_calls;
-} pend_ctx;
-
-static int pend_mass(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
-{
-    (void)u, (void)t, (void)q, (void)v;
-    M[0] = M[3] = VLBE_R(1.0);
-    M[1] = M[2] = VLBE_R(0.0);
-    return 0;
-}
-static int pend_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
-{
-    pend_ctx *c = (pend_ctx *)u;
-    (void)t, (void)q, (void)v;
-    ++c->force_calls;
-    if (c->fail_force) return 1;
-    Q[0] = VLBE_R(0.0);
-    Q[1] = c->nan_force ? (vlbe_real)NAN : (vlbe_real)-PEND_G;
-    return 0;
-}
-static int pend_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
-{
-    (void)t;
-    if (((pend_ctx *)u)->fail_constr) return 7;
-    C[0] = VLBE_R(0.5) * (q[0] * q[0] + q[1] * q[1] - VLBE_R(1.0));
-    return 0;
-}
-static int pend_cjac(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
-{
-    (void)u, (void)t;
-    Cq[0] = q[0];
-    Cq[1] = q[1];
-    if (Ct) Ct[0] = VLBE_R(0.0);
-    return 0;
-}
-/* analytic extras, to check that they give the same as the differences */
-static int pend_fjac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *K,
-                     vlbe_real *D)
-{
-    int i;
-    (void)u, (void)t, (void)q, (void)v;
-    for (i = 0; i < 4; ++i) K[i] = D[i] = VLBE_R(0.0);
-    return 0;
-}
-static int pend_hess(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *l, vlbe_real *H)
-{
-    (void)u, (void)t, (void)q;
-    H[0] = H[3] = l[0];
-    H[1] = H[2] = VLBE_R(0.0);
-    return 0;
-}
-
-static vlbe_dae pend_sys(pend_ctx *c)
+   The problem of examples/pendulum.c (m = 1 kg, L = 1 m, g = 9.81 m/s^2,
+   q = (x, y), C = (x^2 + y^2 - L^2)/2; there also lambda = -3 m g y / L^2
+   and the period PEND_T_PUBLISHED for the 90 degree amplitude), its
+   callbacks wrapped by pend_faults.h so that the failure tests can inject
+   faults.  The runs here use finite differences for the force Jacobian, the
+   constraint Hessian and gamma (the example's analytic ones switched off);
+   test_pendulum_analytic_jacobians switches force_jac and constr_hess back
+   on to compare. */
+static vlbe_dae pend_sys(faulty *f)
 {
     vlbe_dae s;
-    memset(&s, 0, sizeof s);
-    memset(c, 0, sizeof *c);
-    s.n = 2;
-    s.m = 1;
-    s.flags = VLBE_DAE_MASS_CONST;
-    s.user = c;
-    s.mass = pend_mass;
-    s.force = pend_force;
-    s.constr = pend_constr;
-    s.constr_jac = pend_cjac;
+    faulty_setup(&s, f, 0);
+    s.constr_acc = NULL;
+    s.force_jac = NULL;
+    s.constr_hess = NULL;
     return s;
 }
 
@@ -110,7 +52,8 @@ static int g_iwork[64];
 
 static vlbe_status pend_init(vlbe_bdf *st, const vlbe_dae *s, const vlbe_bdf_params *p)
 {
-    const vlbe_real q0[2] = {VLBE_R(1.0), VLBE_R(0.0)}, v0[2] = {VLBE_R(0.0), VLBE_R(0.0)};
+    vlbe_real q0[2], v0[2];
+    pend_initial(&((const faulty *)s->user)->p, q0, v0);
     assert_true(vlbe_bdf_work_len(2, 1) <= WLEN);
     return vlbe_bdf_init(st, s, p, VLBE_R(0.0), q0, v0, g_work, WLEN, g_iwork, 64);
 }
@@ -124,17 +67,19 @@ typedef struct pend_out {
     double period_err; /* relative                              */
     double max_c;      /* max |C| over accepted steps           */
     double max_cv;     /* max |C_q v|                           */
-    double max_lam;    /* max |lambda + 3 g y| / (3 g)          */
+    double max_lam;    /* max |lambda - lambda_exact| / (3 m g / L) */
     vlbe_dae_stats stats;
 } pend_out;
 
 /* One period; the period error comes from v_y at t = T: near the return
    point (1, 0) the motion is y = -g/2 (t - T_num)^2 (lambda = 0 there),
    so v_y(T) = g (T_num - T), an O(dT^2)-exact measurement. */
-static void pend_run(const vlbe_bdf_params *p, const vlbe_dae *s, pend_out *o, int max_order_seen)
+static void bdf_pend_run(const vlbe_bdf_params *p, const vlbe_dae *s, pend_out *o,
+                         int max_order_seen)
 {
+    const pend_par *par = &((const faulty *)s->user)->p;
     vlbe_bdf st;
-    double T = PEND_T;
+    double T = PEND_T_PUBLISHED, lam_scale = 3.0 * PEND_M * PEND_G / PEND_L;
     assert_int_equal(pend_init(&st, s, p), VLBE_OK);
     /* lambda(0) = 0 from the consistent start (y = 0, v = 0) */
     ASSERT_CLOSE(st.lambda[0], 0.0, 0.0, 1e3 * EPS);
@@ -146,9 +91,9 @@ static void pend_run(const vlbe_bdf_params *p, const vlbe_dae *s, pend_out *o, i
         assert_true(st.order_last >= 1 && st.order_last <= max_order_seen);
         x = (double)st.q[0];
         y = (double)st.q[1];
-        c = fabs(0.5 * (x * x + y * y - 1.0));
+        c = fabs(0.5 * (x * x + y * y - PEND_L * PEND_L)); /* in double */
         cv = fabs(x * (double)st.v[0] + y * (double)st.v[1]);
-        le = fabs((double)st.lambda[0] + 3.0 * PEND_G * y) / (3.0 * PEND_G);
+        le = fabs((double)st.lambda[0] - pend_lambda_exact(par, y)) / lam_scale;
         if (c > o->max_c) o->max_c = c;
         if (cv > o->max_cv) o->max_cv = cv;
         if (le > o->max_lam) o->max_lam = le;
@@ -160,7 +105,7 @@ static void pend_run(const vlbe_bdf_params *p, const vlbe_dae *s, pend_out *o, i
 
 static void test_pendulum_period(void **state)
 {
-    pend_ctx c;
+    faulty c;
     vlbe_dae s = pend_sys(&c);
     vlbe_bdf_params p;
     pend_out o;
@@ -168,7 +113,7 @@ static void test_pendulum_period(void **state)
     (void)state;
     vlbe_bdf_params_default(&p);
     p.rtol = p.atol = (vlbe_real)tol;
-    pend_run(&p, &s, &o, 5);
+    bdf_pend_run(&p, &s, &o, 5);
     print_message("pendulum rtol %.1e: period err %.2e, |C| %.1e, |C_q v| %.1e, lambda %.1e, "
                   "%ld steps, %ld rejected, %ld Newton, %ld Jacobians, %ld LU\n",
                   tol, o.period_err, o.max_c, o.max_cv, o.max_lam, o.stats.steps,
@@ -192,7 +137,7 @@ static void test_pendulum_period(void **state)
    finite differences (to the tolerance). */
 static void test_pendulum_analytic_jacobians(void **state)
 {
-    pend_ctx c;
+    faulty c;
     vlbe_dae s = pend_sys(&c);
     vlbe_bdf_params p;
     pend_out a, b;
@@ -200,10 +145,10 @@ static void test_pendulum_analytic_jacobians(void **state)
     (void)state;
     vlbe_bdf_params_default(&p);
     p.rtol = p.atol = (vlbe_real)tol;
-    pend_run(&p, &s, &a, 5);
-    s.force_jac = pend_fjac;
-    s.constr_hess = pend_hess;
-    pend_run(&p, &s, &b, 5);
+    bdf_pend_run(&p, &s, &a, 5);
+    s.force_jac = pend_force_jac;
+    s.constr_hess = pend_constr_hess;
+    bdf_pend_run(&p, &s, &b, 5);
     assert_true(b.period_err <= 100.0 * tol);
     ASSERT_CLOSE(b.period_err, a.period_err, 0.0, 10.0 * tol);
     /* no differences of Q: 2n force calls fewer per Jacobian */
@@ -213,7 +158,7 @@ static void test_pendulum_analytic_jacobians(void **state)
 /* The error falls with the tolerance (three decades of rtol). */
 static void test_pendulum_convergence(void **state)
 {
-    pend_ctx c;
+    faulty c;
     vlbe_dae s = pend_sys(&c);
     vlbe_bdf_params p;
     pend_out o;
@@ -226,7 +171,7 @@ static void test_pendulum_convergence(void **state)
     for (i = 0; i < 3; ++i) {
         vlbe_bdf_params_default(&p);
         p.rtol = p.atol = (vlbe_real)tol[i];
-        pend_run(&p, &s, &o, 5);
+        bdf_pend_run(&p, &s, &o, 5);
         err[i] = o.period_err;
         print_message("pendulum rtol %.1e: period err %.2e, %ld steps\n", tol[i], err[i],
                       o.stats.steps);
@@ -239,7 +184,7 @@ static void test_pendulum_convergence(void **state)
 /* -- order cap ------------------------------------------------------------ */
 static void test_order_cap(void **state)
 {
-    pend_ctx c;
+    faulty c;
     vlbe_dae s = pend_sys(&c);
     vlbe_bdf_params p;
     pend_out o;
@@ -252,7 +197,7 @@ static void test_order_cap(void **state)
         p.rtol = p.atol = (vlbe_real)(100.0 * run_rtol());
         p.max_order = k;
         /* every accepted step, and the order planned for the next, <= k */
-        pend_run(&p, &s, &o, k);
+        bdf_pend_run(&p, &s, &o, k);
         assert_true(o.period_err <= 1e3 * (double)p.rtol);
         /* and order k itself is used */
         assert_int_equal(pend_init(&st, &s, &p), VLBE_OK);
@@ -462,7 +407,7 @@ static void same(const vlbe_bdf *st, const snap *s)
    untouched. */
 static void test_fail_nonfinite(void **state)
 {
-    pend_ctx c;
+    faulty c;
     vlbe_dae s = pend_sys(&c);
     vlbe_bdf_params p;
     vlbe_bdf st;
@@ -480,11 +425,11 @@ static void test_fail_nonfinite(void **state)
     assert_int_equal(vlbe_bdf_advance(&st, VLBE_R(0.4)), VLBE_OK);
     take(&st, &sn);
     rej = st.stats.rejected;
-    c.nan_force = 1;
+    c.mode = 1; /* NaN force from now on */
     assert_int_equal(vlbe_bdf_step(&st, VLBE_R(1.0)), VLBE_ENONFINITE);
     same(&st, &sn);
     assert_true(st.stats.rejected > rej && st.stats.newton_fails > 0);
-    c.nan_force = 0;
+    c.mode = 0;
     assert_int_equal(vlbe_bdf_advance(&st, VLBE_R(1.0)), VLBE_OK);
     assert_true(st.t == VLBE_R(1.0));
     /* not bitwise (the retried step rebuilt the Jacobian), but to the
@@ -492,7 +437,9 @@ static void test_fail_nonfinite(void **state)
     for (i = 0; i < 4; ++i) ASSERT_CLOSE(st.q[i], ref[i], 0.0, 100.0 * (double)p.rtol);
     /* non-finite initial values */
     {
-        vlbe_real q0[2] = {VLBE_R(1.0), (vlbe_real)NAN}, v0[2] = {VLBE_R(0.0), VLBE_R(0.0)};
+        vlbe_real q0[2], v0[2];
+        pend_initial(&c.p, q0, v0);
+        q0[1] = (vlbe_real)NAN;
         assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), q0, v0, g_work, WLEN, g_iwork, 64),
                          VLBE_ENONFINITE);
     }
@@ -500,7 +447,7 @@ static void test_fail_nonfinite(void **state)
 
 static void test_fail_callback(void **state)
 {
-    pend_ctx c;
+    faulty c;
     vlbe_dae s = pend_sys(&c);
     vlbe_bdf_params p;
     vlbe_bdf st;
@@ -510,17 +457,16 @@ static void test_fail_callback(void **state)
     assert_int_equal(pend_init(&st, &s, &p), VLBE_OK);
     assert_int_equal(vlbe_bdf_advance(&st, VLBE_R(0.3)), VLBE_OK);
     take(&st, &sn);
-    c.fail_force = 1;
+    c.mode = 2; /* force reports failure */
     assert_int_equal(vlbe_bdf_step(&st, VLBE_R(1.0)), VLBE_ECALLBACK);
     same(&st, &sn);
-    c.fail_force = 0;
-    c.fail_constr = 1;
+    c.mode = 4; /* constraint reports failure */
     assert_int_equal(vlbe_bdf_advance(&st, VLBE_R(1.0)), VLBE_ECALLBACK);
     same(&st, &sn);
-    c.fail_constr = 0;
+    c.mode = 0;
     assert_int_equal(vlbe_bdf_advance(&st, VLBE_R(1.0)), VLBE_OK);
     /* at init (consistent start) */
-    c.fail_force = 1;
+    c.mode = 2;
     assert_int_equal(pend_init(&st, &s, &p), VLBE_ECALLBACK);
 }
 
@@ -528,7 +474,7 @@ static void test_fail_callback(void **state)
    test failure that would go below it; state at the last accepted step. */
 static void test_fail_hmin(void **state)
 {
-    pend_ctx c;
+    faulty c;
     vlbe_dae s = pend_sys(&c);
     vlbe_bdf_params p;
     vlbe_bdf st;
@@ -552,13 +498,14 @@ static void test_fail_hmin(void **state)
 
 static void test_fail_work_and_args(void **state)
 {
-    pend_ctx c;
+    faulty c;
     vlbe_dae s = pend_sys(&c);
     vlbe_bdf_params p;
     vlbe_bdf st;
-    const vlbe_real q0[2] = {VLBE_R(1.0), VLBE_R(0.0)}, v0[2] = {VLBE_R(0.0), VLBE_R(0.0)};
+    vlbe_real q0[2], v0[2];
     size_t lw = vlbe_bdf_work_len(2, 1), liw = vlbe_bdf_iwork_len(2, 1);
     (void)state;
+    pend_initial(&c.p, q0, v0);
     vlbe_bdf_params_default(&p);
     assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), q0, v0, g_work, lw - 1, g_iwork, liw),
                      VLBE_EWORK);
@@ -596,7 +543,7 @@ static void test_fail_work_and_args(void **state)
 /* advance lands on each output time exactly, step never passes t_stop. */
 static void test_advance_exact(void **state)
 {
-    pend_ctx c;
+    faulty c;
     vlbe_dae s = pend_sys(&c);
     vlbe_bdf_params p;
     vlbe_bdf st;
@@ -624,7 +571,6 @@ static void test_advance_exact(void **state)
    ~1e-6 (a 1e-3 relative error in every step size), and rtol cannot go below
    ~1e-5; the runs then stop with ENOCONV / ESTEP (measured), never with a
    wrong answer. */
-#define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/andrews.c"
 
 static void test_andrews(void **state)

@@ -32,6 +32,7 @@
 #define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/pendulum.c"
 #include "../examples/andrews.c"
+#include "pend_faults.h"
 
 #include <string.h>
 
@@ -561,48 +562,7 @@ static void test_trapezoidal_index3_unstable(void **state)
 }
 
 /* ------------------------------------------------------------------------ */
-/* Faulty variants of the pendulum. */
-typedef struct faulty {
-    pend_par p;
-    int mode;       /* 0 none, 1 NaN force, 2 force returns error, 3 mass returns error */
-    long after;     /* number of good force calls before the fault */
-    long calls;
-} faulty;
-
-static int faulty_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
-{
-    faulty *f = (faulty *)u;
-    int rc = pend_force(&f->p, t, q, v, Q);
-    if (f->mode != 0 && f->calls++ >= f->after) {
-        if (f->mode == 1) Q[1] = (vlbe_real)NAN;
-        if (f->mode == 2) return 7;
-    }
-    return rc;
-}
-static int faulty_mass(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
-{
-    faulty *f = (faulty *)u;
-    if (f->mode == 3 && f->calls++ >= f->after) return -1;
-    return pend_mass(&f->p, t, q, v, M);
-}
-static int faulty_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
-{
-    return pend_constr(&((faulty *)u)->p, t, q, C);
-}
-
-static void faulty_setup(vlbe_dae *sys, faulty *f, int mode)
-{
-    f->p = pend_default();
-    f->mode = 0;
-    f->after = 0;
-    f->calls = 0;
-    pend_setup(sys, &f->p);
-    sys->user = f;
-    sys->force = faulty_force;
-    sys->mass = faulty_mass;
-    sys->constr = faulty_constr;
-    (void)mode;
-}
+/* Faulty variants of the pendulum: pend_faults.h. */
 
 /* Runs 10 good steps, then arms the fault and checks the status of the
    next step and that the state is bitwise unchanged. */

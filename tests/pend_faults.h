@@ -1,0 +1,65 @@
+/* pend_faults.h -- the pendulum of examples/pendulum.c with faults injected
+   into its callbacks, shared by the integrator suites -- part of vlbe
+                                                   SPDX-License-Identifier: MIT
+
+   Include it after the example:
+       #define VLBE_EXAMPLE_NO_MAIN
+       #include "../examples/pendulum.c"
+       #include "pend_faults.h"
+
+   faulty_setup(sys, f, mode) fills sys with the example's pendulum
+   (pend_setup: the analytic Jacobians) whose mass, force and constraint go
+   through the wrappers below with f as user data; it starts with no fault
+   (mode is not used: arm the fault by setting f->mode).  Armed, the fault
+   hits every call after the first f->after counted ones (f->calls counts
+   them); after = 0: at once.  The callbacks that do not read their user
+   data (constr_jac, constr_acc, force_jac, constr_hess) stay the example's. */
+#ifndef VLBE_TEST_PEND_FAULTS_H
+#define VLBE_TEST_PEND_FAULTS_H
+
+typedef struct faulty {
+    pend_par p;
+    int mode;       /* 0 none, 1 NaN force, 2 force returns error, 3 mass returns error,
+                       4 constr returns error */
+    long after;     /* number of good calls before the fault */
+    long calls;
+} faulty;
+
+static int faulty_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+{
+    faulty *f = (faulty *)u;
+    int rc = pend_force(&f->p, t, q, v, Q);
+    if (f->mode != 0 && f->calls++ >= f->after) {
+        if (f->mode == 1) Q[1] = (vlbe_real)NAN;
+        if (f->mode == 2) return 7;
+    }
+    return rc;
+}
+static int faulty_mass(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+{
+    faulty *f = (faulty *)u;
+    if (f->mode == 3 && f->calls++ >= f->after) return -1;
+    return pend_mass(&f->p, t, q, v, M);
+}
+static int faulty_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+{
+    faulty *f = (faulty *)u;
+    if (f->mode == 4 && f->calls++ >= f->after) return 7;
+    return pend_constr(&f->p, t, q, C);
+}
+
+static void faulty_setup(vlbe_dae *sys, faulty *f, int mode)
+{
+    f->p = pend_default();
+    f->mode = 0;
+    f->after = 0;
+    f->calls = 0;
+    pend_setup(sys, &f->p);
+    sys->user = f;
+    sys->force = faulty_force;
+    sys->mass = faulty_mass;
+    sys->constr = faulty_constr;
+    (void)mode;
+}
+
+#endif /* VLBE_TEST_PEND_FAULTS_H */
