@@ -42,7 +42,8 @@ reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword
 TEST_DIR = tests
 TEST_SRCS := $(wildcard $(TEST_DIR)/test_*.c)
 TEST_NAMES := $(basename $(notdir $(TEST_SRCS)))
-TEST_DEPS := $(HEADERS) $(wildcard $(TEST_DIR)/*.h)
+# tests include the examples (VLBE_EXAMPLE_NO_MAIN): they are dependencies too
+TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(wildcard $(EXAMPLE_DIR)/*.c)
 TEST_CFGS := dbl dbl-O0 flt san
 CFG_dbl := -O2
 CFG_dbl-O0 := -O0
