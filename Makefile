@@ -43,7 +43,7 @@ TEST_DIR = tests
 TEST_SRCS := $(wildcard $(TEST_DIR)/test_*.c)
 TEST_NAMES := $(basename $(notdir $(TEST_SRCS)))
 # tests include the examples (VLBE_EXAMPLE_NO_MAIN): they are dependencies too
-TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(wildcard $(EXAMPLE_DIR)/*.c)
+TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(wildcard $(EXAMPLE_DIR)/*.c $(EXAMPLE_DIR)/*.h)
 TEST_CFGS := dbl dbl-O0 flt san
 CFG_dbl := -O2
 CFG_dbl-O0 := -O0
@@ -66,7 +66,7 @@ BENCH_PORTABLE_FLAGS = -O2
 BENCH_BINS := $(addprefix $(BUILD)/bench/,$(BENCH_NAMES))
 BENCH_PORTABLE_BINS := $(addprefix $(BUILD)/bench/portable/,$(BENCH_NAMES))
 # bench files may include the examples (their problem definitions)
-BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(EXAMPLE_SRCS)
+BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(EXAMPLE_SRCS) $(wildcard $(EXAMPLE_DIR)/*.h)
 # benchmarks that take an output directory rather than a file tag
 BENCH_DIR_ARG := wp_integrators
 # the work-precision run of `make demo`: portable flags, the examples' warnings

@@ -33,6 +33,7 @@
    Output: a table, then one comparison row per line for `make demo`:
      ROW|andrews|<quantity>|<published>|<computed>|<relative error>|<cpu seconds> */
 #include "../integrators.h"
+#include "ex_run.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -457,27 +458,41 @@ static inline void andr_result_reset(andr_result *res)
     res->cpu = 0.0;
 }
 
-/* Largest |g_i| of the constraints at (t, q) into res->max_c. */
-static inline void andr_observe(const vlbe_dae *sys, andr_result *res, vlbe_real t,
-                                const vlbe_real *q)
+/* Observer of a run: largest |g_i| of the constraints into res->max_c. */
+typedef struct andr_obs {
+    const vlbe_dae *sys;
+    andr_result *res;
+} andr_obs;
+
+static inline void andr_obs_step(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
+                                 const vlbe_real *lambda)
 {
+    andr_obs *o = (andr_obs *)ctx;
     vlbe_real g[ANDR_M];
     int i;
-    sys->constr(sys->user, t, q, g);
+    (void)v, (void)lambda;
+    o->sys->constr(o->sys->user, (vlbe_real)t, q, g);
     for (i = 0; i < ANDR_M; ++i)
-        if (fabs((double)g[i]) > res->max_c) res->max_c = fabs((double)g[i]);
+        if (fabs((double)g[i]) > o->res->max_c) o->res->max_c = fabs((double)g[i]);
 }
 
-/* Status, cost and the end state compared with the Test Set reference. */
-static inline void andr_finish(andr_result *res, vlbe_status rc, clock_t c0,
-                               const vlbe_dae_stats *stats, const vlbe_real *q,
-                               const vlbe_real *v, const vlbe_real *lambda)
+/* Runs method m on sys from the Test Set start to t = 0.03 s and compares
+   the end state with the reference. */
+static inline vlbe_status andr_run_method(const vlbe_dae *sys, const ex_method *m, andr_result *res)
 {
+    andr_obs o;
+    ex_run_out out;
+    vlbe_real q0[ANDR_N], v0[ANDR_N], q[ANDR_N], v[ANDR_N], lam[ANDR_M];
     int i;
-    res->cpu = (double)(clock() - c0) / (double)CLOCKS_PER_SEC;
-    res->stats = *stats;
-    res->status = rc;
-    if (rc != VLBE_OK) return;
+    o.sys = sys;
+    o.res = res;
+    andr_result_reset(res);
+    andr_initial(q0, v0);
+    ex_run(sys, m, q0, v0, ANDR_T_END, andr_obs_step, &o, q, v, lam, &out);
+    res->cpu = out.cpu;
+    res->stats = out.stats;
+    res->status = out.status;
+    if (out.status != VLBE_OK) return out.status;
     res->max_rel_err = 0.0;
     for (i = 0; i < ANDR_N; ++i) {
         res->q[i] = (double)q[i];
@@ -485,42 +500,18 @@ static inline void andr_finish(andr_result *res, vlbe_status rc, clock_t c0,
         res->rel_err[i] = fabs(res->q[i] - andr_qref()[i]) / fabs(andr_qref()[i]);
         if (res->rel_err[i] > res->max_rel_err) res->max_rel_err = res->rel_err[i];
     }
-    for (i = 0; i < ANDR_M; ++i) res->lambda[i] = (double)lambda[i];
+    for (i = 0; i < ANDR_M; ++i) res->lambda[i] = (double)lam[i];
+    return VLBE_OK;
 }
 
-/* Integrates sys from the Test Set start to t = 0.03 s with the fixed step
-   0.03 / nsteps and compares with the reference.  malloc'ed workspace. */
+/* Fixed step 0.03 / nsteps of the generalized-alpha scheme par. */
 static inline vlbe_status andr_run_sys(const vlbe_dae *sys, const vlbe_hht_params *par, long nsteps,
-                                andr_result *res)
+                                       andr_result *res)
 {
-    size_t lw = vlbe_hht_work_len(ANDR_N, ANDR_M), liw = vlbe_hht_iwork_len(ANDR_N, ANDR_M);
-    vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
-    int *iw = (int *)malloc(liw * sizeof *iw);
-    vlbe_real q0[ANDR_N], v0[ANDR_N];
-    vlbe_real h = (vlbe_real)(ANDR_T_END / (double)nsteps);
-    vlbe_hht st;
-    long k;
-    clock_t c0 = clock();
-    vlbe_status rc;
-
-    andr_result_reset(res);
-    if (!w || !iw) {
-        free(w);
-        free(iw);
-        return res->status = VLBE_EWORK;
-    }
-    andr_initial(q0, v0);
-    rc = vlbe_hht_init(&st, sys, par, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
-    if (rc == VLBE_OK) {
-        for (k = 0; k < nsteps; ++k) {
-            if ((rc = vlbe_hht_step(&st, h)) != VLBE_OK) break;
-            andr_observe(sys, res, st.t, st.q);
-        }
-    }
-    andr_finish(res, rc, c0, &st.stats, st.q, st.v, st.lambda);
-    free(w);
-    free(iw);
-    return rc;
+    ex_method m = {0};
+    m.hht = par;
+    m.h = ANDR_T_END / (double)nsteps;
+    return andr_run_method(sys, &m, res);
 }
 
 static inline vlbe_status andr_run(const vlbe_hht_params *par, long nsteps, andr_result *res)
@@ -537,36 +528,13 @@ static inline vlbe_status andr_run_bdf(double rtol, andr_result *res)
 {
     andr_par p = andr_default();
     vlbe_dae sys;
-    size_t lw = vlbe_bdf_work_len(ANDR_N, ANDR_M), liw = vlbe_bdf_iwork_len(ANDR_N, ANDR_M);
-    vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
-    int *iw = (int *)malloc(liw * sizeof *iw);
-    vlbe_real q0[ANDR_N], v0[ANDR_N];
     vlbe_bdf_params par;
-    vlbe_bdf st;
-    clock_t c0 = clock();
-    vlbe_status rc;
-
+    ex_method m = {0};
     andr_setup(&sys, &p);
-    andr_result_reset(res);
-    if (!w || !iw) {
-        free(w);
-        free(iw);
-        return res->status = VLBE_EWORK;
-    }
     vlbe_bdf_params_default(&par);
     par.rtol = par.atol = (vlbe_real)rtol;
-    andr_initial(q0, v0);
-    rc = vlbe_bdf_init(&st, &sys, &par, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
-    if (rc == VLBE_OK) {
-        while (st.t < (vlbe_real)ANDR_T_END) {
-            if ((rc = vlbe_bdf_step(&st, (vlbe_real)ANDR_T_END)) != VLBE_OK) break;
-            andr_observe(&sys, res, st.t, st.q);
-        }
-    }
-    andr_finish(res, rc, c0, &st.stats, st.q, st.v, st.lambda);
-    free(w);
-    free(iw);
-    return rc;
+    m.bdf = &par;
+    return andr_run_method(&sys, &m, res);
 }
 
 /* Integrator parameters used for this problem: 0 HHT-alpha (alpha = -0.05),

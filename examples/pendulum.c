@@ -33,6 +33,7 @@
    Output: a table, then one comparison row per line for `make demo`:
      ROW|pendulum|<quantity>|<published>|<computed>|<relative error>|<cpu seconds> */
 #include "../integrators.h"
+#include "ex_run.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -288,47 +289,50 @@ static inline void pend_observe(const pend_par *p, pend_period *pp, pend_result 
     pend_period_add(pp, t, x, vx);
 }
 
-/* Integrates the pendulum with parameters par and fixed step h up to t_end
-   (rounded to a whole number of steps) and fills *res, also when a step
-   fails (then with the data up to the failure).  The workspace is
-   malloc'ed here (examples may allocate; the headers never do). */
-static inline vlbe_status pend_run_sys(const vlbe_dae *sys, const vlbe_hht_params *par, double h,
-                                double t_end, pend_result *res)
-{
-    const pend_par *p = (const pend_par *)sys->user;
-    size_t lw = vlbe_hht_work_len(sys->n, sys->m), liw = vlbe_hht_iwork_len(sys->n, sys->m);
-    vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
-    int *iw = (int *)malloc(liw * sizeof *iw);
-    vlbe_real q0[2], v0[2];
-    vlbe_hht st;
+/* Observer of a run: feeds pend_observe. */
+typedef struct pend_obs {
+    const pend_par *p;
     pend_period pp;
-    long k, nsteps = (long)floor(t_end / h + 0.5);
-    clock_t c0 = clock();
-    vlbe_status rc;
+    pend_result *res;
+    double t_end;
+} pend_obs;
 
+static inline void pend_obs_step(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
+                                 const vlbe_real *lambda)
+{
+    pend_obs *o = (pend_obs *)ctx;
+    pend_observe(o->p, &o->pp, o->res, t, o->t_end, q, v, lambda);
+}
+
+/* Runs method m on sys (whose user is a pend_par) to t_end and fills *res,
+   also when a step fails (then with the data up to the failure). */
+static inline vlbe_status pend_run_method(const vlbe_dae *sys, const ex_method *m, double t_end,
+                                          pend_result *res)
+{
+    pend_obs o;
+    ex_run_out out;
+    vlbe_real q0[2], v0[2];
+    o.p = (const pend_par *)sys->user;
+    o.res = res;
+    o.t_end = t_end;
     pend_result_reset(res);
-    if (!w || !iw) {
-        free(w);
-        free(iw);
-        return res->status = VLBE_EWORK;
-    }
-    pend_initial(p, q0, v0);
-    rc = vlbe_hht_init(&st, sys, par, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
-    if (rc == VLBE_OK) {
-        pend_period_init(&pp);
-        pend_period_add(&pp, 0.0, (double)st.q[0], (double)st.v[0]);
-        for (k = 1; k <= nsteps; ++k) {
-            if ((rc = vlbe_hht_step(&st, (vlbe_real)h)) != VLBE_OK) break;
-            pend_observe(p, &pp, res, (double)k * h, t_end, st.q, st.v, st.lambda);
-        }
-        res->period = pend_period_value(&pp);
-    }
-    res->cpu = (double)(clock() - c0) / (double)CLOCKS_PER_SEC;
-    res->stats = st.stats;
-    res->status = rc;
-    free(w);
-    free(iw);
-    return rc;
+    pend_period_init(&o.pp);
+    pend_initial(o.p, q0, v0);
+    ex_run(sys, m, q0, v0, t_end, pend_obs_step, &o, NULL, NULL, NULL, &out);
+    res->period = pend_period_value(&o.pp);
+    res->cpu = out.cpu;
+    res->stats = out.stats;
+    return res->status = out.status;
+}
+
+/* Fixed step h of the generalized-alpha scheme par, up to t_end. */
+static inline vlbe_status pend_run_sys(const vlbe_dae *sys, const vlbe_hht_params *par, double h,
+                                       double t_end, pend_result *res)
+{
+    ex_method m = {0};
+    m.hht = par;
+    m.h = h;
+    return pend_run_method(sys, &m, t_end, res);
 }
 
 /* The same for the default problem (analytic Jacobians). */
@@ -346,43 +350,14 @@ static inline vlbe_status pend_run_bdf(double rtol, double t_end, pend_result *r
 {
     pend_par p = pend_default();
     vlbe_dae sys;
-    size_t lw = vlbe_bdf_work_len(2, 1), liw = vlbe_bdf_iwork_len(2, 1);
-    vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
-    int *iw = (int *)malloc(liw * sizeof *iw);
-    vlbe_real q0[2], v0[2];
     vlbe_bdf_params par;
-    vlbe_bdf st;
-    pend_period pp;
-    clock_t c0 = clock();
-    vlbe_status rc;
-
+    ex_method m = {0};
     pend_setup(&sys, &p);
-    pend_result_reset(res);
-    if (!w || !iw) {
-        free(w);
-        free(iw);
-        return res->status = VLBE_EWORK;
-    }
     vlbe_bdf_params_default(&par);
     par.rtol = (vlbe_real)rtol;
     par.atol = (vlbe_real)(rtol * 1e-2);
-    pend_initial(&p, q0, v0);
-    rc = vlbe_bdf_init(&st, &sys, &par, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
-    if (rc == VLBE_OK) {
-        pend_period_init(&pp);
-        pend_period_add(&pp, 0.0, (double)st.q[0], (double)st.v[0]);
-        while ((double)st.t < t_end) {
-            if ((rc = vlbe_bdf_step(&st, (vlbe_real)t_end)) != VLBE_OK) break;
-            pend_observe(&p, &pp, res, (double)st.t, t_end, st.q, st.v, st.lambda);
-        }
-        res->period = pend_period_value(&pp);
-    }
-    res->cpu = (double)(clock() - c0) / (double)CLOCKS_PER_SEC;
-    res->stats = st.stats;
-    res->status = rc;
-    free(w);
-    free(iw);
-    return rc;
+    m.bdf = &par;
+    return pend_run_method(&sys, &m, t_end, res);
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
