@@ -108,65 +108,28 @@ typedef struct job {
     int samples;
 } job;
 
-typedef struct workspace {
-    vlbe_real *w;
-    int *iw;
-    size_t lw, liw;
-} workspace;
-
-static workspace ws;
+/* the workspace of all runs, allocated outside the timed loop */
+static ex_method ws;
 
 static void ws_need(int n, int m)
 {
-    size_t lw = vlbe_hht_work_len(n, m), liw = vlbe_hht_iwork_len(n, m);
-    if (vlbe_bdf_work_len(n, m) > lw) lw = vlbe_bdf_work_len(n, m);
-    if (vlbe_bdf_iwork_len(n, m) > liw) liw = vlbe_bdf_iwork_len(n, m);
-    if (lw > ws.lw) {
-        free(ws.w);
-        ws.w = (vlbe_real *)malloc(lw * sizeof *ws.w);
-        ws.lw = lw;
-    }
-    if (liw > ws.liw) {
-        free(ws.iw);
-        ws.iw = (int *)malloc(liw * sizeof *ws.iw);
-        ws.liw = liw;
-    }
-    if (!ws.w || !ws.iw) {
+    if (ex_method_reserve(&ws, n, m) != 0) {
         fprintf(stderr, "bench_integrators: out of memory\n");
         exit(1);
     }
 }
 
-/* One run: init + the whole integration, the final state into j->q. */
+/* One run: init + the whole integration (the examples' loop, ex_run, with
+   the preallocated workspace and no observer), the final state into j->q. */
 static void run_job(job *j, const vlbe_real *q0, const vlbe_real *v0)
 {
-    const vlbe_dae_stats zero = {0};
-    vlbe_status rc;
-    int n = j->sys->n;
-    j->stats = zero;
-    if (!j->bdf) {
-        vlbe_hht st;
-        vlbe_real h = (vlbe_real)j->h;
-        long k;
-        rc = vlbe_hht_init(&st, j->sys, &j->hp, VLBE_R(0.0), q0, v0, ws.w, ws.lw, ws.iw, ws.liw);
-        if (rc == VLBE_OK) {
-            for (k = 0; k < j->nsteps; ++k)
-                if ((rc = vlbe_hht_step(&st, h)) != VLBE_OK) break;
-            j->stats = st.stats;
-            memcpy(j->q, st.q, (size_t)n * sizeof *st.q);
-        }
-    } else {
-        vlbe_bdf st;
-        vlbe_real te = (vlbe_real)j->t_end;
-        rc = vlbe_bdf_init(&st, j->sys, &j->bp, VLBE_R(0.0), q0, v0, ws.w, ws.lw, ws.iw, ws.liw);
-        if (rc == VLBE_OK) {
-            while (st.t < te)
-                if ((rc = vlbe_bdf_step(&st, te)) != VLBE_OK) break;
-            j->stats = st.stats;
-            memcpy(j->q, st.q, (size_t)n * sizeof *st.q);
-        }
-    }
-    j->status = rc;
+    ex_method m = ws;
+    ex_run_out out;
+    if (j->bdf) m.bdf = &j->bp;
+    else m.hht = &j->hp;
+    m.h = j->h;
+    j->status = ex_run(j->sys, &m, q0, v0, j->t_end, NULL, NULL, j->q, NULL, NULL, &out);
+    j->stats = out.stats;
 }
 
 /* Warm-up, then >= min_samples runs and >= 0.3 s; median seconds per run. */
@@ -380,8 +343,7 @@ int main(int argc, char **argv)
         if (fclose(f) != 0) fprintf(stderr, "bench_integrators: cannot write %s\n", csv);
         else printf("\nwrote %s\n", csv);
     }
-    free(ws.w);
-    free(ws.iw);
+    ex_method_release(&ws);
     if (failed) fprintf(stderr, "bench_integrators: a run failed (see the table)\n");
     return failed;
 }

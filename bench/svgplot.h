@@ -332,11 +332,27 @@ static inline const char *svgp__dash(const svgp_line *l, int i)
     return "";
 }
 
+/* A major tick at pixel p: grid line, tick mark, and an opened <text> for
+   its label (the caller writes the label and closes it); which = 0 for x. */
+static inline void svgp__major_tick(FILE *f, int which, double p, double L, double R, double T,
+                                    double B)
+{
+    const char *grid = "stroke=\"#e4e4e4\" stroke-width=\"1\"";
+    if (which == 0) {
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" %s/>\n", p, T, p, B, grid);
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#000\"/>\n", p, B, p, B + 6.0);
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">", p, B + 20.0);
+    } else {
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" %s/>\n", L, p, R, p, grid);
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#000\"/>\n", L - 6.0, p, L, p);
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">", L - 9.0, p + 4.0);
+    }
+}
+
 /* ticks, grid and labels of one axis; which = 0 for x, 1 for y */
 static inline void svgp__ticks(FILE *f, const svgp__axis *ax, int which, double L, double R,
                                double T, double B)
 {
-    const char *grid = "stroke=\"#e4e4e4\" stroke-width=\"1\"";
     if (ax->log) {
         int e0 = (int)floor(log10(ax->lo) + 1e-9), e1 = (int)ceil(log10(ax->hi) - 1e-9), e, m;
         int every = (int)ax->step, few = log10(ax->hi / ax->lo) <= 2.5;
@@ -346,15 +362,7 @@ static inline void svgp__ticks(FILE *f, const svgp__axis *ax, int which, double 
                 if (v < ax->lo * (1.0 - 1e-9) || v > ax->hi * (1.0 + 1e-9)) continue;
                 p = svgp__px(ax, v);
                 if (m == 1 && e % every == 0) {
-                    if (which == 0) {
-                        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" %s/>\n", p, T, p, B, grid);
-                        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#000\"/>\n", p, B, p, B + 6.0);
-                        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">", p, B + 20.0);
-                    } else {
-                        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" %s/>\n", L, p, R, p, grid);
-                        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#000\"/>\n", L - 6.0, p, L, p);
-                        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">", L - 9.0, p + 4.0);
-                    }
+                    svgp__major_tick(f, which, p, L, R, T, B);
                     svgp__dec_label(f, e);
                     fputs("</text>\n", f);
                 } else if (every == 1) {
@@ -378,15 +386,7 @@ static inline void svgp__ticks(FILE *f, const svgp__axis *ax, int which, double 
         double k0 = ceil(ax->lo / ax->step - 1e-9), k1 = floor(ax->hi / ax->step + 1e-9), k;
         for (k = k0; k <= k1; k += 1.0) {
             double v = k * ax->step, p = svgp__px(ax, v);
-            if (which == 0) {
-                fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" %s/>\n", p, T, p, B, grid);
-                fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#000\"/>\n", p, B, p, B + 6.0);
-                fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">", p, B + 20.0);
-            } else {
-                fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" %s/>\n", L, p, R, p, grid);
-                fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#000\"/>\n", L - 6.0, p, L, p);
-                fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">", L - 9.0, p + 4.0);
-            }
+            svgp__major_tick(f, which, p, L, R, T, B);
             svgp__lin_label(f, v, ax->step);
             fputs("</text>\n", f);
         }

@@ -89,9 +89,7 @@ typedef struct scene {
     series s[MAXSER];
 } scene;
 
-static vlbe_real *g_w;
-static int *g_iw;
-static size_t g_lw, g_liw;
+static ex_method g_ws; /* workspace of all runs (ws_alloc) */
 
 static double cpu_now(void)
 {
@@ -145,71 +143,69 @@ static double scene_err(const scene *sc, const vlbe_real *q, const pend_period *
     return e;
 }
 
+/* Observer of one run: the pendulum's crossings, and the drift if instr. */
+typedef struct wp_obs {
+    const vlbe_dae *sys;
+    pend_period pp;
+    int pend, instr;
+    point *pt;
+} wp_obs;
+
+static void wp_obs_step(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
+                        const vlbe_real *lambda)
+{
+    wp_obs *o = (wp_obs *)ctx;
+    (void)lambda;
+    if (o->pend) pend_period_add(&o->pp, t, (double)q[0], (double)v[0]);
+    if (o->instr && t > 0.0) drift(o->sys, (vlbe_real)t, q, v, o->pt);
+}
+
 /* One run of series s at x (h or rtol); instr: record the drift.  Returns
    the CPU seconds; status, error (and drift, counters if instr) into *pt. */
 static double run(const scene *sc, const series *s, double x, int instr, point *pt)
 {
     const vlbe_dae *sys = sc->sys;
-    int pend = sys->n == 2;
-    pend_period pp;
+    vlbe_hht_params hp;
+    vlbe_bdf_params bp;
+    ex_method m = g_ws;
+    ex_run_out out;
+    wp_obs o;
     vlbe_status rc;
-    double c0 = cpu_now(), c1;
-    const vlbe_dae_stats zero = {0};
-    vlbe_dae_stats stats = zero;
+    double c0, c1;
     vlbe_real qf[ANDR_N];
 
-    pend_period_init(&pp);
+    o.sys = sys;
+    o.pend = sys->n == 2;
+    o.instr = instr;
+    o.pt = pt;
+    pend_period_init(&o.pp);
     if (s->fam != FAM_BDF) {
-        vlbe_hht_params par;
-        vlbe_hht st;
-        vlbe_real h = (vlbe_real)x;
-        long k, nsteps = (long)floor(sc->t_end / x + 0.5);
-        fam_params(s->fam, &par);
-        if (pend) {
+        fam_params(s->fam, &hp);
+        if (o.pend) {
 #ifndef VLBE_USE_FLOAT
-            par.rtol = par.atol = VLBE_R(1e-12);
+            hp.rtol = hp.atol = VLBE_R(1e-12);
 #endif
         } else {
-            andr_params_for(s->fam, &par);
+            andr_params_for(s->fam, &hp);
         }
-        if (s->full_newton) par.modified = 0;
-        rc = vlbe_hht_init(&st, sys, &par, VLBE_R(0.0), sc->q0, sc->v0, g_w, g_lw, g_iw, g_liw);
-        if (rc == VLBE_OK) {
-            if (pend) pend_period_add(&pp, 0.0, (double)st.q[0], (double)st.v[0]);
-            for (k = 1; k <= nsteps; ++k) {
-                if ((rc = vlbe_hht_step(&st, h)) != VLBE_OK) break;
-                if (pend) pend_period_add(&pp, (double)k * x, (double)st.q[0], (double)st.v[0]);
-                if (instr) drift(sys, st.t, st.q, st.v, pt);
-            }
-            stats = st.stats;
-            vlbe_vec_copy(sys->n, st.q, qf);
-        }
+        if (s->full_newton) hp.modified = 0;
+        m.hht = &hp;
+        m.h = x;
     } else {
-        vlbe_bdf_params par;
-        vlbe_bdf st;
-        vlbe_real te = (vlbe_real)sc->t_end;
-        vlbe_bdf_params_default(&par);
-        par.max_order = s->max_order;
-        par.rtol = (vlbe_real)x;
-        par.atol = (vlbe_real)(pend ? 1e-2 * x : x);
-        rc = vlbe_bdf_init(&st, sys, &par, VLBE_R(0.0), sc->q0, sc->v0, g_w, g_lw, g_iw, g_liw);
-        if (rc == VLBE_OK) {
-            if (pend) pend_period_add(&pp, 0.0, (double)st.q[0], (double)st.v[0]);
-            while (st.t < te) {
-                if ((rc = vlbe_bdf_step(&st, te)) != VLBE_OK) break;
-                if (pend) pend_period_add(&pp, (double)st.t, (double)st.q[0], (double)st.v[0]);
-                if (instr) drift(sys, st.t, st.q, st.v, pt);
-            }
-            stats = st.stats;
-            vlbe_vec_copy(sys->n, st.q, qf);
-        }
+        vlbe_bdf_params_default(&bp);
+        bp.max_order = s->max_order;
+        bp.rtol = (vlbe_real)x;
+        bp.atol = (vlbe_real)(o.pend ? 1e-2 * x : x);
+        m.bdf = &bp;
     }
+    c0 = cpu_now();
+    rc = ex_run(sys, &m, sc->q0, sc->v0, sc->t_end, wp_obs_step, &o, qf, NULL, NULL, &out);
     c1 = cpu_now();
     pt->status = rc;
-    pt->err = rc == VLBE_OK ? scene_err(sc, qf, &pp) : DNAN;
+    pt->err = rc == VLBE_OK ? scene_err(sc, qf, &o.pp) : DNAN;
     if (instr) {
-        pt->stats = stats;
-        pt->mean_h = stats.steps > 0 ? sc->t_end / (double)stats.steps : DNAN;
+        pt->stats = out.stats;
+        pt->mean_h = out.stats.steps > 0 ? sc->t_end / (double)out.stats.steps : DNAN;
     }
     return c1 - c0;
 }
@@ -519,17 +515,7 @@ static void summary(const scene *sc)
 
 static void ws_alloc(int n, int m)
 {
-    size_t lw = vlbe_hht_work_len(n, m), liw = vlbe_hht_iwork_len(n, m);
-    if (vlbe_bdf_work_len(n, m) > lw) lw = vlbe_bdf_work_len(n, m);
-    if (vlbe_bdf_iwork_len(n, m) > liw) liw = vlbe_bdf_iwork_len(n, m);
-    if (lw <= g_lw && liw <= g_liw) return;
-    free(g_w);
-    free(g_iw);
-    g_w = (vlbe_real *)malloc(lw * sizeof *g_w);
-    g_iw = (int *)malloc(liw * sizeof *g_iw);
-    g_lw = lw;
-    g_liw = liw;
-    if (!g_w || !g_iw) {
+    if (ex_method_reserve(&g_ws, n, m) != 0) {
         fprintf(stderr, "wp_integrators: out of memory\n");
         exit(1);
     }
@@ -628,7 +614,6 @@ int main(int argc, char **argv)
     printf("wrote %s/{wp,order,drift}_{pendulum,andrews}.svg, %s/wp_{pendulum,andrews}.csv "
            "(%.1f s CPU)\n",
            dir, dir, cpu_now() - c0);
-    free(g_w);
-    free(g_iw);
+    ex_method_release(&g_ws);
     return 0;
 }

@@ -4,7 +4,9 @@
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 
    Examples include it with #include "ex_run.h" (it sits beside them), so
-   `cc -O2 examples/x.c -lm` still works from anywhere.  The workspace is
+   `cc -O2 examples/x.c -lm` still works from anywhere.  The benchmarks use
+   the same loop with their own workspace (so nothing is allocated inside
+   the timed run) and without an observer.  Otherwise the workspace is
    malloc'ed here: examples may allocate, the headers never do. */
 #ifndef VLBE_EX_RUN_H
 #define VLBE_EX_RUN_H
@@ -14,7 +16,8 @@
 #include <stdlib.h>
 #include <time.h>
 
-/* Called at t = t0 and after every accepted step with the state then. */
+/* Called at t = t0 and after every accepted step with the state then
+   (may be NULL: no observation). */
 typedef void (*ex_observer)(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
                             const vlbe_real *lambda);
 
@@ -24,6 +27,10 @@ typedef struct ex_method {
     const vlbe_hht_params *hht;
     double h;
     const vlbe_bdf_params *bdf;
+    vlbe_real *work; /* optional caller workspace (NULL: malloc'ed per run) */
+    size_t work_len; /* at least vlbe_hht/bdf_work_len(n, m)                */
+    int *iwork;
+    size_t iwork_len;
 } ex_method;
 
 /* What a run gives besides the observations. */
@@ -33,6 +40,39 @@ typedef struct ex_run_out {
     double cpu;           /* seconds                                      */
 } ex_run_out;
 
+/* Makes the caller workspace of m large enough for either integrator on a
+   problem of n coordinates and nm constraints, growing the buffers m
+   already has.  0 on success, -1 when out of memory (m then has none). */
+static inline int ex_method_reserve(ex_method *m, int n, int nm)
+{
+    size_t lw = vlbe_hht_work_len(n, nm), liw = vlbe_hht_iwork_len(n, nm);
+    if (vlbe_bdf_work_len(n, nm) > lw) lw = vlbe_bdf_work_len(n, nm);
+    if (vlbe_bdf_iwork_len(n, nm) > liw) liw = vlbe_bdf_iwork_len(n, nm);
+    if (m->work && lw <= m->work_len && liw <= m->iwork_len) return 0;
+    free(m->work);
+    free(m->iwork);
+    m->work = (vlbe_real *)malloc(lw * sizeof *m->work);
+    m->iwork = (int *)malloc(liw * sizeof *m->iwork);
+    m->work_len = m->work ? lw : 0;
+    m->iwork_len = m->iwork ? liw : 0;
+    if (m->work && m->iwork) return 0;
+    free(m->work);
+    free(m->iwork);
+    m->work = NULL;
+    m->iwork = NULL;
+    return -1;
+}
+
+/* Frees what ex_method_reserve gave m. */
+static inline void ex_method_release(ex_method *m)
+{
+    free(m->work);
+    free(m->iwork);
+    m->work = NULL;
+    m->iwork = NULL;
+    m->work_len = m->iwork_len = 0;
+}
+
 /* Integrates sys from (0, q0, v0) to t_end.  q_end, v_end (n) and lam_end
    (m) receive the last accepted state when non-NULL. */
 static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const vlbe_real *q0,
@@ -41,10 +81,11 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
                                  ex_run_out *out)
 {
     int n = sys->n, nm = sys->m;
-    size_t lw = m->hht ? vlbe_hht_work_len(n, nm) : vlbe_bdf_work_len(n, nm);
-    size_t liw = m->hht ? vlbe_hht_iwork_len(n, nm) : vlbe_bdf_iwork_len(n, nm);
-    vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
-    int *iw = (int *)malloc(liw * sizeof *iw);
+    int own = m->work == NULL;
+    size_t lw = own ? (m->hht ? vlbe_hht_work_len(n, nm) : vlbe_bdf_work_len(n, nm)) : m->work_len;
+    size_t liw = own ? (m->hht ? vlbe_hht_iwork_len(n, nm) : vlbe_bdf_iwork_len(n, nm)) : m->iwork_len;
+    vlbe_real *w = own ? (vlbe_real *)malloc(lw * sizeof *w) : m->work;
+    int *iw = own ? (int *)malloc(liw * sizeof *iw) : m->iwork;
     vlbe_dae_stats zero_stats = {0};
     clock_t c0 = clock();
     vlbe_hht hs;
@@ -55,8 +96,10 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
     out->stats = zero_stats;
     out->cpu = 0.0;
     if (!w || !iw) {
-        free(w);
-        free(iw);
+        if (own) {
+            free(w);
+            free(iw);
+        }
         return out->status = VLBE_EWORK;
     }
     if (m->hht) {
@@ -64,10 +107,10 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
         rc = vlbe_hht_init(&hs, sys, m->hht, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
         if (rc == VLBE_OK) {
             q = hs.q, v = hs.v, lam = hs.lambda;
-            obs(ctx, 0.0, q, v, lam);
+            if (obs) obs(ctx, 0.0, q, v, lam);
             for (k = 1; k <= nsteps; ++k) {
                 if ((rc = vlbe_hht_step(&hs, (vlbe_real)m->h)) != VLBE_OK) break;
-                obs(ctx, (double)k * m->h, q, v, lam);
+                if (obs) obs(ctx, (double)k * m->h, q, v, lam);
             }
             out->stats = hs.stats;
         }
@@ -75,10 +118,10 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
         rc = vlbe_bdf_init(&bs, sys, m->bdf, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
         if (rc == VLBE_OK) {
             q = bs.q, v = bs.v, lam = bs.lambda;
-            obs(ctx, 0.0, q, v, lam);
+            if (obs) obs(ctx, 0.0, q, v, lam);
             while ((double)bs.t < t_end) {
                 if ((rc = vlbe_bdf_step(&bs, (vlbe_real)t_end)) != VLBE_OK) break;
-                obs(ctx, (double)bs.t, q, v, lam);
+                if (obs) obs(ctx, (double)bs.t, q, v, lam);
             }
             out->stats = bs.stats;
         }
@@ -90,8 +133,10 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
     }
     out->cpu = (double)(clock() - c0) / (double)CLOCKS_PER_SEC;
     out->status = rc;
-    free(w);
-    free(iw);
+    if (own) {
+        free(w);
+        free(iw);
+    }
     return rc;
 }
 
