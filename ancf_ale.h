@@ -933,4 +933,652 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
     return VLBE_OK;
 }
 
+/* ===== chains of elements ================================================ */
+/* -- constants, types --------------------------------------------------- */
+/* material-coordinate mode of a node */
+#define VLBE_ALE_PFIXED 0      /* p constant (node.p), not a coordinate            */
+#define VLBE_ALE_PPRESCRIBED 1 /* p(t) given (pfun or node.p + pd t + pdd t^2/2)   */
+#define VLBE_ALE_PFREE 2       /* p is a coordinate (initial value node.p)         */
+
+/* constraint types (equations each) */
+#define VLBE_ALE_CON_POS 1       /* r_node = v[0..1]                            (2) */
+#define VLBE_ALE_CON_SLOPE_DIR 2 /* r'_node x v[0..1] = 0 (slope `which`)       (1) */
+#define VLBE_ALE_CON_SLOPE 3     /* r'_node = v[0..1] (slope `which`)           (2) */
+#define VLBE_ALE_CON_P 4         /* p_node = v0 + v1 t + v2 t^2/2 (free node)   (1) */
+#define VLBE_ALE_CON_EQUAL_LEN 5 /* nodes node..node2 equally spaced in p (eq. 51 of [V]) (node2-node-1) */
+#define VLBE_ALE_CON_SLIDE_C 6   /* sliding node: r'(1) = r'(2) (eq. 40 of [R]) (2) */
+#define VLBE_ALE_CON_SLIDE_D 7   /* sliding node: |r'(1)| = |r'(2)| (eq. 40)    (1) */
+
+typedef struct vlbe_ale_node {
+    int pmode;     /* VLBE_ALE_PFIXED / PPRESCRIBED / PFREE                          */
+    int slide;     /* 1: two slope vectors, left r'(1) and right r'(2) of the node   */
+    vlbe_real p;   /* fixed value, p(0) when prescribed, initial value when free     */
+    vlbe_real pd;  /* prescribed: p'(t) = pd + pdd t (unless the chain has a pfun)   */
+    vlbe_real pdd;
+    vlbe_real mass; /* point mass carried by the node (a sliding mass: pmode free)   */
+    int ofs;       /* set by vlbe_ale_chain_layout: first coordinate in q            */
+} vlbe_ale_node;
+
+typedef struct vlbe_ale_con {
+    int type;
+    int node, node2; /* node2: last node of VLBE_ALE_CON_EQUAL_LEN                    */
+    int which;       /* slope constraints on a sliding node: 0 left, 1 right          */
+    vlbe_real v[3];
+} vlbe_ale_con;
+
+/* A chain: nodes 0..nn-1, element e between nodes e and e+1 with increasing
+   material coordinates.  Global coordinates node by node:
+   [x, y, x', y' (, x'(2), y'(2) if sliding) (, p if free)].  The arrays are
+   the caller's; the chain never allocates. */
+typedef struct vlbe_ale_chain {
+    const vlbe_ale_elem *el;
+    unsigned mode;       /* OR'ed into every element's mode                        */
+    int nn, nn_cap;      /* nodes, capacity of node[]                              */
+    vlbe_ale_node *node;
+    int ncon, ncon_cap;
+    vlbe_ale_con *con;
+    int n, m;            /* coordinates, constraint equations (layout)             */
+    vlbe_real g[2];      /* gravity on the point masses                            */
+    vlbe_real Lmin;      /* element length below which callbacks fail (ELENGTH)   */
+    /* optional p(t), p'(t), p''(t) of prescribed nodes; returns 0 on success */
+    int (*pfun)(void *user, int node, vlbe_real t, vlbe_real *p3);
+    void *user;
+    vlbe_status err;     /* status of the last failed callback (VLBE_OK if none)   */
+    int err_elem;        /* element (or node) where it happened                    */
+} vlbe_ale_chain;
+
+/* -- API prototypes ----------------------------------------------------- */
+VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
+                                         vlbe_ale_node *nodes, int nn, int nn_cap,
+                                         vlbe_ale_con *cons, int ncon_cap);
+VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c);
+VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch);
+VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_real t,
+                                          const vlbe_real *q, const vlbe_real *v, vlbe_real *p3);
+VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qe,
+                                           vlbe_real *ve, int *idx, unsigned *mode);
+VLBE_API void vlbe_ale_chain_straight(const vlbe_ale_chain *ch, const vlbe_real *r0,
+                                      const vlbe_real *dir, vlbe_real *q);
+VLBE_API vlbe_status vlbe_ale_chain_locate(const vlbe_ale_chain *ch, vlbe_real t,
+                                           const vlbe_real *q, vlbe_real p, int *e);
+VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                          vlbe_real p, vlbe_real *r, vlbe_real *rp);
+VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                           const vlbe_real *v, vlbe_real *E);
+/* vlbe_dae callbacks (user = the chain) */
+VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                                 vlbe_real *M);
+VLBE_API int vlbe_ale_chain_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                                  vlbe_real *Q);
+VLBE_API int vlbe_ale_chain_force_jac(void *user, vlbe_real t, const vlbe_real *q,
+                                      const vlbe_real *v, vlbe_real *K, vlbe_real *D);
+VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q,
+                                     const vlbe_real *v, const vlbe_real *a, vlbe_real *Mq,
+                                     vlbe_real *Mv);
+VLBE_API int vlbe_ale_chain_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C);
+VLBE_API int vlbe_ale_chain_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq,
+                                       vlbe_real *Ct);
+VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real *q,
+                                       const vlbe_real *v, vlbe_real *gamma);
+VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real *q,
+                                        const vlbe_real *lambda, vlbe_real *H);
+
+/* -- implementation ----------------------------------------------------- */
+VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
+                                         vlbe_ale_node *nodes, int nn, int nn_cap,
+                                         vlbe_ale_con *cons, int ncon_cap)
+{
+    VLBE_ASSERT(ch != NULL && el != NULL && nodes != NULL);
+    if (nn < 2 || nn_cap < nn || ncon_cap < 0 || (ncon_cap > 0 && cons == NULL)) return VLBE_EARG;
+    ch->el = el;
+    ch->mode = 0;
+    ch->nn = nn;
+    ch->nn_cap = nn_cap;
+    ch->node = nodes;
+    ch->ncon = 0;
+    ch->ncon_cap = ncon_cap;
+    ch->con = cons;
+    ch->n = ch->m = 0;
+    ch->g[0] = ch->g[1] = VLBE_R(0.0);
+    ch->Lmin = VLBE_R(0.0);
+    ch->pfun = NULL;
+    ch->user = NULL;
+    ch->err = VLBE_OK;
+    ch->err_elem = -1;
+    return VLBE_OK;
+}
+
+static inline int vlbe__ale_con_rows(const vlbe_ale_con *c)
+{
+    switch (c->type) {
+    case VLBE_ALE_CON_POS: case VLBE_ALE_CON_SLOPE: case VLBE_ALE_CON_SLIDE_C: return 2;
+    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_P: case VLBE_ALE_CON_SLIDE_D: return 1;
+    case VLBE_ALE_CON_EQUAL_LEN: return c->node2 - c->node - 1;
+    default: return -1;
+    }
+}
+
+VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c)
+{
+    VLBE_ASSERT(ch != NULL && c != NULL);
+    if (ch->ncon >= ch->ncon_cap) return VLBE_EWORK;
+    if (vlbe__ale_con_rows(c) < 1 || c->node < 0 || c->node >= ch->nn) return VLBE_EARG;
+    if (c->type == VLBE_ALE_CON_EQUAL_LEN && c->node2 >= ch->nn) return VLBE_EARG;
+    if (!vlbe_all_finite(c->v, 3)) return VLBE_ENONFINITE;
+    ch->con[ch->ncon++] = *c;
+    return VLBE_OK;
+}
+
+/* index of the coordinate p of node i in q, -1 when p is not a coordinate */
+static inline int vlbe__ale_pidx(const vlbe_ale_chain *ch, int i)
+{
+    const vlbe_ale_node *nd = &ch->node[i];
+    return nd->pmode == VLBE_ALE_PFREE ? nd->ofs + 4 + 2 * nd->slide : -1;
+}
+
+/* index of slope `which` (0 left, 1 right) of node i */
+static inline int vlbe__ale_sidx(const vlbe_ale_chain *ch, int i, int which)
+{
+    return ch->node[i].ofs + 2 + (ch->node[i].slide && which ? 2 : 0);
+}
+
+/* Assign coordinates (node.ofs, n) and count constraint rows (m); checks
+   the nodes and constraints.  Call after any change of nodes or constraints. */
+VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
+{
+    int i, k, n = 0, m = 0;
+    VLBE_ASSERT(ch != NULL);
+    for (i = 0; i < ch->nn; ++i) {
+        const vlbe_ale_node *nd = &ch->node[i];
+        if (nd->pmode < VLBE_ALE_PFIXED || nd->pmode > VLBE_ALE_PFREE || nd->slide < 0 ||
+            nd->slide > 1 || nd->mass < VLBE_R(0.0))
+            return VLBE_EARG;
+        if (!vlbe_all_finite(&nd->p, 1) || !vlbe_all_finite(&nd->pd, 1) ||
+            !vlbe_all_finite(&nd->pdd, 1) || !vlbe_all_finite(&nd->mass, 1))
+            return VLBE_ENONFINITE;
+    }
+    for (k = 0; k < ch->ncon; ++k) {
+        const vlbe_ale_con *c = &ch->con[k];
+        int r = vlbe__ale_con_rows(c);
+        if (r < 1 || c->node < 0 || c->node >= ch->nn) return VLBE_EARG;
+        if (c->type == VLBE_ALE_CON_EQUAL_LEN) {
+            if (c->node2 >= ch->nn) return VLBE_EARG;
+            for (i = c->node + 1; i < c->node2; ++i)
+                if (ch->node[i].pmode != VLBE_ALE_PFREE) return VLBE_EARG;
+        }
+        if (c->type == VLBE_ALE_CON_P && ch->node[c->node].pmode != VLBE_ALE_PFREE) return VLBE_EARG;
+        if ((c->type == VLBE_ALE_CON_SLIDE_C || c->type == VLBE_ALE_CON_SLIDE_D) &&
+            !ch->node[c->node].slide)
+            return VLBE_EARG;
+        m += r;
+    }
+    for (i = 0; i < ch->nn; ++i) {
+        ch->node[i].ofs = n;
+        n += 4 + 2 * ch->node[i].slide + (ch->node[i].pmode == VLBE_ALE_PFREE);
+    }
+    ch->n = n;
+    ch->m = m;
+    return VLBE_OK;
+}
+
+/* p, p', p'' of node i at time t (q, v: the state, for free nodes). */
+VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_real t,
+                                          const vlbe_real *q, const vlbe_real *v, vlbe_real *p3)
+{
+    const vlbe_ale_node *nd = &ch->node[i];
+    switch (nd->pmode) {
+    case VLBE_ALE_PFREE:
+        p3[0] = q[vlbe__ale_pidx(ch, i)];
+        p3[1] = v ? v[vlbe__ale_pidx(ch, i)] : VLBE_R(0.0);
+        p3[2] = VLBE_R(0.0);
+        return VLBE_OK;
+    case VLBE_ALE_PPRESCRIBED:
+        if (ch->pfun) {
+            if (ch->pfun(ch->user, i, t, p3)) return VLBE_ECALLBACK;
+            return vlbe_all_finite(p3, 3) ? VLBE_OK : VLBE_ENONFINITE;
+        }
+        p3[0] = nd->p + (nd->pd + VLBE_R(0.5) * nd->pdd * t) * t;
+        p3[1] = nd->pd + nd->pdd * t;
+        p3[2] = nd->pdd;
+        return VLBE_OK;
+    default:
+        p3[0] = nd->p;
+        p3[1] = p3[2] = VLBE_R(0.0);
+        return VLBE_OK;
+    }
+}
+
+/* Element e's coordinates qe (and rates ve when v != NULL), its index map
+   idx[10] into q (-1 for a p that is not a coordinate) and element mode. */
+VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qe,
+                                           vlbe_real *ve, int *idx, unsigned *mode)
+{
+    int s, k;
+    vlbe_status st;
+    *mode = ch->mode;
+    for (s = 0; s < 2; ++s) {
+        const int i = e + s, b = 5 * s;
+        const int o = ch->node[i].ofs, sl = vlbe__ale_sidx(ch, i, s == 0);
+        vlbe_real p3[3];
+        idx[b] = o;
+        idx[b + 1] = o + 1;
+        idx[b + 2] = sl;
+        idx[b + 3] = sl + 1;
+        idx[b + 4] = vlbe__ale_pidx(ch, i);
+        if ((st = vlbe_ale_chain_pnode(ch, i, t, q, v, p3)) != VLBE_OK) return st;
+        for (k = 0; k < 4; ++k) {
+            qe[b + k] = q[idx[b + k]];
+            if (ve) ve[b + k] = v[idx[b + k]];
+        }
+        qe[b + 4] = p3[0];
+        if (ve) ve[b + 4] = p3[1];
+        if (ch->node[i].pmode == VLBE_ALE_PFIXED) *mode |= s ? VLBE_ALE_FIX_P2 : VLBE_ALE_FIX_P1;
+    }
+    if (!(qe[9] - qe[4] > ch->Lmin)) return VLBE_ELENGTH;
+    return VLBE_OK;
+}
+
+/* Nodes on a straight line: r_i = r0 + dir (p_i - p_0), slopes dir (unit for
+   an unstretched chain; scale dir for a uniform stretch), free p's at
+   node.p; all other coordinates of q are written too. */
+VLBE_API void vlbe_ale_chain_straight(const vlbe_ale_chain *ch, const vlbe_real *r0,
+                                      const vlbe_real *dir, vlbe_real *q)
+{
+    int i, k;
+    for (i = 0; i < ch->nn; ++i) {
+        const vlbe_ale_node *nd = &ch->node[i];
+        const int o = nd->ofs;
+        for (k = 0; k < 2; ++k) {
+            q[o + k] = r0[k] + dir[k] * (nd->p - ch->node[0].p);
+            q[o + 2 + k] = dir[k];
+            if (nd->slide) q[o + 4 + k] = dir[k];
+        }
+        if (nd->pmode == VLBE_ALE_PFREE) q[vlbe__ale_pidx(ch, i)] = nd->p;
+    }
+}
+
+/* Element holding material point p (the first whose [p1, p2] contains it). */
+VLBE_API vlbe_status vlbe_ale_chain_locate(const vlbe_ale_chain *ch, vlbe_real t,
+                                           const vlbe_real *q, vlbe_real p, int *e)
+{
+    int i;
+    vlbe_real pa[3], pb[3];
+    vlbe_status st;
+    if ((st = vlbe_ale_chain_pnode(ch, 0, t, q, NULL, pa)) != VLBE_OK) return st;
+    for (i = 0; i + 1 < ch->nn; ++i) {
+        if ((st = vlbe_ale_chain_pnode(ch, i + 1, t, q, NULL, pb)) != VLBE_OK) return st;
+        if (p >= pa[0] && p <= pb[0]) {
+            *e = i;
+            return VLBE_OK;
+        }
+        pa[0] = pb[0];
+    }
+    return VLBE_EBOUND;
+}
+
+VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                          vlbe_real p, vlbe_real *r, vlbe_real *rp)
+{
+    vlbe_real qe[10];
+    int e, idx[10];
+    unsigned md;
+    vlbe_status st;
+    if ((st = vlbe_ale_chain_locate(ch, t, q, p, &e)) != VLBE_OK) return st;
+    if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK) return st;
+    return vlbe_ale_point(qe, p, r, rp);
+}
+
+/* Kinetic, strain and potential energy (loads and gravity on point masses). */
+VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                           const vlbe_real *v, vlbe_real *E)
+{
+    vlbe_real qe[10], ve[10], Ee[3];
+    int e, i, idx[10];
+    unsigned md;
+    vlbe_status st;
+    E[0] = E[1] = E[2] = VLBE_R(0.0);
+    for (e = 0; e + 1 < ch->nn; ++e) {
+        if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK) return st;
+        if ((st = vlbe_ale_energy(ch->el, md, qe, ve, Ee)) != VLBE_OK) return st;
+        for (i = 0; i < 3; ++i) E[i] += Ee[i];
+    }
+    for (i = 0; i < ch->nn; ++i) {
+        const vlbe_real m = ch->node[i].mass, *r = q + ch->node[i].ofs, *rd = v + ch->node[i].ofs;
+        E[0] += VLBE_R(0.5) * m * vlbe_v2_dot(rd, rd);
+        E[2] -= m * vlbe_v2_dot(ch->g, r);
+    }
+    return VLBE_OK;
+}
+
+static inline int vlbe__ale_fail(vlbe_ale_chain *ch, vlbe_status st, int where)
+{
+    ch->err = st;
+    ch->err_elem = where;
+    return 1;
+}
+
+/* scatter a 10x10 element matrix */
+static inline void vlbe__ale_scatter(int n, const int *idx, const vlbe_real *Ae, vlbe_real *A)
+{
+    int i, j;
+    for (i = 0; i < 10; ++i) {
+        vlbe_real *row;
+        if (idx[i] < 0) continue;
+        row = A + (size_t)idx[i] * (size_t)n;
+        for (j = 0; j < 10; ++j)
+            if (idx[j] >= 0) row[idx[j]] += Ae[i * 10 + j];
+    }
+}
+
+/* prescribed p'' of the element's non-coordinate p's, as an acceleration
+   vector in element coordinates (zero elsewhere); returns 0 if all zero */
+static inline int vlbe__ale_pres_acc(const vlbe_ale_chain *ch, int e, vlbe_real t, vlbe_real *ae)
+{
+    int s, any = 0, k;
+    for (k = 0; k < 10; ++k) ae[k] = VLBE_R(0.0);
+    for (s = 0; s < 2; ++s)
+        if (ch->node[e + s].pmode == VLBE_ALE_PPRESCRIBED) {
+            vlbe_real p3[3];
+            if (vlbe_ale_chain_pnode(ch, e + s, t, NULL, NULL, p3) == VLBE_OK && p3[2] != VLBE_R(0.0)) {
+                ae[4 + 5 * s] = p3[2];
+                any = 1;
+            }
+        }
+    return any;
+}
+
+VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                                 vlbe_real *M)
+{
+    vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
+    const size_t n = (size_t)ch->n;
+    vlbe_real qe[10], Me[100];
+    int e, i, k, idx[10];
+    unsigned md;
+    vlbe_status st;
+    (void)v;
+    for (i = 0; i < (int)(n * n); ++i) M[i] = VLBE_R(0.0);
+    for (e = 0; e + 1 < ch->nn; ++e) {
+        if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK ||
+            (st = vlbe_ale_mass(ch->el, md, qe, Me)) != VLBE_OK)
+            return vlbe__ale_fail(ch, st, e);
+        vlbe__ale_scatter(ch->n, idx, Me, M);
+    }
+    for (i = 0; i < ch->nn; ++i)
+        for (k = 0; k < 2; ++k) {
+            const size_t r = (size_t)(ch->node[i].ofs + k);
+            M[r * n + r] += ch->node[i].mass;
+        }
+    return 0;
+}
+
+/* Q and, when K != NULL, K and D (both n x n) */
+static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                         const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
+                                         vlbe_real *D)
+{
+    const size_t n = (size_t)ch->n;
+    vlbe_real qe[10], ve[10], Qe[10], Ke[100], De[100], ae[10];
+    int e, i, k, idx[10];
+    unsigned md;
+    vlbe_status st;
+    if (Q)
+        for (i = 0; i < ch->n; ++i) Q[i] = VLBE_R(0.0);
+    if (K)
+        for (i = 0; i < (int)(n * n); ++i) K[i] = D[i] = VLBE_R(0.0);
+    for (e = 0; e + 1 < ch->nn; ++e) {
+        if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK ||
+            (st = vlbe_ale_force(ch->el, md, qe, ve, Qe, K ? Ke : NULL, K ? De : NULL)) != VLBE_OK)
+            return vlbe__ale_fail(ch, st, e);
+        if (vlbe__ale_pres_acc(ch, e, t, ae)) {
+            /* inertia of the prescribed p'': Q -= M ae, K -= d(M ae)/dq */
+            vlbe_real Me[100], Mq[100];
+            if ((st = vlbe_ale_mass(ch->el, md, qe, Me)) != VLBE_OK) return vlbe__ale_fail(ch, st, e);
+            for (i = 0; i < 10; ++i)
+                for (k = 0; k < 10; ++k) Qe[i] -= Me[i * 10 + k] * ae[k];
+            if (K) {
+                if ((st = vlbe_ale_mass_jac(ch->el, md, qe, ae, Mq)) != VLBE_OK)
+                    return vlbe__ale_fail(ch, st, e);
+                for (i = 0; i < 100; ++i) Ke[i] -= Mq[i];
+            }
+        }
+        if (Q)
+            for (i = 0; i < 10; ++i)
+                if (idx[i] >= 0) Q[idx[i]] += Qe[i];
+        if (K) {
+            vlbe__ale_scatter(ch->n, idx, Ke, K);
+            vlbe__ale_scatter(ch->n, idx, De, D);
+        }
+    }
+    if (Q)
+        for (i = 0; i < ch->nn; ++i)
+            for (k = 0; k < 2; ++k) Q[ch->node[i].ofs + k] += ch->node[i].mass * ch->g[k];
+    return 0;
+}
+
+VLBE_API int vlbe_ale_chain_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                                  vlbe_real *Q)
+{
+    return vlbe__ale_chain_forces((vlbe_ale_chain *)user, t, q, v, Q, NULL, NULL);
+}
+
+VLBE_API int vlbe_ale_chain_force_jac(void *user, vlbe_real t, const vlbe_real *q,
+                                      const vlbe_real *v, vlbe_real *K, vlbe_real *D)
+{
+    return vlbe__ale_chain_forces((vlbe_ale_chain *)user, t, q, v, NULL, K, D);
+}
+
+VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q,
+                                     const vlbe_real *v, const vlbe_real *a, vlbe_real *Mq,
+                                     vlbe_real *Mv)
+{
+    vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
+    const size_t n = (size_t)ch->n;
+    vlbe_real qe[10], ae[10], Je[100];
+    int e, i, idx[10];
+    unsigned md;
+    vlbe_status st;
+    (void)v;
+    for (i = 0; i < (int)(n * n); ++i) Mq[i] = VLBE_R(0.0);
+    if (Mv)
+        for (i = 0; i < (int)(n * n); ++i) Mv[i] = VLBE_R(0.0);
+    for (e = 0; e + 1 < ch->nn; ++e) {
+        if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK)
+            return vlbe__ale_fail(ch, st, e);
+        for (i = 0; i < 10; ++i) ae[i] = idx[i] >= 0 ? a[idx[i]] : VLBE_R(0.0);
+        if ((st = vlbe_ale_mass_jac(ch->el, md, qe, ae, Je)) != VLBE_OK)
+            return vlbe__ale_fail(ch, st, e);
+        vlbe__ale_scatter(ch->n, idx, Je, Mq);
+    }
+    return 0;
+}
+
+/* known p (and its rates) of node i for the equal-length constraint */
+static inline vlbe_status vlbe__ale_eql_end(const vlbe_ale_chain *ch, int i, vlbe_real t,
+                                            const vlbe_real *q, vlbe_real *p3, int *col)
+{
+    *col = vlbe__ale_pidx(ch, i);
+    return vlbe_ale_chain_pnode(ch, i, t, q, NULL, p3);
+}
+
+/* Constraint rows: C (may be NULL), Cq rows (n wide, may be NULL), Ct. */
+static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_real t,
+                                              const vlbe_real *q, vlbe_real *C, vlbe_real *Cq,
+                                              vlbe_real *Ct)
+{
+    const size_t n = (size_t)ch->n;
+    int k, r = 0, i, b;
+    vlbe_status st;
+    if (Cq)
+        for (i = 0; i < (int)(n * (size_t)ch->m); ++i) Cq[i] = VLBE_R(0.0);
+    for (k = 0; k < ch->ncon; ++k) {
+        const vlbe_ale_con *c = &ch->con[k];
+        const int o = ch->node[c->node].ofs;
+        vlbe_real *row = Cq ? Cq + (size_t)r * n : NULL;
+        switch (c->type) {
+        case VLBE_ALE_CON_POS:
+            for (b = 0; b < 2; ++b) {
+                if (C) C[r + b] = q[o + b] - c->v[b];
+                if (row) row[(size_t)b * n + (size_t)(o + b)] = VLBE_R(1.0);
+                if (Ct) Ct[r + b] = VLBE_R(0.0);
+            }
+            break;
+        case VLBE_ALE_CON_SLOPE: {
+            const int s = vlbe__ale_sidx(ch, c->node, c->which);
+            for (b = 0; b < 2; ++b) {
+                if (C) C[r + b] = q[s + b] - c->v[b];
+                if (row) row[(size_t)b * n + (size_t)(s + b)] = VLBE_R(1.0);
+                if (Ct) Ct[r + b] = VLBE_R(0.0);
+            }
+        } break;
+        case VLBE_ALE_CON_SLOPE_DIR: {
+            const int s = vlbe__ale_sidx(ch, c->node, c->which);
+            if (C) C[r] = q[s] * c->v[1] - q[s + 1] * c->v[0];
+            if (row) {
+                row[s] = c->v[1];
+                row[s + 1] = -c->v[0];
+            }
+            if (Ct) Ct[r] = VLBE_R(0.0);
+        } break;
+        case VLBE_ALE_CON_P: {
+            const int pi = vlbe__ale_pidx(ch, c->node);
+            if (C) C[r] = q[pi] - c->v[0] - (c->v[1] + VLBE_R(0.5) * c->v[2] * t) * t;
+            if (row) row[pi] = VLBE_R(1.0);
+            if (Ct) Ct[r] = -(c->v[1] + c->v[2] * t);
+        } break;
+        case VLBE_ALE_CON_EQUAL_LEN: {
+            const int a = c->node, z = c->node2;
+            vlbe_real pa[3], pz[3];
+            int ca, cz;
+            if ((st = vlbe__ale_eql_end(ch, a, t, q, pa, &ca)) != VLBE_OK) return st;
+            if ((st = vlbe__ale_eql_end(ch, z, t, q, pz, &cz)) != VLBE_OK) return st;
+            for (i = a + 1; i < z; ++i) {
+                const vlbe_real al = (vlbe_real)(z - i) / (vlbe_real)(z - a);
+                const vlbe_real be = (vlbe_real)(i - a) / (vlbe_real)(z - a);
+                const int ri = r + i - a - 1;
+                if (C) C[ri] = q[vlbe__ale_pidx(ch, i)] - al * pa[0] - be * pz[0];
+                if (Cq) {
+                    vlbe_real *rw = Cq + (size_t)ri * n;
+                    rw[vlbe__ale_pidx(ch, i)] = VLBE_R(1.0);
+                    if (ca >= 0) rw[ca] = -al;
+                    if (cz >= 0) rw[cz] = -be;
+                }
+                if (Ct) Ct[ri] = -(ca >= 0 ? VLBE_R(0.0) : al * pa[1]) - (cz >= 0 ? VLBE_R(0.0) : be * pz[1]);
+            }
+        } break;
+        case VLBE_ALE_CON_SLIDE_C:
+            for (b = 0; b < 2; ++b) {
+                if (C) C[r + b] = q[o + 2 + b] - q[o + 4 + b];
+                if (row) {
+                    row[(size_t)b * n + (size_t)(o + 2 + b)] = VLBE_R(1.0);
+                    row[(size_t)b * n + (size_t)(o + 4 + b)] = VLBE_R(-1.0);
+                }
+                if (Ct) Ct[r + b] = VLBE_R(0.0);
+            }
+            break;
+        case VLBE_ALE_CON_SLIDE_D: {
+            const vlbe_real na = vlbe_v2_norm(q + o + 2), nb = vlbe_v2_norm(q + o + 4);
+            if (!(na > VLBE_R(0.0)) || !(nb > VLBE_R(0.0))) return VLBE_ESINGULAR;
+            if (C) C[r] = na - nb;
+            if (row)
+                for (b = 0; b < 2; ++b) {
+                    row[o + 2 + b] = q[o + 2 + b] / na;
+                    row[o + 4 + b] = -q[o + 4 + b] / nb;
+                }
+            if (Ct) Ct[r] = VLBE_R(0.0);
+        } break;
+        default: return VLBE_EARG;
+        }
+        r += vlbe__ale_con_rows(c);
+    }
+    return VLBE_OK;
+}
+
+VLBE_API int vlbe_ale_chain_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+{
+    vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
+    vlbe_status st = vlbe__ale_chain_con(ch, t, q, C, NULL, NULL);
+    return st ? vlbe__ale_fail(ch, st, -1) : 0;
+}
+
+VLBE_API int vlbe_ale_chain_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq,
+                                       vlbe_real *Ct)
+{
+    vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
+    vlbe_status st = vlbe__ale_chain_con(ch, t, q, NULL, Cq, Ct);
+    return st ? vlbe__ale_fail(ch, st, -1) : 0;
+}
+
+/* gamma = -((C_q v)_q v + 2 C_qt v + C_tt): nonzero for prescribed p (p''),
+   equal lengths with prescribed ends, and the |r'(1)| = |r'(2)| constraint. */
+VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real *q,
+                                       const vlbe_real *v, vlbe_real *gamma)
+{
+    vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
+    int k, r = 0, i;
+    for (k = 0; k < ch->ncon; ++k) {
+        const vlbe_ale_con *c = &ch->con[k];
+        const int rows = vlbe__ale_con_rows(c), o = ch->node[c->node].ofs;
+        for (i = 0; i < rows; ++i) gamma[r + i] = VLBE_R(0.0);
+        if (c->type == VLBE_ALE_CON_P) {
+            gamma[r] = c->v[2];
+        } else if (c->type == VLBE_ALE_CON_EQUAL_LEN) {
+            vlbe_real pa[3], pz[3];
+            int ca, cz;
+            if (vlbe__ale_eql_end(ch, c->node, t, q, pa, &ca) ||
+                vlbe__ale_eql_end(ch, c->node2, t, q, pz, &cz))
+                return vlbe__ale_fail(ch, VLBE_ECALLBACK, -1);
+            for (i = c->node + 1; i < c->node2; ++i) {
+                const vlbe_real al = (vlbe_real)(c->node2 - i) / (vlbe_real)(c->node2 - c->node);
+                gamma[r + i - c->node - 1] = (ca >= 0 ? VLBE_R(0.0) : al * pa[2]) +
+                                             (cz >= 0 ? VLBE_R(0.0) : (VLBE_R(1.0) - al) * pz[2]);
+            }
+        } else if (c->type == VLBE_ALE_CON_SLIDE_D) {
+            /* d2|a|/dt2 at fixed a'' = (|a'|^2 - (a.a')^2/|a|^2)/|a| */
+            vlbe_real g = VLBE_R(0.0);
+            int s;
+            for (s = 0; s < 2; ++s) {
+                const vlbe_real *a = q + o + 2 + 2 * s, *ad = v + o + 2 + 2 * s;
+                const vlbe_real na = vlbe_v2_norm(a), d = vlbe_v2_dot(a, ad);
+                if (!(na > VLBE_R(0.0))) return vlbe__ale_fail(ch, VLBE_ESINGULAR, c->node);
+                g += (s ? VLBE_R(-1.0) : VLBE_R(1.0)) * (vlbe_v2_dot(ad, ad) - d * d / (na * na)) / na;
+            }
+            gamma[r] = -g;
+        }
+        r += rows;
+    }
+    return 0;
+}
+
+/* H = d(C_q^T lambda)/dq: only the |r'| constraint is nonlinear. */
+VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real *q,
+                                        const vlbe_real *lambda, vlbe_real *H)
+{
+    vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
+    const size_t n = (size_t)ch->n;
+    int k, r = 0, i, j, s;
+    (void)t;
+    for (i = 0; i < (int)(n * n); ++i) H[i] = VLBE_R(0.0);
+    for (k = 0; k < ch->ncon; ++k) {
+        const vlbe_ale_con *c = &ch->con[k];
+        if (c->type == VLBE_ALE_CON_SLIDE_D) {
+            const int o = ch->node[c->node].ofs;
+            for (s = 0; s < 2; ++s) {
+                const vlbe_real *a = q + o + 2 + 2 * s, na = vlbe_v2_norm(a);
+                const vlbe_real f = (s ? -lambda[r] : lambda[r]) / na;
+                const size_t b = (size_t)(o + 2 + 2 * s);
+                if (!(na > VLBE_R(0.0))) return vlbe__ale_fail(ch, VLBE_ESINGULAR, c->node);
+                for (i = 0; i < 2; ++i)
+                    for (j = 0; j < 2; ++j)
+                        H[(b + (size_t)i) * n + b + (size_t)j] +=
+                            f * ((i == j ? VLBE_R(1.0) : VLBE_R(0.0)) - a[i] * a[j] / (na * na));
+            }
+        }
+        r += vlbe__ale_con_rows(c);
+    }
+    return 0;
+}
+
 #endif /* VLBE_ANCF_ALE_H */
