@@ -1581,4 +1581,224 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
     return 0;
 }
 
+/* ===== segmentation, merging, length control ============================ */
+VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlbe_real ph,
+                                    vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd);
+VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real ph, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v,
+                                           vlbe_real *qn, vlbe_real *vn);
+VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe_real *q,
+                                           const vlbe_real *v, vlbe_real *qn, vlbe_real *vn);
+VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slider, vlbe_real Lstd,
+                                                   vlbe_real t, const vlbe_real *q,
+                                                   const vlbe_real *v, vlbe_real *qn,
+                                                   vlbe_real *vn, int *changed);
+
+/* Exact segmentation (cubic subdivision) of an element at the material point
+   ph in (p1, p2): the new node H gets qh = [r(ph), r'(ph), ph] and, when qd
+   is given, the rates of a node that moves with the material (p_H' = 0):
+   qhd = [v(ph), v'(ph), 0] with v = N q' the material velocity (eq. 14).  The
+   elements [node 1, H] and [H, node 2] describe exactly the same curve and
+   material parametrisation as the original (a cubic is determined by its
+   values and slopes at two points), so positions, strains and energies are
+   unchanged.  ph outside (p1, p2): VLBE_EBOUND. */
+VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlbe_real ph,
+                                    vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd)
+{
+    vlbe_herm_ale b;
+    vlbe_status st;
+    int j, k, c;
+    VLBE_ASSERT(q != NULL && qh != NULL);
+    if ((st = vlbe__ale_check(q, qd)) != VLBE_OK) return st;
+    if (!vlbe_all_finite(&ph, 1)) return VLBE_ENONFINITE;
+    if (!(ph > q[4] && ph < q[9])) return VLBE_EBOUND;
+    vlbe_herm_ale_eval(ph, q[4], q[9], 1, 1, &b);
+    for (c = 0; c < 5; ++c) qh[c] = VLBE_R(0.0);
+    if (qd && qhd)
+        for (c = 0; c < 5; ++c) qhd[c] = VLBE_R(0.0);
+    for (j = 0; j < 4; ++j) {
+        const vlbe_real *e = q + VLBE__ALE_E(j);
+        for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
+            vlbe_v2_axpy(b.h[k][0][j], e, qh + 2 * k);
+            if (qd && qhd) {
+                vlbe_v2_axpy(b.h[k][0][j], qd + VLBE__ALE_E(j), qhd + 2 * k);
+                vlbe_v2_axpy(b.h[k][1][j] * qd[4] + b.h[k][2][j] * qd[9], e, qhd + 2 * k);
+            }
+        }
+    }
+    qh[4] = ph;
+    return VLBE_OK;
+}
+
+static inline int vlbe__ale_ncoord(const vlbe_ale_node *nd)
+{
+    return 4 + 2 * nd->slide + (nd->pmode == VLBE_ALE_PFREE);
+}
+
+/* copy nc coordinates from offset o of (q, v) to offset on of (qn, vn);
+   forward copy, so in place is fine when on <= o */
+static inline void vlbe__ale_copy_node(const vlbe_real *q, const vlbe_real *v, int o, int nc,
+                                       vlbe_real *qn, vlbe_real *vn, int on)
+{
+    int k;
+    for (k = 0; k < nc; ++k) {
+        qn[on + k] = q[o + k];
+        if (v && vn) vn[on + k] = v[o + k];
+    }
+}
+
+/* Insert a node with a fixed material coordinate ph inside element e
+   (between nodes e and e+1) by exact segmentation; (q, v) of the old layout
+   map to (qn, vn) of the new one (qn, vn must not alias q, v; v and vn may
+   be NULL).  Constraints on later nodes are renumbered.  Needs
+   nn < nn_cap (else VLBE_EWORK).  On failure nothing changes. */
+VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real ph, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v,
+                                           vlbe_real *qn, vlbe_real *vn)
+{
+    vlbe_real qe[10], ve[10], qh[5], qhd[5];
+    int idx[10], i, k, on;
+    unsigned md;
+    vlbe_status st;
+    VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
+    if (e < 0 || e + 1 >= ch->nn) return VLBE_EARG;
+    if (ch->nn >= ch->nn_cap) return VLBE_EWORK;
+    if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, v ? ve : NULL, idx, &md)) != VLBE_OK)
+        return st;
+    if ((st = vlbe_ale_split(qe, v ? ve : NULL, ph, qh, v ? qhd : NULL)) != VLBE_OK) return st;
+    /* shift nodes e+1.. up by one; their ofs still name the old layout */
+    for (i = ch->nn; i > e + 1; --i) ch->node[i] = ch->node[i - 1];
+    ch->node[e + 1].pmode = VLBE_ALE_PFIXED;
+    ch->node[e + 1].slide = 0;
+    ch->node[e + 1].p = ph;
+    ch->node[e + 1].pd = ch->node[e + 1].pdd = VLBE_R(0.0);
+    ch->node[e + 1].mass = VLBE_R(0.0);
+    ch->nn++;
+    for (k = 0; k < ch->ncon; ++k) {
+        vlbe_ale_con *c = &ch->con[k];
+        if (c->node > e) c->node++;
+        if (c->type == VLBE_ALE_CON_EQUAL_LEN && c->node2 > e) c->node2++;
+    }
+    on = 0;
+    for (i = 0; i < ch->nn; ++i) {
+        const int nc = vlbe__ale_ncoord(&ch->node[i]);
+        if (i == e + 1) {
+            for (k = 0; k < 4; ++k) {
+                qn[on + k] = qh[k];
+                if (v && vn) vn[on + k] = qhd[k];
+            }
+        } else {
+            vlbe__ale_copy_node(q, v, ch->node[i].ofs, nc, qn, vn, on);
+        }
+        on += nc;
+    }
+    return vlbe_ale_chain_layout(ch);
+}
+
+/* Remove interior node i, merging elements i-1 and i into one between the
+   neighbours, whose coordinates stay as they are (eq. 29 of [R]).  The
+   merged cubic is the Hermite interpolant of the outer nodes; it differs
+   from the two pieces unless they form one cubic, by the interpolation
+   error of the removed node (the caller measures the change of positions
+   and energy when it matters; examples/falling_beam.c reports it).  Node i
+   must carry no mass and no constraint and not be sliding.  q -> qn may be
+   in place (qn == q, vn == v). */
+VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe_real *q,
+                                           const vlbe_real *v, vlbe_real *qn, vlbe_real *vn)
+{
+    int k, j, on;
+    VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
+    if (i <= 0 || i >= ch->nn - 1 || ch->nn <= 2) return VLBE_EARG;
+    if (ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0)) return VLBE_EARG;
+    for (k = 0; k < ch->ncon; ++k) {
+        const vlbe_ale_con *c = &ch->con[k];
+        if (c->node == i || (c->type == VLBE_ALE_CON_EQUAL_LEN && c->node2 == i)) return VLBE_EARG;
+    }
+    on = 0;
+    for (j = 0; j < ch->nn; ++j) {
+        const int nc = vlbe__ale_ncoord(&ch->node[j]);
+        if (j == i) continue;
+        vlbe__ale_copy_node(q, v, ch->node[j].ofs, nc, qn, vn, on);
+        on += nc;
+    }
+    for (j = i; j + 1 < ch->nn; ++j) ch->node[j] = ch->node[j + 1];
+    ch->nn--;
+    for (k = 0; k < ch->ncon; ++k) {
+        vlbe_ale_con *c = &ch->con[k];
+        if (c->node > i) c->node--;
+        if (c->type == VLBE_ALE_CON_EQUAL_LEN && c->node2 > i) c->node2--;
+    }
+    return vlbe_ale_chain_layout(ch);
+}
+
+/* may node i be removed by length control? */
+static inline int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
+{
+    int k;
+    if (i <= 0 || i >= ch->nn - 1 || ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0) ||
+        ch->node[i].pmode == VLBE_ALE_PFREE)
+        return 0;
+    for (k = 0; k < ch->ncon; ++k)
+        if (ch->con[k].node == i || ch->con[k].node2 == i) return 0;
+    return 1;
+}
+
+/* Length control of a sliding node (Figure 7 of [R]): when the element on
+   one side of node *slider is longer than 1.5 Lstd, insert a node at
+   distance Lstd from that element's far node (the new element away from the
+   slider has length Lstd) and remove the slider's neighbour on the other
+   side (merging the two elements there), so the number of nodes and
+   coordinates stays the same.  Near a chain end, where the other side has
+   no removable node, only the insertion is made (needs capacity).
+   (q, v) -> (qn, vn) in the new layout (copied unchanged when nothing is
+   done; qn, vn must not alias q, v); *slider follows its node; *changed = 0
+   (nothing), 1 (inserted), 2 (inserted and removed).  Restart the
+   integrator from (qn, vn) when *changed != 0. */
+VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slider, vlbe_real Lstd,
+                                                   vlbe_real t, const vlbe_real *q,
+                                                   const vlbe_real *v, vlbe_real *qn,
+                                                   vlbe_real *vn, int *changed)
+{
+    vlbe_real pl[3], ps[3], pr[3];
+    const int s = *slider;
+    int side = 0, k;
+    vlbe_status st;
+    *changed = 0;
+    if (s > 0 && s < ch->nn - 1) {
+        if ((st = vlbe_ale_chain_pnode(ch, s - 1, t, q, v, pl)) != VLBE_OK ||
+            (st = vlbe_ale_chain_pnode(ch, s, t, q, v, ps)) != VLBE_OK ||
+            (st = vlbe_ale_chain_pnode(ch, s + 1, t, q, v, pr)) != VLBE_OK)
+            return st;
+        if (ps[0] - pl[0] > VLBE_R(1.5) * Lstd) side = -1;
+        else if (pr[0] - ps[0] > VLBE_R(1.5) * Lstd) side = 1;
+    }
+    if (!side) {
+        for (k = 0; k < ch->n; ++k) {
+            qn[k] = q[k];
+            if (v && vn) vn[k] = v[k];
+        }
+        return VLBE_OK;
+    }
+    if (side < 0) { /* new node in element s-1 at pl + Lstd; the slider becomes s+1 */
+        if ((st = vlbe_ale_chain_insert(ch, s - 1, pl[0] + Lstd, t, q, v, qn, vn)) != VLBE_OK)
+            return st;
+        *slider = s + 1;
+        *changed = 1;
+        if (vlbe__ale_removable(ch, s + 2)) {
+            *changed = 2;
+            return vlbe_ale_chain_remove(ch, s + 2, qn, vn, qn, vn);
+        }
+    } else { /* new node in element s at pr - Lstd; the slider keeps its index */
+        if ((st = vlbe_ale_chain_insert(ch, s, pr[0] - Lstd, t, q, v, qn, vn)) != VLBE_OK)
+            return st;
+        *changed = 1;
+        if (vlbe__ale_removable(ch, s - 1)) {
+            *changed = 2;
+            *slider = s - 1;
+            return vlbe_ale_chain_remove(ch, s - 1, qn, vn, qn, vn);
+        }
+    }
+    return VLBE_OK;
+}
+
 #endif /* VLBE_ANCF_ALE_H */
