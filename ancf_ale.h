@@ -95,6 +95,21 @@ API
    vlbe_status vlbe_ale_point_force(q, pf, F, Q, K)         Q += N(pf)^T F, K += d/dq
    vlbe_status vlbe_ale_point(q, p, r, rp)                  r(p), r'(p)
    vlbe_status vlbe_ale_strain(q, p, &eps, &kap)            strain, curvature at p
+   vlbe_status vlbe_ale_split(q, qd, ph, qh, qhd)           exact segmentation at ph
+   chains (node p modes fixed / prescribed / free, sliding nodes, point masses):
+   vlbe_status vlbe_ale_chain_init(ch, el, nodes, nn, cap, cons, ccap)
+   vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint
+   vlbe_status vlbe_ale_chain_layout(ch)                    coordinates n, equations m
+   vlbe_status vlbe_ale_chain_pnode(ch, i, t, q, v, p3)     p, p', p'' of a node
+   vlbe_status vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, mode)  element view
+   void vlbe_ale_chain_straight(ch, r0, dir, q)             straight start state
+   vlbe_status vlbe_ale_chain_locate / _point(ch, t, q, p, ...)  element of p, r(p)
+   vlbe_status vlbe_ale_chain_energy(ch, t, q, v, E)        T, U, V of the chain
+   int vlbe_ale_chain_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
+       / _constr_acc / _constr_hess(user = ch, ...)         vlbe_dae callbacks
+   vlbe_status vlbe_ale_chain_insert(ch, e, ph, t, q, v, qn, vn)  split element e
+   vlbe_status vlbe_ale_chain_remove(ch, i, q, v, qn, vn)   merge at node i
+   vlbe_status vlbe_ale_chain_length_control(ch, &s, Lstd, t, q, v, qn, vn, &chg)
 
 REFERENCES
    [R] Z. Ding, B. Ouyang, A variable-length rational finite element based on
