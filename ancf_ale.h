@@ -1671,7 +1671,7 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
                                            const vlbe_real *q, const vlbe_real *v,
                                            vlbe_real *qn, vlbe_real *vn)
 {
-    vlbe_real qe[10], ve[10], qh[5], qhd[5];
+    vlbe_real qe[10], ve[10] = {0}, qh[5], qhd[5] = {0};
     int idx[10], i, k, on;
     unsigned md;
     vlbe_status st;
