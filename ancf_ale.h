@@ -1191,6 +1191,7 @@ VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe
         if (ve) ve[b + 4] = p3[1];
         if (ch->node[i].pmode == VLBE_ALE_PFIXED) *mode |= s ? VLBE_ALE_FIX_P2 : VLBE_ALE_FIX_P1;
     }
+    if (!vlbe_all_finite(qe, 10) || (ve && !vlbe_all_finite(ve, 10))) return VLBE_ENONFINITE;
     if (!(qe[9] - qe[4] > ch->Lmin)) return VLBE_ELENGTH;
     return VLBE_OK;
 }
