@@ -276,23 +276,23 @@ static inline void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, vlbe_real L, int kma
         na = (k == 0 && amax0 == 2) ? VLBE_DA_N : 3;
         for (a = 0; a < na; ++a) {
             const int da = a == 0 ? 0 : (a < 3 ? 1 : 2);
-            vlbe_real *x = pt->X[k][a];
-            x[0] = x[1] = VLBE_R(0.0);
+            vlbe_real n[4], x0 = VLBE_R(0.0), x1 = VLBE_R(0.0);
             for (j = 0; j < 4; ++j) {
-                const vlbe_real *e = q + VLBE__ALE_E(j);
-                const vlbe_real n = gp->b[k][a][j] * Lp[4 + VLBE__ALE_M(j) - k - da];
-                pt->N[k][a][j] = n;
-                x[0] += n * e[0];
-                x[1] += n * e[1];
+                n[j] = gp->b[k][a][j] * Lp[4 + VLBE__ALE_M(j) - k - da];
+                x0 += n[j] * q[VLBE__ALE_E(j)];
+                x1 += n[j] * q[VLBE__ALE_E(j) + 1];
+                pt->N[k][a][j] = n[j];
             }
+            pt->X[k][a][0] = x0;
+            pt->X[k][a][1] = x1;
             if (u && a < 3) {
-                vlbe_real *v = pt->V[k][a];
-                v[0] = v[1] = VLBE_R(0.0);
+                vlbe_real v0 = VLBE_R(0.0), v1 = VLBE_R(0.0);
                 for (j = 0; j < 4; ++j) {
-                    const vlbe_real *ud = u + VLBE__ALE_E(j);
-                    v[0] += pt->N[k][a][j] * ud[0];
-                    v[1] += pt->N[k][a][j] * ud[1];
+                    v0 += n[j] * u[VLBE__ALE_E(j)];
+                    v1 += n[j] * u[VLBE__ALE_E(j) + 1];
                 }
+                pt->V[k][a][0] = v0;
+                pt->V[k][a][1] = v1;
             }
         }
     }
