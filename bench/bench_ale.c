@@ -41,6 +41,7 @@
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
 #include "svgplot.h"
+#include "bench_util.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -62,35 +63,6 @@
 static volatile double sink;
 static volatile unsigned mode_src; /* modes pass through here: not constants */
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static void cpu_info(char *model, size_t len, double *mhz)
-{
-    char line[256];
-    FILE *f = fopen("/proc/cpuinfo", "r");
-    int have_model = 0, have_mhz = 0;
-    snprintf(model, len, "unknown cpu");
-    *mhz = 0.0;
-    if (!f) return;
-    while ((!have_model || !have_mhz) && fgets(line, sizeof line, f)) {
-        const char *c = strchr(line, ':');
-        if (!c) continue;
-        if (!have_model && strncmp(line, "model name", 10) == 0) {
-            snprintf(model, len, "%s", c + 2);
-            model[strcspn(model, "\n")] = '\0';
-            have_model = 1;
-        } else if (!have_mhz && strncmp(line, "cpu MHz", 7) == 0) {
-            *mhz = atof(c + 1);
-            have_mhz = 1;
-        }
-    }
-    fclose(f);
-}
 
 /* 1-minute load average (/proc/loadavg), -1 when unknown */
 static double load_avg(void)
@@ -209,7 +181,7 @@ static double batch(int op, const vlbe_ale_elem *el, long k, long *bad)
     const unsigned mode = mode_src;
     double t0, acc = 0.0;
     long r, nbad = 0;
-    t0 = now();
+    t0 = benchu_now();
     switch (op) {
     case OP_Q:
         for (r = 0; r < k; ++r) {
@@ -247,7 +219,7 @@ static double batch(int op, const vlbe_ale_elem *el, long k, long *bad)
         }
         break;
     }
-    t0 = now() - t0;
+    t0 = benchu_now() - t0;
     sink = acc;
     *bad += nbad;
     return t0 / (double)k;
@@ -325,7 +297,7 @@ int main(int argc, char **argv)
     int op, v, order_var = -1, nnoisy = 0;
     FILE *f;
 
-    cpu_info(model, sizeof model, &mhz);
+    benchu_cpu_info(model, sizeof model, &mhz);
     printf("bench_ale: one planar ALE-ANCF element (ancf_ale.h), vlbe %s, %s\n", VLBE_VERSION_STRING,
            sizeof(vlbe_real) == sizeof(double) ? "double" : "float");
     printf("compiler: %s, flags: %s\n", __VERSION__, VLBE_BENCH_FLAGS);

@@ -36,6 +36,7 @@
 #include "../examples/pendulum.c"
 #include "../examples/andrews.c"
 #include "svgplot.h"
+#include "bench_util.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,35 +53,6 @@
 #define NQ 8                      /* >= the largest n of the problems */
 #define DNAN ((double)NAN)
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static void cpu_info(char *model, size_t len, double *mhz)
-{
-    char line[256];
-    FILE *f = fopen("/proc/cpuinfo", "r");
-    int have_model = 0, have_mhz = 0;
-    snprintf(model, len, "unknown cpu");
-    *mhz = 0.0;
-    if (!f) return;
-    while ((!have_model || !have_mhz) && fgets(line, sizeof line, f)) {
-        const char *c = strchr(line, ':');
-        if (!c) continue;
-        if (!have_model && strncmp(line, "model name", 10) == 0) {
-            snprintf(model, len, "%s", c + 2);
-            model[strcspn(model, "\n")] = '\0';
-            have_model = 1;
-        } else if (!have_mhz && strncmp(line, "cpu MHz", 7) == 0) {
-            *mhz = atof(c + 1);
-            have_mhz = 1;
-        }
-    }
-    fclose(f);
-}
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -136,20 +108,20 @@ static void run_job(job *j, const vlbe_real *q0, const vlbe_real *v0)
 static void time_job(job *j, const vlbe_real *q0, const vlbe_real *v0)
 {
     static double s[MAX_SAMPLES];
-    double t0 = now(), t1;
+    double t0 = benchu_now(), t1;
     int k, ns;
     ws_need(j->sys->n, j->sys->m);
-    for (k = 0; k < 2 || now() - t0 < 0.05; ++k) run_job(j, q0, v0);
-    t1 = now();
+    for (k = 0; k < 2 || benchu_now() - t0 < 0.05; ++k) run_job(j, q0, v0);
+    t1 = benchu_now();
     run_job(j, q0, v0);
-    t1 = now() - t1;
+    t1 = benchu_now() - t1;
     ns = (int)(0.3 / (t1 > 1e-9 ? t1 : 1e-9)) + 1;
     if (ns < j->min_samples) ns = j->min_samples;
     if (ns > MAX_SAMPLES) ns = MAX_SAMPLES;
     for (k = 0; k < ns; ++k) {
-        t1 = now();
+        t1 = benchu_now();
         run_job(j, q0, v0);
-        s[k] = now() - t1;
+        s[k] = benchu_now() - t1;
     }
     qsort(s, (size_t)ns, sizeof s[0], cmp_double);
     j->samples = ns;
@@ -230,7 +202,7 @@ int main(int argc, char **argv)
     FILE *f;
     int i, im, miss = 0, failed = 0;
 
-    cpu_info(model, sizeof model, &mhz);
+    benchu_cpu_info(model, sizeof model, &mhz);
     printf("bench_integrators: integrators.h, vlbe %s, %s\n", VLBE_VERSION_STRING,
            sizeof(vlbe_real) == sizeof(double) ? "double" : "float");
     printf("compiler: %s, flags: %s\n", __VERSION__, VLBE_BENCH_FLAGS);

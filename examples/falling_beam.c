@@ -29,6 +29,7 @@
    behind the mass) at p = 0.86-0.92 m, t ~ 0.48 s, ~3 m/s sliding speed.
    Under investigation; the rows say so. */
 #include "../ancf_ale.h"
+#include "ex_ale.h"
 #include "ex_run.h"
 
 #include <stdio.h>
@@ -65,20 +66,7 @@ typedef struct fb_model {
     double Lstd;
 } fb_model;
 
-static inline void fb_wire(fb_model *m)
-{
-    memset(&m->sys, 0, sizeof m->sys);
-    m->sys.n = m->ch.n;
-    m->sys.m = m->ch.m;
-    m->sys.user = &m->ch;
-    m->sys.mass = vlbe_ale_chain_mass;
-    m->sys.force = vlbe_ale_chain_force;
-    m->sys.force_jac = vlbe_ale_chain_force_jac;
-    m->sys.mass_jac = vlbe_ale_chain_mass_jac;
-    m->sys.constr = vlbe_ale_chain_constr;
-    m->sys.constr_jac = vlbe_ale_chain_constr_jac;
-    m->sys.constr_acc = vlbe_ale_chain_constr_acc;
-}
+static inline void fb_wire(fb_model *m) { ex_ale_wire(&m->sys, &m->ch); }
 
 static inline int fb_build(fb_model *m, int N, vlbe_real *q0, vlbe_real *v0)
 {

@@ -40,6 +40,7 @@
    and, with an output directory, moving_string.csv / .svg (midpoint
    deflection over time). */
 #include "../ancf_ale.h"
+#include "ex_ale.h"
 #include "ex_freq.h"
 #include "ex_run.h"
 
@@ -129,17 +130,7 @@ static inline int ms_build(ms_model *m, int ne, int bend, vlbe_real *q0, vlbe_re
     c.v[0] = (vlbe_real)MS_L;
     vlbe_ale_chain_add(&m->ch, &c);
     if (vlbe_ale_chain_layout(&m->ch)) return -1;
-    m->sys.n = m->ch.n;
-    m->sys.m = m->ch.m;
-    m->sys.user = &m->ch;
-    m->sys.mass = vlbe_ale_chain_mass;
-    m->sys.force = vlbe_ale_chain_force;
-    m->sys.force_jac = vlbe_ale_chain_force_jac;
-    m->sys.mass_jac = vlbe_ale_chain_mass_jac;
-    m->sys.constr = vlbe_ale_chain_constr;
-    m->sys.constr_jac = vlbe_ale_chain_constr_jac;
-    m->sys.constr_acc = vlbe_ale_chain_constr_acc;
-    m->sys.constr_hess = vlbe_ale_chain_constr_hess;
+    ex_ale_wire(&m->sys, &m->ch);
     if (q0) {
         dir[0] = (vlbe_real)m->lam;
         dir[1] = 0;

@@ -187,18 +187,7 @@ static void chn_wire(chn *c)
 {
     assert_int_equal(vlbe_ale_chain_layout(&c->ch), VLBE_OK);
     assert_true(c->ch.n <= N_MAX && c->ch.m <= M_MAX);
-    memset(&c->sys, 0, sizeof c->sys);
-    c->sys.n = c->ch.n;
-    c->sys.m = c->ch.m;
-    c->sys.user = &c->ch;
-    c->sys.mass = vlbe_ale_chain_mass;
-    c->sys.force = vlbe_ale_chain_force;
-    c->sys.force_jac = vlbe_ale_chain_force_jac;
-    c->sys.mass_jac = vlbe_ale_chain_mass_jac;
-    c->sys.constr = vlbe_ale_chain_constr;
-    c->sys.constr_jac = vlbe_ale_chain_constr_jac;
-    c->sys.constr_acc = vlbe_ale_chain_constr_acc;
-    c->sys.constr_hess = vlbe_ale_chain_constr_hess;
+    ex_ale_wire(&c->sys, &c->ch);
 }
 
 /* index of the free p of node i in q */

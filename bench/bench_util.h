@@ -1,0 +1,47 @@
+/* bench_util.h -- what the micro-benchmarks share: a monotonic clock and
+   the machine's CPU model and clock for the report header.
+   -- part of vlbe                                  SPDX-License-Identifier: MIT
+
+   POSIX (clock_gettime): the including file defines _POSIX_C_SOURCE
+   199309L or later before its first #include. */
+#ifndef VLBE_BENCH_UTIL_H
+#define VLBE_BENCH_UTIL_H
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+/* seconds of CLOCK_MONOTONIC */
+static inline double benchu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* CPU model name and MHz from /proc/cpuinfo ("unknown cpu", 0 elsewhere) */
+static inline void benchu_cpu_info(char *model, size_t len, double *mhz)
+{
+    char line[256];
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    int have_model = 0, have_mhz = 0;
+    snprintf(model, len, "unknown cpu");
+    *mhz = 0.0;
+    if (!f) return;
+    while ((!have_model || !have_mhz) && fgets(line, sizeof line, f)) {
+        const char *c = strchr(line, ':');
+        if (!c) continue;
+        if (!have_model && strncmp(line, "model name", 10) == 0) {
+            snprintf(model, len, "%s", c + 2);
+            model[strcspn(model, "\n")] = '\0';
+            have_model = 1;
+        } else if (!have_mhz && strncmp(line, "cpu MHz", 7) == 0) {
+            *mhz = atof(c + 1);
+            have_mhz = 1;
+        }
+    }
+    fclose(f);
+}
+
+#endif /* VLBE_BENCH_UTIL_H */
