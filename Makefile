@@ -4,8 +4,8 @@
 #                       (double -O2, double -O0, float -O2, ASan+UBSan) and
 #                       the double -O2 build under valgrind when it is installed
 #   make demo           build the examples and run the paper scenes (out/demo/),
-#                       then the integrators' work-precision charts (out/wp_*.svg,
-#                       bench/wp_integrators.c at -O2)
+#                       then the work-precision charts (out/wp_*.svg, every
+#                       bench/wp_*.c at -O2)
 #   make bench          build and run bench/*.c (-O3 -march=native), out/bench/
 #   make examples       build examples/*.c with the full warning set
 #   make check-headers  each header alone, twice, as C++, in float mode
@@ -67,11 +67,13 @@ BENCH_BINS := $(addprefix $(BUILD)/bench/,$(BENCH_NAMES))
 BENCH_PORTABLE_BINS := $(addprefix $(BUILD)/bench/portable/,$(BENCH_NAMES))
 # bench files may include the examples (their problem definitions)
 BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(EXAMPLE_SRCS) $(wildcard $(EXAMPLE_DIR)/*.h)
-# benchmarks that take an output directory rather than a file tag
-BENCH_DIR_ARG := wp_integrators
-# the work-precision run of `make demo`: portable flags, the examples' warnings
+# the work-precision runs of `make demo` (every bench/wp_*.c): portable
+# flags, the examples' warnings
+DEMO_WP_NAMES := $(basename $(notdir $(wildcard bench/wp_*.c)))
 DEMO_WP_FLAGS = -O2
-DEMO_WP_BIN = $(BUILD)/demo/wp_integrators
+DEMO_WP_BINS := $(addprefix $(BUILD)/demo/,$(DEMO_WP_NAMES))
+# benchmarks that take an output directory rather than a file tag: the wp_*
+BENCH_DIR_ARG := $(DEMO_WP_NAMES)
 
 .PHONY: all check test check-headers cmocka test-build examples demo bench \
         bench-portable lint clean
@@ -170,11 +172,11 @@ DEMO_TABLE = awk -F'|' '{ n++; for (i = 2; i <= 7; i++) { c[n, i] = $$i; if (len
         line = line (i > 2 ? "  " : "") sprintf("%" (i <= 3 ? "-" : "") w[i] "s", v) } \
       print line } }'
 
-$(DEMO_WP_BIN): bench/wp_integrators.c $(BENCH_DEPS)
+$(BUILD)/demo/%: bench/%.c $(BENCH_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(CSTD) $(WARN) $(DEMO_WP_FLAGS) -DVLBE_BENCH_FLAGS='"$(DEMO_WP_FLAGS)"' -I. $< -o $@ -lm
 
-demo: examples $(DEMO_WP_BIN)
+demo: examples $(DEMO_WP_BINS)
 	@mkdir -p $(OUT)/demo
 	@set -e; : > $(OUT)/demo/rows.txt; \
 	if [ -z "$(strip $(DEMO_SCENES))" ]; then echo "demo: no examples yet ($(EXAMPLE_DIR)/*.c)"; fi; \
@@ -186,10 +188,12 @@ demo: examples $(DEMO_WP_BIN)
 	done; \
 	echo; echo "== comparison with the published numbers (all scenes)"; \
 	$(DEMO_TABLE) $(OUT)/demo/rows.txt | tee $(OUT)/demo/table.txt; \
-	echo; echo "== work-precision of the integrators ($(DEMO_WP_FLAGS))"; \
-	$(DEMO_WP_BIN) $(OUT) > $(OUT)/demo/wp_integrators.txt 2>&1 || \
-	  { cat $(OUT)/demo/wp_integrators.txt; echo "demo: wp_integrators failed"; exit 1; }; \
-	cat $(OUT)/demo/wp_integrators.txt; \
+	for w in $(DEMO_WP_NAMES); do \
+	  echo; echo "== $$w: work-precision ($(DEMO_WP_FLAGS))"; \
+	  $(BUILD)/demo/$$w $(OUT) > $(OUT)/demo/$$w.txt 2>&1 || \
+	    { cat $(OUT)/demo/$$w.txt; echo "demo: $$w failed"; exit 1; }; \
+	  cat $(OUT)/demo/$$w.txt; \
+	done; \
 	echo "demo: tables in $(OUT)/demo/, charts in $(OUT)/"
 
 # -- benchmarks ---------------------------------------------------------------
