@@ -30,6 +30,8 @@ API
    void svgp_init(c, title, xlabel, ylabel, xlog, ylog)   empty chart
    int  svgp_series(c, name, n, x, y, flags)              add a series (0 ok, -1 full)
    void svgp_xrange(c, lo, hi) / svgp_yrange(c, lo, hi)   fix an axis range
+   void svgp_fit_legend_log(c, max_dec, max_xdec)         log-log: whole decades and a
+                                                          legend corner that hides no data
    int  svgp_write(c, FILE *f) / svgp_write_file(c, path) SVG out (0 ok, -1 I/O error)
    int  svgp_csv_write(path, header, ncols, nrows, cols)  numeric columns -> CSV
    FILE *svgp_csv_open(path, header); int svgp_csv_row(f, n, v)   row by row
@@ -53,6 +55,11 @@ COMPARISON ROWS
 #define SVGP_MAX_SERIES 16
 #define SVGP_WIDTH 800
 #define SVGP_HEIGHT 500
+/* plot area inside the viewBox, in pixels */
+#define SVGP__PL_L 80.0
+#define SVGP__PL_R ((double)SVGP_WIDTH - 24.0)
+#define SVGP__PL_T 44.0
+#define SVGP__PL_B ((double)SVGP_HEIGHT - 62.0)
 
 /* series style flags (bitwise or) */
 enum {
@@ -130,6 +137,102 @@ static inline void svgp_yrange(svgp_chart *c, double lo, double hi)
     c->yfixed = 1;
     c->y0 = lo;
     c->y1 = hi;
+}
+
+/* legend box size in pixels */
+static inline void svgp__legend_size(const svgp_chart *c, double *lw, double *lh)
+{
+    size_t wmax = 0;
+    int k;
+    for (k = 0; k < c->nseries; ++k) {
+        size_t w = c->s[k].name ? strlen(c->s[k].name) : 0;
+        if (w > wmax) wmax = w;
+    }
+    *lw = 44.0 + 6.6 * (double)wmax;
+    *lh = 8.0 + 17.0 * (double)c->nseries;
+}
+
+/* Is any marker or line of chart c (log-log, ranges 10^x0..10^x1,
+   10^y0..10^y1) inside the pixel box [bx0, bx1] x [by0, by1]? */
+static inline int svgp__box_hit(const svgp_chart *c, double x0, double x1, double y0, double y1,
+                                double bx0, double bx1, double by0, double by1)
+{
+    int k, i, j;
+    for (k = 0; k < c->nseries; ++k) {
+        const svgp_line *l = &c->s[k];
+        double px0 = 0.0, py0 = 0.0;
+        int have = 0;
+        for (i = 0; i < l->n; ++i) {
+            double px, py;
+            if (!(l->x[i] > 0.0) || !(l->y[i] > 0.0) || !isfinite(l->x[i]) || !isfinite(l->y[i])) {
+                have = 0;
+                continue;
+            }
+            px = SVGP__PL_L + (log10(l->x[i]) - x0) / (x1 - x0) * (SVGP__PL_R - SVGP__PL_L);
+            py = SVGP__PL_B - (log10(l->y[i]) - y0) / (y1 - y0) * (SVGP__PL_B - SVGP__PL_T);
+            for (j = have ? 0 : 16; j <= 16; ++j) { /* the segment from the last point, sampled */
+                double sx = px0 + (px - px0) * (double)j / 16.0, sy = py0 + (py - py0) * (double)j / 16.0;
+                if (sx >= bx0 && sx <= bx1 && sy >= by0 && sy <= by1) return 1;
+            }
+            px0 = px;
+            py0 = py;
+            have = 1;
+        }
+    }
+    return 0;
+}
+
+/* Log-log charts: fix whole-decade ranges on both axes and put the legend in
+   a corner where it covers no data, adding the fewest decades (at most
+   max_dec in all, at most max_xdec of them on x) that free one: y above for
+   the top corners, below for the bottom ones; x on the legend's side.
+   Nothing changes when no corner is found. */
+static inline void svgp_fit_legend_log(svgp_chart *c, int max_dec, int max_xdec)
+{
+    static const int corner[4] = {SVGP_LEGEND_TR, SVGP_LEGEND_BR, SVGP_LEGEND_TL, SVGP_LEGEND_BL};
+    double x0 = 0.0, x1 = 0.0, y0 = 0.0, y1 = 0.0, lw, lh;
+    int k, i, found = 0, tot, xext;
+    for (k = 0; k < c->nseries; ++k) {
+        const svgp_line *l = &c->s[k];
+        for (i = 0; i < l->n; ++i) {
+            double lx, ly;
+            if (!(l->x[i] > 0.0) || !(l->y[i] > 0.0) || !isfinite(l->x[i]) || !isfinite(l->y[i]))
+                continue;
+            lx = log10(l->x[i]);
+            ly = log10(l->y[i]);
+            if (!found || lx < x0) x0 = lx;
+            if (!found || lx > x1) x1 = lx;
+            if (!found || ly < y0) y0 = ly;
+            if (!found || ly > y1) y1 = ly;
+            found = 1;
+        }
+    }
+    if (!found) return;
+    x0 = floor(x0 + 1e-9);
+    x1 = ceil(x1 - 1e-9);
+    y0 = floor(y0 + 1e-9);
+    y1 = ceil(y1 - 1e-9);
+    if (x1 <= x0) x1 = x0 + 1.0;
+    if (y1 <= y0) y1 = y0 + 1.0;
+    svgp__legend_size(c, &lw, &lh);
+    for (tot = 0; tot <= max_dec; ++tot) /* the fewest added decades first */
+        for (xext = 0; xext <= (tot < max_xdec ? tot : max_xdec); ++xext)
+            for (k = 0; k < 4; ++k) {
+                const int ext = tot - xext;
+                const int left = corner[k] == SVGP_LEGEND_TL || corner[k] == SVGP_LEGEND_BL;
+                const int bottom = corner[k] == SVGP_LEGEND_BR || corner[k] == SVGP_LEGEND_BL;
+                const double ya = bottom ? y0 - ext : y0, yb = bottom ? y1 : y1 + ext;
+                const double xa = left ? x0 - xext : x0, xb = left ? x1 : x1 + xext;
+                const double bx0 = left ? SVGP__PL_L + 10.0 : SVGP__PL_R - 10.0 - lw;
+                const double by0 = bottom ? SVGP__PL_B - 10.0 - lh : SVGP__PL_T + 10.0;
+                if (svgp__box_hit(c, xa, xb, ya, yb, bx0 - 6.0, bx0 + lw + 6.0, by0 - 6.0,
+                                  by0 + lh + 6.0))
+                    continue;
+                svgp_xrange(c, pow(10.0, xa), pow(10.0, xb));
+                svgp_yrange(c, pow(10.0, ya), pow(10.0, yb));
+                c->legend = corner[k];
+                return;
+            }
 }
 
 /* -- helpers ---------------------------------------------------------- */
@@ -395,8 +498,8 @@ static inline void svgp__ticks(FILE *f, const svgp__axis *ax, int which, double 
 
 static inline int svgp_write(const svgp_chart *c, FILE *f)
 {
-    const double W = SVGP_WIDTH, H = SVGP_HEIGHT;
-    const double L = 80.0, R = W - 24.0, T = 44.0, B = H - 62.0;
+    const double H = SVGP_HEIGHT;
+    const double L = SVGP__PL_L, R = SVGP__PL_R, T = SVGP__PL_T, B = SVGP__PL_B;
     svgp__axis ax, ay;
     int k, i;
     svgp__range(c, 0, &ax);
@@ -460,14 +563,8 @@ static inline int svgp_write(const svgp_chart *c, FILE *f)
 
     /* legend */
     if (c->legend != SVGP_LEGEND_NONE && c->nseries > 0) {
-        size_t wmax = 0;
         double lw, lh, lx, ly;
-        for (k = 0; k < c->nseries; ++k) {
-            size_t w = c->s[k].name ? strlen(c->s[k].name) : 0;
-            if (w > wmax) wmax = w;
-        }
-        lw = 44.0 + 6.6 * (double)wmax;
-        lh = 8.0 + 17.0 * (double)c->nseries;
+        svgp__legend_size(c, &lw, &lh);
         lx = (c->legend == SVGP_LEGEND_TL || c->legend == SVGP_LEGEND_BL) ? L + 10.0 : R - 10.0 - lw;
         ly = (c->legend == SVGP_LEGEND_BR || c->legend == SVGP_LEGEND_BL) ? B - 10.0 - lh : T + 10.0;
         fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"#fff\" fill-opacity=\"0.85\" stroke=\"#999\"/>\n",

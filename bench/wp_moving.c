@@ -334,96 +334,6 @@ static void write_csv(const scene *sc, const char *dir)
     if (fclose(f) != 0) fprintf(stderr, "wp_moving: cannot write %s\n", path);
 }
 
-/* Plot area of svgp_write() in pixels (bench/svgplot.h). */
-#define PL_L 80.0
-#define PL_R ((double)SVGP_WIDTH - 24.0)
-#define PL_T 44.0
-#define PL_B ((double)SVGP_HEIGHT - 62.0)
-
-/* Is any marker or line of chart c (log-log, ranges 10^x0..10^x1,
-   10^y0..10^y1) inside the pixel box [bx0, bx1] x [by0, by1]?  (as in
-   wp_integrators.c) */
-static int box_hit(const svgp_chart *c, double x0, double x1, double y0, double y1, double bx0,
-                   double bx1, double by0, double by1)
-{
-    int k, i, j;
-    for (k = 0; k < c->nseries; ++k) {
-        const svgp_line *l = &c->s[k];
-        double px0 = 0.0, py0 = 0.0;
-        int have = 0;
-        for (i = 0; i < l->n; ++i) {
-            double px, py;
-            if (!(l->x[i] > 0.0) || !(l->y[i] > 0.0) || !isfinite(l->x[i]) || !isfinite(l->y[i])) {
-                have = 0;
-                continue;
-            }
-            px = PL_L + (log10(l->x[i]) - x0) / (x1 - x0) * (PL_R - PL_L);
-            py = PL_B - (log10(l->y[i]) - y0) / (y1 - y0) * (PL_B - PL_T);
-            for (j = have ? 0 : 16; j <= 16; ++j) {
-                double sx = px0 + (px - px0) * (double)j / 16.0, sy = py0 + (py - py0) * (double)j / 16.0;
-                if (sx >= bx0 && sx <= bx1 && sy >= by0 && sy <= by1) return 1;
-            }
-            px0 = px;
-            py0 = py;
-            have = 1;
-        }
-    }
-    return 0;
-}
-
-/* Whole-decade ranges on both axes and the legend in a corner where it
-   covers no data, adding the fewest decades (y above for the top corners,
-   below for the bottom ones; x on the legend's side) that free one. */
-static void fit_legend(svgp_chart *c)
-{
-    static const int corner[4] = {SVGP_LEGEND_TR, SVGP_LEGEND_BR, SVGP_LEGEND_TL, SVGP_LEGEND_BL};
-    double x0 = 0.0, x1 = 0.0, y0 = 0.0, y1 = 0.0, lw, lh;
-    size_t wmax = 0;
-    int k, i, found = 0, tot, xext;
-    for (k = 0; k < c->nseries; ++k) {
-        const svgp_line *l = &c->s[k];
-        if (l->name && strlen(l->name) > wmax) wmax = strlen(l->name);
-        for (i = 0; i < l->n; ++i) {
-            double lx, ly;
-            if (!(l->x[i] > 0.0) || !(l->y[i] > 0.0) || !isfinite(l->x[i]) || !isfinite(l->y[i]))
-                continue;
-            lx = log10(l->x[i]);
-            ly = log10(l->y[i]);
-            if (!found || lx < x0) x0 = lx;
-            if (!found || lx > x1) x1 = lx;
-            if (!found || ly < y0) y0 = ly;
-            if (!found || ly > y1) y1 = ly;
-            found = 1;
-        }
-    }
-    if (!found) return;
-    x0 = floor(x0 + 1e-9);
-    x1 = ceil(x1 - 1e-9);
-    y0 = floor(y0 + 1e-9);
-    y1 = ceil(y1 - 1e-9);
-    if (x1 <= x0) x1 = x0 + 1.0;
-    if (y1 <= y0) y1 = y0 + 1.0;
-    lw = 44.0 + 6.6 * (double)wmax; /* as svgp_write() */
-    lh = 8.0 + 17.0 * (double)c->nseries;
-    for (tot = 0; tot <= 8; ++tot) /* the fewest added decades first */
-        for (xext = 0; xext <= (tot < 3 ? tot : 3); ++xext)
-            for (k = 0; k < 4; ++k) {
-                int ext = tot - xext;
-                int left = corner[k] == SVGP_LEGEND_TL || corner[k] == SVGP_LEGEND_BL;
-                int bottom = corner[k] == SVGP_LEGEND_BR || corner[k] == SVGP_LEGEND_BL;
-                double ya = bottom ? y0 - ext : y0, yb = bottom ? y1 : y1 + ext;
-                double xa = left ? x0 - xext : x0, xb = left ? x1 : x1 + xext;
-                double bx0 = left ? PL_L + 10.0 : PL_R - 10.0 - lw;
-                double by0 = bottom ? PL_B - 10.0 - lh : PL_T + 10.0;
-                if (box_hit(c, xa, xb, ya, yb, bx0 - 6.0, bx0 + lw + 6.0, by0 - 6.0, by0 + lh + 6.0))
-                    continue;
-                svgp_xrange(c, pow(10.0, xa), pow(10.0, xb));
-                svgp_yrange(c, pow(10.0, ya), pow(10.0, yb));
-                c->legend = corner[k];
-                return;
-            }
-}
-
 /* The chart: 16 series (svgplot's limit), one per variant and mesh, in
    the order gen-alpha, gen-alpha + Richardson, HHT-alpha, BDF2: the marker
    (series index mod 4) tells the mesh, the line the variant.  HHT-alpha,
@@ -460,7 +370,7 @@ static void chart(scene *sc, const char *dir, const char *title)
                 }
             svgp_series(&c, names[k][mi], 2 * MAXPTS, hx[mi], hy[mi], style[k]);
         }
-    fit_legend(&c);
+    svgp_fit_legend_log(&c, 8, 3);
     snprintf(path, sizeof path, "%s/wp_moving_%s.svg", dir, sc->name);
     if (svgp_write_file(&c, path) != 0) fprintf(stderr, "wp_moving: cannot write %s\n", path);
 }
