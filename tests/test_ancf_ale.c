@@ -46,6 +46,7 @@
      curvature_arc          cubic Hermite arc: kap -> 1/R as theta^2, r as theta^4 */
 #include "test_util.h"
 #include "../ancf_ale.h"
+#include "ale_fixtures.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -61,30 +62,6 @@ static const double PI = 3.14159265358979323846;
 /* ------------------------------------------------------------------------ */
 /* helpers                                                                    */
 /* ------------------------------------------------------------------------ */
-
-/* Prints "name: measured error / tolerance" when VLBE_TEST_REPORT is set. */
-static void report(const char *name, double err, double tol)
-{
-    const char *env = getenv("VLBE_TEST_REPORT");
-    if (env && env[0] && env[0] != '0')
-        print_message("    %-44s err %.3e  tol %.3e  (ratio %.3f)\n", name, err, tol,
-                      tol > 0.0 ? err / tol : 0.0);
-}
-
-/* Material of the random tests: every term O(1) so that no contribution
-   hides below the rounding of another. */
-static vlbe_ale_mat mat_std(void)
-{
-    vlbe_ale_mat m;
-    m.rhoA = VLBE_R(1.3);
-    m.EA = VLBE_R(5.0);
-    m.EI = VLBE_R(0.7);
-    m.c_eps = VLBE_R(0.15);
-    m.c_kap = VLBE_R(0.25);
-    m.f[0] = VLBE_R(0.4);
-    m.f[1] = VLBE_R(-2.1);
-    return m;
-}
 
 static void elem_make(vlbe_ale_elem *el, const vlbe_ale_mat *m, unsigned flags, int nm, int nl,
                       int nt)
@@ -126,21 +103,7 @@ static void make_state(tu_rng *g, double curv, double stretch, vlbe_real *q, vlb
         for (i = 0; i < 10; ++i) qd[i] = (vlbe_real)((is_p(i) ? 0.5 : 1.0) * tu_rng_uniform(g));
 }
 
-static double max_abs(int n, const vlbe_real *a)
-{
-    double m = 0.0;
-    int i;
-    for (i = 0; i < n; ++i) m = fmax(m, fabs((double)a[i]));
-    return m;
-}
 
-static double max_absd(int n, const double *a)
-{
-    double m = 0.0;
-    int i;
-    for (i = 0; i < n; ++i) m = fmax(m, fabs(a[i]));
-    return m;
-}
 
 static void fill(int n, vlbe_real v, vlbe_real *a)
 {
@@ -174,22 +137,6 @@ static int cholesky_ok(const vlbe_real *M, const int *idx, int n)
         }
     }
     return 1;
-}
-
-/* x^T M x in double, and the same sum with absolute values (its rounding
-   scale). */
-static double quad_form(const vlbe_real *M, const double *x, double *absum)
-{
-    double s = 0.0, a = 0.0;
-    int i, j;
-    for (i = 0; i < 10; ++i)
-        for (j = 0; j < 10; ++j) {
-            const double t = x[i] * (double)M[i * 10 + j] * x[j];
-            s += t;
-            a += fabs(t);
-        }
-    if (absum) *absum = a;
-    return s;
 }
 
 /* All 32 combinations of the five mode bits. */
@@ -270,7 +217,7 @@ static double check_jac(fd_ctx *c, int which, const vlbe_real *J, unsigned skip,
         tu_central_diff(fd_fn, c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
         for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = is_fixed(skip, i) ? 0.0 : d[i];
     }
-    scale = fmax(max_abs(100, J), max_absd(100, Jfd));
+    scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
     if (scale == 0.0) return 0.0; /* both exactly zero (e.g. D without damping and p') */
     for (i = 0; i < 10; ++i)
         for (j = 0; j < 10; ++j) {
@@ -331,8 +278,8 @@ static void test_force_jacobians(void **state)
             wd = fmax(wd, check_jac(&c, FD_Q_OF_QD, D, c.mode, tol, "D"));
         }
     }
-    report("K = dQ/dq (all modes), max err / max|K|", wk, tol);
-    report("D = dQ/dq' (all modes), max err / max|D|", wd, tol);
+    tu_report("K = dQ/dq (all modes), max err / max|K|", wk, tol);
+    tu_report("D = dQ/dq' (all modes), max err / max|D|", wd, tol);
 }
 
 /* K and D are optional: any combination gives the same Q, K, D bit for bit
@@ -397,7 +344,7 @@ static void test_mass_jacobian(void **state)
             w = fmax(w, check_jac(&c, FD_MA_OF_Q, Mq, c.mode, tol, "Mq"));
         }
     }
-    report("Mq = d(M a)/dq, max err / max|Mq|", w, tol);
+    tu_report("Mq = d(M a)/dq, max err / max|Mq|", w, tol);
 }
 
 /* Point force at interior points and at both ends: K vs differences of Q
@@ -466,7 +413,7 @@ static void test_point_force_jacobian(void **state)
             ASSERT_CLOSE((double)Q[1] + (double)Q[6], c.F[1], 0, 4 * EPS * fabs((double)c.F[1]));
         }
     }
-    report("point force K, max err / max|K|", w, tol);
+    tu_report("point force K, max err / max|K|", w, tol);
 }
 
 /* ======================================================================= */
@@ -525,7 +472,7 @@ static double energy_residual(const vlbe_ale_elem *el, unsigned mode, const vlbe
     }
     for (i = 4; i < 10; i += 5)
         if (is_fixed(mode, i)) res[i] = 0.0; /* not a coordinate: Q_p = 0 */
-    scale = fmax(fmax(max_abs(10, Q), max_absd(10, grad)), max_abs(100, K));
+    scale = fmax(fmax(max_abs(10, Q), tu_max_abs(10, grad)), max_abs(100, K));
     return scale;
 }
 
@@ -561,7 +508,7 @@ static void test_energy_gradient_string(void **state)
             }
         }
     }
-    report("string: -Q - grad U (with fluxes)", w, tol);
+    tu_report("string: -Q - grad U (with fluxes)", w, tol);
 }
 
 /* With bending.  e-rows: -Q_e is the e-gradient of the same Gauss sum
@@ -620,10 +567,10 @@ static void test_energy_gradient_bend(void **state)
             }
         }
     }
-    report("bending: e-rows -Q - grad U (nt = 5)", we, tol);
-    report("bending: p-rows with fluxes, nt = 8", wp, tol);
-    report("bending: p-rows with fluxes, nt = 7 (info)", wp7, tol);
-    report("bending: p-rows nt = 8 / (16 FD + |res7 - res8|)", wq, 1.0);
+    tu_report("bending: e-rows -Q - grad U (nt = 5)", we, tol);
+    tu_report("bending: p-rows with fluxes, nt = 8", wp, tol);
+    tu_report("bending: p-rows with fluxes, nt = 7 (info)", wp7, tol);
+    tu_report("bending: p-rows nt = 8 / (16 FD + |res7 - res8|)", wq, 1.0);
 #ifndef VLBE_USE_FLOAT
     /* the p-row residual is the Gauss error: it shrinks from nt = 7 to 8
        (float: hidden below the FD error 16 FD = 3.9e-4) */
@@ -664,14 +611,14 @@ static void test_load_potential(void **state)
             for (i = 0; i < 10; ++i) res[i] = grad[i] + (double)Q[i];
             res[4] = is_fixed(mode, 4) ? 0.0 : res[4] - fr1;
             res[9] = is_fixed(mode, 9) ? 0.0 : res[9] + fr2;
-            scale = fmax(max_abs(10, Q), max_absd(10, grad));
+            scale = fmax(max_abs(10, Q), tu_max_abs(10, grad));
             for (i = 0; i < 10; ++i) {
                 w = fmax(w, fabs(res[i]) / scale);
                 ASSERT_CLOSE_CTX(res[i], 0.0, 0, tol * scale, "row %d, mode %u", i, mode);
             }
         }
     }
-    report("load: -Q_f - grad V (with end fluxes)", w, tol);
+    tu_report("load: -Q_f - grad V (with end fluxes)", w, tol);
 }
 
 /* Transport inertia against the kinetic energy.  Lagrange's equations of
@@ -729,7 +676,7 @@ static void test_transport_inertia_lagrange(void **state)
                    0.5 * rho * (v1[0] * v1[0] + v1[1] * v1[1]);
             B[9] = rho * pd2 * -((double)q[7] * v2[0] + (double)q[8] * v2[1]) -
                    0.5 * rho * (v2[0] * v2[0] + v2[1] * v2[1]);
-            scale = fmax(fmax(max_abs(10, Q), max_absd(10, mdot)), max_absd(10, dT));
+            scale = fmax(fmax(max_abs(10, Q), tu_max_abs(10, mdot)), tu_max_abs(10, dT));
             for (i = 0; i < 10; ++i) {
                 double res;
                 if (is_fixed(mode, i)) continue;
@@ -739,7 +686,7 @@ static void test_transport_inertia_lagrange(void **state)
             }
         }
     }
-    report("Mdot qd - dT/dq - Q_a - B", w, tol);
+    tu_report("Mdot qd - dT/dq - Q_a - B", w, tol);
 }
 
 /* T = qd^T M qd / 2 (same mode: fixed p's velocities are ignored by both).
@@ -763,13 +710,13 @@ static void test_kinetic_energy(void **state)
             const unsigned mode = mode_of(k);
             assert_int_equal(vlbe_ale_mass(&el, mode, q, M), VLBE_OK);
             assert_int_equal(vlbe_ale_energy(&el, mode, q, qd, E), VLBE_OK);
-            t = 0.5 * quad_form(M, x, &absum);
+            t = 0.5 * quad_form(10, M, x, &absum);
             w = fmax(w, fabs((double)E[0] - t) / (EPS * absum));
             ASSERT_CLOSE_CTX(E[0], t, 0, 64 * EPS * absum, "mode %u", mode);
             assert_true(E[0] > VLBE_R(0.0));
         }
     }
-    report("T - qd^T M qd / 2, in EPS * sum|terms|", w, 64.0);
+    tu_report("T - qd^T M qd / 2, in EPS * sum|terms|", w, 64.0);
 }
 
 /* ======================================================================= */
@@ -828,7 +775,7 @@ static void test_rigid_motion(void **state)
                 ASSERT_CLOSE(E[0], 0.0, 0, 0); /* at rest: exactly zero */
             }
         }
-    report("rigid motion |Q| in EPS (1 + |r|/L) EA", w, 64.0);
+    tu_report("rigid motion |Q| in EPS (1 + |r|/L) EA", w, 64.0);
 }
 
 /* ======================================================================= */
@@ -890,10 +837,10 @@ static void test_mass_properties(void **state)
                (measured 1 EPS) */
             ux[0] = ux[5] = 1.0;
             uy[1] = uy[6] = 1.0;
-            mt = quad_form(M, ux, NULL);
+            mt = quad_form(10, M, ux, NULL);
             wt = fmax(wt, fabs(mt / ((double)m.rhoA * L) - 1.0) / EPS);
             ASSERT_CLOSE(mt, (double)m.rhoA * L, 16 * EPS, 0);
-            ASSERT_CLOSE(quad_form(M, uy, NULL), (double)m.rhoA * L, 16 * EPS, 0);
+            ASSERT_CLOSE(quad_form(10, M, uy, NULL), (double)m.rhoA * L, 16 * EPS, 0);
             /* the e-block (same in every mode) is positive definite */
             assert_true(cholesky_ok(M, e_idx, 8));
             /* x^T M x > 0 for random x, by more than its rounding (16 EPS
@@ -901,7 +848,7 @@ static void test_mass_properties(void **state)
             for (i = 0; i < 5; ++i) {
                 double qf;
                 for (j = 0; j < 10; ++j) x[j] = tu_rng_uniform(&g);
-                qf = quad_form(M, x, &absum);
+                qf = quad_form(10, M, x, &absum);
                 assert_true(qf > 16 * EPS * absum);
             }
             /* ALE rows: M[p, p] = rhoA int |dr/dp_k|^2 > 0 on a curved state */
@@ -958,7 +905,7 @@ static void test_mass_properties(void **state)
                     xn[k == 0 ? 1 : 6] = (double)q[k == 0 ? 3 : 8];
                     xn[k == 0 ? 2 : 7] = (double)rpp[0];
                     xn[k == 0 ? 3 : 8] = (double)rpp[1];
-                    xs = max_absd(10, xn);
+                    xs = tu_max_abs(10, xn);
                     for (r = 0; r < 10; ++r) {
                         Mx = 0.0;
                         for (c2 = 0; c2 < 10; ++c2) Mx += (double)M[r * 10 + c2] * xn[c2];
@@ -970,9 +917,9 @@ static void test_mass_properties(void **state)
             }
         }
     }
-    report("classic mass, in EPS relative per entry", wc, 64.0);
-    report("M x_null, in EPS max|M| |x|", wn, 64.0);
-    report("total mass, in EPS", wt, 16.0);
+    tu_report("classic mass, in EPS relative per entry", wc, 64.0);
+    tu_report("M x_null, in EPS max|M| |x|", wn, 64.0);
+    tu_report("total mass, in EPS", wt, 16.0);
 }
 
 /* ======================================================================= */
@@ -1374,8 +1321,8 @@ static void test_quadrature_exactness(void **state)
             ASSERT_VEC_CLOSE(D, D8, 100, 0, tol * sc);
         }
     }
-    report("mass nm = 4, 5 vs 8, in EPS of max|M|", wm / EPS, 64.0);
-    report("string force nl = 5 vs 8, in EPS of max", wf / EPS, 64.0);
+    tu_report("mass nm = 4, 5 vs 8, in EPS of max|M|", wm / EPS, 64.0);
+    tu_report("string force nl = 5 vs 8, in EPS of max", wf / EPS, 64.0);
 }
 
 /* ======================================================================= */
@@ -1462,8 +1409,8 @@ static void test_strain_stretched(void **state)
                 ASSERT_CLOSE(r[1], y1 + s * ((double)p - p1) * sn, 0, 8.0 * EPS * (rmax + L));
             }
         }
-    report("stretched: eps, in EPS (1 + |r|/L) s^2", we, 32.0);
-    report("stretched: kap, in EPS (1 + |r|/L) / L", wk, 32.0);
+    tu_report("stretched: eps, in EPS (1 + |r|/L) s^2", we, 32.0);
+    tu_report("stretched: kap, in EPS (1 + |r|/L) / L", wk, 32.0);
 }
 
 /* A circular arc of radius R and angle theta, r(p) = c + R (sin(p/R),
@@ -1543,9 +1490,9 @@ static void test_curvature_arc(void **state)
             prev_end = eend;
         }
     }
-    report("arc: kap err at middle / (theta^2/24)", wm, 1.05);
-    report("arc: kap err at ends / (theta^2/12)", we, 1.05);
-    report("arc: position err at middle / (R theta^4/384)", wp, 1.05);
+    tu_report("arc: kap err at middle / (theta^2/24)", wm, 1.05);
+    tu_report("arc: kap err at ends / (theta^2/12)", we, 1.05);
+    tu_report("arc: position err at middle / (R theta^4/384)", wp, 1.05);
 }
 
 int main(void)

@@ -50,6 +50,7 @@
                             status (ELENGTH / ESINGULAR / ENOCONV), state finite */
 #include "test_util.h"
 #include "../ancf_ale.h"
+#include "ale_fixtures.h"
 #include "../integrators.h"
 
 #define VLBE_EXAMPLE_NO_MAIN
@@ -72,19 +73,6 @@
 /* helpers                                                                    */
 /* ------------------------------------------------------------------------ */
 
-static int report_on(void)
-{
-    const char *env = getenv("VLBE_TEST_REPORT");
-    return env && env[0] && env[0] != '0';
-}
-
-/* Prints "name: measured error / tolerance" when VLBE_TEST_REPORT is set. */
-static void report(const char *name, double err, double tol)
-{
-    if (report_on())
-        print_message("    %-52s err %.3e  tol %.3e  (ratio %.3f)\n", name, err, tol,
-                      tol > 0.0 ? err / tol : 0.0);
-}
 
 /* 1 in the slow builds: -O0, AddressSanitizer (GCC and clang), a binary run
    under valgrind (its preload library is in LD_PRELOAD), or VLBE_TEST_QUICK
@@ -105,21 +93,7 @@ static int slow_run(void)
     return slow;
 }
 
-static double max_abs(int n, const vlbe_real *a)
-{
-    double m = 0.0;
-    int i;
-    for (i = 0; i < n; ++i) m = fmax(m, fabs((double)a[i]));
-    return m;
-}
 
-static double max_absd(int n, const double *a)
-{
-    double m = 0.0;
-    int i;
-    for (i = 0; i < n; ++i) m = fmax(m, fabs(a[i]));
-    return m;
-}
 
 /* A chain with its storage and the vlbe_dae wired to the chain callbacks. */
 typedef struct chn {
@@ -130,21 +104,6 @@ typedef struct chn {
     vlbe_ale_chain ch;
     vlbe_dae sys;
 } chn;
-
-/* Material of the random tests (as in test_ancf_ale.c): every term O(1) so
-   that no contribution hides below the rounding of another. */
-static vlbe_ale_mat mat_std(void)
-{
-    vlbe_ale_mat m;
-    m.rhoA = VLBE_R(1.3);
-    m.EA = VLBE_R(5.0);
-    m.EI = VLBE_R(0.7);
-    m.c_eps = VLBE_R(0.15);
-    m.c_kap = VLBE_R(0.25);
-    m.f[0] = VLBE_R(0.4);
-    m.f[1] = VLBE_R(-2.1);
-    return m;
-}
 
 static vlbe_ale_node node_make(int pmode, double p)
 {
@@ -389,7 +348,7 @@ static double check_cols(fd_ctx *f, int which, int rows, int ncol, const vlbe_re
                         : which == FD_G_OF_S ? 0.0
                                              : (double)f->q[0];
         fd_fn(f, x0, f0);
-        fs = max_absd(rows, f0);
+        fs = tu_max_abs(rows, f0);
     }
     for (j = 0; j < ncol; ++j) {
         const double x = which == FD_Q_OF_V ? (double)f->v[j]
@@ -463,13 +422,13 @@ static void test_assembly_fd(void **state)
         wg = fmax(wg, check_cols(&f, FD_G_OF_S, m, 1, gam, -1.0, tol, "gamma"));
         wh = fmax(wh, check_cols(&f, FD_CTL_OF_Q, n, n, as_H, 1.0, tol, "d(C_q^T lambda)/dq"));
     }
-    report("K = dQ/dq (4 variants), worst / column scale", wk, tol);
-    report("D = dQ/dv", wd, tol);
-    report("Mq = d(M a)/dq", wm, tol);
-    report("C_q", wc, tol);
-    report("C_t", wt, tol);
-    report("gamma = -d(C_q v + C_t)/ds along (v, 1)", wg, tol);
-    report("H = d(C_q^T lambda)/dq", wh, tol);
+    tu_report("K = dQ/dq (4 variants), worst / column scale", wk, tol);
+    tu_report("D = dQ/dv", wd, tol);
+    tu_report("Mq = d(M a)/dq", wm, tol);
+    tu_report("C_q", wc, tol);
+    tu_report("C_t", wt, tol);
+    tu_report("gamma = -d(C_q v + C_t)/ds along (v, 1)", wg, tol);
+    tu_report("H = d(C_q^T lambda)/dq", wh, tol);
 }
 
 
@@ -498,21 +457,6 @@ static double cholesky_min_pivot(int n, const vlbe_real *A)
         }
     }
     return dmin;
-}
-
-/* u^T M u in double and the sum of |u_i M_ij u_j| (its rounding scale). */
-static double quad_form(int n, const vlbe_real *M, const double *u, double *absum)
-{
-    double s = 0.0, a = 0.0;
-    int i, j;
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) {
-            const double t = u[i] * (double)M[i * n + j] * u[j];
-            s += t;
-            a += fabs(t);
-        }
-    *absum = a;
-    return s;
 }
 
 /* A straight chain of nn nodes: both ends fixed in p, the rest free
@@ -557,7 +501,7 @@ static void test_mass_matrix(void **state)
            max |M|, is a p-mode's; 0 would be the
            straight chain's null vectors.  Measured 3.3e-5 (double) */
         const double dmin = cholesky_min_pivot(n, mm_M);
-        if (report_on()) print_message("    smallest Cholesky pivot / max|M|: %.3e\n", dmin);
+        if (tu_report_on()) print_message("    smallest Cholesky pivot / max|M|: %.3e\n", dmin);
         assert_true(dmin > 0.0);
     }
     /* total mass: a unit translation (positions 1, slopes 0, p' 0) moves
@@ -627,7 +571,7 @@ static void test_mass_matrix(void **state)
             u[s.node[node].ofs + 1] = (double)q[s.node[node].ofs + 3];
             u[pidx(&s, node)] = 1.0;
             tt = quad_form(n, mm_M, u, &absum);
-            if (report_on()) print_message("    bent chain, node %d: u^T M u = %.3e (|terms| %.3e)\n", node, tt, absum);
+            if (tu_report_on()) print_message("    bent chain, node %d: u^T M u = %.3e (|terms| %.3e)\n", node, tt, absum);
             assert_true(tt > 100.0 * 64.0 * EPS * absum);
         }
     }
@@ -687,7 +631,7 @@ static void test_rigid_state(void **state)
                                      "Q[%d], angle %g, offset %d, moving %d, mode %d", i, th[a], a, mv, mode);
             }
     }
-    report("rigid states: max |Q| / tolerance", worst, 1.0);
+    tu_report("rigid states: max |Q| / tolerance", worst, 1.0);
 }
 
 /* ======================================================================= */
@@ -779,7 +723,7 @@ static void energy_run(unsigned mode, int nt, double rtol, double t_end, en_resu
 
 static void en_print(const char *what, const en_result *r)
 {
-    if (report_on())
+    if (tu_report_on())
         print_message("    %-34s %s at t %.3f, %ld steps: max|E - E0| %.3e = %.3e Tmax, "
                       "p1 in [%.3f, %.3f]\n",
                       what, vlbe_status_str(r->rc), r->t, r->steps, r->drift, r->drift / r->Tmax,
@@ -962,7 +906,7 @@ static void test_cantilever_static(void **state)
             const double P = 3.0 * vl[k], alpha = P, el = -(12.0 / 105.0) * alpha * alpha;
             const double v = cantilever_solve(P, 1e4, 4, &it);
             rel[k] = (v - vl[k]) / vl[k];
-            if (report_on())
+            if (tu_report_on())
                 print_message("    cantilever v/L %.0e: %d iterations, (v - v_lin)/v_lin = %.4e, "
                               "elastica term %.4e\n", vl[k], it, rel[k], el);
             if (k == 0) {
@@ -979,7 +923,7 @@ static void test_cantilever_static(void **state)
     {
         const double vl = 1e-2, P = 3.0 * vl, el = -(12.0 / 105.0) * P * P;
         const double v = cantilever_solve(P, 100.0, 4, &it), rel = (v - vl) / vl;
-        if (report_on())
+        if (tu_report_on())
             print_message("    cantilever (float) v/L 1e-2: %d iterations, rel %.4e, elastica %.4e\n",
                           it, rel, el);
         ASSERT_CLOSE(rel, -7.93965e-5, 0, 16.0 * EPS);
@@ -1016,7 +960,7 @@ static void peak_freq_synthetic(void)
     f = ex_peak_freq(y, n, dt, 12.0, 33.0, w);
     free(y);
     free(w);
-    report("ex_peak_freq, synthetic 3-line signal, rel. error", fabs(f - f0) / f0, 1e-6);
+    tu_report("ex_peak_freq, synthetic 3-line signal, rel. error", fabs(f - f0) / f0, 1e-6);
     ASSERT_CLOSE(f, f0, 1e-6, 0);
 }
 
@@ -1370,7 +1314,7 @@ static void shrink_run(double Lmin, int halvings, shrink_result *r)
     r->t = (double)hs.t;
     free(w);
     free(iw);
-    if (report_on())
+    if (tu_report_on())
         print_message("    shrinking element, Lmin %g, halvings %d: %s (ch.err %s, element %d) at t = %.4f, "
                       "L = %.3e L0, state finite %d\n",
                       Lmin, halvings, vlbe_status_str(r->rc), vlbe_status_str(r->err), r->err_elem,

@@ -17,6 +17,9 @@
    tu_rng, tu_rng_seed, tu_rng_uniform    deterministic LCG, uniform [-1, 1)
    tu_fd_step(eps, scale)                 central-difference step scale*eps^(1/3)
    tu_central_diff(f, ctx, x, h, n, work, d)   d = (f(x+h) - f(x-h)) / step
+   tu_max_abs(n, a)                       max |a_i| of a double array
+   tu_report_on(), tu_report(name, err, tol)   with VLBE_TEST_REPORT set, print
+                                          each measured error beside its tolerance
 
    NaN never passes a check.  Equal values (infinities included) always
    pass, so rtol = atol = 0 asks for bitwise-equal results (up to the sign
@@ -34,6 +37,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 /* -- closeness ---------------------------------------------------------- */
 /* |a - b| / (atol + rtol |b|): <= 1 means close.  Equal values give 0 (also
@@ -140,6 +144,30 @@ static inline void tu_central_diff(tu_vec_fn f, void *ctx, double x, double h, i
     const double inv = 1.0 / (xp - xm);
     int i;
     for (i = 0; i < n; ++i) d[i] = (d[i] - work[i]) * inv;
+}
+
+/* -- small helpers ------------------------------------------------------ */
+static inline double tu_max_abs(int n, const double *a)
+{
+    double m = 0.0;
+    int i;
+    for (i = 0; i < n; ++i) m = fmax(m, fabs(a[i]));
+    return m;
+}
+
+/* 1 when VLBE_TEST_REPORT is set (and not "0") */
+static inline int tu_report_on(void)
+{
+    const char *env = getenv("VLBE_TEST_REPORT");
+    return env && env[0] && env[0] != '0';
+}
+
+/* "name: measured error, tolerance, ratio" when VLBE_TEST_REPORT is set */
+static inline void tu_report(const char *name, double err, double tol)
+{
+    if (tu_report_on())
+        print_message("    %-52s err %.3e  tol %.3e  (ratio %.3f)\n", name, err, tol,
+                      tol > 0.0 ? err / tol : 0.0);
 }
 
 #endif /* VLBE_TEST_UTIL_H */

@@ -1,0 +1,47 @@
+/* ale_fixtures.h -- what the ALE-ANCF suites share: the O(1) material of
+   the random tests and small reductions over vlbe_real arrays.
+   -- part of vlbe                                  SPDX-License-Identifier: MIT
+   Include after test_util.h and ../ancf_ale.h. */
+#ifndef VLBE_TEST_ALE_FIXTURES_H
+#define VLBE_TEST_ALE_FIXTURES_H
+
+/* Material of the random tests: every term O(1) so that no contribution
+   hides below the rounding of another. */
+static inline vlbe_ale_mat mat_std(void)
+{
+    vlbe_ale_mat m;
+    m.rhoA = VLBE_R(1.3);
+    m.EA = VLBE_R(5.0);
+    m.EI = VLBE_R(0.7);
+    m.c_eps = VLBE_R(0.15);
+    m.c_kap = VLBE_R(0.25);
+    m.f[0] = VLBE_R(0.4);
+    m.f[1] = VLBE_R(-2.1);
+    return m;
+}
+
+static inline double max_abs(int n, const vlbe_real *a)
+{
+    double m = 0.0;
+    int i;
+    for (i = 0; i < n; ++i) m = fmax(m, fabs((double)a[i]));
+    return m;
+}
+
+/* u^T M u in double (M n x n, row-major); *absum = sum of |terms| (the
+   rounding scale) when absum != NULL */
+static inline double quad_form(int n, const vlbe_real *M, const double *u, double *absum)
+{
+    double s = 0.0, a = 0.0;
+    int i, j;
+    for (i = 0; i < n; ++i)
+        for (j = 0; j < n; ++j) {
+            const double t = u[i] * (double)M[i * n + j] * u[j];
+            s += t;
+            a += fabs(t);
+        }
+    if (absum) *absum = a;
+    return s;
+}
+
+#endif /* VLBE_TEST_ALE_FIXTURES_H */
