@@ -450,12 +450,23 @@ static inline void vlbe__ale_strain_pt(const vlbe__ale_pt *pt, int pm, int ny, v
     }
 }
 
-/* Axial strain at a point: eps, gradient and (constant) Hessian in y. */
-static inline vlbe_real vlbe__ale_eps(const vlbe__ale_pt *pt, vlbe_real *gy, vlbe_real *H)
+/* sum_j b.h[k][a][j] x_j over the four nodal 2-vectors of x (element
+   layout): r, r', ALE partials of a point, or their rates with x = q' */
+static inline void vlbe__ale_sum(const vlbe_herm_ale *b, int k, int a, const vlbe_real *x,
+                                 vlbe_real *out)
+{
+    int j;
+    out[0] = out[1] = VLBE_R(0.0);
+    for (j = 0; j < 4; ++j) vlbe_v2_axpy(b->h[k][a][j], x + VLBE__ALE_E(j), out);
+}
+
+/* Axial strain from the slope r1 = r': eps, gradient and (constant) Hessian
+   in y = (r', r''). */
+static inline vlbe_real vlbe__ale_eps(const vlbe_real *r1, vlbe_real *gy, vlbe_real *H)
 {
     int i;
-    gy[0] = pt->X[1][0][0];
-    gy[1] = pt->X[1][0][1];
+    gy[0] = r1[0];
+    gy[1] = r1[1];
     gy[2] = gy[3] = VLBE_R(0.0);
     if (H) {
         for (i = 0; i < 16; ++i) H[i] = VLBE_R(0.0);
@@ -464,12 +475,12 @@ static inline vlbe_real vlbe__ale_eps(const vlbe__ale_pt *pt, vlbe_real *gy, vlb
     return VLBE_R(0.5) * (vlbe_v2_dot(gy, gy) - VLBE_R(1.0));
 }
 
-/* Signed curvature at a point: kap = (r' x r'') |r'|^-3, gradient in
-   y = (r', r''), Hessian when H != NULL.  VLBE_ESINGULAR for |r'|^2 <= eps. */
-static inline vlbe_status vlbe__ale_kap(const vlbe__ale_pt *pt, vlbe_real *kap, vlbe_real *gy,
-                                        vlbe_real *H)
+/* Signed curvature from r1 = r', r2 = r'': kap = (r' x r'') |r'|^-3,
+   gradient in y = (r', r''), Hessian when H != NULL.  VLBE_ESINGULAR for
+   |r'|^2 <= eps. */
+static inline vlbe_status vlbe__ale_kap(const vlbe_real *r1, const vlbe_real *r2, vlbe_real *kap,
+                                        vlbe_real *gy, vlbe_real *H)
 {
-    const vlbe_real *r1 = pt->X[1][0], *r2 = pt->X[2][0];
     const vlbe_real gg = vlbe_v2_dot(r1, r1);
     vlbe_real t, g32, k, sy[4], gv[4];
     int a, c;
@@ -555,7 +566,7 @@ static inline vlbe_status vlbe__ale_flux(const vlbe_ale_elem *el, int pm, int be
         vlbe_real gy[4], psq[10], eps, u, du = VLBE_R(0.0);
         if (!(pm & (1 << e))) continue;
         vlbe__ale_pt_eval(&el->ends[e], L, 2, 0, q, NULL, &pt);
-        eps = vlbe__ale_eps(&pt, gy, NULL);
+        eps = vlbe__ale_eps(pt.X[1][0], gy, NULL);
         u = VLBE_R(0.5) * mt->EA * eps * eps;
         /* degrees: eps^2 = (a - 1/2)^2 with a = |r'|^2/2 of degree -2 */
         du = -VLBE_R(2.0) * mt->EA * (eps + VLBE_R(0.5)) * eps;
@@ -565,7 +576,7 @@ static inline vlbe_status vlbe__ale_flux(const vlbe_ale_elem *el, int pm, int be
         }
         if (bend) {
             vlbe_real kap;
-            vlbe_status st = vlbe__ale_kap(&pt, &kap, gy, NULL);
+            vlbe_status st = vlbe__ale_kap(pt.X[1][0], pt.X[2][0], &kap, gy, NULL);
             if (st != VLBE_OK) return st;
             u += VLBE_R(0.5) * mt->EI * kap * kap; /* degree 0 */
             if (K) {
@@ -660,7 +671,7 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
             const vlbe_real w = gp->w * L;
             vlbe_real eps, Qloc[10];
             vlbe__ale_pt_eval(gp, L, 1, 0, q, qd, &pt);
-            eps = vlbe__ale_eps(&pt, gy, H);
+            eps = vlbe__ale_eps(pt.X[1][0], gy, H);
             for (i = 0; i < 2; ++i)
                 yd[i] = pt.V[1][0][i] + pd[0] * pt.X[1][1][i] + pd[1] * pt.X[1][2][i];
             yd[2] = yd[3] = VLBE_R(0.0);
@@ -681,7 +692,7 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
             const vlbe_real w = gp->w * L;
             vlbe_real kap;
             vlbe__ale_pt_eval(gp, L, 2, 0, q, qd, &pt);
-            if ((st = vlbe__ale_kap(&pt, &kap, gy, jac ? H : NULL)) != VLBE_OK) return st;
+            if ((st = vlbe__ale_kap(pt.X[1][0], pt.X[2][0], &kap, gy, jac ? H : NULL)) != VLBE_OK) return st;
             for (i = 0; i < 2; ++i) {
                 yd[i] = pt.V[1][0][i] + pd[0] * pt.X[1][1][i] + pd[1] * pt.X[1][2][i];
                 yd[2 + i] = pt.V[2][0][i] + pd[0] * pt.X[2][1][i] + pd[1] * pt.X[2][2][i];
@@ -840,14 +851,14 @@ VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, con
     for (g = 0; g < el->rl.n; ++g) {
         vlbe_real eps;
         vlbe__ale_pt_eval(&el->rl.g[g], L, 1, 0, q, NULL, &pt);
-        eps = vlbe__ale_eps(&pt, gy, NULL);
+        eps = vlbe__ale_eps(pt.X[1][0], gy, NULL);
         U += el->rl.g[g].w * L * VLBE_R(0.5) * mt->EA * eps * eps;
     }
     if (!(mode & VLBE_ALE_NO_BEND) && mt->EI != VLBE_R(0.0))
         for (g = 0; g < el->rt.n; ++g) {
             vlbe_real kap;
             vlbe__ale_pt_eval(&el->rt.g[g], L, 2, 0, q, NULL, &pt);
-            if ((st = vlbe__ale_kap(&pt, &kap, gy, NULL)) != VLBE_OK) return st;
+            if ((st = vlbe__ale_kap(pt.X[1][0], pt.X[2][0], &kap, gy, NULL)) != VLBE_OK) return st;
             U += el->rt.g[g].w * L * VLBE_R(0.5) * mt->EI * kap * kap;
         }
     E[0] = T;
@@ -863,18 +874,12 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
 {
     vlbe_herm_ale b;
     vlbe_status st;
-    int j;
     VLBE_ASSERT(q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     if (!vlbe_all_finite(&p, 1)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[4], q[9], 1, 0, &b);
-    if (r) r[0] = r[1] = VLBE_R(0.0);
-    if (rp) rp[0] = rp[1] = VLBE_R(0.0);
-    for (j = 0; j < 4; ++j) {
-        const vlbe_real *e = q + VLBE__ALE_E(j);
-        if (r) vlbe_v2_axpy(b.h[0][0][j], e, r);
-        if (rp) vlbe_v2_axpy(b.h[1][0][j], e, rp);
-    }
+    if (r) vlbe__ale_sum(&b, 0, 0, q, r);
+    if (rp) vlbe__ale_sum(&b, 1, 0, q, rp);
     return VLBE_OK;
 }
 
@@ -884,22 +889,17 @@ VLBE_API vlbe_status vlbe_ale_strain(const vlbe_real *q, vlbe_real p, vlbe_real 
                                      vlbe_real *VLBE_RESTRICT kap)
 {
     vlbe_herm_ale b;
-    vlbe_real r1[2] = {0, 0}, r2[2] = {0, 0}, gg;
+    vlbe_real r1[2], r2[2], gy[4], k = VLBE_R(0.0);
     vlbe_status st;
-    int j;
     VLBE_ASSERT(q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     if (!vlbe_all_finite(&p, 1)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[4], q[9], 2, 0, &b);
-    for (j = 0; j < 4; ++j) {
-        const vlbe_real *e = q + VLBE__ALE_E(j);
-        vlbe_v2_axpy(b.h[1][0][j], e, r1);
-        vlbe_v2_axpy(b.h[2][0][j], e, r2);
-    }
-    gg = vlbe_v2_dot(r1, r1);
-    if (kap && !(gg > VLBE_EPS)) return VLBE_ESINGULAR;
-    if (eps) *eps = VLBE_R(0.5) * (gg - VLBE_R(1.0));
-    if (kap) *kap = vlbe_v2_cross(r1, r2) / (gg * vlbe_sqrt(gg));
+    vlbe__ale_sum(&b, 1, 0, q, r1);
+    vlbe__ale_sum(&b, 2, 0, q, r2);
+    if (kap && (st = vlbe__ale_kap(r1, r2, &k, gy, NULL)) != VLBE_OK) return st;
+    if (eps) *eps = vlbe__ale_eps(r1, gy, NULL);
+    if (kap) *kap = k;
     return VLBE_OK;
 }
 
@@ -911,7 +911,7 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
 {
     static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
     vlbe_herm_ale b;
-    vlbe_real a[2][2] = {{0, 0}, {0, 0}};
+    vlbe_real a[2][2], x[2];
     vlbe_status st;
     int j, k, l;
     VLBE_ASSERT(q != NULL && F != NULL && Q != NULL);
@@ -920,13 +920,14 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
     if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
     vlbe_herm_ale_eval(pf, q[4], q[9], 0, 2, &b);
     for (j = 0; j < 4; ++j) {
-        const vlbe_real *e = q + VLBE__ALE_E(j);
         const int r = VLBE__ALE_E(j);
         Q[r] += b.h[0][0][j] * F[0];
         Q[r + 1] += b.h[0][0][j] * F[1];
-        for (k = 0; k < 2; ++k) vlbe_v2_axpy(b.h[0][1 + k][j], e, a[k]);
     }
-    for (k = 0; k < 2; ++k) Q[VLBE__ALE_P(k)] += vlbe_v2_dot(a[k], F);
+    for (k = 0; k < 2; ++k) {
+        vlbe__ale_sum(&b, 0, 1 + k, q, a[k]);
+        Q[VLBE__ALE_P(k)] += vlbe_v2_dot(a[k], F);
+    }
     if (!K) return VLBE_OK;
     for (j = 0; j < 4; ++j) {
         const int c = VLBE__ALE_E(j);
@@ -941,9 +942,8 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
     }
     for (k = 0; k < 2; ++k)
         for (l = 0; l < 2; ++l) {
-            vlbe_real s = VLBE_R(0.0);
-            for (j = 0; j < 4; ++j) s += b.h[0][dd[k][l]][j] * vlbe_v2_dot(q + VLBE__ALE_E(j), F);
-            K[VLBE__ALE_P(k) * 10 + VLBE__ALE_P(l)] += s;
+            vlbe__ale_sum(&b, 0, dd[k][l], q, x);
+            K[VLBE__ALE_P(k) * 10 + VLBE__ALE_P(l)] += vlbe_v2_dot(x, F);
         }
     return VLBE_OK;
 }
@@ -1622,27 +1622,26 @@ VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlb
                                     vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd)
 {
     vlbe_herm_ale b;
+    vlbe_real a1[2], a2[2];
     vlbe_status st;
-    int j, k, c;
+    int k;
     VLBE_ASSERT(q != NULL && qh != NULL);
     if ((st = vlbe__ale_check(q, qd)) != VLBE_OK) return st;
     if (!vlbe_all_finite(&ph, 1)) return VLBE_ENONFINITE;
     if (!(ph > q[4] && ph < q[9])) return VLBE_EBOUND;
     vlbe_herm_ale_eval(ph, q[4], q[9], 1, 1, &b);
-    for (c = 0; c < 5; ++c) qh[c] = VLBE_R(0.0);
-    if (qd && qhd)
-        for (c = 0; c < 5; ++c) qhd[c] = VLBE_R(0.0);
-    for (j = 0; j < 4; ++j) {
-        const vlbe_real *e = q + VLBE__ALE_E(j);
-        for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
-            vlbe_v2_axpy(b.h[k][0][j], e, qh + 2 * k);
-            if (qd && qhd) {
-                vlbe_v2_axpy(b.h[k][0][j], qd + VLBE__ALE_E(j), qhd + 2 * k);
-                vlbe_v2_axpy(b.h[k][1][j] * qd[4] + b.h[k][2][j] * qd[9], e, qhd + 2 * k);
-            }
+    for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
+        vlbe__ale_sum(&b, k, 0, q, qh + 2 * k);
+        if (qd && qhd) { /* material rate: S e' + (dS/dp1 e) p1' + (dS/dp2 e) p2' */
+            vlbe__ale_sum(&b, k, 0, qd, qhd + 2 * k);
+            vlbe__ale_sum(&b, k, 1, q, a1);
+            vlbe__ale_sum(&b, k, 2, q, a2);
+            vlbe_v2_axpy(qd[4], a1, qhd + 2 * k);
+            vlbe_v2_axpy(qd[9], a2, qhd + 2 * k);
         }
     }
     qh[4] = ph;
+    if (qd && qhd) qhd[4] = VLBE_R(0.0);
     return VLBE_OK;
 }
 

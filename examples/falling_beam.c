@@ -150,13 +150,13 @@ static inline fb_result fb_run(int N, double h, double t_end, FILE *csv)
         }
         t = (double)st.t;
         res.steps++;
-        res.newton += st.stats.newton_iters;
-        res.lu += st.stats.lu_factors;
         ps_now = (double)st.q[ps];
         if (csv) {
             vlbe_real tip[2];
-            vlbe_ale_chain_point(&m->ch, st.t, st.q, (vlbe_real)FB_L, tip, NULL);
-            fprintf(csv, "%.6f,%.9g,%.9g,%.9g,%.9g\n", t, (double)tip[1],
+            const double ty = vlbe_ale_chain_point(&m->ch, st.t, st.q, (vlbe_real)FB_L, tip, NULL)
+                                  ? (double)NAN
+                                  : (double)tip[1];
+            fprintf(csv, "%.6f,%.9g,%.9g,%.9g,%.9g\n", t, ty,
                     (double)st.q[m->node[m->slider].ofs], (double)st.q[m->node[m->slider].ofs + 1],
                     ps_now);
         }
@@ -174,6 +174,9 @@ static inline fb_result fb_run(int N, double h, double t_end, FILE *csv)
             res.status = vlbe_ale_chain_length_control(&m->ch, &m->slider, (vlbe_real)m->Lstd,
                                                        st.t, q, v, qn, vn, &changed);
             if (res.status == VLBE_OK && changed) {
+                /* the counters of st restart with it: bank them first */
+                res.newton += st.stats.newton_iters;
+                res.lu += st.stats.lu_factors;
                 fb_wire(m);
                 res.lc_events++;
                 res.status = vlbe_hht_init(&st, &m->sys, &par, (vlbe_real)t, qn, vn, w, lw, iw, liw);
@@ -181,8 +184,10 @@ static inline fb_result fb_run(int N, double h, double t_end, FILE *csv)
             res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;
         }
     }
-    {
+    if (res.status == VLBE_OK || res.steps > 0) {
         vlbe_real tip[2];
+        res.newton += st.stats.newton_iters;
+        res.lu += st.stats.lu_factors;
         if (vlbe_ale_chain_point(&m->ch, st.t, st.q, (vlbe_real)FB_L, tip, NULL) == VLBE_OK)
             res.tip_y_end = (double)tip[1];
     }
@@ -217,10 +222,10 @@ int main(int argc, char **argv)
         r = fb_run(Ns[k], h, 1.0, f);
         if (f) fclose(f);
         printf("# N = %d: status %s, run stopped with the mass at p = %.4f m, leaves at t = %.4f s "
-               "(extrapolated), %ld steps, %ld length-control events, cpu %.3f s (length control "
-               "%.4f s)\n",
-               Ns[k], vlbe_status_str(r.status), r.p_stop, r.t_leave, r.steps, r.lc_events, r.cpu,
-               r.cpu_lc);
+               "(extrapolated), %ld steps, %ld Newton iterations, %ld LU, %ld length-control "
+               "events, cpu %.3f s (length control %.4f s)\n",
+               Ns[k], vlbe_status_str(r.status), r.p_stop, r.t_leave, r.steps, r.newton, r.lu,
+               r.lc_events, r.cpu, r.cpu_lc);
         if (r.t_leave > 0)
             snprintf(qty, sizeof qty, "mass leaves the beam, %d elements [s] (paper 0.6-0.7)",
                      Ns[k]);

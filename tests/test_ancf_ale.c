@@ -1395,7 +1395,7 @@ static void test_strain_stretched(void **state)
             tol = 32.0 * EPS * (1.0 + rmax / L) * s * s;
             for (ix = 0; ix < ARRAY_LEN(xis); ++ix) {
                 const vlbe_real p = (vlbe_real)((double)q[4] + xis[ix] * L);
-                vlbe_real eps, kap, r[2];
+                vlbe_real eps, kap, r[2] = {0, 0}; /* set by the asserted call */
                 assert_int_equal(vlbe_ale_strain(q, p, &eps, &kap), VLBE_OK);
                 we = fmax(we, fabs((double)eps - 0.5 * (s * s - 1.0)) /
                                   (EPS * (1.0 + rmax / L) * s * s));
