@@ -75,12 +75,6 @@ static double load_avg(void)
     return l;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 static unsigned long long rng_state = 0x9E3779B97F4A7C15ULL;
 static double urand(void) /* uniform in [-1, 1), xorshift64* */
 {
@@ -255,7 +249,7 @@ static void measure_op(int op, const vlbe_ale_elem *els, const unsigned *modes, 
             s[v][i] = batch(op, &els[v], k[v], bad);
         }
     for (v = 0; v < NVAR; ++v) {
-        qsort(s[v], BATCHES, sizeof s[v][0], cmp_double);
+        qsort(s[v], BATCHES, sizeof s[v][0], benchu_cmp_double);
         res[v].med_ns = 1e9 * s[v][BATCHES / 2];
         res[v].min_ns = 1e9 * s[v][0];
         res[v].calls = k[v];

@@ -54,12 +54,6 @@
 #define DNAN ((double)NAN)
 
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* -- one configuration: problem, integrator, step or tolerance ------------- */
 typedef struct job {
     const char *scene, *name;
@@ -123,7 +117,7 @@ static void time_job(job *j, const vlbe_real *q0, const vlbe_real *v0)
         run_job(j, q0, v0);
         s[k] = benchu_now() - t1;
     }
-    qsort(s, (size_t)ns, sizeof s[0], cmp_double);
+    qsort(s, (size_t)ns, sizeof s[0], benchu_cmp_double);
     j->samples = ns;
     j->median_s = s[ns / 2];
     j->ns_step = j->stats.steps > 0 ? 1e9 * j->median_s / (double)j->stats.steps : DNAN;

@@ -16,6 +16,7 @@
 #define _POSIX_C_SOURCE 199309L
 #include "../vlbe.h"
 #include "svgplot.h"
+#include "bench_util.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,13 +31,6 @@
 #define FLOPS_PER_CYCLE 16.0
 
 static volatile double sink;
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static unsigned long long rng_state = 0x9E3779B97F4A7C15ULL;
 static double urand(void) /* uniform in [-1, 1), xorshift64* */
@@ -83,19 +77,13 @@ static void cpu_model(char *buf, size_t len)
     fclose(f);
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* one timed batch of k factorizations (what = 0) or solves (what = 1); seconds per call */
 static double batch(int what, int k, int n, const vlbe_real *A, vlbe_real *LU, int *piv,
                     vlbe_real *B, const vlbe_real *B0)
 {
     double t0, acc = 0.0;
     int r, info;
-    t0 = now();
+    t0 = benchu_now();
     for (r = 0; r < k; ++r) {
         if (what == 0) {
             if (vlbe_lu_factor(n, A, LU, piv, &info) != VLBE_OK) {
@@ -109,7 +97,7 @@ static double batch(int what, int k, int n, const vlbe_real *A, vlbe_real *LU, i
             acc += (double)B[r % n];
         }
     }
-    t0 = now() - t0;
+    t0 = benchu_now() - t0;
     sink = acc;
     return t0 / (double)k;
 }
@@ -133,7 +121,7 @@ static double measure(int what, int n, const vlbe_real *A, vlbe_real *LU, int *p
     if (ns < 11) ns = 11;
     if (ns > MAXS) ns = MAXS;
     for (i = 0; i < ns; ++i) s[i] = batch(what, k, n, A, LU, piv, B, B0);
-    qsort(s, (size_t)ns, sizeof s[0], cmp_double);
+    qsort(s, (size_t)ns, sizeof s[0], benchu_cmp_double);
     return s[ns / 2];
 }
 

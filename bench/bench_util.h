@@ -1,5 +1,6 @@
 /* bench_util.h -- what the micro-benchmarks share: a monotonic clock and
-   the machine's CPU model and clock for the report header.
+   the machine's CPU model and clock for the report header, CPU time, and
+   the comparison for medians.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 
    POSIX (clock_gettime): the including file defines _POSIX_C_SOURCE
@@ -18,6 +19,21 @@ static inline double benchu_now(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* seconds of CPU time of this process (CLOCK_PROCESS_CPUTIME_ID) */
+static inline double benchu_cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* qsort comparison of doubles (for medians) */
+static inline int benchu_cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
 }
 
 /* CPU model name and MHz from /proc/cpuinfo ("unknown cpu", 0 elsewhere) */

@@ -39,6 +39,7 @@
 #include "../examples/pendulum.c"
 #include "../examples/andrews.c"
 #include "svgplot.h"
+#include "bench_util.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -90,19 +91,6 @@ typedef struct scene {
 } scene;
 
 static ex_method g_ws; /* workspace of all runs (ws_alloc) */
-
-static double cpu_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static void fam_params(int fam, vlbe_hht_params *par)
 {
@@ -198,9 +186,9 @@ static double run(const scene *sc, const series *s, double x, int instr, point *
         bp.atol = (vlbe_real)(o.pend ? 1e-2 * x : x);
         m.bdf = &bp;
     }
-    c0 = cpu_now();
+    c0 = benchu_cpu_now();
     rc = ex_run(sys, &m, sc->q0, sc->v0, sc->t_end, wp_obs_step, &o, qf, NULL, NULL, &out);
-    c1 = cpu_now();
+    c1 = benchu_cpu_now();
     pt->status = rc;
     pt->err = rc == VLBE_OK ? scene_err(sc, qf, &o.pp) : DNAN;
     if (instr) {
@@ -227,7 +215,7 @@ static void measure(const scene *sc, series *s, double x)
         memset(&tmp, 0, sizeof tmp);
         t[k] = run(sc, s, x, 0, &tmp);
     }
-    qsort(t, (size_t)reps, sizeof t[0], cmp_double);
+    qsort(t, (size_t)reps, sizeof t[0], benchu_cmp_double);
     pt->cpu = t[reps / 2];
     pt->reps = reps;
 }
@@ -457,7 +445,7 @@ int main(int argc, char **argv)
     andr_par ap = andr_default();
     vlbe_dae psys, asys;
     vlbe_real pq0[2], pv0[2], aq0[ANDR_N], av0[ANDR_N];
-    double c0 = cpu_now();
+    double c0 = benchu_cpu_now();
     int k, i;
 
     if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
@@ -527,7 +515,7 @@ int main(int argc, char **argv)
     summary(&andr);
     printf("wrote %s/{wp,order,drift}_{pendulum,andrews}.svg, %s/wp_{pendulum,andrews}.csv "
            "(%.1f s CPU)\n",
-           dir, dir, cpu_now() - c0);
+           dir, dir, benchu_cpu_now() - c0);
     ex_method_release(&g_ws);
     return 0;
 }

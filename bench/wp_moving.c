@@ -54,6 +54,7 @@
 #define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/moving_string.c"
 #include "svgplot.h"
+#include "bench_util.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -113,19 +114,6 @@ typedef struct scene {
     char refdesc[200];
     series s[NVAR][NMESH];
 } scene;
-
-static double cpu_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 /* The spectral window of ms_freq_run() (string 12..33 Hz, beam 20..45 Hz). */
 static double win_lo(int bend) { return bend ? 20.0 : 12.0; }
@@ -193,7 +181,7 @@ static double run_once(int var, int ne, int bend, double x, point *pt)
 {
     vlbe_hht_params par;
     double c0, c1, f;
-    c0 = cpu_now();
+    c0 = benchu_cpu_now();
     if (var == V_BDF) {
         f = bdf_freq_run(ne, bend, x, BDF_DT_OUT, T_END, &pt->st, &pt->status);
     } else {
@@ -202,7 +190,7 @@ static double run_once(int var, int ne, int bend, double x, point *pt)
         f = ms_freq_run(ne, bend, x, T_END, &par, NULL, &pt->st, NULL);
         pt->status = f > 0.0 ? VLBE_OK : VLBE_ECALLBACK; /* ms_freq_run gives no status */
     }
-    c1 = cpu_now();
+    c1 = benchu_cpu_now();
     pt->f = f > 0.0 ? f : DNAN;
     return c1 - c0;
 }
@@ -227,7 +215,7 @@ static void measure(int var, int ne, int bend, double x, point *pt)
         memset(&tmp, 0, sizeof tmp);
         t[k] = run_once(var, ne, bend, x, &tmp);
     }
-    qsort(t, (size_t)reps, sizeof t[0], cmp_double);
+    qsort(t, (size_t)reps, sizeof t[0], benchu_cmp_double);
     pt->cpu = t[reps / 2];
     pt->reps = reps;
 }
@@ -423,7 +411,7 @@ int main(int argc, char **argv)
 {
     static scene str, beam;
     const char *dir = argc > 1 ? argv[1] : "out";
-    double c0 = cpu_now(), fa, fb, fc, r1, r2, fga;
+    double c0 = benchu_cpu_now(), fa, fb, fc, r1, r2, fga;
     char title[2][160];
     vlbe_dae_stats st;
     vlbe_hht_params par;
@@ -490,6 +478,6 @@ int main(int argc, char **argv)
     printf("%-6s %-30s  %-30s  %-30s\n", "scene", "integrator", "<= 1e-4", "<= 1e-6");
     summary(&str);
     summary(&beam);
-    printf("wrote %s/wp_moving_{string,beam}.{svg,csv} (%.1f s CPU)\n", dir, cpu_now() - c0);
+    printf("wrote %s/wp_moving_{string,beam}.{svg,csv} (%.1f s CPU)\n", dir, benchu_cpu_now() - c0);
     return 0;
 }
