@@ -105,6 +105,7 @@ API
    void vlbe_ale_chain_straight(ch, r0, dir, q)             straight start state
    vlbe_status vlbe_ale_chain_locate / _point(ch, t, q, p, ...)  element of p, r(p)
    vlbe_status vlbe_ale_chain_energy(ch, t, q, v, E)        T, U, V of the chain
+   vlbe_status vlbe_ale_chain_length(ch, t, q, v, len, rate)  arc length, its rate
    int vlbe_ale_chain_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc / _constr_hess(user = ch, ...)         vlbe_dae callbacks
    vlbe_status vlbe_ale_chain_insert(ch, e, ph, t, q, v, qn, vn)  split element e
@@ -1021,6 +1022,9 @@ VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t,
                                           vlbe_real p, vlbe_real *r, vlbe_real *rp);
 VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
                                            const vlbe_real *v, vlbe_real *E);
+VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *len,
+                                           vlbe_real *rate);
 /* vlbe_dae callbacks (user = the chain) */
 VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                                  vlbe_real *M);
@@ -1268,11 +1272,69 @@ VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, cons
     return VLBE_OK;
 }
 
+/* Records a callback failure and returns the callback's value: positive
+   (the integrator may retry a smaller step) when the state itself is out of
+   the model's domain -- an element shorter than Lmin or inverted, a zero
+   slope, non-finite values, which a Newton iterate can produce -- and
+   negative (fatal) for everything else (bad arguments, a failing pfun). */
+/* Deformed arc length of the chain, sum of int |r'| dp over the elements
+   (8-point Gauss-Legendre per element: |r'| is the root of a quartic, smooth
+   while r' != 0), and, when v and rate are given, its time derivative
+   d/dt int |r'| dp = int r'.(dr'/dt)/|r'| dp + |r'| p' at the last node
+   - |r'| p' at the first (dr'/dt at fixed material p: the material rate of
+   the slope, eq. 14 of [R] differentiated in p); the terms of interior
+   nodes cancel, |r'| being continuous there.  A zero slope: VLBE_ESINGULAR. */
+VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *len,
+                                           vlbe_real *rate)
+{
+    const vlbe_real *xi, *w;
+    vlbe_real qe[10], ve[10], L = VLBE_R(0.0), Ld = VLBE_R(0.0);
+    int e, g, idx[10];
+    unsigned md;
+    vlbe_status st;
+    const int want_rate = v != NULL && rate != NULL;
+    VLBE_ASSERT(ch != NULL && q != NULL && len != NULL);
+    if ((st = vlbe_gl_rule(8, &xi, &w)) != VLBE_OK) return st;
+    for (e = 0; e + 1 < ch->nn; ++e) {
+        vlbe_real h;
+        if ((st = vlbe_ale_chain_gather(ch, e, t, q, want_rate ? v : NULL, qe, want_rate ? ve : NULL,
+                                        idx, &md)) != VLBE_OK)
+            return st;
+        h = VLBE_R(0.5) * (qe[9] - qe[4]);
+        for (g = 0; g < 8; ++g) {
+            const vlbe_real p = qe[4] + h * (VLBE_R(1.0) + xi[g]);
+            vlbe_herm_ale b;
+            vlbe_real r1[2], n1;
+            vlbe_herm_ale_eval(p, qe[4], qe[9], 1, want_rate, &b);
+            vlbe__ale_sum(&b, 1, 0, qe, r1);
+            n1 = vlbe_sqrt(vlbe_v2_dot(r1, r1));
+            if (!(n1 > VLBE_R(0.0))) return VLBE_ESINGULAR;
+            L += w[g] * h * n1;
+            if (want_rate) { /* dr'/dt = S' e' + (dS'/dp1 e) p1' + (dS'/dp2 e) p2' */
+                vlbe_real r1d[2], a[2];
+                vlbe__ale_sum(&b, 1, 0, ve, r1d);
+                vlbe__ale_sum(&b, 1, 1, qe, a);
+                vlbe_v2_axpy(ve[4], a, r1d);
+                vlbe__ale_sum(&b, 1, 2, qe, a);
+                vlbe_v2_axpy(ve[9], a, r1d);
+                Ld += w[g] * h * vlbe_v2_dot(r1, r1d) / n1;
+            }
+        }
+        if (want_rate && e == 0) /* moving end points */
+            Ld -= vlbe_sqrt(vlbe_v2_dot(qe + 2, qe + 2)) * ve[4];
+        if (want_rate && e + 2 == ch->nn) Ld += vlbe_sqrt(vlbe_v2_dot(qe + 7, qe + 7)) * ve[9];
+    }
+    *len = L;
+    if (want_rate) *rate = Ld;
+    return VLBE_OK;
+}
+
 static inline int vlbe__ale_fail(vlbe_ale_chain *ch, vlbe_status st, int where)
 {
     ch->err = st;
     ch->err_elem = where;
-    return 1;
+    return (st == VLBE_ELENGTH || st == VLBE_ESINGULAR || st == VLBE_ENONFINITE) ? 1 : -1;
 }
 
 /* scatter a 10x10 element matrix */
@@ -1758,25 +1820,38 @@ static inline int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
     return 1;
 }
 
-/* Length control of a sliding node (Figure 7 of [R]): when the element on
-   one side of node *slider is longer than 1.5 Lstd, insert a node at
-   distance Lstd from that element's far node (the new element away from the
-   slider has length Lstd) and remove the slider's neighbour on the other
-   side (merging the two elements there), so the number of nodes and
-   coordinates stays the same.  Near a chain end, where the other side has
-   no removable node, only the insertion is made (needs capacity).
-   (q, v) -> (qn, vn) in the new layout (copied unchanged when nothing is
-   done; qn, vn must not alias q, v); *slider follows its node; *changed = 0
-   (nothing), 1 (inserted), 2 (inserted and removed).  Restart the
-   integrator from (qn, vn) when *changed != 0. */
+/* Length control of a sliding node (Figure 7 of [R]), keeping the two
+   elements next to node *slider between 0.5 and 1.5 Lstd:
+   (a) the paper's rule: when the element on one side is longer than
+       1.5 Lstd, insert a node at distance Lstd from that element's far node
+       (the new element away from the slider has length Lstd) and remove the
+       slider's neighbour on the other side (merging the two elements
+       there), so the number of nodes and coordinates stays the same;
+   (b) its complement, for a start that is not in the paper's steady state
+       (a node ahead of the slider that rule (a) would never remove, e.g. a
+       sliding node placed next to a chain end): when the element on one
+       side is shorter than 0.5 Lstd and its far node is removable, remove
+       that node, and, if the element on the other side is at least Lstd
+       long, insert a node in it at distance min(Lstd, length - 0.5 Lstd)
+       from its far node (both pieces then at least 0.5 Lstd).  In the
+       steady state (the two lengths summing to 2 Lstd) (a) and (b) fire
+       together and make the same change.
+   Near a chain end, where no removable node is on the other side, only the
+   insertion is made (needs capacity); removable means interior, fixed p, no
+   mass, no constraint.  (q, v) -> (qn, vn) in the new layout (copied
+   unchanged when nothing is done; qn, vn must not alias q, v); *slider
+   follows its node; *changed = 0 (nothing), 1 (inserted), 2 (inserted and
+   removed), 3 (removed).  Restart the integrator from (qn, vn) when
+   *changed != 0. */
 VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slider, vlbe_real Lstd,
                                                    vlbe_real t, const vlbe_real *q,
                                                    const vlbe_real *v, vlbe_real *qn,
                                                    vlbe_real *vn, int *changed)
 {
-    vlbe_real pl[3], ps[3], pr[3];
+    vlbe_real pl[3], ps[3], pr[3], Ll, Lr, at;
+    const vlbe_real lo = VLBE_R(0.5) * Lstd, hi = VLBE_R(1.5) * Lstd;
     const int s = *slider;
-    int side = 0, k;
+    int side = 0, ins, k;
     vlbe_status st;
     *changed = 0;
     if (s > 0 && s < ch->nn - 1) {
@@ -1784,8 +1859,11 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
             (st = vlbe_ale_chain_pnode(ch, s, t, q, v, ps)) != VLBE_OK ||
             (st = vlbe_ale_chain_pnode(ch, s + 1, t, q, v, pr)) != VLBE_OK)
             return st;
-        if (ps[0] - pl[0] > VLBE_R(1.5) * Lstd) side = -1;
-        else if (pr[0] - ps[0] > VLBE_R(1.5) * Lstd) side = 1;
+        Ll = ps[0] - pl[0];
+        Lr = pr[0] - ps[0];
+        /* side -1: work on the left element (insert there, remove on the right) */
+        if (Ll > hi || (Lr < lo && vlbe__ale_removable(ch, s + 1))) side = -1;
+        else if (Lr > hi || (Ll < lo && vlbe__ale_removable(ch, s - 1))) side = 1;
     }
     if (!side) {
         for (k = 0; k < ch->n; ++k) {
@@ -1794,18 +1872,29 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
         }
         return VLBE_OK;
     }
-    if (side < 0) { /* new node in element s-1 at pl + Lstd; the slider becomes s+1 */
-        if ((st = vlbe_ale_chain_insert(ch, s - 1, pl[0] + Lstd, t, q, v, qn, vn)) != VLBE_OK)
-            return st;
+    if (side < 0) {
+        ins = Ll >= Lstd;
+        at = pl[0] + (Ll - lo < Lstd ? Ll - lo : Lstd);
+    } else {
+        ins = Lr >= Lstd;
+        at = pr[0] - (Lr - lo < Lstd ? Lr - lo : Lstd);
+    }
+    if (!ins) { /* rule (b) only: remove the far node of the short element */
+        const int i = s - side; /* s + 1 when side = -1, s - 1 when side = 1 */
+        if (side > 0) *slider = s - 1;
+        *changed = 3;
+        return vlbe_ale_chain_remove(ch, i, q, v, qn, vn);
+    }
+    if (side < 0) { /* new node in element s-1; the slider becomes s+1 */
+        if ((st = vlbe_ale_chain_insert(ch, s - 1, at, t, q, v, qn, vn)) != VLBE_OK) return st;
         *slider = s + 1;
         *changed = 1;
         if (vlbe__ale_removable(ch, s + 2)) {
             *changed = 2;
             return vlbe_ale_chain_remove(ch, s + 2, qn, vn, qn, vn);
         }
-    } else { /* new node in element s at pr - Lstd; the slider keeps its index */
-        if ((st = vlbe_ale_chain_insert(ch, s, pr[0] - Lstd, t, q, v, qn, vn)) != VLBE_OK)
-            return st;
+    } else { /* new node in element s; the slider keeps its index */
+        if ((st = vlbe_ale_chain_insert(ch, s, at, t, q, v, qn, vn)) != VLBE_OK) return st;
         *changed = 1;
         if (vlbe__ale_removable(ch, s - 1)) {
             *changed = 2;

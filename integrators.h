@@ -32,8 +32,13 @@ CONVENTIONS
         M(t,q,v) q'' + C_q(t,q)^T lambda = Q(t,q,v),      C(t,q) = 0,
    n coordinates q, m holonomic (possibly rheonomic) constraints.  Q is the
    applied-minus-internal generalized force (positive in the sense of q'').
-   Matrices are row-major.  Callbacks return 0 on success; any other value
-   stops the integrator with VLBE_ECALLBACK.  Missing Jacobians are formed by
+   Matrices are row-major.  Callbacks return 0 on success.  A positive
+   value says the point asked for lies outside the model's domain (a Newton
+   iterate inverted an element, say): the attempt fails like a Newton
+   divergence and the step is retried smaller (HHT with max_halvings > 0,
+   BDF); when no smaller step is left the integrator stops with
+   VLBE_ECALLBACK.  A negative value is fatal: VLBE_ECALLBACK at once.  The
+   last failing value is in stats.callback_rc.  Missing Jacobians are formed by
    forward differences (step sqrt(eps) max(|x_j|, 1)).
    The integrators know nothing of elements: they see only the callbacks.
    Failure of a step (Newton divergence, singular iteration matrix,
@@ -125,6 +130,7 @@ typedef struct vlbe_dae_stats {
     long jac_evals;      /* iteration-matrix (Jacobian) evaluations         */
     long lu_factors;     /* LU factorizations                               */
     long lu_solves;      /* LU solves (one per right-hand side set)         */
+    int callback_rc;     /* value returned by the last failing callback     */
 } vlbe_dae_stats;
 
 /* Generalized-alpha family parameters (Arnold-Bruls form):
@@ -242,32 +248,48 @@ VLBE_INLINE void vlbe__int_stats_zero(vlbe_dae_stats *c)
     c->steps = c->rejected = c->newton_iters = c->newton_fails = 0;
     c->force_calls = c->mass_calls = c->constr_calls = 0;
     c->jac_evals = c->lu_factors = c->lu_solves = 0;
+    c->callback_rc = 0;
+}
+/* A callback's return value as a status; a failure is remembered in
+   c->callback_rc (positive: the point is outside the model's domain, the
+   step may be retried smaller). */
+VLBE_INLINE vlbe_status vlbe__int_cb(vlbe_dae_stats *c, int rc)
+{
+    if (rc == 0) return VLBE_OK;
+    c->callback_rc = rc;
+    return VLBE_ECALLBACK;
+}
+/* a failed attempt that a smaller step may cure: Newton trouble, or a
+   callback that called the iterate outside its domain (return value > 0) */
+VLBE_INLINE int vlbe__int_retry(const vlbe_dae_stats *c, vlbe_status rc)
+{
+    return rc != VLBE_EARG && (rc != VLBE_ECALLBACK || c->callback_rc > 0);
 }
 VLBE_INLINE vlbe_status vlbe__int_mass(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                        const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
 {
     ++c->mass_calls;
-    return s->mass(s->user, t, q, v, M) ? VLBE_ECALLBACK : VLBE_OK;
+    return vlbe__int_cb(c, s->mass(s->user, t, q, v, M));
 }
 VLBE_INLINE vlbe_status vlbe__int_force(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                         const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
 {
     ++c->force_calls;
-    return s->force(s->user, t, q, v, Q) ? VLBE_ECALLBACK : VLBE_OK;
+    return vlbe__int_cb(c, s->force(s->user, t, q, v, Q));
 }
 VLBE_INLINE vlbe_status vlbe__int_constr(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                          const vlbe_real *q, vlbe_real *C)
 {
     if (s->m == 0) return VLBE_OK;
     ++c->constr_calls;
-    return s->constr(s->user, t, q, C) ? VLBE_ECALLBACK : VLBE_OK;
+    return vlbe__int_cb(c, s->constr(s->user, t, q, C));
 }
 VLBE_INLINE vlbe_status vlbe__int_cjac(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                        const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
 {
     if (s->m == 0) return VLBE_OK;
     ++c->constr_calls;
-    return s->constr_jac(s->user, t, q, Cq, Ct) ? VLBE_ECALLBACK : VLBE_OK;
+    return vlbe__int_cb(c, s->constr_jac(s->user, t, q, Cq, Ct));
 }
 
 /* Forward-difference increment for coordinate x. */
@@ -292,7 +314,7 @@ VLBE_INLINE vlbe_status vlbe__int_gamma(const vlbe_dae *s, vlbe_dae_stats *c, vl
     if (m == 0) return VLBE_OK;
     if (s->constr_acc) {
         ++c->constr_calls;
-        return s->constr_acc(s->user, t, q, v, g) ? VLBE_ECALLBACK : VLBE_OK;
+        return vlbe__int_cb(c, s->constr_acc(s->user, t, q, v, g));
     }
     for (i = 0; i < n; ++i) {
         vlbe_real r = vlbe_fabs(q[i]);
@@ -363,7 +385,7 @@ VLBE_INLINE vlbe_status vlbe__int_constr_q(const vlbe_dae *s, vlbe_dae_stats *c,
     if (s->constr_hess && nu > 0) {
         for (k = 0; k < nu; ++k) {
             ++c->constr_calls;
-            if (s->constr_hess(s->user, t, q, u[k], H)) return VLBE_ECALLBACK;
+            if ((rc = vlbe__int_cb(c, s->constr_hess(s->user, t, q, u[k], H))) != VLBE_OK) return rc;
             for (i = 0; i < n; ++i)
                 for (j = 0; j < n; ++j) Ju_[k][(size_t)i * ldu_[k] + j] += cu_[k] * H[(size_t)i * n + j];
         }
@@ -416,7 +438,7 @@ VLBE_INLINE vlbe_status vlbe__int_tangent2(const vlbe_dae *s, vlbe_dae_stats *c,
     /* -K and -D */
     if (s->force_jac) {
         ++c->force_calls;
-        if (s->force_jac(s->user, t, q, v, K, D)) return VLBE_ECALLBACK;
+        if ((rc = vlbe__int_cb(c, s->force_jac(s->user, t, q, v, K, D))) != VLBE_OK) return rc;
         for (i = 0; i < n; ++i)
             for (j = 0; j < n; ++j) {
                 Jq[(size_t)i * ldq + j] -= cq * K[(size_t)i * n + j];
@@ -445,8 +467,9 @@ VLBE_INLINE vlbe_status vlbe__int_tangent2(const vlbe_dae *s, vlbe_dae_stats *c,
     if (!(s->flags & VLBE_DAE_MASS_CONST)) {
         if (s->mass_jac) {
             ++c->mass_calls;
-            if (s->mass_jac(s->user, t, q, v, a, K, (s->flags & VLBE_DAE_MASS_V) ? D : NULL))
-                return VLBE_ECALLBACK;
+            rc = vlbe__int_cb(c, s->mass_jac(s->user, t, q, v, a, K,
+                                             (s->flags & VLBE_DAE_MASS_V) ? D : NULL));
+            if (rc != VLBE_OK) return rc;
             for (i = 0; i < n; ++i)
                 for (j = 0; j < n; ++j) {
                     Jq[(size_t)i * ldq + j] += cq * K[(size_t)i * n + j];
@@ -856,7 +879,7 @@ VLBE_INLINE vlbe_status vlbe__hht_step_rec(vlbe_hht *st, vlbe_real h, int depth)
     if (rc == VLBE_ENOCONV) ++st->stats.newton_fails;
     ++st->stats.rejected;
     st->have_lu_ = 0;
-    if (depth <= 0 || rc == VLBE_ECALLBACK || rc == VLBE_EARG) return rc;
+    if (depth <= 0 || !vlbe__int_retry(&st->stats, rc)) return rc;
     {
         vlbe_real t0 = st->t;
         vlbe_real *bk = vlbe__hht_backup(st);
@@ -1361,7 +1384,7 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
             }
             if (p->fixed_step || ck * enorm <= VLBE_R(1.0)) break; /* accepted */
         } else {
-            if (rc == VLBE_ECALLBACK || rc == VLBE_EARG) {
+            if (!vlbe__int_retry(&st->stats, rc)) {
                 vlbe__bdf_restore(st, h, k, ns);
                 return rc;
             }

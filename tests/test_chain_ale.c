@@ -1347,8 +1347,11 @@ static void shrink_run(double Lmin, int halvings, shrink_result *r)
    Float: the iteration matrix's condition grows as L^-3, and at L ~ 2e-3
    L0 its solution carries errors of the order of L: a Newton iterate puts
    p1 past p0 and the callback fails with ELENGTH (measured in (a) and (b)
-   at L = 3.6e-3 L0); "short" is then L < 1e-2 L0 and in (a) the stop need
-   not come from Lmin itself. */
+   at L = 3.6e-3 L0); the callback calls that "outside the domain", so HHT
+   halves the step and goes on until the LU finds the matrix singular
+   (VLBE_ESINGULAR) or the halvings run out (VLBE_ECALLBACK + ELENGTH);
+   "short" is then L < 1e-2 L0 and in (a) the stop need not come from Lmin
+   itself. */
 static void test_shrinking_element(void **state)
 {
 #ifndef VLBE_USE_FLOAT
@@ -1360,9 +1363,13 @@ static void test_shrinking_element(void **state)
     (void)state;
     shrink_run(1e-4, 8, &r);
     assert_true(r.finite);
+#ifndef VLBE_USE_FLOAT
     assert_int_equal(r.rc, VLBE_ECALLBACK);
     assert_int_equal(r.err, VLBE_ELENGTH);
     assert_int_equal(r.err_elem, 0);
+#else
+    assert_true(r.rc == VLBE_ESINGULAR || (r.rc == VLBE_ECALLBACK && r.err == VLBE_ELENGTH));
+#endif
     assert_true(r.L > above && r.L < short_L);
 
     shrink_run(0.0, 8, &r);

@@ -19,6 +19,8 @@
      trapezoidal_index3_unstable  Newmark's multiplier error grows, HHT damps it
      fail_nonfinite            NaN force -> ENONFINITE, state bitwise unchanged
      fail_callback             callback error -> ECALLBACK, state unchanged
+     fail_callback_domain      callback +1 once -> halved and through; without
+                               halvings, or -1: ECALLBACK, state unchanged
      fail_singular             the same constraint twice -> ESINGULAR at init
      fail_noconv_and_recovery  huge step -> ENOCONV, unchanged; with halvings: ok
      fail_args                 workspace too small -> EWORK; h <= 0, NaN -> EARG
@@ -609,6 +611,50 @@ static void test_fail_callback(void **state)
     check_fault(3, VLBE_ECALLBACK);
 }
 
+/* A callback that calls one Newton iterate outside its domain (returns +1
+   once, as an element chain does for an inverted element): with halvings
+   the step is retried at h/2 and goes through; without, VLBE_ECALLBACK with
+   the state unchanged.  The same fault returned as -1 is fatal: VLBE_ECALLBACK
+   at once even with halvings (one rejected attempt, no retry). */
+static void test_fail_callback_domain(void **state)
+{
+    faulty f;
+    vlbe_dae sys;
+    vlbe_hht_params par;
+    vlbe_real q0[2], v0[2];
+    run *r = (run *)malloc(sizeof *r);
+    snap s;
+    int k, variant;
+    (void)state;
+    assert_non_null(r);
+    for (variant = 0; variant < 3; ++variant) { /* +1 halving, +1 no halving, -1 halving */
+        faulty_setup(&sys, &f, 0);
+        vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+        par.max_halvings = variant == 1 ? 0 : 3;
+        pend_initial(&f.p, q0, v0);
+        assert_int_equal(run_init(r, &sys, &par, q0, v0), VLBE_OK);
+        for (k = 0; k < 10; ++k) assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(1e-2)), VLBE_OK);
+        snap_take(&r->st, &s);
+        f.mode = variant == 2 ? 6 : 5;
+        f.after = 1; /* the second force call: inside the Newton iteration */
+        f.count = 1;
+        f.calls = 0;
+        r->st.stats.rejected = 0;
+        if (variant == 0) {
+            assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(1e-2)), VLBE_OK);
+            assert_true(r->st.stats.rejected == 1);
+            assert_int_equal(r->st.stats.callback_rc, 1);
+            assert_true(vlbe_fabs(r->st.t - s.t - VLBE_R(1e-2)) <= 4 * VLBE_EPS);
+        } else {
+            assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(1e-2)), VLBE_ECALLBACK);
+            snap_assert_same(&r->st, &s);
+            assert_true(r->st.stats.rejected == 1);
+            assert_int_equal(r->st.stats.callback_rc, variant == 2 ? -1 : 1);
+        }
+    }
+    free(r);
+}
+
 /* The same constraint twice: C_q has rank 1 < m = 2. */
 static int twice_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
 {
@@ -976,6 +1022,7 @@ int main(void)
         cmocka_unit_test(test_trapezoidal_index3_unstable),
         cmocka_unit_test(test_fail_nonfinite),
         cmocka_unit_test(test_fail_callback),
+        cmocka_unit_test(test_fail_callback_domain),
         cmocka_unit_test(test_fail_singular),
         cmocka_unit_test(test_fail_noconv_and_recovery),
         cmocka_unit_test(test_fail_args),

@@ -1,0 +1,322 @@
+/* ex_slide.h -- a lumped mass sliding without friction along a planar
+   ALE-ANCF beam (ancf_ale.h) under gravity, with the length control of
+   ale-rancf Figure 7: the model and the run loop shared by the sliding-mass
+   scenes (examples/falling_beam.c, examples/suspended_beam.c) and their
+   tests.                                          -- part of vlbe
+                                                   SPDX-License-Identifier: MIT
+
+   The beam: N elements of L_std = L/N on a straight horizontal start, nodes
+   at k L_std; the node nearest to the mass (never an end node) becomes the
+   sliding node: free material coordinate p0, carrying the mass, one slope
+   vector (at a point mass the slope is continuous: eq. (40)'s continuous
+   case with the two slopes merged).  Elements next to the sliding node are
+   ALE, all others Lagrangian (fixed p), as in the paper.  Supports:
+   clamped-free (position and slope direction at the left end) or pinned-
+   pinned (positions at both ends).
+
+   The run: HHT-alpha with a fixed step (halving when Newton fails or an
+   iterate leaves the chain's domain); after every step the length control
+   (vlbe_ale_chain_length_control) and, after a change, a restart of the
+   integrator from the mapped state (positions and velocities exact).  The
+   energy T + U + V is tracked: the drift within the steps (the jumps of
+   the length control taken out) and every jump, with the jump of the beam's
+   arc length.  For the clamped-free beam the run ends when the mass reaches
+   the free end: the element ahead of it, the last one, shorter than
+   stop L_std (there is no node left to remove there, the element shrinks
+   to nothing and its bending frequency grows as 1/L^2); the leaving time is
+   p(t) extrapolated to p = L with p' and p''.  Examples may allocate; the
+   run mallocs its workspace. */
+#ifndef VLBE_EX_SLIDE_H
+#define VLBE_EX_SLIDE_H
+
+#include "../ancf_ale.h"
+#include "ex_ale.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define EX_SLIDE_NMAX 64   /* elements, at most                         */
+#define EX_SLIDE_MAXEV 256 /* length-control events recorded, at most   */
+
+enum { EX_SLIDE_CLAMP_FREE = 0, EX_SLIDE_PIN_PIN = 1 };
+
+typedef struct ex_slide_cfg {
+    int N;            /* elements                                            */
+    int support;      /* EX_SLIDE_CLAMP_FREE or EX_SLIDE_PIN_PIN              */
+    unsigned flags;   /* element flags: 0 (the paper's) or VLBE_ALE_CONSERVATIVE */
+    double L, r, rho, E, g; /* beam length, section radius, density, modulus, gravity */
+    double mass, p0, v0;    /* lumped mass, its start and start speed along the beam */
+    double h, alpha, t_end; /* HHT step, alpha, end time                     */
+    int halvings;           /* HHT step halvings                            */
+    double probe_p;         /* material point whose y is recorded           */
+    double stop;            /* clamped-free: end at an element ahead < stop L_std */
+} ex_slide_cfg;
+
+/* one row per accepted step (and t = 0) */
+typedef struct ex_slide_hist {
+    int n, cap;
+    double *t, *probe_y, *mass_x, *mass_y, *mass_p, *energy, *length, *rate;
+} ex_slide_hist;
+
+typedef struct ex_slide_event {
+    double t, dE, dlen; /* time, jump of T + U + V [J] and of the arc length [m] */
+    int changed;        /* 1: node inserted, 2: inserted and one removed (merge) */
+} ex_slide_event;
+
+typedef struct ex_slide_out {
+    vlbe_status status;
+    double t_leave;      /* clamped-free: the mass leaves the beam (-1: not reached) */
+    double t_stop, p_stop; /* time and material coordinate of the mass at the end */
+    double cpu, cpu_lc;  /* seconds: all, length control and restarts     */
+    long steps, rejected, newton, lu, lc_events;
+    double E0, T_max;    /* energy at t = 0, largest kinetic energy [J]    */
+    double dE_gain, dE_loss; /* extremes of E - E0 within the steps, jumps out [J] */
+    double dE_lc;        /* largest |energy jump| at a length-control event [J] */
+    int nev;
+    ex_slide_event ev[EX_SLIDE_MAXEV];
+} ex_slide_out;
+
+typedef struct ex_slide {
+    vlbe_ale_mat mat;
+    vlbe_ale_elem el;
+    vlbe_ale_node node[EX_SLIDE_NMAX + 2];
+    vlbe_ale_con con[4];
+    vlbe_ale_chain ch;
+    vlbe_dae sys;
+    int slider;
+    double Lstd;
+} ex_slide;
+
+/* the paper's section (ale-rancf 6.1 and 6.2): r = 0.01 m, rho = 7200,
+   E = 20 MPa, L = 1 m, gravity 9.81; the rest zero */
+static inline void ex_slide_cfg_paper(ex_slide_cfg *c)
+{
+    memset(c, 0, sizeof *c);
+    c->L = 1.0;
+    c->r = 0.01;
+    c->rho = 7200.0;
+    c->E = 20e6;
+    c->g = 9.81;
+    c->h = 1e-3;
+    c->alpha = -0.05;
+    c->halvings = 8;
+    c->stop = 0.1;
+}
+
+static inline int ex_slide_build(ex_slide *m, const ex_slide_cfg *c, vlbe_real *q0, vlbe_real *v0)
+{
+    const double PI = 3.14159265358979323846, A = PI * c->r * c->r;
+    vlbe_real r0[2] = {0, 0}, dir[2] = {1, 0};
+    vlbe_ale_con k;
+    int i, ks;
+    if (c->N < 2 || c->N > EX_SLIDE_NMAX) return -1;
+    memset(m, 0, sizeof *m);
+    m->mat.rhoA = (vlbe_real)(c->rho * A);
+    m->mat.EA = (vlbe_real)(c->E * A);
+    m->mat.EI = (vlbe_real)(c->E * PI * c->r * c->r * c->r * c->r / 4.0);
+    m->mat.f[1] = (vlbe_real)(-c->g * c->rho * A);
+    if (vlbe_ale_elem_init(&m->el, &m->mat, VLBE_ALE_NO_DAMP | c->flags, 0, 0, 0)) return -1;
+    m->Lstd = c->L / c->N;
+    ks = (int)floor(c->p0 / m->Lstd + 0.5);
+    if (ks < 1) ks = 1;
+    if (ks > c->N - 1) ks = c->N - 1;
+    for (i = 0; i <= c->N; ++i) {
+        m->node[i].pmode = VLBE_ALE_PFIXED;
+        m->node[i].p = (vlbe_real)(i * m->Lstd);
+    }
+    m->node[ks].pmode = VLBE_ALE_PFREE;
+    m->node[ks].p = (vlbe_real)c->p0;
+    m->node[ks].mass = (vlbe_real)c->mass;
+    m->slider = ks;
+    if (vlbe_ale_chain_init(&m->ch, &m->el, m->node, c->N + 1, EX_SLIDE_NMAX + 2, m->con, 4))
+        return -1;
+    m->ch.g[1] = (vlbe_real)-c->g;
+    memset(&k, 0, sizeof k);
+    k.type = VLBE_ALE_CON_POS; /* left end at the origin */
+    if (vlbe_ale_chain_add(&m->ch, &k)) return -1;
+    if (c->support == EX_SLIDE_CLAMP_FREE) {
+        k.type = VLBE_ALE_CON_SLOPE_DIR; /* clamp: slope direction (1, 0) */
+        k.v[0] = 1;
+    } else {
+        k.node = c->N; /* pin at (L, 0) */
+        k.v[0] = (vlbe_real)c->L;
+    }
+    if (vlbe_ale_chain_add(&m->ch, &k) || vlbe_ale_chain_layout(&m->ch)) return -1;
+    ex_ale_wire(&m->sys, &m->ch);
+    vlbe_ale_chain_straight(&m->ch, r0, dir, q0);
+    for (i = 0; i < m->ch.n; ++i) v0[i] = 0;
+    /* the mass slides at v0 over the resting beam: p' = v0, r' = p' r'(p) */
+    v0[m->node[ks].ofs] = (vlbe_real)c->v0;
+    v0[m->node[ks].ofs + 4] = (vlbe_real)c->v0;
+    return 0;
+}
+
+/* total energy; *T: the kinetic part (may be NULL) */
+static inline double ex_slide_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                     const vlbe_real *v, double *T)
+{
+    vlbe_real E[3];
+    if (vlbe_ale_chain_energy(ch, t, q, v, E) != VLBE_OK) return (double)NAN;
+    if (T) *T = (double)E[0];
+    return (double)(E[0] + E[1] + E[2]);
+}
+
+static inline double ex_slide_len(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                  const vlbe_real *v, double *rate)
+{
+    vlbe_real len, ld = VLBE_R(0.0);
+    if (vlbe_ale_chain_length(ch, t, q, v, &len, &ld) != VLBE_OK) return (double)NAN;
+    if (rate) *rate = (double)ld;
+    return (double)len;
+}
+
+static inline int ex_slide_hist_alloc(ex_slide_hist *hi, int cap)
+{
+    int k;
+    double **col[8];
+    memset(hi, 0, sizeof *hi);
+    hi->t = (double *)malloc((size_t)(8 * cap) * sizeof *hi->t);
+    if (!hi->t) return -1;
+    hi->cap = cap;
+    col[0] = &hi->t;
+    col[1] = &hi->probe_y;
+    col[2] = &hi->mass_x;
+    col[3] = &hi->mass_y;
+    col[4] = &hi->mass_p;
+    col[5] = &hi->energy;
+    col[6] = &hi->length;
+    col[7] = &hi->rate;
+    for (k = 1; k < 8; ++k) *col[k] = hi->t + (size_t)k * (size_t)cap;
+    return 0;
+}
+
+static inline void ex_slide_hist_free(ex_slide_hist *hi)
+{
+    free(hi->t);
+    memset(hi, 0, sizeof *hi);
+}
+
+/* Writes the histories as CSV; 0 on success. */
+static inline int ex_slide_hist_csv(const ex_slide_hist *hi, const char *path)
+{
+    FILE *f = fopen(path, "w");
+    int k;
+    if (!f) return -1;
+    fprintf(f, "t_s,probe_y_m,mass_x_m,mass_y_m,mass_p_m,energy_J,length_m,length_rate_m_s\n");
+    for (k = 0; k < hi->n; ++k)
+        fprintf(f, "%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.10g,%.6g\n", hi->t[k], hi->probe_y[k],
+                hi->mass_x[k], hi->mass_y[k], hi->mass_p[k], hi->energy[k], hi->length[k],
+                hi->rate[k]);
+    return fclose(f) ? -1 : 0;
+}
+
+static inline void ex_slide_record(ex_slide *m, const ex_slide_cfg *c, double t, const vlbe_real *q,
+                                   const vlbe_real *v, double E, ex_slide_hist *hi)
+{
+    vlbe_real r[2];
+    const int k = hi->n++, o = m->node[m->slider].ofs;
+    hi->t[k] = t;
+    hi->probe_y[k] = vlbe_ale_chain_point(&m->ch, (vlbe_real)t, q, (vlbe_real)c->probe_p, r, NULL)
+                         ? (double)NAN
+                         : (double)r[1];
+    hi->mass_x[k] = (double)q[o];
+    hi->mass_y[k] = (double)q[o + 1];
+    hi->mass_p[k] = (double)q[o + 4];
+    hi->energy[k] = E;
+    hi->length[k] = ex_slide_len(&m->ch, (vlbe_real)t, q, v, &hi->rate[k]);
+}
+
+/* The run of the header comment; hist may be NULL. */
+static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hist)
+{
+    ex_slide_out res;
+    ex_slide *m = (ex_slide *)malloc(sizeof *m);
+    const int nmax = 5 * (EX_SLIDE_NMAX + 2);
+    vlbe_real *q = (vlbe_real *)malloc((size_t)(4 * nmax) * sizeof *q);
+    vlbe_real *v = q ? q + nmax : NULL, *qn = q ? q + 2 * nmax : NULL, *vn = q ? q + 3 * nmax : NULL;
+    vlbe_hht_params par;
+    vlbe_hht st;
+    size_t lw = vlbe_hht_work_len(nmax, 2), liw = vlbe_hht_iwork_len(nmax, 2);
+    vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
+    int *iw = (int *)malloc(liw * sizeof *iw);
+    double t = 0.0, Eref;
+    clock_t c0 = clock();
+    memset(&res, 0, sizeof res);
+    res.t_leave = -1.0;
+    res.status = VLBE_EWORK;
+    if (!m || !q || !w || !iw || ex_slide_build(m, c, q, v)) goto done;
+    Eref = res.E0 = ex_slide_energy(&m->ch, 0, q, v, &res.T_max);
+    if (hist && hist->n < hist->cap) ex_slide_record(m, c, 0.0, q, v, res.E0, hist);
+    vlbe_hht_params_hht(&par, (vlbe_real)c->alpha);
+    par.max_halvings = c->halvings;
+    res.status = vlbe_hht_init(&st, &m->sys, &par, 0, q, v, w, lw, iw, liw);
+    while (res.status == VLBE_OK && t < c->t_end - 0.5 * c->h) {
+        const int ps = m->node[m->slider].ofs + 4;
+        double ps_now, E, T = 0.0;
+        int changed = 0;
+        if ((res.status = vlbe_hht_step(&st, (vlbe_real)c->h)) != VLBE_OK) break;
+        t = (double)st.t;
+        res.steps++;
+        ps_now = (double)st.q[ps];
+        E = ex_slide_energy(&m->ch, st.t, st.q, st.v, &T);
+        if (T > res.T_max) res.T_max = T;
+        if (E - Eref > res.dE_gain) res.dE_gain = E - Eref;
+        if (E - Eref < res.dE_loss) res.dE_loss = E - Eref;
+        if (hist && hist->n < hist->cap) ex_slide_record(m, c, t, st.q, st.v, E, hist);
+        if (c->support == EX_SLIDE_CLAMP_FREE && m->slider + 1 == m->ch.nn - 1 &&
+            (double)m->node[m->slider + 1].p - ps_now < c->stop * m->Lstd) {
+            /* p(t) extrapolated to the end of the beam with p', p'' */
+            const double pd = (double)st.v[ps], pdd = (double)st.qdd[ps], d = c->L - ps_now;
+            const double disc = pd * pd + 2.0 * pdd * d;
+            res.t_leave = t + (disc >= 0.0 && pd > 0.0 ? 2.0 * d / (pd + sqrt(disc)) : 0.0);
+            break;
+        }
+        {
+            const clock_t c1 = clock();
+            const double len0 = ex_slide_len(&m->ch, st.t, st.q, NULL, NULL);
+            vlbe_vec_copy(m->ch.n, st.q, q);
+            vlbe_vec_copy(m->ch.n, st.v, v);
+            res.status = vlbe_ale_chain_length_control(&m->ch, &m->slider, (vlbe_real)m->Lstd,
+                                                       st.t, q, v, qn, vn, &changed);
+            if (res.status == VLBE_OK && changed) {
+                const double jump = ex_slide_energy(&m->ch, st.t, qn, vn, NULL) - E;
+                Eref += jump; /* the drift of the steps is measured without it */
+                if (fabs(jump) > res.dE_lc) res.dE_lc = fabs(jump);
+                if (res.nev < EX_SLIDE_MAXEV) {
+                    ex_slide_event *ev = &res.ev[res.nev++];
+                    ev->t = t;
+                    ev->dE = jump;
+                    ev->dlen = ex_slide_len(&m->ch, st.t, qn, NULL, NULL) - len0;
+                    ev->changed = changed;
+                }
+                /* the counters of st restart with it: bank them first */
+                res.newton += st.stats.newton_iters;
+                res.lu += st.stats.lu_factors;
+                res.rejected += st.stats.rejected;
+                ex_ale_wire(&m->sys, &m->ch);
+                res.lc_events++;
+                res.status = vlbe_hht_init(&st, &m->sys, &par, (vlbe_real)t, qn, vn, w, lw, iw, liw);
+            }
+            res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;
+        }
+    }
+    if (res.steps > 0 || res.status == VLBE_OK) {
+        res.newton += st.stats.newton_iters;
+        res.lu += st.stats.lu_factors;
+        res.rejected += st.stats.rejected;
+        res.t_stop = (double)st.t;
+        res.p_stop = (double)st.q[m->node[m->slider].ofs + 4];
+    }
+done:
+    res.cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    free(m);
+    free(q);
+    free(w);
+    free(iw);
+    return res;
+}
+
+#endif /* VLBE_EX_SLIDE_H */
