@@ -90,19 +90,29 @@ typedef struct ex_slide {
     double Lstd;
 } ex_slide;
 
-/* the paper's section (ale-rancf 6.1 and 6.2): r = 0.01 m, rho = 7200,
-   E = 20 MPa, L = 1 m, gravity 9.81; the rest zero */
-static inline void ex_slide_cfg_paper(ex_slide_cfg *c)
+/* A scene on the paper's beam (ale-rancf 6.1 and 6.2: L = 1 m, r = 0.01 m,
+   rho = 7200, E = 20 MPa, gravity 9.81), HHT-alpha -0.05 at h = 1e-3 with 8
+   halvings, the paper's element (flags 0), t_end = 1 s; the probe at the
+   free end (clamped-free) or at midspan (pinned-pinned). */
+static inline void ex_slide_cfg_paper(ex_slide_cfg *c, int N, int support, double mass, double p0,
+                                      double v0)
 {
     memset(c, 0, sizeof *c);
+    c->N = N;
+    c->support = support;
     c->L = 1.0;
     c->r = 0.01;
     c->rho = 7200.0;
     c->E = 20e6;
     c->g = 9.81;
+    c->mass = mass;
+    c->p0 = p0;
+    c->v0 = v0;
     c->h = 1e-3;
     c->alpha = -0.05;
+    c->t_end = 1.0;
     c->halvings = 8;
+    c->probe_p = support == EX_SLIDE_CLAMP_FREE ? c->L : 0.5 * c->L;
     c->stop = 0.1;
 }
 

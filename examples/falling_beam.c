@@ -51,16 +51,9 @@
 /* the scene: N elements, element flags (0 or VLBE_ALE_CONSERVATIVE), step h */
 static inline void fb_cfg(ex_slide_cfg *c, int N, unsigned flags, double h)
 {
-    ex_slide_cfg_paper(c);
-    c->N = N;
-    c->support = EX_SLIDE_CLAMP_FREE;
+    ex_slide_cfg_paper(c, N, EX_SLIDE_CLAMP_FREE, 0.8, 0.1, 0.4);
     c->flags = flags;
-    c->mass = 0.8;
-    c->p0 = 0.1;
-    c->v0 = 0.4;
     c->h = h;
-    c->t_end = 1.0;
-    c->probe_p = c->L; /* the free end */
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN

@@ -37,16 +37,10 @@
 /* the scene: element flags (0 or VLBE_ALE_CONSERVATIVE), step h, end time */
 static inline void sb_cfg(ex_slide_cfg *c, unsigned flags, double h, double t_end)
 {
-    ex_slide_cfg_paper(c);
-    c->N = 3;
-    c->support = EX_SLIDE_PIN_PIN;
+    ex_slide_cfg_paper(c, 3, EX_SLIDE_PIN_PIN, 5.0, 0.1, 0.0);
     c->flags = flags;
-    c->mass = 5.0;
-    c->p0 = 0.1;
-    c->v0 = 0.0;
     c->h = h;
     c->t_end = t_end;
-    c->probe_p = 0.5 * c->L; /* midspan */
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
