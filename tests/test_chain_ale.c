@@ -47,7 +47,32 @@
                             pfun failing / NaN, NaN in a free p (known bug)
      shrinking_element      a free node driven onto its neighbour by a
                             prescribed-p constraint under HHT: stops with a
-                            status (ELENGTH / ESINGULAR / ENOCONV), state finite */
+                            status (ELENGTH / ESINGULAR / ENOCONV), state finite
+     split_exact            vlbe_ale_split of a deformed, stretched element:
+                            r, r', strain, curvature, material velocity at
+                            1000 points equal the original's to rounding;
+                            bad ph / element: status, outputs untouched
+     chain_insert_exact     vlbe_ale_chain_insert: r, r' at 1000 points and
+                            T, U, V unchanged (exact rules; bending: the
+                            composite-rule energy unchanged, the Gauss
+                            artefact falling with the order)
+     merge_exact            removing the node between two pieces of one cubic
+                            gives that cubic (1000 points, energies); insert +
+                            remove round trip bitwise
+     merge_error            merging two elements on a circular arc: midpoint
+                            deviation = Hermite error h^4/24R^3 (1 - h^2/15R^2),
+                            observed order 4; energy changes reported
+     insert_remove_bad_inputs  ends, sliding node, mass, constraints,
+                            EQUAL_LEN ends, bad e / ph, no capacity: status,
+                            chain and outputs untouched
+     length_control_unit    one call of vlbe_ale_chain_length_control: changed
+                            2 (either side), 1 (at a chain end), 0; new
+                            element of length Lstd; r, r' outside the merged
+                            span unchanged
+     length_control_run     the shrinking scene on 7 nodes: without control it
+                            stops (ELENGTH), with control it runs through
+                            (3 events, node count constant, elements within
+                            [0.5, 1.5] Lstd up to one step of the node) */
 #include "test_util.h"
 #include "../ancf_ale.h"
 #include "ale_fixtures.h"
@@ -155,6 +180,42 @@ static int pidx(const chn *c, int i)
     const vlbe_ale_node *nd = &c->node[i];
     assert_int_equal(nd->pmode, VLBE_ALE_PFREE);
     return nd->ofs + 4 + 2 * nd->slide;
+}
+
+/* HHT-alpha -0.1 with up to `halvings` step halvings on c->sys from the
+   consistent start at (t, q, v); the workspace fits any layout up to N_MAX
+   coordinates and M_MAX equations, so that a run can restart in place after
+   a change of layout.  hht_free releases it. */
+typedef struct hht_run {
+    vlbe_hht_params par;
+    vlbe_hht hs;
+    vlbe_real *w;
+    int *iw;
+    size_t lw, liw;
+} hht_run;
+
+static void hht_alloc(hht_run *h, int halvings)
+{
+    assert_int_equal(vlbe_hht_params_hht(&h->par, VLBE_R(-0.1)), VLBE_OK);
+    h->par.max_halvings = halvings;
+    h->lw = vlbe_hht_work_len(N_MAX, M_MAX);
+    h->liw = vlbe_hht_iwork_len(N_MAX, M_MAX);
+    h->w = (vlbe_real *)malloc(h->lw * sizeof *h->w);
+    h->iw = (int *)malloc(h->liw * sizeof *h->iw);
+    assert_non_null(h->w);
+    assert_non_null(h->iw);
+}
+
+static vlbe_status hht_start(hht_run *h, chn *c, vlbe_real t, const vlbe_real *q,
+                             const vlbe_real *v)
+{
+    return vlbe_hht_init(&h->hs, &c->sys, &h->par, t, q, v, h->w, h->lw, h->iw, h->liw);
+}
+
+static void hht_free(hht_run *h)
+{
+    free(h->w);
+    free(h->iw);
 }
 
 /* p(t) of node 3 of the assembly chain in its pfun variant: a sine */
@@ -1276,11 +1337,9 @@ static void shrink_run(double Lmin, int halvings, shrink_result *r)
     static chn c;
     const double L0 = 0.5, Tc = 0.8, h = Tc / 100.0;
     vlbe_real q[N_MAX], v[N_MAX], r0[2] = {0, 0}, dir[2] = {VLBE_R(1.01), 0};
-    vlbe_hht_params par;
-    vlbe_hht hs;
-    size_t lw, liw;
-    vlbe_real *w;
-    int *iw, i;
+    hht_run hr;
+    const vlbe_hht *hs = &hr.hs;
+    int i;
     memset(&c, 0, sizeof c);
     c.mat.rhoA = VLBE_R(1.0);
     c.mat.EA = VLBE_R(100.0);
@@ -1299,27 +1358,19 @@ static void shrink_run(double Lmin, int halvings, shrink_result *r)
     v[pidx(&c, 1)] = (vlbe_real)(-2.0 * L0 / Tc);
     v[c.node[1].ofs] = (vlbe_real)(1.01 * -2.0 * L0 / Tc);
     v[c.node[1].ofs + 1] = VLBE_R(0.1);
-    assert_int_equal(vlbe_hht_params_hht(&par, VLBE_R(-0.1)), VLBE_OK);
-    par.max_halvings = halvings;
-    lw = vlbe_hht_work_len(c.sys.n, c.sys.m);
-    liw = vlbe_hht_iwork_len(c.sys.n, c.sys.m);
-    w = (vlbe_real *)malloc(lw * sizeof *w);
-    iw = (int *)malloc(liw * sizeof *iw);
-    assert_non_null(w);
-    assert_non_null(iw);
-    assert_int_equal(vlbe_hht_init(&hs, &c.sys, &par, VLBE_R(0.0), q, v, w, lw, iw, liw), VLBE_OK);
+    hht_alloc(&hr, halvings);
+    assert_int_equal(hht_start(&hr, &c, VLBE_R(0.0), q, v), VLBE_OK);
     c.ch.err = VLBE_OK;
     c.ch.err_elem = -1;
     r->rc = VLBE_OK;
-    while ((double)hs.t < 1.2 * Tc - 0.5 * h)
-        if ((r->rc = vlbe_hht_step(&hs, (vlbe_real)h)) != VLBE_OK) break;
+    while ((double)hs->t < 1.2 * Tc - 0.5 * h)
+        if ((r->rc = vlbe_hht_step(&hr.hs, (vlbe_real)h)) != VLBE_OK) break;
     r->err = c.ch.err;
     r->err_elem = c.ch.err_elem;
-    r->finite = vlbe_all_finite(hs.q, 4 * c.sys.n + c.sys.m);
-    r->L = (double)hs.q[pidx(&c, 1)] - 0.0;
-    r->t = (double)hs.t;
-    free(w);
-    free(iw);
+    r->finite = vlbe_all_finite(hs->q, 4 * c.sys.n + c.sys.m);
+    r->L = (double)hs->q[pidx(&c, 1)] - 0.0;
+    r->t = (double)hs->t;
+    hht_free(&hr);
     if (tu_report_on())
         print_message("    shrinking element, Lmin %g, halvings %d: %s (ch.err %s, element %d) at t = %.4f, "
                       "L = %.3e L0, state finite %d\n",
@@ -1386,6 +1437,1011 @@ static void test_shrinking_element(void **state)
                   vlbe_status_str(r.rc), r.L / 0.5);
 }
 
+/* ======================================================================= */
+/* 9. exact segmentation (vlbe_ale_split, vlbe_ale_chain_insert)             */
+/* ======================================================================= */
+
+#define NPTS 1000 /* material points of the segmentation and merging checks */
+
+/* Tolerance of the checks that must hold to rounding (segmentation, merging
+   of two pieces of one cubic, length control away from the merged span),
+   in units of each quantity's rounding scale S (below):
+   SEG_TOL = 450 EPS = 1.0e-13 in double (5.4e-5 in float).
+   Why 450: evaluating r(p) = sum_j N_j(xi) e_j rounds xi = (p - p1)/L
+   (2 EPS, i.e. the point moves by 2 EPS L |r'|), the cubic basis (~10
+   operations, partial sums <= 3 max |N|) and the 8-term contraction
+   (8 EPS sum |N_j e_j|): at most ~30 EPS S0, S0 = max nodal |r| + L max
+   nodal |r'| (the size of the data, not of the curve: a translated element
+   rounds its absolute positions).  A piece's new node carries one such
+   error, its own evaluation another, and the reference evaluation a third:
+   <= ~100 EPS S0.  The k-th p-derivative divides O(S0) data by the piece
+   length l^k: S_k = S0 / l^k; strain scale |r'| S1, curvature scale
+   S2 / |r'|^2 + 3 |kap| S1 / |r'|.  450 EPS leaves a factor >= 4 over that
+   worst case; the measured maxima (reported) are 0.3-10 EPS. */
+#define SEG_TOL (450.0 * EPS)
+
+/* max |a_i - b_i|, i < n */
+static double max_diff(int n, const double *a, const double *b)
+{
+    double m = 0.0;
+    int i;
+    for (i = 0; i < n; ++i) m = fmax(m, fabs(a[i] - b[i]));
+    return m;
+}
+
+/* material point k of npts spread over [pa, pb], both ends included */
+static vlbe_real pt_at(double pa, double pb, int k, int npts)
+{
+    return k == npts - 1 ? (vlbe_real)pb : (vlbe_real)(pa + (pb - pa) * k / (npts - 1));
+}
+
+/* Material velocity N(p) q' of one element at p in [p1, p2] (eq. 14: the
+   ALE matrix N = [S, dS/dp1 e, dS/dp2 e] is what vlbe_ale_point_force
+   applies: Q = N^T F).  *absum = max_i sum_j |N_ij qd_j| (its rounding scale). */
+static void mat_vel(const vlbe_real *q, const vlbe_real *qd, vlbe_real p, double *vel,
+                    double *absum)
+{
+    int c, i;
+    *absum = 0.0;
+    for (c = 0; c < 2; ++c) {
+        vlbe_real F[2] = {0, 0}, Q[10] = {0};
+        double s = 0.0, a = 0.0;
+        F[c] = VLBE_R(1.0);
+        assert_int_equal(vlbe_ale_point_force(q, p, F, Q, NULL), VLBE_OK);
+        for (i = 0; i < 10; ++i) {
+            s += (double)Q[i] * (double)qd[i];
+            a += fabs((double)Q[i] * (double)qd[i]);
+        }
+        vel[c] = s;
+        *absum = fmax(*absum, a);
+    }
+}
+
+/* r(p; q + x qd) of seg_q/seg_qd: the material motion through time x, for
+   the difference check of the material velocity */
+typedef struct mv_ctx {
+    const vlbe_real *q, *qd;
+    vlbe_real p;
+} mv_ctx;
+
+static double mv_fn(void *vc, double x, double *out)
+{
+    const mv_ctx *m = (const mv_ctx *)vc;
+    const vlbe_real xr = (vlbe_real)x;
+    vlbe_real qx[10], r[2];
+    int i;
+    for (i = 0; i < 10; ++i) qx[i] = m->q[i] + xr * m->qd[i];
+    assert_int_equal(vlbe_ale_point(qx, m->p, r, NULL), VLBE_OK);
+    out[0] = (double)r[0];
+    out[1] = (double)r[1];
+    return (double)xr;
+}
+
+/* S0 of the tolerance note: max nodal |r| + L max nodal |r'| of element q */
+static double elem_scale(const vlbe_real *q)
+{
+    const double L = (double)(q[9] - q[4]);
+    return fmax((double)vlbe_v2_norm(q), (double)vlbe_v2_norm(q + 5)) +
+           L * fmax((double)vlbe_v2_norm(q + 2), (double)vlbe_v2_norm(q + 7));
+}
+
+/* A deformed, stretched element: general nodal values, slopes of lengths
+   1.33 and 1.61 (not unit, not parallel; |r'| 1.22 .. 1.61 inside),
+   p1 = 0.37 < p2 = 1.19 (L = 0.82), curvature -0.16 .. 1.43 (an inflexion);
+   rates with p1' = 0.45, p2' = -0.3. */
+static const double seg_q[10] = {0.31, -0.22, 1.2, 0.57, 0.37, 1.05, 0.48, 0.35, 1.57, 1.19};
+static const double seg_qd[10] = {0.7, -0.4, 0.9, 1.3, 0.45, -0.6, 0.25, -1.1, 0.8, -0.3};
+
+/* vlbe_ale_split at ph = p1 + 0.3 L: the pieces [p1, ph] and [ph, p2] give,
+   at 1000 material points of [p1, p2] (each evaluated on the piece holding
+   it), the original's position, slope, strain, curvature and material
+   velocity to SEG_TOL x their scales (note above).  The material velocity
+   of a piece uses its nodal rates: the original's at the old node, qhd at
+   H, whose p' is 0 (H is a material point).  That N q' is the material
+   velocity d/dt r(p; q + t q') at fixed p is checked by central differences
+   (step EPS^(1/3): error ~FD_ERR times the size of the third time
+   derivative, which with the moving p's carries powers of p'/L, a few
+   times the velocity scale: held to 30 FD_ERR x the velocity scale,
+   measured 2.8 FD_ERR in double, 2.3 in float).
+   Bad ph (= p1, = p2, outside, NaN, +-Inf) and bad elements: the status,
+   and qh, qhd untouched. */
+static void test_split_exact(void **state)
+{
+    vlbe_real q[10], qd[10], qh[5], qhd[5], qa[10], qb[10], va[10], vb[10];
+    const double tol = SEG_TOL;
+    double e_r = 0.0, e_rp = 0.0, e_eps = 0.0, e_kap = 0.0, e_v = 0.0, e_fd = 0.0;
+    double S0, l, rpmin = HUGE_VAL, rpmax = 0.0, kmax = 0.0, vsc = 0.0;
+    vlbe_real ph;
+    int i, k;
+    (void)state;
+    for (i = 0; i < 10; ++i) {
+        q[i] = (vlbe_real)seg_q[i];
+        qd[i] = (vlbe_real)seg_qd[i];
+    }
+    ph = (vlbe_real)(seg_q[4] + 0.3 * (seg_q[9] - seg_q[4]));
+    assert_int_equal(vlbe_ale_split(q, qd, ph, qh, qhd), VLBE_OK);
+    assert_true(qh[4] == ph);
+    assert_true(qhd[4] == VLBE_R(0.0));
+    for (i = 0; i < 5; ++i) {
+        qa[i] = q[i];
+        qa[5 + i] = qh[i];
+        qb[i] = qh[i];
+        qb[5 + i] = q[5 + i];
+        va[i] = qd[i];
+        va[5 + i] = qhd[i];
+        vb[i] = qhd[i];
+        vb[5 + i] = qd[5 + i];
+    }
+    S0 = fmax(elem_scale(q), fmax(elem_scale(qa), elem_scale(qb)));
+    l = fmin((double)(ph - q[4]), (double)(q[9] - ph));
+    /* the data: errors at every point, then compared with their scales */
+    for (k = 0; k < NPTS; ++k) {
+        const vlbe_real p = pt_at((double)q[4], (double)q[9], k, NPTS);
+        const vlbe_real *qp = p <= ph ? qa : qb, *vp = p <= ph ? va : vb;
+        vlbe_real r0[2] = {0, 0}, rp0[2] = {0, 0}, r1[2] = {0, 0}, rp1[2] = {0, 0};
+        vlbe_real eps0 = 0, kap0 = 0, eps1 = 0, kap1 = 0;
+        double v0[2], v1[2], s0, s1, d[2], w[2];
+        mv_ctx m;
+        assert_int_equal(vlbe_ale_point(q, p, r0, rp0), VLBE_OK);
+        assert_int_equal(vlbe_ale_point(qp, p, r1, rp1), VLBE_OK);
+        assert_int_equal(vlbe_ale_strain(q, p, &eps0, &kap0), VLBE_OK);
+        assert_int_equal(vlbe_ale_strain(qp, p, &eps1, &kap1), VLBE_OK);
+        mat_vel(q, qd, p, v0, &s0);
+        mat_vel(qp, vp, p, v1, &s1);
+        m.q = q;
+        m.qd = qd;
+        m.p = p;
+        tu_central_diff(mv_fn, &m, 0.0, tu_fd_step(EPS, 1.0), 2, w, d);
+        for (i = 0; i < 2; ++i) {
+            e_r = fmax(e_r, fabs((double)r1[i] - (double)r0[i]));
+            e_rp = fmax(e_rp, fabs((double)rp1[i] - (double)rp0[i]));
+            e_v = fmax(e_v, fabs(v1[i] - v0[i]));
+            e_fd = fmax(e_fd, fabs(d[i] - v0[i]));
+        }
+        e_eps = fmax(e_eps, fabs((double)eps1 - (double)eps0));
+        e_kap = fmax(e_kap, fabs((double)kap1 - (double)kap0));
+        rpmin = fmin(rpmin, (double)vlbe_v2_norm(rp0));
+        rpmax = fmax(rpmax, (double)vlbe_v2_norm(rp0));
+        kmax = fmax(kmax, fabs((double)kap0));
+        vsc = fmax(vsc, fmax(s0, s1));
+    }
+    {
+        const double S1 = S0 / l, S2 = S0 / (l * l);
+        const double ks = S2 / (rpmin * rpmin) + 3.0 * kmax * S1 / rpmin;
+        tu_report("split: position, 1000 points (/ S0)", e_r / S0, tol);
+        tu_report("split: slope (/ S0 / l)", e_rp / S1, tol);
+        tu_report("split: strain (/ |r'| S1)", e_eps / (rpmax * S1), tol);
+        tu_report("split: curvature (/ kappa scale)", e_kap / ks, tol);
+        tu_report("split: material velocity (/ sum |N q'|)", e_v / vsc, tol);
+        tu_report("split: N q' vs d/dt r (central diff., / FD_ERR)", e_fd / vsc / FD_ERR, 30.0);
+        assert_true(e_r <= tol * S0);
+        assert_true(e_rp <= tol * S1);
+        assert_true(e_eps <= tol * rpmax * S1);
+        assert_true(e_kap <= tol * ks);
+        assert_true(e_v <= tol * vsc);
+        assert_true(e_fd <= 30.0 * FD_ERR * vsc);
+    }
+    /* bad inputs: status, outputs untouched */
+    {
+        const double bad[7] = {seg_q[4],    seg_q[9], seg_q[4] - 0.1, seg_q[9] + 1e-3,
+                               (double)NAN, HUGE_VAL, -HUGE_VAL};
+        const vlbe_status want[7] = {VLBE_EBOUND, VLBE_EBOUND, VLBE_EBOUND, VLBE_EBOUND,
+                                     VLBE_ENONFINITE, VLBE_ENONFINITE, VLBE_ENONFINITE};
+        vlbe_real qbad[10];
+        for (k = 0; k < 10; ++k) {
+            vlbe_status st;
+            for (i = 0; i < 5; ++i) qh[i] = qhd[i] = VLBE_R(7.0);
+            for (i = 0; i < 10; ++i) qbad[i] = q[i];
+            if (k < 7) {
+                st = vlbe_ale_split(q, qd, (vlbe_real)bad[k], qh, qhd);
+                assert_int_equal(st, want[k]);
+            } else if (k == 7) { /* p2 <= p1 */
+                qbad[9] = qbad[4];
+                assert_int_equal(vlbe_ale_split(qbad, qd, qbad[4], qh, qhd), VLBE_ELENGTH);
+            } else if (k == 8) { /* NaN in q */
+                qbad[2] = (vlbe_real)NAN;
+                assert_int_equal(vlbe_ale_split(qbad, qd, ph, qh, qhd), VLBE_ENONFINITE);
+            } else { /* Inf in q' */
+                vlbe_real qdb[10];
+                for (i = 0; i < 10; ++i) qdb[i] = qd[i];
+                qdb[9] = (vlbe_real)HUGE_VAL;
+                assert_int_equal(vlbe_ale_split(q, qdb, ph, qh, qhd), VLBE_ENONFINITE);
+            }
+            for (i = 0; i < 5; ++i) {
+                assert_true(qh[i] == VLBE_R(7.0));
+                assert_true(qhd[i] == VLBE_R(7.0));
+            }
+        }
+        /* without q' the same qh, and qhd is not written */
+        for (i = 0; i < 5; ++i) qhd[i] = VLBE_R(7.0);
+        assert_int_equal(vlbe_ale_split(q, NULL, ph, qh, qhd), VLBE_OK);
+        for (i = 0; i < 5; ++i) {
+            assert_true(qh[i] == qa[5 + i]);
+            assert_true(qhd[i] == VLBE_R(7.0));
+        }
+    }
+}
+
+/* r and r' at npts material points spread over the chain's [p_0, p_last]
+   (vlbe_ale_chain_point), as doubles: r[2k..2k+1], rp[2k..2k+1] */
+static void chain_sample(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q, int npts,
+                         double *r, double *rp)
+{
+    vlbe_real pa[3] = {0, 0, 0}, pb[3] = {0, 0, 0}, x[2] = {0, 0}, xp[2] = {0, 0};
+    int k;
+    assert_int_equal(vlbe_ale_chain_pnode(ch, 0, t, q, NULL, pa), VLBE_OK);
+    assert_int_equal(vlbe_ale_chain_pnode(ch, ch->nn - 1, t, q, NULL, pb), VLBE_OK);
+    for (k = 0; k < npts; ++k) {
+        const vlbe_real p = pt_at((double)pa[0], (double)pb[0], k, npts);
+        assert_int_equal(vlbe_ale_chain_point(ch, t, q, p, x, xp), VLBE_OK);
+        r[2 * k] = (double)x[0];
+        r[2 * k + 1] = (double)x[1];
+        rp[2 * k] = (double)xp[0];
+        rp[2 * k + 1] = (double)xp[1];
+    }
+}
+
+/* Strain energy int (EA eps^2 + EI kap^2) / 2 dp of the chain by a
+   composite 12-point Gauss rule, 16 panels per element, on the pointwise
+   strain and curvature of vlbe_ale_strain: an independent integration of
+   the same (smooth, rational) integrand, exact to rounding here (doubling
+   the panels changes it by < 1e-15 relative in double, measured). */
+static double chain_U_composite(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q)
+{
+    const vlbe_real *x, *w;
+    const vlbe_ale_mat *mt = &ch->el->mat;
+    const int npan = 16;
+    double U = 0.0;
+    int e, j, g, idx[10];
+    unsigned md;
+    assert_int_equal(vlbe_gl_rule(12, &x, &w), VLBE_OK);
+    for (e = 0; e + 1 < ch->nn; ++e) {
+        vlbe_real qe[10];
+        double a, b;
+        assert_int_equal(vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md), VLBE_OK);
+        for (j = 0; j < npan; ++j) {
+            a = (double)qe[4] + ((double)qe[9] - (double)qe[4]) * j / npan;
+            b = (double)qe[4] + ((double)qe[9] - (double)qe[4]) * (j + 1) / npan;
+            for (g = 0; g < 12; ++g) {
+                const double p = 0.5 * (a + b) + 0.5 * (b - a) * (double)x[g];
+                vlbe_real eps = 0, kap = 0;
+                double u;
+                assert_int_equal(vlbe_ale_strain(qe, (vlbe_real)p, &eps, &kap), VLBE_OK);
+                u = (double)mt->EA * (double)eps * (double)eps;
+                if (!((md | ch->el->flags) & VLBE_ALE_NO_BEND))
+                    u += (double)mt->EI * (double)kap * (double)kap;
+                U += 0.25 * (b - a) * (double)w[g] * u;
+            }
+        }
+    }
+    return U;
+}
+
+static double sample_r0[2 * NPTS + 2], sample_rp0[2 * NPTS + 2], sample_r1[2 * NPTS + 2],
+    sample_rp1[2 * NPTS + 2]; /* up to NPTS + 1 points */
+
+/* max nodal |r| + l_max max nodal |r'| over the chain (S0 of the SEG_TOL
+   note); the shortest and (lmax != NULL) the longest element length */
+static double chain_scale(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q, double *lmin,
+                          double *lmax_out)
+{
+    double rmax = 0.0, smax = 0.0, lmax = 0.0;
+    int i, s;
+    *lmin = HUGE_VAL;
+    for (i = 0; i < ch->nn; ++i) {
+        const int o = ch->node[i].ofs;
+        rmax = fmax(rmax, (double)vlbe_v2_norm(q + o));
+        for (s = 0; s <= ch->node[i].slide; ++s)
+            smax = fmax(smax, (double)vlbe_v2_norm(q + o + 2 + 2 * s));
+        if (i > 0) {
+            vlbe_real pa[3], pb[3];
+            assert_int_equal(vlbe_ale_chain_pnode(ch, i - 1, t, q, NULL, pa), VLBE_OK);
+            assert_int_equal(vlbe_ale_chain_pnode(ch, i, t, q, NULL, pb), VLBE_OK);
+            lmax = fmax(lmax, (double)(pb[0] - pa[0]));
+            *lmin = fmin(*lmin, (double)(pb[0] - pa[0]));
+        }
+    }
+    if (lmax_out) *lmax_out = lmax;
+    return rmax + lmax * smax;
+}
+
+/* number of coordinates of node i (from the layout) */
+static int node_ncoord(const vlbe_ale_chain *ch, int i)
+{
+    return (i + 1 < ch->nn ? ch->node[i + 1].ofs : ch->n) - ch->node[i].ofs;
+}
+
+typedef struct ins_result {
+    double E0[3], E1[3], Uc0, Uc1; /* chain energies before/after, composite U */
+    double dr, drp, S0, lmin;      /* max position/slope change, scales      */
+} ins_result;
+
+/* The chain of the insertion check, 4 nodes: 0 fixed p (0.1, pinned: POS),
+   1 free (0.45), 2 prescribed (p = 0.8 + 0.3 t - 0.35 t^2), 3 fixed p (1.3)
+   with a point mass 0.3 and a SLOPE_DIR constraint; material mat_std (load
+   f), gravity on the mass; random deformed state (random_state, element
+   lengths ~0.35-0.45, slopes 1.05 +- 8 % at +-0.35 rad, O(1) rates, free
+   p' up to 0.4).  Node H inserted in element 1 (between the free and the
+   prescribed node) at ph = 0.62, t = 0.37.  chmode: OR'ed into the chain's
+   mode; nt: bending Gauss order. */
+static void insert_case(unsigned chmode, int nt, ins_result *r)
+{
+    static chn c;
+    static vlbe_real q[N_MAX], v[N_MAX], qn[N_MAX], vn[N_MAX];
+    const vlbe_real t = VLBE_R(0.37), ph = VLBE_R(0.62);
+    vlbe_ale_node old[4];
+    vlbe_real E[3];
+    tu_rng g = tu_rng_seed(271828);
+    int i, k, n0;
+    memset(&c, 0, sizeof c);
+    c.mat = mat_std();
+    c.node[0] = node_make(VLBE_ALE_PFIXED, 0.1);
+    c.node[1] = node_make(VLBE_ALE_PFREE, 0.45);
+    c.node[2] = node_make(VLBE_ALE_PPRESCRIBED, 0.8);
+    c.node[2].pd = VLBE_R(0.3);
+    c.node[2].pdd = VLBE_R(-0.7);
+    c.node[3] = node_make(VLBE_ALE_PFIXED, 1.3);
+    c.node[3].mass = VLBE_R(0.3);
+    chn_init(&c, 4, 0u, nt);
+    c.ch.mode = chmode;
+    c.ch.g[1] = VLBE_R(-9.81);
+    chn_add(&c, con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0, 0, 0));
+    chn_add(&c, con_make(VLBE_ALE_CON_SLOPE_DIR, 3, 0, 0, 1, 0, 0));
+    chn_wire(&c);
+    random_state(&c, &g, 0.4, q, v);
+    n0 = c.ch.n;
+    memcpy(old, c.node, sizeof old);
+    r->S0 = chain_scale(&c.ch, t, q, &r->lmin, NULL);
+    chain_sample(&c.ch, t, q, NPTS, sample_r0, sample_rp0);
+    assert_int_equal(vlbe_ale_chain_energy(&c.ch, t, q, v, E), VLBE_OK);
+    for (i = 0; i < 3; ++i) r->E0[i] = (double)E[i];
+    r->Uc0 = chain_U_composite(&c.ch, t, q);
+
+    assert_int_equal(vlbe_ale_chain_insert(&c.ch, 1, ph, t, q, v, qn, vn), VLBE_OK);
+    /* the new node: fixed p = ph, plain; the others keep their data and
+       coordinates (bitwise); constraints renumbered */
+    assert_int_equal(c.ch.nn, 5);
+    assert_int_equal(c.ch.n, n0 + 4);
+    assert_int_equal(c.node[2].pmode, VLBE_ALE_PFIXED);
+    assert_true(c.node[2].p == ph && c.node[2].slide == 0 && c.node[2].mass == VLBE_R(0.0));
+    for (i = 0; i < 5; ++i) {
+        const int io = i < 2 ? i : i - 1;
+        if (i == 2) continue;
+        assert_int_equal(c.node[i].pmode, old[io].pmode);
+        assert_true(c.node[i].p == old[io].p && c.node[i].mass == old[io].mass);
+        for (k = 0; k < node_ncoord(&c.ch, i); ++k) {
+            assert_true(qn[c.node[i].ofs + k] == q[old[io].ofs + k]);
+            assert_true(vn[c.node[i].ofs + k] == v[old[io].ofs + k]);
+        }
+    }
+    assert_int_equal(c.con[0].node, 0);
+    assert_int_equal(c.con[1].node, 4);
+    chain_sample(&c.ch, t, qn, NPTS, sample_r1, sample_rp1);
+    assert_int_equal(vlbe_ale_chain_energy(&c.ch, t, qn, vn, E), VLBE_OK);
+    for (i = 0; i < 3; ++i) r->E1[i] = (double)E[i];
+    r->Uc1 = chain_U_composite(&c.ch, t, qn);
+    {
+        double l1;
+        r->S0 = fmax(r->S0, chain_scale(&c.ch, t, qn, &l1, NULL));
+        r->lmin = fmin(r->lmin, l1);
+    }
+    r->dr = max_diff(2 * NPTS, sample_r1, sample_r0);
+    r->drp = max_diff(2 * NPTS, sample_rp1, sample_rp0);
+}
+
+/* vlbe_ale_chain_insert on a chain with every kind of neighbour (insert_case):
+   positions and slopes at 1000 material points over the whole chain
+   (vlbe_ale_chain_point) before and after equal to SEG_TOL x S0 (and
+   S0 / l for slopes, l the shortest element; see SEG_TOL).  Energies
+   (vlbe_ale_chain_energy):
+   - cable (VLBE_ALE_NO_BEND): every integrand is a polynomial the default
+     rules integrate exactly (T: |v|^2, v cubic in xi, degree 6, 4 points
+     exact to degree 7; V: linear in r, degree 3; axial U: eps^2, eps of
+     degree 4, degree 8, 5 points exact to degree 9), on the pieces as on
+     the original (the pieces are the same cubics), so T, U, V agree to
+     SEG_TOL relative (V: relative to |f| S0 x chain length + m |g| S0, its
+     rounding scale, as V is a sum of signed terms);
+   - beam: the bending integrand EI kap^2 / 2 is rational, the Gauss rule
+     is not exact, and the pieces' rule (other points) has another error:
+     the chain's U changes by the difference of two quadrature errors
+     (measured, this curved random state: 1.96e-3 = 1.5e-3 relative at the
+     default nt = 5, 8.1e-6 = 6.3e-6 relative at nt = 8).  Independent
+     checks instead: the strain energy integrated to rounding by a
+     composite rule on the pointwise strain and curvature
+     (chain_U_composite) is the same before and after to SEG_TOL relative
+     (measured 1e-16; float 1.9e-7): the mechanics is unchanged, only the
+     quadrature sees other points; and the change falls as the rule
+     converges: at nt = 8 at most 1/10 of that at nt = 5 (measured 1/240).
+     T and V (exact rules) still agree to SEG_TOL. */
+static void test_chain_insert_exact(void **state)
+{
+    ins_result nb, b5, b8;
+    const ins_result *all[3];
+    const double tol = SEG_TOL;
+    double Vsc;
+    int i, k;
+    (void)state;
+    insert_case(VLBE_ALE_NO_BEND, 0, &nb);
+    insert_case(0u, 0, &b5);
+    insert_case(0u, 8, &b8);
+    all[0] = &nb;
+    all[1] = &b5;
+    all[2] = &b8;
+    for (k = 0; k < 3; ++k) {
+        tu_report("insert: positions, 1000 points (/ S0)", all[k]->dr / all[k]->S0, tol);
+        tu_report("insert: slopes (/ S0 / l)", all[k]->drp / (all[k]->S0 / all[k]->lmin), tol);
+        assert_true(all[k]->dr <= tol * all[k]->S0);
+        assert_true(all[k]->drp <= tol * all[k]->S0 / all[k]->lmin);
+    }
+    Vsc = (double)vlbe_v2_norm(mat_std().f) * nb.S0 * 1.2 + 0.3 * 9.81 * nb.S0;
+    tu_report("insert, cable: T (relative)", fabs(nb.E1[0] - nb.E0[0]) / nb.E0[0], tol);
+    tu_report("insert, cable: U (relative)", fabs(nb.E1[1] - nb.E0[1]) / nb.E0[1], tol);
+    tu_report("insert, cable: V (/ its rounding scale)", fabs(nb.E1[2] - nb.E0[2]) / Vsc, tol);
+    ASSERT_CLOSE(nb.E1[0], nb.E0[0], tol, 0.0);
+    ASSERT_CLOSE(nb.E1[1], nb.E0[1], tol, 0.0);
+    ASSERT_CLOSE(nb.E1[2], nb.E0[2], 0.0, tol * Vsc);
+    for (i = 0; i < 3; i += 2) { /* T, V the same with bending on */
+        ASSERT_CLOSE(b5.E1[i], b5.E0[i], 0.0, tol * (i ? Vsc : b5.E0[0]));
+        ASSERT_CLOSE(b8.E1[i], b8.E0[i], 0.0, tol * (i ? Vsc : b8.E0[0]));
+    }
+    for (k = 1; k < 3; ++k) {
+        const ins_result *r = all[k];
+        const double q0 = fabs(r->E0[1] - r->Uc0), q1 = fabs(r->E1[1] - r->Uc1);
+        const double dU = fabs(r->E1[1] - r->E0[1]);
+        if (tu_report_on())
+            print_message("    insert, beam, nt %d: U %.15g, change %.3e (%.2e relative); "
+                          "quadrature error before %.3e, after %.3e; composite U %.15g -> %.15g\n",
+                          k == 1 ? 5 : 8, r->E0[1], dU, dU / r->E0[1], q0, q1, r->Uc0, r->Uc1);
+        /* the exact energy is unchanged (composite integration) */
+        ASSERT_CLOSE(r->Uc1, r->Uc0, tol, 0.0);
+    }
+    /* the change of the chain's U is a quadrature artefact: it falls as the
+       rule converges (measured: 1.96e-3 at nt = 5, 8.1e-6 at nt = 8) */
+    assert_true(fabs(b8.E1[1] - b8.E0[1]) <= 0.1 * fabs(b5.E1[1] - b5.E0[1]));
+}
+
+/* ======================================================================= */
+/* 10. merging (vlbe_ale_chain_remove)                                       */
+/* ======================================================================= */
+
+/* A chain of nn nodes at p[0..nn-1], all p fixed except node `slider`
+   (free, p' = 0.2; -1: none), no loads or constraints, material mat_std
+   without damping: positions and slopes of the curve f (f(p, r, rp)), rates
+   of g (a velocity field and its p-derivative). */
+typedef void (*curve_fn)(double p, double *r, double *rp);
+
+static void curve_chain(chn *c, int nn, const double *p, int slider, curve_fn f, curve_fn g,
+                        unsigned chmode, vlbe_real *q, vlbe_real *v)
+{
+    int i, k;
+    memset(c, 0, sizeof *c);
+    c->mat = mat_std();
+    c->mat.f[0] = c->mat.f[1] = VLBE_R(0.0);
+    for (i = 0; i < nn; ++i)
+        c->node[i] = node_make(i == slider ? VLBE_ALE_PFREE : VLBE_ALE_PFIXED, p[i]);
+    chn_init(c, nn, VLBE_ALE_NO_DAMP, 0);
+    c->ch.mode = chmode;
+    chn_wire(c);
+    for (i = 0; i < nn; ++i) {
+        double r[2], rp[2], s[2], sp[2];
+        const int o = c->node[i].ofs;
+        f(p[i], r, rp);
+        g(p[i], s, sp);
+        for (k = 0; k < 2; ++k) {
+            q[o + k] = (vlbe_real)r[k];
+            q[o + 2 + k] = (vlbe_real)rp[k];
+            v[o + k] = (vlbe_real)s[k];
+            v[o + 2 + k] = (vlbe_real)sp[k];
+        }
+        if (i == slider) {
+            q[o + 4] = (vlbe_real)p[i];
+            v[o + 4] = VLBE_R(0.2);
+        }
+    }
+}
+
+/* a general planar cubic (stretched and curved: |r'| 1.37 .. 2.76 on
+   [0.2, 1.1]) and a cubic velocity field */
+static void cubic_f(double p, double *r, double *rp)
+{
+    r[0] = 0.3 + p * (1.1 + p * (-0.4 + 0.7 * p));
+    r[1] = -0.2 + p * (0.5 + p * (1.3 - 0.9 * p));
+    rp[0] = 1.1 + p * (-0.8 + 2.1 * p);
+    rp[1] = 0.5 + p * (2.6 - 2.7 * p);
+}
+
+static void cubic_g(double p, double *r, double *rp)
+{
+    r[0] = -0.6 + p * (0.9 + p * (0.8 - 1.2 * p));
+    r[1] = 0.4 + p * (-1.5 + p * (0.3 + 0.5 * p));
+    rp[0] = 0.9 + p * (1.6 - 3.6 * p);
+    rp[1] = -1.5 + p * (0.6 + 1.5 * p);
+}
+
+/* (a) Reduced = full.  Two elements that are exact pieces of one cubic
+   (nodes at p = 0.2, 0.55, 1.1 on cubic_f, rates from cubic_g): before and
+   after removing the middle node, the chain's r and r' at 1000 points equal
+   the cubic itself (an independent evaluation, Hermite interpolation
+   reproduces cubics) to SEG_TOL x S0 (S0 / l for r', l the shorter piece),
+   and T, U, V of the cable (polynomial integrands, exact rules: see
+   test_chain_insert_exact) are unchanged to SEG_TOL relative.  Also the
+   round trip insert + remove restores nodes, layout and coordinates
+   bitwise (the outer nodes' coordinates are copied, never recomputed). */
+static void test_merge_exact(void **state)
+{
+    static chn c;
+    static vlbe_real q[N_MAX], v[N_MAX], qn[N_MAX], vn[N_MAX], q2[N_MAX], v2[N_MAX];
+    const double p[3] = {0.2, 0.55, 1.1}, tol = SEG_TOL;
+    vlbe_ale_node saved[3];
+    vlbe_real E0[3], E1[3];
+    static double ex[2 * NPTS], exp_[2 * NPTS];
+    double S0, l;
+    int k, n0;
+    (void)state;
+    curve_chain(&c, 3, p, -1, cubic_f, cubic_g, VLBE_ALE_NO_BEND, q, v);
+    S0 = chain_scale(&c.ch, 0, q, &l, NULL);
+    for (k = 0; k < NPTS; ++k)
+        cubic_f((double)pt_at(p[0], p[2], k, NPTS), ex + 2 * k, exp_ + 2 * k);
+    chain_sample(&c.ch, 0, q, NPTS, sample_r0, sample_rp0);
+    assert_int_equal(vlbe_ale_chain_energy(&c.ch, 0, q, v, E0), VLBE_OK);
+    n0 = c.ch.n;
+    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, q, v, qn, vn), VLBE_OK);
+    assert_int_equal(c.ch.nn, 2);
+    assert_int_equal(c.ch.n, n0 - 4);
+    chain_sample(&c.ch, 0, qn, NPTS, sample_r1, sample_rp1);
+    assert_int_equal(vlbe_ale_chain_energy(&c.ch, 0, qn, vn, E1), VLBE_OK);
+    tu_report("merge of one cubic: positions vs the cubic (/ S0)",
+              fmax(max_diff(2 * NPTS, sample_r0, ex), max_diff(2 * NPTS, sample_r1, ex)) / S0, tol);
+    tu_report("merge of one cubic: slopes vs the cubic (/ S0 / l)",
+              fmax(max_diff(2 * NPTS, sample_rp0, exp_), max_diff(2 * NPTS, sample_rp1, exp_)) /
+                  (S0 / l),
+              tol);
+    ASSERT_VEC_CLOSE(sample_r0, ex, 2 * NPTS, 0.0, tol * S0);
+    ASSERT_VEC_CLOSE(sample_r1, ex, 2 * NPTS, 0.0, tol * S0);
+    ASSERT_VEC_CLOSE(sample_rp0, exp_, 2 * NPTS, 0.0, tol * S0 / l);
+    ASSERT_VEC_CLOSE(sample_rp1, exp_, 2 * NPTS, 0.0, tol * S0 / l);
+    for (k = 0; k < 2; ++k)
+        tu_report(k ? "merge of one cubic: U (relative)" : "merge of one cubic: T (relative)",
+                  fabs((double)E1[k] - (double)E0[k]) / (double)E0[k], tol);
+    ASSERT_CLOSE(E1[0], E0[0], tol, 0.0);
+    ASSERT_CLOSE(E1[1], E0[1], tol, 0.0);
+    assert_true(E0[2] == VLBE_R(0.0) && E1[2] == VLBE_R(0.0)); /* no load, no masses */
+
+    /* round trip on the merged chain: insert at 0.55, remove it again */
+    memcpy(saved, c.node, 2 * sizeof *saved);
+    n0 = c.ch.n;
+    assert_int_equal(vlbe_ale_chain_insert(&c.ch, 0, (vlbe_real)p[1], 0, qn, vn, q2, v2), VLBE_OK);
+    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, q2, v2, q2, v2), VLBE_OK);
+    assert_int_equal(c.ch.nn, 2);
+    assert_int_equal(c.ch.n, n0);
+    assert_memory_equal(saved, c.node, 2 * sizeof *saved);
+    assert_memory_equal(q2, qn, (size_t)n0 * sizeof *qn);
+    assert_memory_equal(v2, vn, (size_t)n0 * sizeof *vn);
+}
+
+/* the circular arc of radius ARC_R through the origin, unit speed
+   (unstretched): r = R (sin(p/R), 1 - cos(p/R)); and a rigid rotation
+   about the origin at unit rate: v = (-y, x), v' = (-y', x') */
+#define ARC_R 1.0
+static void arc_f(double p, double *r, double *rp)
+{
+    r[0] = ARC_R * sin(p / ARC_R);
+    r[1] = ARC_R * (1.0 - cos(p / ARC_R));
+    rp[0] = cos(p / ARC_R);
+    rp[1] = sin(p / ARC_R);
+}
+
+static void arc_g(double p, double *r, double *rp)
+{
+    double x[2], xp[2];
+    arc_f(p, x, xp);
+    r[0] = -x[1];
+    r[1] = x[0];
+    rp[0] = -xp[1];
+    rp[1] = xp[0];
+}
+
+typedef struct merge_err {
+    double dmax, dmid, dE[3], E0[3];
+} merge_err;
+
+/* Two elements of length h on the arc (nodes by interpolation at 0, h,
+   2h), merged: max deviation of r over 1001 points of [0, 2h] (the
+   midpoint among them), the deviation at the midpoint, energy changes. */
+static void merge_arc(double h, merge_err *m)
+{
+    static chn c;
+    static vlbe_real q[N_MAX], v[N_MAX], qn[N_MAX], vn[N_MAX];
+    const double p[3] = {0.0, h, 2.0 * h};
+    const int np = NPTS + 1;
+    vlbe_real E0[3], E1[3];
+    int i;
+    curve_chain(&c, 3, p, -1, arc_f, arc_g, 0u, q, v);
+    chain_sample(&c.ch, 0, q, np, sample_r0, sample_rp0);
+    assert_int_equal(vlbe_ale_chain_energy(&c.ch, 0, q, v, E0), VLBE_OK);
+    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, q, v, qn, vn), VLBE_OK);
+    chain_sample(&c.ch, 0, qn, np, sample_r1, sample_rp1);
+    assert_int_equal(vlbe_ale_chain_energy(&c.ch, 0, qn, vn, E1), VLBE_OK);
+    m->dmax = 0.0;
+    for (i = 0; i < np; ++i)
+        m->dmax = fmax(m->dmax, hypot(sample_r1[2 * i] - sample_r0[2 * i],
+                                      sample_r1[2 * i + 1] - sample_r0[2 * i + 1]));
+    m->dmid = hypot(sample_r1[np - 1] - sample_r0[np - 1], sample_r1[np] - sample_r0[np]);
+    for (i = 0; i < 3; ++i) {
+        m->E0[i] = (double)E0[i];
+        m->dE[i] = (double)E1[i] - (double)E0[i];
+    }
+}
+
+/* (b) The error merging makes.  Two elements of length h interpolating the
+   circular arc (R = 1, unstretched; nodal values and slopes of the arc),
+   merged into one of length 2h: the merged cubic is the Hermite
+   interpolant of the arc on [0, 2h], the two-element chain interpolates it
+   at h too.  Independent facts:
+   - at the midpoint the chain before merging is exact (a node) and the
+     Hermite error of f on [m - h, m + h] at m is f''''(m) h^4 / 24 +
+     f^(6)(m) h^6 / 360 + 3 f^(8)(m) h^8 / 8! + ... (interpolate x^4, x^6,
+     x^8 on [-h, h]: errors h^4, 2 h^6, 3 h^8); for the arc |f''''| = 1/R^3,
+     f^(6) = -f''''/R^2, f^(8) = f''''/R^4, so the deviation there is
+     h^4 / (24 R^3) (1 - h^2 / (15 R^2)) (1 + d), |d| <= 2e-3 (h/R)^4
+     (measured d = 1.79e-3 (h/R)^4 at h = 0.2); held to 1e-2 (h/R)^4 plus
+     the rounding bound 250 EPS h relative to the deviation (below);
+   - the max deviation over [0, 2h] (at the midpoint: the two-element
+     chain's own error is 1/16 of the merged one) is O(h^4): the observed
+     order log2(d(h) / d(h/2)) is 4 up to the h^2 / (15 R^2) correction
+     above, which shifts it by -0.072 h^2 (< 0.012 for h <= 0.4), and
+     rounding: held to [3.9, 4.1].
+   Sizes: double h = 0.2 .. 0.025 (deviations 6.6e-5 .. 1.6e-8; the
+   positions, ~2h in size, round to ~1e-17); float h = 0.4 .. 0.1
+   (deviations 1.1e-3 .. 4.2e-6).  The rounding bound of the deviation,
+   ~250 EPS h (two evaluations of ~30 EPS S0 each, S0 ~ 4h, see SEG_TOL), is
+   added to the midpoint check; it is 1e-6 of the deviation in double, but
+   0.7 of it at float h = 0.1, where the measured rounding is 1e-4 of the
+   deviation (midpoint vs formula): the order bound holds there on that
+   measurement, not on the a-priori bound.  Measured orders (double)
+   3.9971, 3.9993, 3.9998 (h^2 correction: 4 - 0.072 h^2); float 3.9884,
+   3.9968.  Reported: max deviation, order, changes of T (rigid rotation at
+   unit rate), U (the merged curvature differs from 1/R by O(h^2)), V (0:
+   no loads) and their observed orders. */
+static void test_merge_error(void **state)
+{
+#ifndef VLBE_USE_FLOAT
+    static const double hs[4] = {0.2, 0.1, 0.05, 0.025};
+    const int nh = 4;
+#else
+    static const double hs[4] = {0.4, 0.2, 0.1, 0.0};
+    const int nh = 3;
+#endif
+    merge_err m[4];
+    int i;
+    (void)state;
+    for (i = 0; i < nh; ++i) {
+        const double h = hs[i] / ARC_R, lead = pow(hs[i], 4) / (24.0 * pow(ARC_R, 3));
+        const double asym = lead * (1.0 - h * h / 15.0);
+        const double rtol = 1e-2 * pow(h, 4) + 250.0 * EPS * hs[i] / lead;
+        merge_arc(hs[i], &m[i]);
+        print_message("    merge on the arc, h = %-6g: max deviation %.4e (midpoint %.4e, "
+                      "h^4/24R^3 (1 - h^2/15R^2) %.4e); dT %.2e, dU %.2e (%.2e rel.), dV %.1e\n",
+                      hs[i], m[i].dmax, m[i].dmid, asym, m[i].dE[0], m[i].dE[1],
+                      m[i].dE[1] / m[i].E0[1], m[i].dE[2]);
+        tu_report("merge on the arc: midpoint deviation vs asymptotic (rel.)",
+                  fabs(m[i].dmid / asym - 1.0), rtol);
+        ASSERT_CLOSE(m[i].dmid, asym, rtol, 0.0);
+        if (i > 0) {
+            const double order = log2(m[i - 1].dmax / m[i].dmax);
+            print_message("    observed order, h %g -> %g: deviation %.4f, dT %.2f, dU %.2f\n",
+                          hs[i - 1], hs[i], order, log2(m[i - 1].dE[0] / m[i].dE[0]),
+                          log2(m[i - 1].dE[1] / m[i].dE[1]));
+            assert_true(order >= 3.9 && order <= 4.1);
+        }
+    }
+}
+
+/* Nodes that vlbe_ale_chain_remove must refuse (VLBE_EARG, chain, nodes,
+   constraints and qn untouched): out of range, the two ends, a sliding
+   node, a node carrying a mass, a node with a constraint, the first and
+   the last node of an EQUAL_LEN group; insertions vlbe_ale_chain_insert
+   must refuse the same way: element out of range (EARG), ph on a node or
+   outside the element (EBOUND), non-finite (ENONFINITE), no capacity
+   (EWORK).  Then a plain node is removed. */
+static void test_insert_remove_bad_inputs(void **state)
+{
+    static chn c;
+    static vlbe_ale_node nsave[NN_MAX];
+    static vlbe_ale_con csave[NC_MAX];
+    vlbe_real q[N_MAX], v[N_MAX], qn[N_MAX], vn[N_MAX], r0[2] = {0, 0}, dir[2] = {1, 0};
+    static const int bad[10] = {-1, 0, 8, 9, 1, 2, 3, 4, 6, 100};
+    int i, k, n0, m0;
+    (void)state;
+    memset(&c, 0, sizeof c);
+    c.mat = mat_std();
+    for (i = 0; i < 9; ++i)
+        c.node[i] = node_make(i == 5 ? VLBE_ALE_PFREE : VLBE_ALE_PFIXED, 0.2 * i);
+    c.node[1].slide = 1;
+    c.node[2].mass = VLBE_R(0.3);
+    chn_init(&c, 9, 0u, 0);
+    chn_add(&c, con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0, 0, 0));
+    chn_add(&c, con_make(VLBE_ALE_CON_SLOPE_DIR, 3, 0, 0, 1, 0, 0));
+    chn_add(&c, con_make(VLBE_ALE_CON_EQUAL_LEN, 4, 6, 0, 0, 0, 0));
+    chn_wire(&c);
+    vlbe_ale_chain_straight(&c.ch, r0, dir, q);
+    for (i = 0; i < c.ch.n; ++i) v[i] = VLBE_R(0.5);
+    n0 = c.ch.n;
+    m0 = c.ch.m;
+    memcpy(nsave, c.node, sizeof nsave);
+    memcpy(csave, c.con, sizeof csave);
+    for (k = 0; k < 10 + 7; ++k) {
+        for (i = 0; i < N_MAX; ++i) qn[i] = vn[i] = VLBE_R(7.0);
+        if (k < 10) {
+            if (vlbe_ale_chain_remove(&c.ch, bad[k], q, v, qn, vn) != VLBE_EARG)
+                fail_msg("remove(%d) did not return VLBE_EARG", bad[k]);
+        } else {
+            static const int e[7] = {-1, 8, 7, 7, 7, 7, 7};
+            static const double ph[7] = {1.5, 1.5, 1.4, 1.6, 1.7, 0.0, 1.5};
+            static const vlbe_status want[7] = {VLBE_EARG, VLBE_EARG, VLBE_EBOUND, VLBE_EBOUND,
+                                                VLBE_EBOUND, VLBE_ENONFINITE, VLBE_EWORK};
+            const int j = k - 10;
+            const vlbe_real p = j == 5 ? (vlbe_real)NAN : (vlbe_real)ph[j];
+            if (j == 6) c.ch.nn_cap = 9;
+            assert_int_equal(vlbe_ale_chain_insert(&c.ch, e[j], p, 0, q, v, qn, vn), want[j]);
+            c.ch.nn_cap = NN_MAX;
+        }
+        assert_int_equal(c.ch.nn, 9);
+        assert_int_equal(c.ch.n, n0);
+        assert_int_equal(c.ch.m, m0);
+        assert_memory_equal(nsave, c.node, sizeof nsave);
+        assert_memory_equal(csave, c.con, sizeof csave);
+        for (i = 0; i < N_MAX; ++i) assert_true(qn[i] == VLBE_R(7.0) && vn[i] == VLBE_R(7.0));
+    }
+    /* node 7 is plain: removed; the constraints keep their nodes (all < 7) */
+    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 7, q, v, qn, vn), VLBE_OK);
+    assert_int_equal(c.ch.nn, 8);
+    assert_int_equal(c.ch.n, n0 - 4);
+    assert_int_equal(c.con[2].node2, 6);
+    assert_true(qn[c.node[7].ofs] == q[nsave[8].ofs]);
+}
+
+/* ======================================================================= */
+/* 11. length control (vlbe_ale_chain_length_control)                        */
+/* ======================================================================= */
+
+/* One case of the unit test: a chain of 5 nodes at p[] with the free node
+   `slider`, on the arc (arc_f, rates of arc_g: not a cubic, so that merging
+   changes the curve), Lstd = 0.25 (threshold 0.375).  Expected: *changed,
+   the new slider index, the new nodes' p, the new element of length Lstd
+   and the merged span [ma, mb] (ma = mb: none) outside which positions and
+   slopes must not change (SEG_TOL). */
+typedef struct lc_case {
+    double p[5];
+    int slider;
+    int changed, slider_new, nn_new;
+    double p_new[6];
+    int e_new; /* the new element of length Lstd (-1: none) */
+    double ma, mb;
+} lc_case;
+
+static void lc_unit(const lc_case *k)
+{
+    static chn c;
+    static vlbe_real q[N_MAX], v[N_MAX], qn[N_MAX], vn[N_MAX];
+    static vlbe_ale_node nsave[NN_MAX];
+    const vlbe_real Lstd = VLBE_R(0.25);
+    double S0, l, S0n, ln, dout = 0.0, dpout = 0.0, din = 0.0;
+    int i, s = k->slider, changed = -1, n0;
+    curve_chain(&c, 5, k->p, k->slider, arc_f, arc_g, VLBE_ALE_NO_BEND, q, v);
+    n0 = c.ch.n;
+    memcpy(nsave, c.node, sizeof nsave);
+    S0 = chain_scale(&c.ch, 0, q, &l, NULL);
+    chain_sample(&c.ch, 0, q, NPTS, sample_r0, sample_rp0);
+    for (i = 0; i < N_MAX; ++i) qn[i] = vn[i] = VLBE_R(7.0);
+    assert_int_equal(vlbe_ale_chain_length_control(&c.ch, &s, Lstd, 0, q, v, qn, vn, &changed),
+                     VLBE_OK);
+    assert_int_equal(changed, k->changed);
+    assert_int_equal(s, k->slider_new);
+    assert_int_equal(c.ch.nn, k->nn_new);
+    assert_int_equal(c.node[s].pmode, VLBE_ALE_PFREE);
+    assert_int_equal(c.ch.n, n0 + 4 * (k->nn_new - 5));
+    for (i = 0; i < c.ch.nn; ++i) {
+        vlbe_real p3[3];
+        assert_int_equal(vlbe_ale_chain_pnode(&c.ch, i, 0, qn, vn, p3), VLBE_OK);
+        ASSERT_CLOSE_CTX(p3[0], k->p_new[i], 0.0, 2.0 * EPS, "node %d", i);
+    }
+    if (changed == 0) { /* nothing done: (q, v) copied, the chain as it was */
+        assert_memory_equal(qn, q, (size_t)n0 * sizeof *q);
+        assert_memory_equal(vn, v, (size_t)n0 * sizeof *v);
+        assert_memory_equal(nsave, c.node, sizeof nsave);
+        return;
+    }
+    /* the new element away from the slider has length Lstd */
+    ASSERT_CLOSE(c.node[k->e_new + 1].p - c.node[k->e_new].p, Lstd, 0.0, 2.0 * EPS);
+    S0n = chain_scale(&c.ch, 0, qn, &ln, NULL);
+    S0 = fmax(S0, S0n);
+    l = fmin(l, ln);
+    chain_sample(&c.ch, 0, qn, NPTS, sample_r1, sample_rp1);
+    for (i = 0; i < NPTS; ++i) {
+        const double p = (double)pt_at(k->p[0], k->p[4], i, NPTS);
+        const double d = hypot(sample_r1[2 * i] - sample_r0[2 * i],
+                               sample_r1[2 * i + 1] - sample_r0[2 * i + 1]);
+        if (p > k->ma && p < k->mb) {
+            din = fmax(din, d);
+            continue;
+        }
+        dout = fmax(dout, d);
+        dpout = fmax(dpout, hypot(sample_rp1[2 * i] - sample_rp0[2 * i],
+                                  sample_rp1[2 * i + 1] - sample_rp0[2 * i + 1]));
+    }
+    if (tu_report_on())
+        print_message("    length control (changed %d): merged span [%g, %g] deviates by %.3e\n",
+                      changed, k->ma, k->mb, din);
+    tu_report("length control: positions outside the merged span (/ S0)", dout / S0, SEG_TOL);
+    tu_report("length control: slopes outside the merged span (/ S0 / l)", dpout / (S0 / l),
+              SEG_TOL);
+    assert_true(dout <= SEG_TOL * S0);
+    assert_true(dpout <= SEG_TOL * S0 / l);
+    /* the merged span did change (the Hermite error of the arc over the
+       merged 0.35 and 0.4, l^4 / 384 = 3.9e-5 and 6.7e-5; measured 3.3e-5,
+       6.6e-5): the points excluded above are the ones merging moves */
+    if (changed == 2) assert_true(din > 1e-6);
+}
+
+/* vlbe_ale_chain_length_control on one call (Figure 7 of the paper), Lstd =
+   0.25, 5 nodes on the arc of radius 1 (arc_f, rotating rigidly), the free
+   slider moving (p' = 0.2):
+   - right element 0.4 > 1.5 Lstd: node inserted at 1.0 - Lstd, the
+     slider's left neighbour removed: changed 2, 5 nodes, slider index -1;
+   - left element 0.4: node at 0 + Lstd, right neighbour removed: changed 2,
+     slider index +1;
+   - right element too long but the left neighbour is the chain's end (not
+     removable): changed 1, 6 nodes;
+   - both elements within 1.5 Lstd: changed 0, (q, v) copied, chain as it was.
+   New node p's to 2 EPS (one subtraction); positions and slopes at 1000
+   points outside the merged span unchanged to SEG_TOL (exact segmentation,
+   copied coordinates); the merged span's deviation reported. */
+static void test_length_control_unit(void **state)
+{
+    static const lc_case cases[4] = {
+        {{0, 0.25, 0.5, 0.6, 1.0}, 3, 2, 2, 5, {0, 0.25, 0.6, 0.75, 1.0}, 3, 0.25, 0.6},
+        {{0, 0.4, 0.6, 0.8, 1.0}, 1, 2, 2, 5, {0, 0.25, 0.4, 0.8, 1.0}, 0, 0.4, 0.8},
+        {{0, 0.1, 0.5, 0.75, 1.0}, 1, 1, 1, 6, {0, 0.1, 0.25, 0.5, 0.75, 1.0}, 2, 0, 0},
+        {{0, 0.25, 0.5, 0.7, 1.0}, 3, 0, 3, 5, {0, 0.25, 0.5, 0.7, 1.0}, -1, 0, 0},
+    };
+    int k;
+    (void)state;
+    for (k = 0; k < 4; ++k) lc_unit(&cases[k]);
+}
+
+/* The scene of test_shrinking_element on a longer chain, with and without
+   length control.  Seven nodes at p = 0, 0.5, .., 3 (Lstd = 0.5), node 0
+   pinned at the origin, node 6 at x = 3.03 (1 % prestretch), node 4 free
+   in p and driven by VLBE_ALE_CON_P at constant speed: p4 = 2 - 1.2 t,
+   so the element behind it ([1.5, p4]) would vanish at t = 5/12; the beam
+   (rhoA 1, EA 100, EI 0.5, no damping) starts straight, the material at
+   rest (node 4 moving with the mesh) plus a transverse velocity 0.1 at
+   node 4.  HHT alpha -0.1, fixed step 0.01, up to 8 halvings, to t = 1.2
+   (p4 = 0.56).  With control != 0, vlbe_ale_chain_length_control after
+   every accepted step and a restart of HHT from (qn, vn) when it changed
+   something. */
+#define LC_LSTD 0.5
+#define LC_SPEED 1.2
+#define LC_H 0.01
+#define LC_TEND 1.2
+
+typedef struct lc_result {
+    vlbe_status rc, err;
+    int events, finite, relayout; /* relayout: events that changed nn or n */
+    long steps;
+    double t, Lmin, Lmax, Lmax_after; /* element lengths seen (after a step; after control) */
+} lc_result;
+
+static void lc_run(int control, lc_result *r)
+{
+    static chn c;
+    static vlbe_real q[N_MAX], v[N_MAX], qn[N_MAX], vn[N_MAX];
+    vlbe_real r0[2] = {0, 0}, dir[2] = {VLBE_R(1.01), 0};
+    hht_run h;
+    int i, n0, slider = 4;
+    memset(&c, 0, sizeof c);
+    memset(r, 0, sizeof *r);
+    c.mat.rhoA = VLBE_R(1.0);
+    c.mat.EA = VLBE_R(100.0);
+    c.mat.EI = VLBE_R(0.5);
+    for (i = 0; i < 7; ++i)
+        c.node[i] = node_make(i == slider ? VLBE_ALE_PFREE : VLBE_ALE_PFIXED, LC_LSTD * i);
+    chn_init(&c, 7, VLBE_ALE_NO_DAMP, 0);
+    chn_add(&c, con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0, 0, 0));
+    chn_add(&c, con_make(VLBE_ALE_CON_POS, 6, 0, 0, 1.01 * 6 * LC_LSTD, 0, 0));
+    chn_add(&c, con_make(VLBE_ALE_CON_P, slider, 0, 0, 4 * LC_LSTD, -LC_SPEED, 0));
+    chn_wire(&c);
+    vlbe_ale_chain_straight(&c.ch, r0, dir, q);
+    for (i = 0; i < c.ch.n; ++i) v[i] = VLBE_R(0.0);
+    v[pidx(&c, slider)] = (vlbe_real)-LC_SPEED;
+    v[c.node[slider].ofs] = (vlbe_real)(1.01 * -LC_SPEED);
+    v[c.node[slider].ofs + 1] = VLBE_R(0.1);
+    hht_alloc(&h, 8);
+    assert_int_equal(hht_start(&h, &c, VLBE_R(0.0), q, v), VLBE_OK);
+    n0 = c.ch.n;
+    r->Lmin = HUGE_VAL;
+    c.ch.err = VLBE_OK;
+    while ((double)h.hs.t < LC_TEND - 0.5 * LC_H) {
+        double lmin, lmax;
+        if ((r->rc = vlbe_hht_step(&h.hs, (vlbe_real)LC_H)) != VLBE_OK) break;
+        r->steps++;
+        chain_scale(&c.ch, h.hs.t, h.hs.q, &lmin, &lmax);
+        r->Lmin = fmin(r->Lmin, lmin);
+        r->Lmax = fmax(r->Lmax, lmax);
+        if (control) {
+            const vlbe_real t = h.hs.t;
+            int changed;
+            vlbe_vec_copy(c.ch.n, h.hs.q, q);
+            vlbe_vec_copy(c.ch.n, h.hs.v, v);
+            assert_int_equal(vlbe_ale_chain_length_control(&c.ch, &slider, (vlbe_real)LC_LSTD, t,
+                                                           q, v, qn, vn, &changed),
+                             VLBE_OK);
+            assert_int_equal(c.node[slider].pmode, VLBE_ALE_PFREE);
+            if (changed) {
+                r->events++;
+                chn_wire(&c);
+                if (c.ch.nn != 7 || c.ch.n != n0) r->relayout++;
+                chain_scale(&c.ch, t, qn, &lmin, &lmax);
+                r->Lmin = fmin(r->Lmin, lmin);
+                r->Lmax_after = fmax(r->Lmax_after, lmax);
+                if (tu_report_on())
+                    print_message("    length control at t = %.3f: changed %d, slider now node %d, "
+                                  "elements in [%.4f, %.4f]\n",
+                                  (double)t, changed, slider, lmin, lmax);
+                if ((r->rc = hht_start(&h, &c, t, qn, vn)) != VLBE_OK) break;
+            } else {
+                r->Lmax_after = fmax(r->Lmax_after, lmax);
+            }
+        }
+    }
+    r->err = c.ch.err;
+    r->t = (double)h.hs.t;
+    r->finite = vlbe_all_finite(h.hs.q, 4 * c.sys.n + c.sys.m);
+    hht_free(&h);
+    if (tu_report_on())
+        print_message("    moving node, length control %s: %s (ch.err %s) at t = %.4f, %ld steps, "
+                      "%d events, elements in [%.4f, %.4f] (after control <= %.4f), "
+                      "state finite %d\n",
+                      control ? "on" : "off", vlbe_status_str(r->rc), vlbe_status_str(r->err), r->t,
+                      r->steps, r->events, r->Lmin, r->Lmax, r->Lmax_after, r->finite);
+}
+
+/* The second half of the stability statement.  Without length control the
+   element behind the moving node shrinks to nothing and the run stops with
+   a status before t = 5/12, last state finite (as test_shrinking_element
+   shows on three nodes).  With it the run reaches t = 1.2 with a finite
+   state; the node count and the number of coordinates never change (every
+   event is an insertion plus a removal: the node removed is always an
+   interior fixed node); p4 crosses 1.75, 1.25 and 0.75 (the thresholds
+   where the element ahead reaches 1.5 Lstd), so exactly 3 events; every
+   element length, after each step, lies in [0.5 Lstd - c h, 1.5 Lstd +
+   c h] (the scheme keeps [0.5, 1.5] Lstd at each call, and one step of the
+   node, c h = 0.012, may cross a threshold before the next call), and
+   after each call <= 1.5 Lstd. */
+static void test_length_control_run(void **state)
+{
+    const double ch_ = LC_SPEED * LC_H;
+    lc_result off, on;
+    (void)state;
+    lc_run(0, &off);
+    assert_int_not_equal(off.rc, VLBE_OK);
+    assert_true(off.finite);
+    assert_true(off.t < 5.0 / 12.0);
+    lc_run(1, &on);
+    print_message("    moving node with length control: %s at t = %.3f, %d events, elements in "
+                  "[%.3f, %.3f] Lstd; without: %s at t = %.3f, shortest element %.2e Lstd\n",
+                  vlbe_status_str(on.rc), on.t, on.events, on.Lmin / LC_LSTD, on.Lmax / LC_LSTD,
+                  vlbe_status_str(off.rc), off.t, off.Lmin / LC_LSTD);
+    assert_int_equal(on.rc, VLBE_OK);
+    assert_true(on.finite);
+    assert_true(fabs(on.t - LC_TEND) < 0.5 * LC_H);
+    assert_int_equal(on.events, 3);
+    assert_int_equal(on.relayout, 0);
+    assert_true(on.Lmin >= 0.5 * LC_LSTD - ch_ && on.Lmax <= 1.5 * LC_LSTD + ch_);
+    assert_true(on.Lmax_after <= 1.5 * LC_LSTD);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1397,6 +2453,13 @@ int main(void)
         cmocka_unit_test(test_scene1_moving_string),
         cmocka_unit_test(test_bad_inputs),
         cmocka_unit_test(test_shrinking_element),
+        cmocka_unit_test(test_split_exact),
+        cmocka_unit_test(test_chain_insert_exact),
+        cmocka_unit_test(test_merge_exact),
+        cmocka_unit_test(test_merge_error),
+        cmocka_unit_test(test_insert_remove_bad_inputs),
+        cmocka_unit_test(test_length_control_unit),
+        cmocka_unit_test(test_length_control_run),
     };
     return cmocka_run_group_tests_name("chain_ale", tests, NULL, NULL);
 }
