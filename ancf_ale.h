@@ -1724,11 +1724,25 @@ static inline void vlbe__ale_copy_node(const vlbe_real *q, const vlbe_real *v, i
     }
 }
 
+/* does a constraint name node i (or an equal-length group contain it)? */
+static inline int vlbe__ale_constrained(const vlbe_ale_chain *ch, int i)
+{
+    int k;
+    for (k = 0; k < ch->ncon; ++k) {
+        const vlbe_ale_con *c = &ch->con[k];
+        if (c->node == i || (c->type == VLBE_ALE_CON_EQUAL_LEN && i >= c->node && i <= c->node2))
+            return 1;
+    }
+    return 0;
+}
+
 /* Insert a node with a fixed material coordinate ph inside element e
    (between nodes e and e+1) by exact segmentation; (q, v) of the old layout
    map to (qn, vn) of the new one (qn, vn must not alias q, v; v and vn may
    be NULL).  Constraints on later nodes are renumbered.  Needs
-   nn < nn_cap (else VLBE_EWORK).  On failure nothing changes. */
+   nn < nn_cap (else VLBE_EWORK); qn, vn hold ch->n + 4 reals.  An element
+   inside an equal-length group (VLBE_ALE_CON_EQUAL_LEN) cannot be split
+   (VLBE_EARG).  On failure nothing changes. */
 VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real ph, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v,
                                            vlbe_real *qn, vlbe_real *vn)
@@ -1739,6 +1753,10 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
     vlbe_status st;
     VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
     if (e < 0 || e + 1 >= ch->nn) return VLBE_EARG;
+    for (k = 0; k < ch->ncon; ++k) { /* a fixed node inside an equally spaced group: no */
+        const vlbe_ale_con *c = &ch->con[k];
+        if (c->type == VLBE_ALE_CON_EQUAL_LEN && e >= c->node && e < c->node2) return VLBE_EARG;
+    }
     if (ch->nn >= ch->nn_cap) return VLBE_EWORK;
     if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, v ? ve : NULL, idx, &md)) != VLBE_OK)
         return st;
@@ -1777,8 +1795,9 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
    merged cubic is the Hermite interpolant of the outer nodes; it differs
    from the two pieces unless they form one cubic, by the interpolation
    error of the removed node (the caller measures the change of positions
-   and energy when it matters; examples/falling_beam.c reports it).  Node i
-   must carry no mass and no constraint and not be sliding.  q -> qn may be
+   and energy when it matters; examples/ex_slide.h reports it).  Node i
+   must carry no mass and no constraint, not be sliding and not belong to an
+   equal-length group (else VLBE_EARG, nothing changed).  q -> qn may be
    in place (qn == q, vn == v). */
 VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe_real *q,
                                            const vlbe_real *v, vlbe_real *qn, vlbe_real *vn)
@@ -1786,11 +1805,8 @@ VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe
     int k, j, on;
     VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
     if (i <= 0 || i >= ch->nn - 1 || ch->nn <= 2) return VLBE_EARG;
-    if (ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0)) return VLBE_EARG;
-    for (k = 0; k < ch->ncon; ++k) {
-        const vlbe_ale_con *c = &ch->con[k];
-        if (c->node == i || (c->type == VLBE_ALE_CON_EQUAL_LEN && c->node2 == i)) return VLBE_EARG;
-    }
+    if (ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0) || vlbe__ale_constrained(ch, i))
+        return VLBE_EARG;
     on = 0;
     for (j = 0; j < ch->nn; ++j) {
         const int nc = vlbe__ale_ncoord(&ch->node[j]);
@@ -1811,13 +1827,10 @@ VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe
 /* may node i be removed by length control? */
 static inline int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
 {
-    int k;
     if (i <= 0 || i >= ch->nn - 1 || ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0) ||
         ch->node[i].pmode == VLBE_ALE_PFREE)
         return 0;
-    for (k = 0; k < ch->ncon; ++k)
-        if (ch->con[k].node == i || ch->con[k].node2 == i) return 0;
-    return 1;
+    return !vlbe__ale_constrained(ch, i);
 }
 
 /* Length control of a sliding node (Figure 7 of [R]), keeping the two
@@ -1838,8 +1851,10 @@ static inline int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
        together and make the same change.
    Near a chain end, where no removable node is on the other side, only the
    insertion is made (needs capacity); removable means interior, fixed p, no
-   mass, no constraint.  (q, v) -> (qn, vn) in the new layout (copied
-   unchanged when nothing is done; qn, vn must not alias q, v); *slider
+   mass, no constraint, not in an equal-length group.  The insertion is
+   made first: it needs nn < nn_cap (else VLBE_EWORK, nothing changed) and
+   qn, vn must hold ch->n + 4 reals.  (q, v) -> (qn, vn) in the new layout
+   (copied unchanged when nothing is done; qn, vn must not alias q, v); *slider
    follows its node; *changed = 0 (nothing), 1 (inserted), 2 (inserted and
    removed), 3 (removed).  Restart the integrator from (qn, vn) when
    *changed != 0. */

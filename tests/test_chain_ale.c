@@ -2139,18 +2139,19 @@ static void test_merge_error(void **state)
 
 /* Nodes that vlbe_ale_chain_remove must refuse (VLBE_EARG, chain, nodes,
    constraints and qn untouched): out of range, the two ends, a sliding
-   node, a node carrying a mass, a node with a constraint, the first and
-   the last node of an EQUAL_LEN group; insertions vlbe_ale_chain_insert
-   must refuse the same way: element out of range (EARG), ph on a node or
-   outside the element (EBOUND), non-finite (ENONFINITE), no capacity
-   (EWORK).  Then a plain node is removed. */
+   node, a node carrying a mass, a node with a constraint, the first, an
+   interior and the last node of an EQUAL_LEN group; insertions
+   vlbe_ale_chain_insert must refuse the same way: element out of range or
+   inside an EQUAL_LEN group (EARG), ph on a node or outside the element
+   (EBOUND), non-finite (ENONFINITE), no capacity (EWORK).  Then a plain
+   node is removed. */
 static void test_insert_remove_bad_inputs(void **state)
 {
     static chn c;
     static vlbe_ale_node nsave[NN_MAX];
     static vlbe_ale_con csave[NC_MAX];
     vlbe_real q[N_MAX], v[N_MAX], qn[N_MAX], vn[N_MAX], r0[2] = {0, 0}, dir[2] = {1, 0};
-    static const int bad[10] = {-1, 0, 8, 9, 1, 2, 3, 4, 6, 100};
+    static const int bad[11] = {-1, 0, 8, 9, 1, 2, 3, 4, 5, 6, 100};
     int i, k, n0, m0;
     (void)state;
     memset(&c, 0, sizeof c);
@@ -2170,17 +2171,18 @@ static void test_insert_remove_bad_inputs(void **state)
     m0 = c.ch.m;
     memcpy(nsave, c.node, sizeof nsave);
     memcpy(csave, c.con, sizeof csave);
-    for (k = 0; k < 10 + 7; ++k) {
+    for (k = 0; k < 11 + 9; ++k) {
         for (i = 0; i < N_MAX; ++i) qn[i] = vn[i] = VLBE_R(7.0);
-        if (k < 10) {
+        if (k < 11) {
             if (vlbe_ale_chain_remove(&c.ch, bad[k], q, v, qn, vn) != VLBE_EARG)
                 fail_msg("remove(%d) did not return VLBE_EARG", bad[k]);
         } else {
-            static const int e[7] = {-1, 8, 7, 7, 7, 7, 7};
-            static const double ph[7] = {1.5, 1.5, 1.4, 1.6, 1.7, 0.0, 1.5};
-            static const vlbe_status want[7] = {VLBE_EARG, VLBE_EARG, VLBE_EBOUND, VLBE_EBOUND,
-                                                VLBE_EBOUND, VLBE_ENONFINITE, VLBE_EWORK};
-            const int j = k - 10;
+            static const int e[9] = {-1, 8, 7, 7, 7, 7, 7, 4, 5};
+            static const double ph[9] = {1.5, 1.5, 1.4, 1.6, 1.7, 0.0, 1.5, 0.9, 1.1};
+            static const vlbe_status want[9] = {VLBE_EARG,   VLBE_EARG,      VLBE_EBOUND,
+                                                VLBE_EBOUND, VLBE_EBOUND,    VLBE_ENONFINITE,
+                                                VLBE_EWORK,  VLBE_EARG,      VLBE_EARG};
+            const int j = k - 11;
             const vlbe_real p = j == 5 ? (vlbe_real)NAN : (vlbe_real)ph[j];
             if (j == 6) c.ch.nn_cap = 9;
             assert_int_equal(vlbe_ale_chain_insert(&c.ch, e[j], p, 0, q, v, qn, vn), want[j]);
