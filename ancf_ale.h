@@ -282,28 +282,26 @@ static inline void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp,
                                      int na, const vlbe_real *q, const vlbe_real *u, int nu,
                                      vlbe__ale_pt *VLBE_RESTRICT pt)
 {
-    int k, a, j;
+    const vlbe_real *e0 = q, *e1 = q + 2, *e2 = q + 5, *e3 = q + 7;
+    int k, a;
     for (k = k0; k <= kmax; ++k) {
         const int nak = (k == 0 || na < 3) ? na : 3;
         for (a = 0; a < nak; ++a) {
-            const int da = a == 0 ? 0 : (a < 3 ? 1 : 2);
-            vlbe_real n[4], x0 = VLBE_R(0.0), x1 = VLBE_R(0.0);
-            for (j = 0; j < 4; ++j) {
-                n[j] = gp->b[k][a][j] * Lp[4 + VLBE__ALE_M(j) - k - da];
-                x0 += n[j] * q[VLBE__ALE_E(j)];
-                x1 += n[j] * q[VLBE__ALE_E(j) + 1];
-                pt->N[k][a][j] = n[j];
-            }
-            pt->X[k][a][0] = x0;
-            pt->X[k][a][1] = x1;
+            const int d = 4 - k - (a == 0 ? 0 : (a < 3 ? 1 : 2));
+            const vlbe_real *b = gp->b[k][a];
+            const vlbe_real n0 = b[0] * Lp[d], n1 = b[1] * Lp[d + 1], n2 = b[2] * Lp[d],
+                            n3 = b[3] * Lp[d + 1];
+            vlbe_real *N = pt->N[k][a], *X = pt->X[k][a];
+            N[0] = n0;
+            N[1] = n1;
+            N[2] = n2;
+            N[3] = n3;
+            X[0] = n0 * e0[0] + n1 * e1[0] + n2 * e2[0] + n3 * e3[0];
+            X[1] = n0 * e0[1] + n1 * e1[1] + n2 * e2[1] + n3 * e3[1];
             if (u && a < nu) {
-                vlbe_real v0 = VLBE_R(0.0), v1 = VLBE_R(0.0);
-                for (j = 0; j < 4; ++j) {
-                    v0 += n[j] * u[VLBE__ALE_E(j)];
-                    v1 += n[j] * u[VLBE__ALE_E(j) + 1];
-                }
-                pt->V[k][a][0] = v0;
-                pt->V[k][a][1] = v1;
+                vlbe_real *V = pt->V[k][a];
+                V[0] = n0 * u[0] + n1 * u[2] + n2 * u[5] + n3 * u[7];
+                V[1] = n0 * u[1] + n1 * u[3] + n2 * u[6] + n3 * u[8];
             }
         }
     }
@@ -765,14 +763,14 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
                                     pd[0] * pd[0] * pt.X[0][VLBE_DA_11][i] +
                                     VLBE_R(2.0) * pd[0] * pd[1] * pt.X[0][VLBE_DA_12][i] +
                                     pd[1] * pd[1] * pt.X[0][VLBE_DA_22][i]);
-            for (j = 0; j < 4; ++j) {
+            for (j = 0; jac && j < 4; ++j) {
                 c[j] = -mt->rhoA * (pd[0] * pd[0] * pt.N[0][VLBE_DA_11][j] +
                                     VLBE_R(2.0) * pd[0] * pd[1] * pt.N[0][VLBE_DA_12][j] +
                                     pd[1] * pd[1] * pt.N[0][VLBE_DA_22][j]);
                 dd[j] = -mt->rhoA * VLBE_R(2.0) * (pd[0] * pt.N[0][1][j] + pd[1] * pt.N[0][2][j]);
             }
         }
-        vlbe__ale_gtz(&pt, pm, w, z, pm ? c : NULL, Q, K);
+        vlbe__ale_gtz(&pt, pm, w, z, jac && pm ? c : NULL, Q, K);
         if (!jac || !pm) continue;
         /* D: e'-columns (dz/de'_j = dd_j I) and p'-columns (dz/dp'_k) */
         for (j = 0; j < 4; ++j) {
@@ -861,43 +859,38 @@ VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, cons
     return VLBE_OK;
 }
 
-/* M(q) = rhoA int G^T G dp (eq. 19). */
-static inline void vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
-                                  vlbe_real *M)
+/* One point's part w G^T G of M (eq. 19): e-e blocks and p1-p2 for
+   i <= j, the e-p coupling on the p-rows (vlbe__ale_mass_mirror completes). */
+static inline void vlbe__ale_mass_pt(const vlbe__ale_pt *pt, int pm, vlbe_real w, vlbe_real *M)
 {
-    const vlbe_real L = q[9] - q[4];
-    vlbe_real Lp[6];
-    vlbe__ale_pt pt;
-    int g, i, j, k, l;
-    vlbe__ale_lpow(L, Lp);
-    for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
-    for (g = 0; g < el->rm.n; ++g) {
-        const vlbe_ale_gp *gp = &el->rm.g[g];
-        const vlbe_real w = el->mat.rhoA * gp->w * L;
-        vlbe__ale_pt_eval(gp, Lp, 0, 0, pm ? 3 : 1, q, NULL, 0, &pt);
-        for (i = 0; i < 4; ++i) {
-            const int r = VLBE__ALE_E(i);
-            const vlbe_real wn = w * pt.N[0][0][i];
-            for (j = i; j < 4; ++j) {
-                const vlbe_real t = wn * pt.N[0][0][j];
-                const int c = VLBE__ALE_E(j);
-                M[r * 10 + c] += t;
-                M[(r + 1) * 10 + c + 1] += t;
-            }
-            for (k = 0; k < 2; ++k)
-                if (pm & (1 << k)) { /* e-p coupling, stored on the p-row */
-                    M[VLBE__ALE_P(k) * 10 + r] += wn * pt.X[0][1 + k][0];
-                    M[VLBE__ALE_P(k) * 10 + r + 1] += wn * pt.X[0][1 + k][1];
-                }
+    int i, j, k, l;
+    for (i = 0; i < 4; ++i) {
+        const int r = VLBE__ALE_E(i);
+        const vlbe_real wn = w * pt->N[0][0][i];
+        for (j = i; j < 4; ++j) {
+            const vlbe_real t = wn * pt->N[0][0][j];
+            const int c = VLBE__ALE_E(j);
+            M[r * 10 + c] += t;
+            M[(r + 1) * 10 + c + 1] += t;
         }
         for (k = 0; k < 2; ++k)
-            for (l = k; l < 2; ++l)
-                if ((pm & (1 << k)) && (pm & (1 << l)))
-                    M[VLBE__ALE_P(k) * 10 + VLBE__ALE_P(l)] +=
-                        w * vlbe_v2_dot(pt.X[0][1 + k], pt.X[0][1 + l]);
+            if (pm & (1 << k)) { /* e-p coupling, stored on the p-row */
+                M[VLBE__ALE_P(k) * 10 + r] += wn * pt->X[0][1 + k][0];
+                M[VLBE__ALE_P(k) * 10 + r + 1] += wn * pt->X[0][1 + k][1];
+            }
     }
-    /* e-e blocks and p1-p2 were accumulated for i <= j, the e-p coupling on
-       the p-rows: mirror each into its transposed place */
+    for (k = 0; k < 2; ++k)
+        for (l = k; l < 2; ++l)
+            if ((pm & (1 << k)) && (pm & (1 << l)))
+                M[VLBE__ALE_P(k) * 10 + VLBE__ALE_P(l)] +=
+                    w * vlbe_v2_dot(pt->X[0][1 + k], pt->X[0][1 + l]);
+}
+
+/* Mirror the parts vlbe__ale_mass_pt accumulated into their transposed
+   places. */
+static inline void vlbe__ale_mass_mirror(vlbe_real *M)
+{
+    int i, j;
     for (i = 0; i < 10; ++i)
         for (j = 0; j < i; ++j) {
             const int pi = i == 4 || i == 9, pj = j == 4 || j == 9;
@@ -906,6 +899,23 @@ static inline void vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_re
             else
                 M[i * 10 + j] = M[j * 10 + i];
         }
+}
+
+/* M(q) = rhoA int G^T G dp (eq. 19). */
+static inline void vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
+                                  vlbe_real *M)
+{
+    const vlbe_real L = q[9] - q[4];
+    vlbe_real Lp[6];
+    vlbe__ale_pt pt;
+    int g, i;
+    vlbe__ale_lpow(L, Lp);
+    for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
+    for (g = 0; g < el->rm.n; ++g) {
+        vlbe__ale_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, q, NULL, 0, &pt);
+        vlbe__ale_mass_pt(&pt, pm, el->mat.rhoA * el->rm.g[g].w * L, M);
+    }
+    vlbe__ale_mass_mirror(M);
 }
 
 VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -935,7 +945,8 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
         ap[1] = (pm & 2) ? a[9] : VLBE_R(0.0);
         vlbe__ale_lpow(L, Lp);
         for (i = 0; i < 10; ++i) Ma[i] = VLBE_R(0.0);
-        for (g = 0; g < el->rm.n; ++g) {
+        for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
+        for (g = 0; g < el->rm.n; ++g) { /* d(M a)/dq and M itself */
             const vlbe_ale_gp *gp = &el->rm.g[g];
             const vlbe_real w = el->mat.rhoA * gp->w * L;
             vlbe_real z[2], c[4];
@@ -943,8 +954,9 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
             vlbe__ale_rate(&pt, 0, pm, ap, z);
             for (j = 0; j < 4; ++j) c[j] = ap[0] * pt.N[0][1][j] + ap[1] * pt.N[0][2][j];
             vlbe__ale_gtz(&pt, pm, w, z, c, Ma, J);
+            vlbe__ale_mass_pt(&pt, pm, w, M);
         }
-        vlbe__ale_mass(el, pm, q, M);
+        vlbe__ale_mass_mirror(M);
         vlbe__ale_degree(Ma, dF);
         vlbe__ale_pcols(L, pm, dF, ap, q, a, J, M);
     }
