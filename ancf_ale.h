@@ -59,9 +59,10 @@ CONVENTIONS
    q or q'; VLBE_ESINGULAR when the slope vanishes (|r'|^2 <= eps) at a
    bending point (the curvature is undefined there); VLBE_EBOUND when a
    point load lies outside [p1, p2].  On failure no output is written.
-   Stack: an eval call uses about 3 kB (local Q, K, D, so that a failure
-   writes nothing).  vlbe_ale_elem is about 15 kB: make one per material,
-   not per element.
+   Stack: vlbe_ale_force with K, D uses up to about 7 kB (gcc -fstack-usage,
+   -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
+   e-columns and the point scratch), the other eval calls at most 3 kB.
+   vlbe_ale_elem is about 15 kB: make one per material, not per element.
 
 NOTES (how the Jacobians are formed)
    At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
