@@ -59,9 +59,10 @@ CONVENTIONS
    q or q'; VLBE_ESINGULAR when the slope vanishes (|r'|^2 <= eps) at a
    bending point (the curvature is undefined there); VLBE_EBOUND when a
    point load lies outside [p1, p2].  On failure no output is written.
-   Stack: an eval call uses about 3 kB (local Q, K, D, so that a failure
-   writes nothing).  vlbe_ale_elem is about 15 kB: make one per material,
-   not per element.
+   Stack: vlbe_ale_force with K, D uses up to about 7 kB (gcc -fstack-usage,
+   -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
+   e-columns and the point scratch), the other eval calls at most 3 kB.
+   vlbe_ale_elem is about 15 kB: make one per material, not per element.
 
 NOTES (how the Jacobians are formed)
    At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
@@ -261,39 +262,48 @@ typedef struct vlbe__ale_pt {
     vlbe_real V[3][3][2];         /* V[k][a] = sum_j N[k][a][j] u_j, a < 3  */
 } vlbe__ale_pt;
 
-/* kmax: highest p-derivative needed; amax0 = 2: second p1/p2 partials at
-   k = 0 too (transport terms); u (may be NULL): the rate-like vector to
-   contract into V (q' or an acceleration). */
-static inline void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, vlbe_real L, int kmax, int amax0,
-                                     const vlbe_real *q, const vlbe_real *u,
-                                     vlbe__ale_pt *VLBE_RESTRICT pt)
+/* Lp[i] = L^(i - 4), i = 0..5: every power of L a basis number carries;
+   computed once per call. */
+static inline void vlbe__ale_lpow(vlbe_real L, vlbe_real *Lp)
 {
-    vlbe_real Lp[6]; /* Lp[i] = L^(i - 4) */
-    int k, a, j, na;
+    const vlbe_real r = VLBE_R(1.0) / L;
     Lp[4] = VLBE_R(1.0);
     Lp[5] = L;
-    for (k = 3; k >= 0; --k) Lp[k] = Lp[k + 1] / L;
-    for (k = 0; k <= kmax; ++k) {
-        na = (k == 0 && amax0 == 2) ? VLBE_DA_N : 3;
-        for (a = 0; a < na; ++a) {
-            const int da = a == 0 ? 0 : (a < 3 ? 1 : 2);
-            vlbe_real n[4], x0 = VLBE_R(0.0), x1 = VLBE_R(0.0);
-            for (j = 0; j < 4; ++j) {
-                n[j] = gp->b[k][a][j] * Lp[4 + VLBE__ALE_M(j) - k - da];
-                x0 += n[j] * q[VLBE__ALE_E(j)];
-                x1 += n[j] * q[VLBE__ALE_E(j) + 1];
-                pt->N[k][a][j] = n[j];
-            }
-            pt->X[k][a][0] = x0;
-            pt->X[k][a][1] = x1;
-            if (u && a < 3) {
-                vlbe_real v0 = VLBE_R(0.0), v1 = VLBE_R(0.0);
-                for (j = 0; j < 4; ++j) {
-                    v0 += n[j] * u[VLBE__ALE_E(j)];
-                    v1 += n[j] * u[VLBE__ALE_E(j) + 1];
-                }
-                pt->V[k][a][0] = v0;
-                pt->V[k][a][1] = v1;
+    Lp[3] = r;
+    Lp[2] = r * r;
+    Lp[1] = Lp[2] * r;
+    Lp[0] = Lp[2] * Lp[2];
+}
+
+/* Rows k0..kmax of p-derivatives; na: p1/p2 partials wanted (1: none, 3:
+   first, VLBE_DA_N: also the second ones, at k = 0 only; rows k > 0 have at
+   most 3); Lp from vlbe__ale_lpow; u (may be NULL): the rate-like vector to
+   contract into V (q' or an acceleration), for the partials a < nu.
+   Entries not asked for are left unset. */
+static inline void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
+                                     int na, const vlbe_real *q, const vlbe_real *u, int nu,
+                                     vlbe__ale_pt *VLBE_RESTRICT pt)
+{
+    const vlbe_real *e0 = q, *e1 = q + 2, *e2 = q + 5, *e3 = q + 7;
+    int k, a;
+    for (k = k0; k <= kmax; ++k) {
+        const int nak = (k == 0 || na < 3) ? na : 3;
+        for (a = 0; a < nak; ++a) {
+            const int d = 4 - k - (a == 0 ? 0 : (a < 3 ? 1 : 2));
+            const vlbe_real *b = gp->b[k][a];
+            const vlbe_real n0 = b[0] * Lp[d], n1 = b[1] * Lp[d + 1], n2 = b[2] * Lp[d],
+                            n3 = b[3] * Lp[d + 1];
+            vlbe_real *N = pt->N[k][a], *X = pt->X[k][a];
+            N[0] = n0;
+            N[1] = n1;
+            N[2] = n2;
+            N[3] = n3;
+            X[0] = n0 * e0[0] + n1 * e1[0] + n2 * e2[0] + n3 * e3[0];
+            X[1] = n0 * e0[1] + n1 * e1[1] + n2 * e2[1] + n3 * e3[1];
+            if (u && a < nu) {
+                vlbe_real *V = pt->V[k][a];
+                V[0] = n0 * u[0] + n1 * u[2] + n2 * u[5] + n3 * u[7];
+                V[1] = n0 * u[1] + n1 * u[3] + n2 * u[6] + n3 * u[8];
             }
         }
     }
@@ -312,6 +322,17 @@ static inline vlbe_status vlbe__ale_check(const vlbe_real *q, const vlbe_real *q
 static inline int vlbe__ale_pmask(unsigned mode)
 {
     return ((mode & VLBE_ALE_FIX_P1) ? 0 : 1) | ((mode & VLBE_ALE_FIX_P2) ? 0 : 2);
+}
+
+/* Material rate of X[k][0] at a point: V_k,0 + p1' X_k,1 + p2' X_k,2 (the
+   partials of a fixed p are not evaluated: its rate is zero). */
+static inline void vlbe__ale_rate(const vlbe__ale_pt *pt, int k, int pm, const vlbe_real *pd,
+                                  vlbe_real *v)
+{
+    v[0] = pt->V[k][0][0];
+    v[1] = pt->V[k][0][1];
+    if (pm & 1) vlbe_v2_axpy(pd[0], pt->X[k][1], v);
+    if (pm & 2) vlbe_v2_axpy(pd[1], pt->X[k][2], v);
 }
 
 /* Inertia-type term at one point: z the 2-vector field it multiplies and c[j]
@@ -374,81 +395,141 @@ static inline void vlbe__ale_psi_q(const vlbe__ale_pt *pt, int pm, int ny, const
     }
 }
 
-/* Column (j, b) of psi_qq (the e-column; 10 entries) and the mixed second
-   variations mix[k] = d2 psi / de_jb dp_k's non-Hessian part. */
-static inline void vlbe__ale_psi_qq_col(const vlbe__ale_pt *pt, int pm, int ny, const vlbe_real *gy,
-                                        const vlbe_real *H, int j, int b, vlbe_real *col,
-                                        vlbe_real *hc, vlbe_real *mix)
+/* A strain measure psi(y) at one point, y = (r', r''): gradient gy, Hessian
+   H (4x4; jac only), stiffness S, damping cS, sigma = S psi + cS psi' and
+   the degree weight deg (its force contributes w deg psi_q to dQ beyond the
+   standard row degrees). */
+typedef struct vlbe__ale_sm {
+    vlbe_real S, cS, sig, deg;
+    vlbe_real gy[4], H[16];
+} vlbe__ale_sm;
+
+/* T = H B (ny x 8) with B = dy/de: column 2 j + b (e_jb) is N'_j on y_b
+   and N''_j on y_{2+b}. */
+static inline void vlbe__ale_hb(const vlbe__ale_pt *pt, int ny, const vlbe_real *H,
+                                vlbe_real (*T)[8])
 {
-    const vlbe_real n1 = pt->N[1][0][j], n2 = ny == 4 ? pt->N[2][0][j] : VLBE_R(0.0);
-    int i, k, a, c;
-    for (a = 0; a < ny; ++a) hc[a] = n1 * H[a * 4 + b] + (ny == 4 ? n2 * H[a * 4 + 2 + b] : VLBE_R(0.0));
-    for (i = 0; i < 4; ++i) {
-        const int r = VLBE__ALE_E(i);
-        const vlbe_real m1 = pt->N[1][0][i];
-        col[r] = m1 * hc[0];
-        col[r + 1] = m1 * hc[1];
-        if (ny == 4) {
-            col[r] += pt->N[2][0][i] * hc[2];
-            col[r + 1] += pt->N[2][0][i] * hc[3];
-        }
-    }
-    for (k = 0; k < 2; ++k) {
-        vlbe_real v = VLBE_R(0.0);
-        mix[k] = pt->N[1][1 + k][j] * gy[b];
-        if (ny == 4) mix[k] += pt->N[2][1 + k][j] * gy[2 + b];
-        for (c = 0; c < ny; ++c) v += pt->X[1 + c / 2][1 + k][c % 2] * hc[c];
-        col[VLBE__ALE_P(k)] = (pm & (1 << k)) ? v + mix[k] : VLBE_R(0.0);
-    }
+    int c, j, b;
+    for (c = 0; c < ny; ++c)
+        for (j = 0; j < 4; ++j)
+            for (b = 0; b < 2; ++b) {
+                vlbe_real v = pt->N[1][0][j] * H[c * 4 + b];
+                if (ny == 4) v += pt->N[2][0][j] * H[c * 4 + 2 + b];
+                T[c][2 * j + b] = v;
+            }
 }
 
-/* Strain-type term at one point: psi(y) with gradient gy and Hessian H (ny x
-   ny, stored 4 wide).  Q -= w sigma psi_q with sigma = S psi + cS psi';
-   with K: the e-columns of -w d(sigma psi_q)/dq; with D: -w cS psi_q psi_q^T.
-   pd = (p1', p2') (zero for fixed nodes), yd = material rate of y.
-   psq (out, 10): psi_q. */
-static inline void vlbe__ale_strain_pt(const vlbe__ale_pt *pt, int pm, int ny, vlbe_real w,
-                                       vlbe_real S, vlbe_real cS, vlbe_real psi,
-                                       const vlbe_real *gy, const vlbe_real *H,
-                                       const vlbe_real *pd, const vlbe_real *yd,
-                                       vlbe_real *Q, vlbe_real *K, vlbe_real *D, vlbe_real *psq)
+/* Out (10 x 8: the e-columns, 2 j + b for e_jb) -= w Bt T, T ny x 8, with
+   Bt = dy/dq: row e_ib is N'_i on y_b and N''_i on y_{2+b}, row p_k is Y_k
+   (free p only). */
+static inline void vlbe__ale_bt_acc(const vlbe__ale_pt *pt, int pm, int ny, vlbe_real w,
+                                    const vlbe_real (*T)[8], vlbe_real *VLBE_RESTRICT Out)
 {
-    vlbe_real sig, psid = VLBE_R(0.0);
-    int i, j, a, b, c;
-    vlbe__ale_psi_q(pt, pm, ny, gy, psq);
-    if (cS != VLBE_R(0.0))
-        for (c = 0; c < ny; ++c) psid += gy[c] * yd[c];
-    sig = S * psi + cS * psid;
-    for (i = 0; i < 10; ++i) Q[i] -= w * sig * psq[i];
-    if (D && cS != VLBE_R(0.0)) {
-        const vlbe_real f = w * cS;
-        for (i = 0; i < 10; ++i) {
-            const vlbe_real fi = f * psq[i];
-            if (fi != VLBE_R(0.0))
-                for (j = 0; j < 10; ++j) D[i * 10 + j] -= fi * psq[j];
+    int i, b, c, j, k;
+    for (i = 0; i < 4; ++i)
+        for (b = 0; b < 2; ++b) {
+            vlbe_real *row = Out + (VLBE__ALE_E(i) + b) * 8;
+            const vlbe_real m1 = w * pt->N[1][0][i];
+            if (ny == 4) {
+                const vlbe_real m2 = w * pt->N[2][0][i];
+                for (j = 0; j < 8; ++j) row[j] -= m1 * T[b][j] + m2 * T[2 + b][j];
+            } else
+                for (j = 0; j < 8; ++j) row[j] -= m1 * T[b][j];
         }
-    }
-    if (!K) return;
-    {
-        vlbe_real Hyd[4] = {0, 0, 0, 0};
-        if (cS != VLBE_R(0.0))
-            for (a = 0; a < ny; ++a)
-                for (c = 0; c < ny; ++c) Hyd[a] += H[a * 4 + c] * yd[c];
-        for (j = 0; j < 4; ++j) {
-            const int cj = VLBE__ALE_E(j);
-            const vlbe_real n1 = pt->N[1][0][j], n2 = ny == 4 ? pt->N[2][0][j] : VLBE_R(0.0);
-            for (b = 0; b < 2; ++b) {
-                vlbe_real hc[4], col[10], mix[2], dsig, dpsid = VLBE_R(0.0);
-                vlbe__ale_psi_qq_col(pt, pm, ny, gy, H, j, b, col, hc, mix);
-                if (cS != VLBE_R(0.0)) {
-                    dpsid = n1 * Hyd[b] + (ny == 4 ? n2 * Hyd[2 + b] : VLBE_R(0.0));
-                    dpsid += pd[0] * mix[0] + pd[1] * mix[1];
-                }
-                dsig = S * psq[cj + b] + cS * dpsid;
-                for (i = 0; i < 10; ++i) K[i * 10 + cj + b] -= w * (psq[i] * dsig + sig * col[i]);
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            vlbe_real *row = Out + VLBE__ALE_P(k) * 8;
+            for (c = 0; c < ny; ++c) {
+                const vlbe_real y = w * pt->X[1 + c / 2][1 + k][c % 2];
+                for (j = 0; j < 8; ++j) row[j] -= y * T[c][j];
             }
         }
+}
+
+/* The strain measures sm[0..nsm) at one point (ny = 2: r' only):
+   Q -= w sum sigma psi_q; with Ke (then De, D and dQ too): the e-columns of
+   -w d(sum sigma psi_q)/dq into Ke and of D = -w sum cS psi_q psi_q^T into
+   De (both 10 x 8, column 2 j + b for e_jb), its p'-columns into D,
+   dQ += w sum deg psi_q.  pd = (p1', p2') (zero for fixed nodes), yd =
+   material rate of y (read when some cS != 0).  With psi_q = Bt gy
+   (vlbe__ale_bt_acc) everything is Bt times a small matrix:
+   d(sigma psi_q)/de_jb = Bt (gy dsigma/de_jb + sigma H B_jb) + mix_jb
+   (mix: the p-rows' dY_k/de_jb . sigma gy), dsigma/de_jb = B_jb . (S gy +
+   cS H yd) + cS Bd_jb . gy (Bd: the basis of the material rate, sum_k p_k'
+   times the p_k-partials), and D = -w Bt (sum cS gy gy^T) Bt^T. */
+static inline void vlbe__ale_strain_pt(const vlbe__ale_pt *pt, int pm, int ny, vlbe_real w,
+                                       const vlbe__ale_sm *sm, int nsm, const vlbe_real *pd,
+                                       const vlbe_real *yd, vlbe_real *VLBE_RESTRICT Q,
+                                       vlbe_real *VLBE_RESTRICT Ke, vlbe_real *VLBE_RESTRICT De,
+                                       vlbe_real *VLBE_RESTRICT D, vlbe_real *VLBE_RESTRICT dQ)
+{
+    vlbe_real G[4] = {0, 0, 0, 0}, Gd[4] = {0, 0, 0, 0}, Hc[16], Hd[16], T[4][8], nd[2][4], psq[10];
+    int i, j, k, m, b, c, damp = 0;
+    for (m = 0; m < nsm; ++m)
+        for (c = 0; c < 4; ++c) G[c] += sm[m].sig * sm[m].gy[c];
+    vlbe__ale_psi_q(pt, pm, ny, G, psq);
+    for (i = 0; i < 10; ++i) Q[i] -= w * psq[i];
+    if (!Ke) return;
+    for (m = 0; m < nsm; ++m)
+        for (c = 0; c < 4; ++c) Gd[c] += sm[m].deg * sm[m].gy[c];
+    vlbe__ale_psi_q(pt, pm, ny, Gd, psq);
+    for (i = 0; i < 10; ++i) dQ[i] += w * psq[i];
+    for (i = 0; i < 16; ++i) Hc[i] = Hd[i] = VLBE_R(0.0);
+    for (m = 0; m < nsm; ++m) {
+        for (i = 0; i < 16; ++i) Hc[i] += sm[m].sig * sm[m].H[i];
+        if (sm[m].cS != VLBE_R(0.0)) {
+            damp = 1;
+            for (c = 0; c < ny; ++c)
+                for (i = 0; i < ny; ++i) Hd[c * 4 + i] += sm[m].cS * sm[m].gy[c] * sm[m].gy[i];
+        }
     }
+    for (c = 0; c < ny / 2; ++c)
+        for (j = 0; j < 4; ++j) {
+            nd[c][j] = VLBE_R(0.0);
+            for (k = 0; k < 2; ++k)
+                if (pm & (1 << k)) nd[c][j] += pd[k] * pt->N[1 + c][1 + k][j];
+        }
+    vlbe__ale_hb(pt, ny, Hc, T);
+    for (m = 0; m < nsm; ++m) {
+        const vlbe__ale_sm *s = &sm[m];
+        vlbe_real v[4] = {0, 0, 0, 0}, g[4] = {0, 0, 0, 0};
+        for (c = 0; c < ny; ++c) {
+            v[c] = s->S * s->gy[c];
+            g[c] = s->cS * s->gy[c];
+            if (s->cS != VLBE_R(0.0))
+                for (i = 0; i < ny; ++i) v[c] += s->cS * s->H[c * 4 + i] * yd[i];
+        }
+        for (j = 0; j < 4; ++j)
+            for (b = 0; b < 2; ++b) {
+                vlbe_real ds = pt->N[1][0][j] * v[b] + nd[0][j] * g[b];
+                if (ny == 4) ds += pt->N[2][0][j] * v[2 + b] + nd[1][j] * g[2 + b];
+                for (c = 0; c < ny; ++c) T[c][2 * j + b] += s->gy[c] * ds;
+            }
+    }
+    vlbe__ale_bt_acc(pt, pm, ny, w, (const vlbe_real(*)[8])T, Ke);
+    for (k = 0; k < 2; ++k) /* mix */
+        if (pm & (1 << k)) {
+            vlbe_real *row = Ke + VLBE__ALE_P(k) * 8;
+            for (j = 0; j < 4; ++j)
+                for (b = 0; b < 2; ++b) {
+                    vlbe_real v = pt->N[1][1 + k][j] * G[b];
+                    if (ny == 4) v += pt->N[2][1 + k][j] * G[2 + b];
+                    row[2 * j + b] -= w * v;
+                }
+        }
+    if (!damp) return;
+    vlbe__ale_hb(pt, ny, Hd, T);
+    vlbe__ale_bt_acc(pt, pm, ny, w, (const vlbe_real(*)[8])T, De);
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            vlbe_real hy[4];
+            for (c = 0; c < ny; ++c) {
+                hy[c] = VLBE_R(0.0);
+                for (i = 0; i < ny; ++i) hy[c] += Hd[c * 4 + i] * pt->X[1 + i / 2][1 + k][i % 2];
+            }
+            vlbe__ale_psi_q(pt, pm, ny, hy, psq);
+            for (i = 0; i < 10; ++i) D[i * 10 + VLBE__ALE_P(k)] -= w * psq[i];
+        }
 }
 
 /* sum_j b.h[k][a][j] x_j over the four nodal 2-vectors of x (element
@@ -560,13 +641,15 @@ static inline vlbe_status vlbe__ale_flux(const vlbe_ale_elem *el, int pm, int be
 {
     const vlbe_ale_mat *mt = &el->mat;
     vlbe__ale_pt pt;
+    vlbe_real Lp[6];
     int e, i;
+    vlbe__ale_lpow(L, Lp);
     for (e = 0; e < 2; ++e) {
         const int row = VLBE__ALE_P(e);
         const vlbe_real sgn = e == 0 ? VLBE_R(1.0) : VLBE_R(-1.0);
         vlbe_real gy[4], psq[10], eps, u, du = VLBE_R(0.0);
         if (!(pm & (1 << e))) continue;
-        vlbe__ale_pt_eval(&el->ends[e], L, 2, 0, q, NULL, &pt);
+        vlbe__ale_pt_eval(&el->ends[e], Lp, 1, 2, 1, q, NULL, 0, &pt);
         eps = vlbe__ale_eps(pt.X[1][0], gy, NULL);
         u = VLBE_R(0.5) * mt->EA * eps * eps;
         /* degrees: eps^2 = (a - 1/2)^2 with a = |r'|^2/2 of degree -2 */
@@ -591,6 +674,58 @@ static inline vlbe_status vlbe__ale_flux(const vlbe_ale_elem *el, int pm, int be
     return VLBE_OK;
 }
 
+/* Axial (psi = eps(r'), eqs. 19, 21) and/or bending (psi = kap(r', r''),
+   eqs. 19, 22 in planar signed form) terms at one Gauss point, sharing the
+   point evaluation.  Ke, De, D, dQ as in vlbe__ale_strain_pt (Ke NULL: Q
+   only). */
+static inline vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe_ale_gp *gp,
+                                              const vlbe_real *Lp, int pm, const vlbe_real *pd,
+                                              int axial, int bend, int damp, const vlbe_real *q,
+                                              const vlbe_real *qd, vlbe_real *Q, vlbe_real *Ke,
+                                              vlbe_real *De, vlbe_real *D, vlbe_real *dQ)
+{
+    const vlbe_real w = gp->w * Lp[5];
+    const int ny = bend ? 4 : 2;
+    vlbe__ale_sm sm[2];
+    vlbe_real yd[4];
+    vlbe__ale_pt pt;
+    vlbe_status st;
+    int nsm = 0, m, c;
+    vlbe__ale_pt_eval(gp, Lp, 1, ny / 2, pm ? 3 : 1, q, damp ? qd : NULL, 1, &pt);
+    if (damp) {
+        vlbe__ale_rate(&pt, 1, pm, pd, yd);
+        if (bend) vlbe__ale_rate(&pt, 2, pm, pd, yd + 2);
+        else yd[2] = yd[3] = VLBE_R(0.0);
+    }
+    if (axial) {
+        vlbe__ale_sm *s = &sm[nsm++];
+        const vlbe_real eps = vlbe__ale_eps(pt.X[1][0], s->gy, Ke ? s->H : NULL);
+        s->S = mt->EA;
+        s->cS = damp ? mt->c_eps * mt->EA : VLBE_R(0.0);
+        s->sig = s->S * eps;
+    }
+    if (bend) {
+        vlbe__ale_sm *s = &sm[nsm++];
+        vlbe_real kap;
+        if ((st = vlbe__ale_kap(pt.X[1][0], pt.X[2][0], &kap, s->gy, Ke ? s->H : NULL)) != VLBE_OK)
+            return st;
+        s->S = mt->EI;
+        s->cS = damp ? mt->c_kap * mt->EI : VLBE_R(0.0);
+        s->sig = s->S * kap;
+        s->deg = VLBE_R(0.0);
+    }
+    for (m = 0; m < nsm; ++m) {
+        vlbe__ale_sm *s = &sm[m];
+        if (s->cS != VLBE_R(0.0))
+            for (c = 0; c < ny; ++c) s->sig += s->cS * s->gy[c] * yd[c];
+    }
+    /* degrees below the standard ones: the axial force -sigma eps_q is 4
+       lower for the |r'|^2/2 part of eps, 2 lower for its -1/2 */
+    if (axial) sm[0].deg = VLBE_R(4.0) * sm[0].sig + mt->EA;
+    vlbe__ale_strain_pt(&pt, pm, ny, w, sm, nsm, pd, yd, Q, Ke, De, D, dQ);
+    return VLBE_OK;
+}
+
 /* The inertia/load, axial and bending terms: Q always, and K and D when K is
    given (e- and p'-columns directly, then the p-columns by the scaling
    identity).  Q, K, D are the caller's zeroed locals. */
@@ -603,20 +738,25 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     const int damp = !(mode & VLBE_ALE_NO_DAMP);
     const int bend = !(mode & VLBE_ALE_NO_BEND) && mt->EI != VLBE_R(0.0);
     const vlbe_real L = q[9] - q[4];
-    vlbe_real pd[2], Ql[10], qb[10], dQ[10], H[16], gy[4], yd[4], psq[10];
+    const int shared = bend && mt->EA != VLBE_R(0.0) && el->rl.n == el->rt.n;
+    vlbe_real pd[2], Lp[6], dQ[10], dQx[10], Ke[80], De[80];
     vlbe__ale_pt pt;
     vlbe_status st;
     int g, i, j, k;
+    vlbe__ale_lpow(L, Lp);
     pd[0] = (pm & 1) ? qd[4] : VLBE_R(0.0);
     pd[1] = (pm & 2) ? qd[9] : VLBE_R(0.0);
-    for (i = 0; i < 10; ++i) Ql[i] = qb[i] = VLBE_R(0.0);
+    if (jac) {
+        for (i = 0; i < 10; ++i) dQx[i] = VLBE_R(0.0);
+        for (i = 0; i < 80; ++i) Ke[i] = De[i] = VLBE_R(0.0);
+    }
 
     /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19) */
     for (g = 0; g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         const vlbe_real w = gp->w * L;
         vlbe_real z[2], c[4], dd[4];
-        vlbe__ale_pt_eval(gp, L, 0, pm ? 2 : 0, q, qd, &pt);
+        vlbe__ale_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, q, pm ? qd : NULL, 3, &pt);
         z[0] = mt->f[0];
         z[1] = mt->f[1];
         if (pm) {
@@ -625,14 +765,14 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
                                     pd[0] * pd[0] * pt.X[0][VLBE_DA_11][i] +
                                     VLBE_R(2.0) * pd[0] * pd[1] * pt.X[0][VLBE_DA_12][i] +
                                     pd[1] * pd[1] * pt.X[0][VLBE_DA_22][i]);
-            for (j = 0; j < 4; ++j) {
+            for (j = 0; jac && j < 4; ++j) {
                 c[j] = -mt->rhoA * (pd[0] * pd[0] * pt.N[0][VLBE_DA_11][j] +
                                     VLBE_R(2.0) * pd[0] * pd[1] * pt.N[0][VLBE_DA_12][j] +
                                     pd[1] * pd[1] * pt.N[0][VLBE_DA_22][j]);
                 dd[j] = -mt->rhoA * VLBE_R(2.0) * (pd[0] * pt.N[0][1][j] + pd[1] * pt.N[0][2][j]);
             }
         }
-        vlbe__ale_gtz(&pt, pm, w, z, pm ? c : NULL, Q, K);
+        vlbe__ale_gtz(&pt, pm, w, z, jac && pm ? c : NULL, Q, K);
         if (!jac || !pm) continue;
         /* D: e'-columns (dz/de'_j = dd_j I) and p'-columns (dz/dp'_k) */
         for (j = 0; j < 4; ++j) {
@@ -665,48 +805,31 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
             }
     }
 
-    /* axial: psi = eps(r') (eqs. 19, 21) */
+    /* axial and bending; at the axial points the bending term too when
+       the rules have the same points (the default) */
     if (mt->EA != VLBE_R(0.0))
-        for (g = 0; g < el->rl.n; ++g) {
-            const vlbe_ale_gp *gp = &el->rl.g[g];
-            const vlbe_real w = gp->w * L;
-            vlbe_real eps, Qloc[10];
-            vlbe__ale_pt_eval(gp, L, 1, 0, q, qd, &pt);
-            eps = vlbe__ale_eps(pt.X[1][0], gy, H);
-            for (i = 0; i < 2; ++i)
-                yd[i] = pt.V[1][0][i] + pd[0] * pt.X[1][1][i] + pd[1] * pt.X[1][2][i];
-            yd[2] = yd[3] = VLBE_R(0.0);
-            for (i = 0; i < 10; ++i) Qloc[i] = VLBE_R(0.0);
-            vlbe__ale_strain_pt(&pt, pm, 2, w, mt->EA, damp ? mt->c_eps * mt->EA : VLBE_R(0.0),
-                                eps, gy, H, pd, yd, Qloc, K, D, psq);
-            for (i = 0; i < 10; ++i) {
-                Q[i] += Qloc[i];
-                Ql[i] += Qloc[i];
-                qb[i] += w * VLBE_R(0.5) * mt->EA * psq[i];
-            }
-        }
-
-    /* bending: psi = kap(r', r'') (eqs. 19, 22 in planar signed form) */
-    if (bend)
-        for (g = 0; g < el->rt.n; ++g) {
-            const vlbe_ale_gp *gp = &el->rt.g[g];
-            const vlbe_real w = gp->w * L;
-            vlbe_real kap;
-            vlbe__ale_pt_eval(gp, L, 2, 0, q, qd, &pt);
-            if ((st = vlbe__ale_kap(pt.X[1][0], pt.X[2][0], &kap, gy, jac ? H : NULL)) != VLBE_OK) return st;
-            for (i = 0; i < 2; ++i) {
-                yd[i] = pt.V[1][0][i] + pd[0] * pt.X[1][1][i] + pd[1] * pt.X[1][2][i];
-                yd[2 + i] = pt.V[2][0][i] + pd[0] * pt.X[2][1][i] + pd[1] * pt.X[2][2][i];
-            }
-            vlbe__ale_strain_pt(&pt, pm, 4, w, mt->EI, damp ? mt->c_kap * mt->EI : VLBE_R(0.0), kap,
-                                gy, H, pd, yd, Q, K, D, psq);
-        }
+        for (g = 0; g < el->rl.n; ++g)
+            if ((st = vlbe__ale_strain_gp(mt, &el->rl.g[g], Lp, pm, pd, 1, shared, damp, q, qd, Q,
+                                          jac ? Ke : NULL, De, D, dQx)) != VLBE_OK)
+                return st;
+    if (bend && !shared)
+        for (g = 0; g < el->rt.n; ++g)
+            if ((st = vlbe__ale_strain_gp(mt, &el->rt.g[g], Lp, pm, pd, 0, 1, damp, q, qd, Q,
+                                          jac ? Ke : NULL, De, D, dQx)) != VLBE_OK)
+                return st;
+    if (jac) /* the strain terms' e-columns */
+        for (i = 0; i < 10; ++i)
+            for (j = 0; j < 4; ++j)
+                for (k = 0; k < 2; ++k) {
+                    K[i * 10 + VLBE__ALE_E(j) + k] += Ke[i * 8 + 2 * j + k];
+                    D[i * 10 + VLBE__ALE_E(j) + k] += De[i * 8 + 2 * j + k];
+                }
 
     /* p-columns of K by the scaling identity: standard row degrees for all
-       terms, the axial part -4 lower plus 2 for its constant part qb */
+       terms, the axial part's lower degrees in dQx */
     if (jac && pm) {
         vlbe__ale_degree(Q, dQ);
-        for (i = 0; i < 10; ++i) dQ[i] += -VLBE_R(4.0) * Ql[i] + VLBE_R(2.0) * qb[i];
+        for (i = 0; i < 10; ++i) dQ[i] += dQx[i];
     }
     if (mode & VLBE_ALE_CONSERVATIVE)
         if ((st = vlbe__ale_flux(el, pm, bend, q, L, Q, K, jac ? dQ : NULL)) != VLBE_OK) return st;
@@ -738,41 +861,38 @@ VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, cons
     return VLBE_OK;
 }
 
-/* M(q) = rhoA int G^T G dp (eq. 19). */
-static inline void vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
-                                  vlbe_real *M)
+/* One point's part w G^T G of M (eq. 19): e-e blocks and p1-p2 for
+   i <= j, the e-p coupling on the p-rows (vlbe__ale_mass_mirror completes). */
+static inline void vlbe__ale_mass_pt(const vlbe__ale_pt *pt, int pm, vlbe_real w, vlbe_real *M)
 {
-    const vlbe_real L = q[9] - q[4];
-    vlbe__ale_pt pt;
-    int g, i, j, k, l;
-    for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
-    for (g = 0; g < el->rm.n; ++g) {
-        const vlbe_ale_gp *gp = &el->rm.g[g];
-        const vlbe_real w = el->mat.rhoA * gp->w * L;
-        vlbe__ale_pt_eval(gp, L, 0, 0, q, NULL, &pt);
-        for (i = 0; i < 4; ++i) {
-            const int r = VLBE__ALE_E(i);
-            const vlbe_real wn = w * pt.N[0][0][i];
-            for (j = i; j < 4; ++j) {
-                const vlbe_real t = wn * pt.N[0][0][j];
-                const int c = VLBE__ALE_E(j);
-                M[r * 10 + c] += t;
-                M[(r + 1) * 10 + c + 1] += t;
-            }
-            for (k = 0; k < 2; ++k)
-                if (pm & (1 << k)) { /* e-p coupling, stored on the p-row */
-                    M[VLBE__ALE_P(k) * 10 + r] += wn * pt.X[0][1 + k][0];
-                    M[VLBE__ALE_P(k) * 10 + r + 1] += wn * pt.X[0][1 + k][1];
-                }
+    int i, j, k, l;
+    for (i = 0; i < 4; ++i) {
+        const int r = VLBE__ALE_E(i);
+        const vlbe_real wn = w * pt->N[0][0][i];
+        for (j = i; j < 4; ++j) {
+            const vlbe_real t = wn * pt->N[0][0][j];
+            const int c = VLBE__ALE_E(j);
+            M[r * 10 + c] += t;
+            M[(r + 1) * 10 + c + 1] += t;
         }
         for (k = 0; k < 2; ++k)
-            for (l = k; l < 2; ++l)
-                if ((pm & (1 << k)) && (pm & (1 << l)))
-                    M[VLBE__ALE_P(k) * 10 + VLBE__ALE_P(l)] +=
-                        w * vlbe_v2_dot(pt.X[0][1 + k], pt.X[0][1 + l]);
+            if (pm & (1 << k)) { /* e-p coupling, stored on the p-row */
+                M[VLBE__ALE_P(k) * 10 + r] += wn * pt->X[0][1 + k][0];
+                M[VLBE__ALE_P(k) * 10 + r + 1] += wn * pt->X[0][1 + k][1];
+            }
     }
-    /* e-e blocks and p1-p2 were accumulated for i <= j, the e-p coupling on
-       the p-rows: mirror each into its transposed place */
+    for (k = 0; k < 2; ++k)
+        for (l = k; l < 2; ++l)
+            if ((pm & (1 << k)) && (pm & (1 << l)))
+                M[VLBE__ALE_P(k) * 10 + VLBE__ALE_P(l)] +=
+                    w * vlbe_v2_dot(pt->X[0][1 + k], pt->X[0][1 + l]);
+}
+
+/* Mirror the parts vlbe__ale_mass_pt accumulated into their transposed
+   places. */
+static inline void vlbe__ale_mass_mirror(vlbe_real *M)
+{
+    int i, j;
     for (i = 0; i < 10; ++i)
         for (j = 0; j < i; ++j) {
             const int pi = i == 4 || i == 9, pj = j == 4 || j == 9;
@@ -781,6 +901,23 @@ static inline void vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_re
             else
                 M[i * 10 + j] = M[j * 10 + i];
         }
+}
+
+/* M(q) = rhoA int G^T G dp (eq. 19). */
+static inline void vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
+                                  vlbe_real *M)
+{
+    const vlbe_real L = q[9] - q[4];
+    vlbe_real Lp[6];
+    vlbe__ale_pt pt;
+    int g, i;
+    vlbe__ale_lpow(L, Lp);
+    for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
+    for (g = 0; g < el->rm.n; ++g) {
+        vlbe__ale_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, q, NULL, 0, &pt);
+        vlbe__ale_mass_pt(&pt, pm, el->mat.rhoA * el->rm.g[g].w * L, M);
+    }
+    vlbe__ale_mass_mirror(M);
 }
 
 VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -796,7 +933,7 @@ VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const
 VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
                                        const vlbe_real *a, vlbe_real *VLBE_RESTRICT Mq)
 {
-    vlbe_real M[100], Ma[10], J[100], dF[10], ap[2], L;
+    vlbe_real M[100], Ma[10], J[100], dF[10], ap[2], Lp[6], L;
     vlbe__ale_pt pt;
     vlbe_status st;
     int g, i, j, pm;
@@ -808,17 +945,20 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
         L = q[9] - q[4];
         ap[0] = (pm & 1) ? a[4] : VLBE_R(0.0);
         ap[1] = (pm & 2) ? a[9] : VLBE_R(0.0);
+        vlbe__ale_lpow(L, Lp);
         for (i = 0; i < 10; ++i) Ma[i] = VLBE_R(0.0);
-        for (g = 0; g < el->rm.n; ++g) {
+        for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
+        for (g = 0; g < el->rm.n; ++g) { /* d(M a)/dq and M itself */
             const vlbe_ale_gp *gp = &el->rm.g[g];
             const vlbe_real w = el->mat.rhoA * gp->w * L;
             vlbe_real z[2], c[4];
-            vlbe__ale_pt_eval(gp, L, 0, 0, q, a, &pt);
-            for (i = 0; i < 2; ++i) z[i] = pt.V[0][0][i] + ap[0] * pt.X[0][1][i] + ap[1] * pt.X[0][2][i];
+            vlbe__ale_pt_eval(gp, Lp, 0, 0, 3, q, a, 1, &pt);
+            vlbe__ale_rate(&pt, 0, pm, ap, z);
             for (j = 0; j < 4; ++j) c[j] = ap[0] * pt.N[0][1][j] + ap[1] * pt.N[0][2][j];
             vlbe__ale_gtz(&pt, pm, w, z, c, Ma, J);
+            vlbe__ale_mass_pt(&pt, pm, w, M);
         }
-        vlbe__ale_mass(el, pm, q, M);
+        vlbe__ale_mass_mirror(M);
         vlbe__ale_degree(Ma, dF);
         vlbe__ale_pcols(L, pm, dF, ap, q, a, J, M);
     }
@@ -830,10 +970,10 @@ VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, con
                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
 {
     const vlbe_ale_mat *mt = &el->mat;
-    vlbe_real L, pd[2], gy[4], T = VLBE_R(0.0), U = VLBE_R(0.0), V = VLBE_R(0.0);
+    vlbe_real L, pd[2], Lp[6], gy[4], T = VLBE_R(0.0), U = VLBE_R(0.0), V = VLBE_R(0.0);
     vlbe__ale_pt pt;
     vlbe_status st;
-    int g, i, pm;
+    int g, pm;
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
     mode |= el->flags;
     pm = vlbe__ale_pmask(mode);
@@ -841,24 +981,25 @@ VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, con
     L = q[9] - q[4];
     pd[0] = (pm & 1) ? qd[4] : VLBE_R(0.0);
     pd[1] = (pm & 2) ? qd[9] : VLBE_R(0.0);
+    vlbe__ale_lpow(L, Lp);
     for (g = 0; g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         vlbe_real v[2];
-        vlbe__ale_pt_eval(gp, L, 0, 0, q, qd, &pt);
-        for (i = 0; i < 2; ++i) v[i] = pt.V[0][0][i] + pd[0] * pt.X[0][1][i] + pd[1] * pt.X[0][2][i];
+        vlbe__ale_pt_eval(gp, Lp, 0, 0, pm ? 3 : 1, q, qd, 1, &pt);
+        vlbe__ale_rate(&pt, 0, pm, pd, v);
         T += gp->w * L * VLBE_R(0.5) * mt->rhoA * vlbe_v2_dot(v, v);
         V -= gp->w * L * vlbe_v2_dot(mt->f, pt.X[0][0]);
     }
     for (g = 0; g < el->rl.n; ++g) {
         vlbe_real eps;
-        vlbe__ale_pt_eval(&el->rl.g[g], L, 1, 0, q, NULL, &pt);
+        vlbe__ale_pt_eval(&el->rl.g[g], Lp, 1, 1, 1, q, NULL, 0, &pt);
         eps = vlbe__ale_eps(pt.X[1][0], gy, NULL);
         U += el->rl.g[g].w * L * VLBE_R(0.5) * mt->EA * eps * eps;
     }
     if (!(mode & VLBE_ALE_NO_BEND) && mt->EI != VLBE_R(0.0))
         for (g = 0; g < el->rt.n; ++g) {
             vlbe_real kap;
-            vlbe__ale_pt_eval(&el->rt.g[g], L, 2, 0, q, NULL, &pt);
+            vlbe__ale_pt_eval(&el->rt.g[g], Lp, 1, 2, 1, q, NULL, 0, &pt);
             if ((st = vlbe__ale_kap(pt.X[1][0], pt.X[2][0], &kap, gy, NULL)) != VLBE_OK) return st;
             U += el->rt.g[g].w * L * VLBE_R(0.5) * mt->EI * kap * kap;
         }
