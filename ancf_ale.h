@@ -542,6 +542,20 @@ static inline void vlbe__ale_sum(const vlbe_herm_ale *b, int k, int a, const vlb
     for (j = 0; j < 4; ++j) vlbe_v2_axpy(b->h[k][a][j], x + VLBE__ALE_E(j), out);
 }
 
+/* Material rate of the k-th p-derivative of r at the point of b (at fixed
+   material p, eq. 14 of [R]): S^(k) e' + (dS^(k)/dp1 e) p1' + (dS^(k)/dp2 e)
+   p2'; b needs the p1, p2 derivatives (vlbe_herm_ale_eval with 1). */
+static inline void vlbe__ale_mat_rate(const vlbe_herm_ale *b, int k, const vlbe_real *q,
+                                      const vlbe_real *qd, vlbe_real *out)
+{
+    vlbe_real a[2];
+    vlbe__ale_sum(b, k, 0, qd, out);
+    vlbe__ale_sum(b, k, 1, q, a);
+    vlbe_v2_axpy(qd[4], a, out);
+    vlbe__ale_sum(b, k, 2, q, a);
+    vlbe_v2_axpy(qd[9], a, out);
+}
+
 /* Axial strain from the slope r1 = r': eps, gradient and (constant) Hessian
    in y = (r', r''). */
 static inline vlbe_real vlbe__ale_eps(const vlbe_real *r1, vlbe_real *gy, vlbe_real *H)
@@ -1452,13 +1466,9 @@ VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t
             n1 = vlbe_sqrt(vlbe_v2_dot(r1, r1));
             if (!(n1 > VLBE_R(0.0))) return VLBE_ESINGULAR;
             L += w[g] * h * n1;
-            if (want_rate) { /* dr'/dt = S' e' + (dS'/dp1 e) p1' + (dS'/dp2 e) p2' */
-                vlbe_real r1d[2], a[2];
-                vlbe__ale_sum(&b, 1, 0, ve, r1d);
-                vlbe__ale_sum(&b, 1, 1, qe, a);
-                vlbe_v2_axpy(ve[4], a, r1d);
-                vlbe__ale_sum(&b, 1, 2, qe, a);
-                vlbe_v2_axpy(ve[9], a, r1d);
+            if (want_rate) { /* dr'/dt at fixed material p */
+                vlbe_real r1d[2];
+                vlbe__ale_mat_rate(&b, 1, qe, ve, r1d);
                 Ld += w[g] * h * vlbe_v2_dot(r1, r1d) / n1;
             }
         }
@@ -1825,7 +1835,6 @@ VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlb
                                     vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd)
 {
     vlbe_herm_ale b;
-    vlbe_real a1[2], a2[2];
     vlbe_status st;
     int k;
     VLBE_ASSERT(q != NULL && qh != NULL);
@@ -1835,13 +1844,7 @@ VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlb
     vlbe_herm_ale_eval(ph, q[4], q[9], 1, 1, &b);
     for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
         vlbe__ale_sum(&b, k, 0, q, qh + 2 * k);
-        if (qd && qhd) { /* material rate: S e' + (dS/dp1 e) p1' + (dS/dp2 e) p2' */
-            vlbe__ale_sum(&b, k, 0, qd, qhd + 2 * k);
-            vlbe__ale_sum(&b, k, 1, q, a1);
-            vlbe__ale_sum(&b, k, 2, q, a2);
-            vlbe_v2_axpy(qd[4], a1, qhd + 2 * k);
-            vlbe_v2_axpy(qd[9], a2, qhd + 2 * k);
-        }
+        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, qhd + 2 * k);
     }
     qh[4] = ph;
     if (qd && qhd) qhd[4] = VLBE_R(0.0);
