@@ -85,6 +85,14 @@ NOTES (how the Jacobians are formed)
    elements are only C1), so with free material coordinates the paper's
    form exchanges energy at the moving nodes.  VLBE_ALE_CONSERVATIVE adds
    the fluxes (and their Jacobian).
+   The same scaling gives the p1/p2 partials of one basis function from its
+   p-derivatives: at fixed p, d/dp2 N^(c)_j = ((m_j - c)/L) N^(c)_j -
+   xi N^(c+1)_j and d/dp1 = -(d/dp2 + d/dp).  vlbe_ale_force without K and
+   D uses it (only the rows N, N', N'' are scaled per point, r''' is
+   constant) and takes the curvature factors |r'|^-2, |r'|^-3 of all
+   bending points together; with K or D it evaluates the partial rows
+   themselves, as the Jacobian needs them.  The two routes agree to rounding
+   (test: 64 EPS of max|Q|).
 
 API
    vlbe_status vlbe_ale_elem_init(el, mat, flags, nm, nl, nt)  element type, Gauss tables
@@ -174,6 +182,7 @@ typedef struct vlbe_ale_elem {
     unsigned flags;
     vlbe_ale_rule rm, rl, rt; /* mass/inertia/loads, axial, bending */
     vlbe_ale_gp ends[2];
+    vlbe_real b3[4]; /* third xi-derivatives of the Hermite functions (constants) */
 } vlbe_ale_elem;
 
 /* -- API prototypes ----------------------------------------------------- */
@@ -249,6 +258,12 @@ VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *m
     if ((st = vlbe__ale_rule(&el->rt, nt, 5)) != VLBE_OK) return st;
     vlbe__ale_gp_fill(&el->ends[0], VLBE_R(0.0), VLBE_R(0.0));
     vlbe__ale_gp_fill(&el->ends[1], VLBE_R(1.0), VLBE_R(0.0));
+    {
+        vlbe_herm_ale b;
+        int j;
+        vlbe_herm_ale_eval(VLBE_R(0.0), VLBE_R(0.0), VLBE_R(1.0), 3, 0, &b);
+        for (j = 0; j < 4; ++j) el->b3[j] = b.h[3][0][j];
+    }
     el->mat = *mat;
     el->flags = flags;
     return VLBE_OK;
@@ -574,15 +589,11 @@ static inline vlbe_real vlbe__ale_eps(const vlbe_real *r1, vlbe_real *gy, vlbe_r
 /* Signed curvature from r1 = r', r2 = r'': kap = (r' x r'') |r'|^-3,
    gradient in y = (r', r''), Hessian when H != NULL.  VLBE_ESINGULAR for
    |r'|^2 <= eps. */
-static inline vlbe_status vlbe__ale_kap(const vlbe_real *r1, const vlbe_real *r2, vlbe_real *kap,
-                                        vlbe_real *gy, vlbe_real *H)
+static inline void vlbe__ale_kap_t(const vlbe_real *r1, const vlbe_real *r2, vlbe_real t,
+                                   vlbe_real g32, vlbe_real *kap, vlbe_real *gy, vlbe_real *H)
 {
-    const vlbe_real gg = vlbe_v2_dot(r1, r1);
-    vlbe_real t, g32, k, sy[4], gv[4];
+    vlbe_real k, sy[4], gv[4];
     int a, c;
-    if (!(gg > VLBE_EPS)) return VLBE_ESINGULAR;
-    t = VLBE_R(1.0) / gg;
-    g32 = t * vlbe_sqrt(t);
     k = vlbe_v2_cross(r1, r2) * g32;
     /* s = r' x r'' and g = r'.r', differentiated in (r'x, r'y, r''x, r''y) */
     sy[0] = r2[1];
@@ -606,6 +617,16 @@ static inline vlbe_status vlbe__ale_kap(const vlbe_real *r1, const vlbe_real *r2
         H[5] -= VLBE_R(3.0) * k * t;
     }
     *kap = k;
+}
+
+static inline vlbe_status vlbe__ale_kap(const vlbe_real *r1, const vlbe_real *r2, vlbe_real *kap,
+                                        vlbe_real *gy, vlbe_real *H)
+{
+    const vlbe_real gg = vlbe_v2_dot(r1, r1);
+    vlbe_real t;
+    if (!(gg > VLBE_EPS)) return VLBE_ESINGULAR;
+    t = VLBE_R(1.0) / gg;
+    vlbe__ale_kap_t(r1, r2, t, t * vlbe_sqrt(t), kap, gy, H);
     return VLBE_OK;
 }
 
@@ -740,6 +761,143 @@ static inline vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe
     return VLBE_OK;
 }
 
+/* Q alone (K = D = NULL): the inertia/load, axial and bending terms in
+   straight-line code per point.  Only the p-derivative rows N, N', N'' of
+   the basis are scaled; every p1/p2 partial comes from the identity of
+   NOTES applied to one function: at fixed p, d/dp2 N^(c)_j = ((m_j - c)/L)
+   N^(c)_j - xi N^(c+1)_j, and d/dp1 = -(d/dp2 + d/dp).  Summed over the
+   nodes (E^(c), O^(c): the parts of r^(c) from the positions, the slopes):
+       Y2_c = dr^(c)/dp2 = (O^(c) - c r^(c))/L - xi r^(c+1),
+       Y1_c = dr^(c)/dp1 = -Y2_c - r^(c+1),        (r''' is constant)
+   and, with A = p1' d/dp1 + p2' d/dp2 = (p2' - p1') d/dp2 - p1' d/dp and
+   s = p1' + xi (p2' - p1'), the transport acceleration (eq. 15)
+       r_v = 2 A v + A^2 r = 2 ((p2' - p1') O_v/L - s v') + 2 (p2' - p1') s E'/L + s^2 r''
+   (v = S e', O_v its slope part).  The material rate of r^(c) (the
+   damping) is v^(c) + (p2' - p1') Y2_c - p1' r^(c+1).  Agrees with the
+   Gauss-point route of the Jacobian calls to rounding (test). */
+static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp, int bend,
+                                      int shared, const vlbe_real *Lp, const vlbe_real *pd,
+                                      const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q)
+{
+    const vlbe_ale_mat *mt = &el->mat;
+    const vlbe_real *e0 = q, *e1 = q + 2, *e2 = q + 5, *e3 = q + 7;
+    const vlbe_real *u0 = qd, *u1 = qd + 2, *u2 = qd + 5, *u3 = qd + 7;
+    const vlbe_real L = Lp[5], Li = Lp[3], a = pd[0], dl = pd[1] - pd[0];
+    const vlbe_real cE = damp ? mt->c_eps * mt->EA : VLBE_R(0.0);
+    const vlbe_real cB = damp ? mt->c_kap * mt->EI : VLBE_R(0.0);
+    vlbe_real r3[2], R1[VLBE_ALE_NGP_MAX][2], gt[VLBE_ALE_NGP_MAX], g3[VLBE_ALE_NGP_MAX];
+    int g, b, pass;
+    for (b = 0; b < 2; ++b)
+        r3[b] = Lp[1] * (el->b3[0] * e0[b] + el->b3[2] * e2[b]) +
+                Lp[2] * (el->b3[1] * e1[b] + el->b3[3] * e3[b]);
+
+    /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19) */
+    for (g = 0; g < el->rm.n; ++g) {
+        const vlbe_ale_gp *gp = &el->rm.g[g];
+        const vlbe_real *b0 = gp->b[0][0], *b1 = gp->b[1][0], *b2 = gp->b[2][0];
+        const vlbe_real w = gp->w * L, xi = gp->xi, s = a + xi * dl;
+        const vlbe_real n0 = b0[0], n1 = b0[1] * L, n2 = b0[2], n3 = b0[3] * L;
+        vlbe_real z[2], Y1[2] = {0, 0}, Y2[2] = {0, 0};
+        for (b = 0; b < 2; ++b) {
+            z[b] = mt->f[b];
+            if (pm) {
+                const vlbe_real E1 = Li * (b1[0] * e0[b] + b1[2] * e2[b]);
+                const vlbe_real r1 = E1 + b1[1] * e1[b] + b1[3] * e3[b];
+                const vlbe_real r2 = Lp[2] * (b2[0] * e0[b] + b2[2] * e2[b]) +
+                                     Li * (b2[1] * e1[b] + b2[3] * e3[b]);
+                const vlbe_real v1 = Li * (b1[0] * u0[b] + b1[2] * u2[b]) + b1[1] * u1[b] +
+                                     b1[3] * u3[b];
+                const vlbe_real Ov = n1 * u1[b] + n3 * u3[b];
+                const vlbe_real rv = VLBE_R(2.0) * (dl * Ov * Li - s * v1 + dl * s * Li * E1) +
+                                     s * s * r2;
+                Y2[b] = (n1 * e1[b] + n3 * e3[b]) * Li - xi * r1;
+                Y1[b] = -Y2[b] - r1;
+                z[b] -= mt->rhoA * rv;
+            }
+        }
+        for (b = 0; b < 2; ++b) {
+            Q[0 + b] += w * n0 * z[b];
+            Q[2 + b] += w * n1 * z[b];
+            Q[5 + b] += w * n2 * z[b];
+            Q[7 + b] += w * n3 * z[b];
+        }
+        if (pm & 1) Q[4] += w * vlbe_v2_dot(Y1, z);
+        if (pm & 2) Q[9] += w * vlbe_v2_dot(Y2, z);
+    }
+
+    /* axial (with bending when the rules share the points), then bending */
+    for (pass = 0; pass < 2; ++pass) {
+        const int ax = pass == 0 && mt->EA != VLBE_R(0.0);
+        const int bd = pass == 0 ? shared : (bend && !shared);
+        const vlbe_ale_rule *ru = pass == 0 ? &el->rl : &el->rt;
+        if (!ax && !bd) continue;
+        /* r' first at every point, then the curvature factors |r'|^-2,
+           |r'|^-3 of all points together: their divisions and square roots
+           overlap instead of each ending a dependency chain */
+        for (g = 0; g < ru->n; ++g) {
+            const vlbe_real *b1 = ru->g[g].b[1][0];
+            for (b = 0; b < 2; ++b)
+                R1[g][b] = Li * (b1[0] * e0[b] + b1[2] * e2[b]) + b1[1] * e1[b] + b1[3] * e3[b];
+            gt[g] = vlbe_v2_dot(R1[g], R1[g]);
+        }
+        if (bd) {
+            for (g = 0; g < ru->n; ++g)
+                if (!(gt[g] > VLBE_EPS)) return VLBE_ESINGULAR;
+            for (g = 0; g < ru->n; ++g) {
+                gt[g] = VLBE_R(1.0) / gt[g];
+                g3[g] = gt[g] * vlbe_sqrt(gt[g]);
+            }
+        }
+        for (g = 0; g < ru->n; ++g) {
+            const vlbe_ale_gp *gp = &ru->g[g];
+            const vlbe_real *b1 = gp->b[1][0], *b2 = gp->b[2][0];
+            const vlbe_real w = gp->w * L, xi = gp->xi;
+            const vlbe_real n10 = b1[0] * Li, n11 = b1[1], n12 = b1[2] * Li, n13 = b1[3];
+            const vlbe_real n20 = b2[0] * Lp[2], n21 = b2[1] * Li, n22 = b2[2] * Lp[2],
+                            n23 = b2[3] * Li;
+            const vlbe_real *r1 = R1[g];
+            vlbe_real r2[2], Y1[4], Y2[4], yd[4] = {0, 0, 0, 0}, G[4] = {0, 0, 0, 0};
+            vlbe_real gy[4], sig, kap;
+            for (b = 0; b < 2; ++b) {
+                const vlbe_real E1 = Li * (b1[0] * e0[b] + b1[2] * e2[b]);
+                const vlbe_real E2 = n20 * e0[b] + n22 * e2[b], O2 = n21 * e1[b] + n23 * e3[b];
+                r2[b] = E2 + O2;
+                Y2[b] = -E1 * Li - xi * r2[b];
+                Y1[b] = -Y2[b] - r2[b];
+                Y2[2 + b] = -(VLBE_R(2.0) * E2 + O2) * Li - xi * r3[b];
+                Y1[2 + b] = -Y2[2 + b] - r3[b];
+                if (damp) {
+                    yd[b] = n10 * u0[b] + n11 * u1[b] + n12 * u2[b] + n13 * u3[b] + dl * Y2[b] -
+                            a * r2[b];
+                    yd[2 + b] = n20 * u0[b] + n21 * u1[b] + n22 * u2[b] + n23 * u3[b] +
+                                dl * Y2[2 + b] - a * r3[b];
+                }
+            }
+            if (ax) {
+                const vlbe_real eps = vlbe__ale_eps(r1, gy, NULL);
+                sig = mt->EA * eps + cE * (gy[0] * yd[0] + gy[1] * yd[1]);
+                G[0] = sig * gy[0];
+                G[1] = sig * gy[1];
+            }
+            if (bd) {
+                vlbe__ale_kap_t(r1, r2, gt[g], g3[g], &kap, gy, NULL);
+                sig = mt->EI * kap +
+                      cB * (gy[0] * yd[0] + gy[1] * yd[1] + gy[2] * yd[2] + gy[3] * yd[3]);
+                for (b = 0; b < 4; ++b) G[b] += sig * gy[b];
+            }
+            for (b = 0; b < 2; ++b) {
+                Q[0 + b] -= w * (n10 * G[b] + n20 * G[2 + b]);
+                Q[2 + b] -= w * (n11 * G[b] + n21 * G[2 + b]);
+                Q[5 + b] -= w * (n12 * G[b] + n22 * G[2 + b]);
+                Q[7 + b] -= w * (n13 * G[b] + n23 * G[2 + b]);
+            }
+            if (pm & 1) Q[4] -= w * (G[0] * Y1[0] + G[1] * Y1[1] + G[2] * Y1[2] + G[3] * Y1[3]);
+            if (pm & 2) Q[9] -= w * (G[0] * Y2[0] + G[1] * Y2[1] + G[2] * Y2[2] + G[3] * Y2[3]);
+        }
+    }
+    return VLBE_OK;
+}
+
 /* The inertia/load, axial and bending terms: Q always, and K and D when K is
    given (e- and p'-columns directly, then the p-columns by the scaling
    identity).  Q, K, D are the caller's zeroed locals. */
@@ -760,7 +918,12 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     vlbe__ale_lpow(L, Lp);
     pd[0] = (pm & 1) ? qd[4] : VLBE_R(0.0);
     pd[1] = (pm & 2) ? qd[9] : VLBE_R(0.0);
-    if (jac) {
+    if (!jac) {
+        if ((st = vlbe__ale_q(el, pm, damp, bend, shared, Lp, pd, q, qd, Q)) != VLBE_OK) return st;
+        if (mode & VLBE_ALE_CONSERVATIVE) return vlbe__ale_flux(el, pm, bend, q, L, Q, NULL, NULL);
+        return VLBE_OK;
+    }
+    {
         for (i = 0; i < 10; ++i) dQx[i] = VLBE_R(0.0);
         for (i = 0; i < 80; ++i) Ke[i] = De[i] = VLBE_R(0.0);
     }
