@@ -648,8 +648,9 @@ VLBE_API vlbe_status vlbe_cr2d_energy(const vlbe_cr2d_elem *el, unsigned mode, c
     vlbe__cr2d_kin k;
     vlbe_real m[36], u[6], mu[6];
     vlbe_status st;
-    const vlbe_real L = el->L;
+    vlbe_real L;
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
+    L = el->L;
     mode |= el->flags;
     if ((st = vlbe__cr2d_check(q, qd)) != VLBE_OK) return st;
     if ((st = vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0, q, &k)) != VLBE_OK)
