@@ -63,6 +63,26 @@ CONVENTIONS
         M(q) q'' = Q(q, q'),   Q = -(f^d + f^i_nl + f^v)  (global),
    K = dQ/dq, D = dQ/dq'.  Matrices 6x6 row-major in the order of q.
 
+   Transition element (section 2.5, vlbe_cr2d_trans_*): an element that
+   straddles the exit C of a prismatic joint (axis a, vlbe_cr2d_joint).
+   Node 1 is inside: the joint holds its lateral position and rotation
+   (constraints of the caller's model, no force from this element on
+   them), its axial coordinate a.x1 is the element's; node 2 is outside.
+   The inside segment (undeformed length L1) is straight along a; the
+   outside one (L2 = L - L1) runs from C to node 2 with the slope a at C
+   (theta3 = angle of a against the chord C -> x2, eq. 35) and theta2 at
+   node 2; L1, L2 follow from the uniform extension (eq. 24) exactly (no
+   first-order expansion, eq. 26), U = EA L eps0^2/2 + EI (2 theta3^2 + 2
+   theta3 theta2 + 2 theta2^2)/L2, inertia m_a over L (axial: a.x1 and
+   e1.x2), m_b over L2 on (v2, phi2) and the velocity terms of eqs. 45-46;
+   damping alpha m + beta k0 with k0 over L (axial) and L2 (bending).
+   Forces and Jacobians are exact derivatives, including those of L2(q).
+   With node 1 at the exit (L1 = 0) it has the energy, the mass and the
+   node-2 forces of the conventional element with theta1 = theta3; the
+   force on node 1's axial coordinate differs by the change of L2 (the
+   bending and the extension of the material drawn into the joint), which
+   the conventional element does not model.
+
    Mode flags (vlbe_cr2d_elem_init: defaults of the element; the eval
    functions OR their mode argument into them):
      VLBE_CR2D_LINEAR   linear element: small displacements about the
@@ -75,7 +95,12 @@ CONVENTIONS
    Errors: VLBE_ENONFINITE for NaN/Inf in q, q' or an acceleration;
    VLBE_ELENGTH when the chord length l <= L * 1e-6 (the frame is
    undefined); vlbe_cr2d_elem_init: VLBE_ELENGTH for X1 = X2, VLBE_EARG /
-   VLBE_ENONFINITE for a bad material.  On failure no output is written.
+   VLBE_ENONFINITE for a bad material.  Transition element: VLBE_EBOUND
+   when node 1 is not inside the joint (a.(C - x1) < 0), node 2 not outside
+   (a.(x2 - C) <= 0, or |x2 - C| <= 1e-6 L) or L2 <= 1e-6 L; VLBE_EARG for
+   |a| != 1, a non-finite C or the LINEAR mode (no linear transition
+   element); VLBE_ESINGULAR when eq. 24 has no solution.  On failure no
+   output is written.
    Stack: under 2 kB per call.
 
 API
@@ -85,6 +110,9 @@ API
    vlbe_status vlbe_cr2d_mass_jac(el, mode, q, a, Mq)        d(M a)/dq, 6x6
    vlbe_status vlbe_cr2d_energy(el, mode, q, qd, E)          E = {T, U}: kinetic (q'^T M q'/2), strain
    vlbe_status vlbe_cr2d_local(el, mode, q, loc)             loc = {l, theta1, theta2, eps0}
+   transition element at the joint jt (node 1 inside, node 2 outside):
+   vlbe_status vlbe_cr2d_trans_force / _mass / _mass_jac / _energy(el, jt, mode, ...)  as above
+   vlbe_status vlbe_cr2d_trans_local(el, jt, mode, q, loc)   loc = {l1, l2, theta3, theta2, eps0, L1}
    beams (element e joins nodes e, e + 1; loads P; prescribed coordinates):
    vlbe_status vlbe_cr2d_beam_init(b, el, ne, fix, nfix)     n = 3 (ne + 1), m = nfix
    void vlbe_cr2d_fix_eval(f, t, g3)                         g, g', g'' of a prescribed coordinate
@@ -94,8 +122,7 @@ API
 
 REFERENCES
    [H] K. M. Hsiao, T. F. Liu, M. H. Tsai, Geometrically nonlinear dynamic
-       analysis of sliding beam, NSC 93-2211-E-009-026 (2005), eqs. 1-22,
-       50-53.
+       analysis of sliding beam, NSC 93-2211-E-009-026 (2005), eqs. 1-53.
    K. M. Hsiao, R. T. Yang, A. C. Lee, A consistent finite element
        formulation for non-linear dynamic analysis of planar beam, Int. J.
        Numer. Meth. Engng. 37 (1994) 75-89.
@@ -138,6 +165,13 @@ typedef struct vlbe_cr2d_elem {
     unsigned flags;
 } vlbe_cr2d_elem;
 
+/* The prismatic joint of the transition element: exit point C, unit axis
+   a pointing out of the joint (toward the free part of the beam). */
+typedef struct vlbe_cr2d_joint {
+    vlbe_real C[2];
+    vlbe_real a[2];
+} vlbe_cr2d_joint;
+
 /* -- API prototypes ----------------------------------------------------- */
 VLBE_API vlbe_status vlbe_cr2d_elem_init(vlbe_cr2d_elem *el, const vlbe_cr2d_mat *mat,
                                          const vlbe_real *X1, const vlbe_real *X2,
@@ -154,6 +188,23 @@ VLBE_API vlbe_status vlbe_cr2d_energy(const vlbe_cr2d_elem *el, unsigned mode, c
                                       const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E);
 VLBE_API vlbe_status vlbe_cr2d_local(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
                                      vlbe_real *VLBE_RESTRICT loc);
+VLBE_API vlbe_status vlbe_cr2d_trans_force(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                           unsigned mode, const vlbe_real *q, const vlbe_real *qd,
+                                           vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K,
+                                           vlbe_real *VLBE_RESTRICT D);
+VLBE_API vlbe_status vlbe_cr2d_trans_mass(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                          unsigned mode, const vlbe_real *q,
+                                          vlbe_real *VLBE_RESTRICT M);
+VLBE_API vlbe_status vlbe_cr2d_trans_mass_jac(const vlbe_cr2d_elem *el,
+                                              const vlbe_cr2d_joint *jt, unsigned mode,
+                                              const vlbe_real *q, const vlbe_real *a,
+                                              vlbe_real *VLBE_RESTRICT Mq);
+VLBE_API vlbe_status vlbe_cr2d_trans_energy(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                            unsigned mode, const vlbe_real *q,
+                                            const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E);
+VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                           unsigned mode, const vlbe_real *q,
+                                           vlbe_real *VLBE_RESTRICT loc);
 
 /* ===== implementation =================================================== */
 
@@ -200,134 +251,191 @@ static const short vlbe__cr2d_tab[3][4][4] = {
     {{12, 6, -12, 6}, {6, 4, -6, 2}, {-12, -6, 12, -6}, {6, 2, -6, 4}}};
 enum { VLBE__CR2D_NN = 0, VLBE__CR2D_N1N1 = 1, VLBE__CR2D_N2N2 = 2 };
 
-/* out (stride ld, at the rows/columns ib) += c * table t with its L powers */
-static inline void vlbe__cr2d_herm(int t, vlbe_real c, vlbe_real L, const int *ib, int ld,
-                                   vlbe_real *out)
+/* x^e for a small integer e */
+static inline vlbe_real vlbe__cr2d_ipow(vlbe_real x, int e)
+{
+    vlbe_real r = VLBE_R(1.0);
+    const vlbe_real b = e < 0 ? VLBE_R(1.0) / x : x;
+    int i;
+    for (i = 0; i < (e < 0 ? -e : e); ++i) r *= b;
+    return r;
+}
+
+/* out (stride ld, at the rows/columns ib; ib < 0: skipped) += c * table t
+   * L^(p + e), p = (i & 1) + (j & 1) the L powers of the table; dout (may
+   be NULL) += its L-derivative. */
+static inline void vlbe__cr2d_herm(int t, vlbe_real c, int e, vlbe_real L, const int *ib, int ld,
+                                   vlbe_real *out, vlbe_real *dout)
 {
     int i, j;
     for (i = 0; i < 4; ++i)
         for (j = 0; j < 4; ++j) {
-            const int p = (i & 1) + (j & 1);
-            out[ib[i] * ld + ib[j]] +=
-                c * (vlbe_real)vlbe__cr2d_tab[t][i][j] * (p == 0 ? VLBE_R(1.0) : (p == 1 ? L : L * L));
+            const int p = (i & 1) + (j & 1) + e;
+            const vlbe_real v = c * (vlbe_real)vlbe__cr2d_tab[t][i][j];
+            if (ib[i] < 0 || ib[j] < 0) continue;
+            out[ib[i] * ld + ib[j]] += v * vlbe__cr2d_ipow(L, p);
+            if (dout) dout[ib[i] * ld + ib[j]] += v * (vlbe_real)p * vlbe__cr2d_ipow(L, p - 1);
         }
 }
 
 static const int vlbe__cr2d_ib[4] = {1, 2, 4, 5}; /* v1, phi1, v2, phi2 in the 6-order */
 static const int vlbe__cr2d_i4[4] = {0, 1, 2, 3};
 
-/* m = m_a (+) m_b (eq. 22, the rotary term with rhoI) */
-static inline void vlbe__cr2d_mloc(const vlbe_cr2d_elem *el, vlbe_real *m)
+static const int vlbe__cr2d_ib2[4] = {-1, -1, 4, 5}; /* the transition's v2, phi2 */
+
+/* Local mass m and linear stiffness k0 (either may be NULL) of a
+   conventional element (tr = 0: m_a, k_a over L and m_b, k_b over L) or of
+   the transition element (tr = 1: m_a, k_a over L; m_b, k_b of the outside
+   segment over L2 on v2, phi2 only, eqs. 48-49); dm, dk0 (transition, may
+   be NULL): their L2-derivatives.  m_b with rhoI (eq. 22 prints rhoA on the
+   rotary term; eq. 19 shows rhoI). */
+static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L2, vlbe_real *m,
+                                   vlbe_real *k0, vlbe_real *dm, vlbe_real *dk0)
 {
-    const vlbe_real L = el->L, ma = el->mat.rhoA * L / VLBE_R(6.0);
+    const vlbe_real L = el->L, ma = el->mat.rhoA * L / VLBE_R(6.0), ka = el->mat.EA / L;
+    const int *ib = tr ? vlbe__cr2d_ib2 : vlbe__cr2d_ib;
     int i;
-    for (i = 0; i < 36; ++i) m[i] = VLBE_R(0.0);
-    m[0 * 6 + 0] = m[3 * 6 + 3] = VLBE_R(2.0) * ma;
-    m[0 * 6 + 3] = m[3 * 6 + 0] = ma;
-    vlbe__cr2d_herm(VLBE__CR2D_NN, el->mat.rhoA * L / VLBE_R(420.0), L, vlbe__cr2d_ib, 6, m);
-    vlbe__cr2d_herm(VLBE__CR2D_N1N1, el->mat.rhoI / (VLBE_R(30.0) * L), L, vlbe__cr2d_ib, 6, m);
+    if (m) {
+        for (i = 0; i < 36; ++i) m[i] = VLBE_R(0.0);
+        if (dm)
+            for (i = 0; i < 36; ++i) dm[i] = VLBE_R(0.0);
+        m[0 * 6 + 0] = m[3 * 6 + 3] = VLBE_R(2.0) * ma;
+        m[0 * 6 + 3] = m[3 * 6 + 0] = ma;
+        vlbe__cr2d_herm(VLBE__CR2D_NN, el->mat.rhoA / VLBE_R(420.0), 1, L2, ib, 6, m, dm);
+        vlbe__cr2d_herm(VLBE__CR2D_N1N1, el->mat.rhoI / VLBE_R(30.0), -1, L2, ib, 6, m, dm);
+    }
+    if (k0) {
+        for (i = 0; i < 36; ++i) k0[i] = VLBE_R(0.0);
+        if (dk0)
+            for (i = 0; i < 36; ++i) dk0[i] = VLBE_R(0.0);
+        k0[0 * 6 + 0] = k0[3 * 6 + 3] = ka;
+        k0[0 * 6 + 3] = k0[3 * 6 + 0] = -ka;
+        vlbe__cr2d_herm(VLBE__CR2D_N2N2, el->mat.EI, -3, L2, ib, 6, k0, dk0);
+    }
 }
 
-/* G_b = int N_b' N_b'^T dx (4x4 on v1, phi1, v2, phi2) */
-static inline void vlbe__cr2d_gb(vlbe_real L, vlbe_real *G)
+/* G_b = int N_b' N_b'^T dx over a length L2 (4x4 on v1, phi1, v2, phi2),
+   dG (may be NULL) its L2-derivative */
+static inline void vlbe__cr2d_gb(vlbe_real L2, vlbe_real *G, vlbe_real *dG)
 {
     int i;
     for (i = 0; i < 16; ++i) G[i] = VLBE_R(0.0);
-    vlbe__cr2d_herm(VLBE__CR2D_N1N1, VLBE_R(1.0) / (VLBE_R(30.0) * L), L, vlbe__cr2d_i4, 4, G);
+    if (dG)
+        for (i = 0; i < 16; ++i) dG[i] = VLBE_R(0.0);
+    vlbe__cr2d_herm(VLBE__CR2D_N1N1, VLBE_R(1.0) / VLBE_R(30.0), -1, L2, vlbe__cr2d_i4, 4, G, dG);
 }
 
-/* k0: linear stiffness (EA/L axial, EI int N_b'' N_b''^T) */
-static inline void vlbe__cr2d_k0loc(const vlbe_cr2d_elem *el, vlbe_real *k)
+/* -- the rotation T into the element frame ------------------------------ */
+/* Per node a frame (c, s = cos, sin of its angle): the chord for a
+   conventional element; for the transition element the joint axis at node
+   1 and the outside segment's chord at node 2.  rot[k]: node k's frame
+   turns with the chord angle b (the q-dependence of T). */
+typedef struct vlbe__cr2d_fr {
+    vlbe_real c[2], s[2];
+    int rot[2];
+} vlbe__cr2d_fr;
+
+static inline void vlbe__cr2d_fr_set(vlbe__cr2d_fr *f, vlbe_real c1, vlbe_real s1, int r1,
+                                     vlbe_real c2, vlbe_real s2, int r2)
 {
-    const vlbe_real L = el->L, ka = el->mat.EA / L;
-    int i;
-    for (i = 0; i < 36; ++i) k[i] = VLBE_R(0.0);
-    k[0 * 6 + 0] = k[3 * 6 + 3] = ka;
-    k[0 * 6 + 3] = k[3 * 6 + 0] = -ka;
-    vlbe__cr2d_herm(VLBE__CR2D_N2N2, el->mat.EI / (L * L * L), L, vlbe__cr2d_ib, 6, k);
+    f->c[0] = c1;
+    f->s[0] = s1;
+    f->rot[0] = r1;
+    f->c[1] = c2;
+    f->s[1] = s2;
+    f->rot[1] = r2;
 }
 
-/* -- the rotation T into the element frame (c, s = cos, sin of its angle) - */
 /* y = T x: per node (u, v) = (c x + s y, -s x + c y), phi unchanged */
-static inline void vlbe__cr2d_to_loc(vlbe_real c, vlbe_real s, const vlbe_real *x, vlbe_real *y)
+static inline void vlbe__cr2d_to_loc(const vlbe__cr2d_fr *f, const vlbe_real *x, vlbe_real *y)
 {
     int k;
-    for (k = 0; k < 6; k += 3) {
-        const vlbe_real a = x[k], b = x[k + 1];
-        y[k] = c * a + s * b;
-        y[k + 1] = -s * a + c * b;
-        y[k + 2] = x[k + 2];
+    for (k = 0; k < 2; ++k) {
+        const vlbe_real a = x[3 * k], b = x[3 * k + 1], c = f->c[k], s = f->s[k];
+        y[3 * k] = c * a + s * b;
+        y[3 * k + 1] = -s * a + c * b;
+        y[3 * k + 2] = x[3 * k + 2];
     }
 }
 
 /* x = T^T y */
-static inline void vlbe__cr2d_to_glob(vlbe_real c, vlbe_real s, const vlbe_real *y, vlbe_real *x)
+static inline void vlbe__cr2d_to_glob(const vlbe__cr2d_fr *f, const vlbe_real *y, vlbe_real *x)
 {
     int k;
-    for (k = 0; k < 6; k += 3) {
-        const vlbe_real a = y[k], b = y[k + 1];
-        x[k] = c * a - s * b;
-        x[k + 1] = s * a + c * b;
-        x[k + 2] = y[k + 2];
+    for (k = 0; k < 2; ++k) {
+        const vlbe_real a = y[3 * k], b = y[3 * k + 1], c = f->c[k], s = f->s[k];
+        x[3 * k] = c * a - s * b;
+        x[3 * k + 1] = s * a + c * b;
+        x[3 * k + 2] = y[3 * k + 2];
     }
 }
 
 /* G += T^T A T (A local 6x6) */
-static inline void vlbe__cr2d_congr(vlbe_real c, vlbe_real s, const vlbe_real *A, vlbe_real *G)
+static inline void vlbe__cr2d_congr(const vlbe__cr2d_fr *f, const vlbe_real *A, vlbe_real *G)
 {
     vlbe_real B[36], col[6], out[6];
     int i, j;
     /* B = A T: row i of A T is r T = (T^T r^T)^T, r the row i of A */
-    for (i = 0; i < 6; ++i) vlbe__cr2d_to_glob(c, s, A + i * 6, B + i * 6);
+    for (i = 0; i < 6; ++i) vlbe__cr2d_to_glob(f, A + i * 6, B + i * 6);
     for (j = 0; j < 6; ++j) {
         for (i = 0; i < 6; ++i) col[i] = B[i * 6 + j];
-        vlbe__cr2d_to_glob(c, s, col, out);
+        vlbe__cr2d_to_glob(f, col, out);
         for (i = 0; i < 6; ++i) G[i * 6 + j] += out[i];
     }
 }
 
-/* d(T x)/db = Jt (T x): per node (u, v) -> (v, -u);  d(T^T y)/db = T^T Jf y,
-   Jf: (u, v) -> (-v, u). */
-static inline void vlbe__cr2d_jt(const vlbe_real *u, vlbe_real *y)
-{
-    int k;
-    for (k = 0; k < 6; k += 3) {
-        y[k] = u[k + 1];
-        y[k + 1] = -u[k];
-        y[k + 2] = VLBE_R(0.0);
-    }
-}
-
-/* K[:, :] += g_b^T outer: K_ij += x_i gb_j, x = T^T (Jf f + A Jt u) the
-   derivative of T^T (f(T q') ...) in the frame angle (A = df/du local,
-   f local force, u = T q' local rate) */
-static inline void vlbe__cr2d_frame_col(vlbe_real c, vlbe_real s, const vlbe_real *f,
+/* K_ij += x_i gb_j with x = d(T^T f(T u_g))/db = T^T (Jf f + A Jt u): the
+   part of a Jacobian that comes from the turning of the frame (A = df/du
+   local, f the local force, u = T u_g the local rate or acceleration);
+   per turning node d(T x)/db = Jt (T x), Jt: (u, v) -> (v, -u), and
+   d(T^T y)/db = T^T Jf y, Jf: (u, v) -> (-v, u). */
+static inline void vlbe__cr2d_frame_col(const vlbe__cr2d_fr *fr, const vlbe_real *f,
                                         const vlbe_real *A, const vlbe_real *u,
                                         const vlbe_real *gb, vlbe_real *K)
 {
     vlbe_real ju[6], y[6], x[6];
-    int i, j;
-    vlbe__cr2d_jt(u, ju);
+    int i, j, k;
+    for (k = 0; k < 2; ++k) {
+        ju[3 * k] = fr->rot[k] ? u[3 * k + 1] : VLBE_R(0.0);
+        ju[3 * k + 1] = fr->rot[k] ? -u[3 * k] : VLBE_R(0.0);
+        ju[3 * k + 2] = VLBE_R(0.0);
+    }
     for (i = 0; i < 6; ++i) {
         vlbe_real t = VLBE_R(0.0);
         for (j = 0; j < 6; ++j) t += A[i * 6 + j] * ju[j];
         y[i] = t;
     }
-    for (i = 0; i < 6; i += 3) { /* Jf f */
-        y[i] -= f[i + 1];
-        y[i + 1] += f[i];
-    }
-    vlbe__cr2d_to_glob(c, s, y, x);
+    for (k = 0; k < 2; ++k)
+        if (fr->rot[k]) { /* Jf f */
+            y[3 * k] -= f[3 * k + 1];
+            y[3 * k + 1] += f[3 * k];
+        }
+    vlbe__cr2d_to_glob(fr, y, x);
     for (i = 0; i < 6; ++i)
         for (j = 0; j < 6; ++j) K[i * 6 + j] += x[i] * gb[j];
 }
 
 /* -- kinematics ---------------------------------------------------------- */
+/* The element's current frame and deformation measures.  Conventional:
+   chord x1 -> x2 of length l, theta_j = a0 + phi_j - b, the bending length
+   L2 = L.  Transition (jt != NULL, section 2.5): node 1 inside the joint at
+   the distance l1 from its exit C, the outside segment's chord C -> x2 of
+   length l (= l2), theta = (theta3, theta2) with theta3 the angle of the
+   joint axis against that chord (the slope at C, eq. 35), L1 + L2 = L the
+   undeformed lengths inside and outside, eps = eps0 of eq. 24. */
 typedef struct vlbe__cr2d_kin {
-    vlbe_real c, s, l;  /* chord direction and length (LINEAR: c0, s0, L)   */
+    vlbe__cr2d_fr fr;   /* the element frame at both nodes                  */
+    vlbe_real c, s, l;  /* (outside) chord direction and length             */
     vlbe_real th[2];    /* deformation rotations                            */
-    vlbe_real eps;      /* eps0 (eq. 7)                                     */
+    vlbe_real eps;      /* eps0 (eqs. 7, 24)                                */
+    vlbe_real L2;       /* bending length                                   */
     vlbe_real gl[6], gb[6]; /* gradients of l and of the chord angle b      */
+    vlbe_real gL2[6];   /* gradient of L2 (transition; else 0)              */
+    /* transition only: y = (l1, l2, theta3, theta2), B = dy/dq (4 x 6), L1
+       and its y-derivatives, eps_v (eq. 25) */
+    int tr;
+    vlbe_real l1, L1, ev;
+    vlbe_real B[4][6], L1y[4], L1yy[16];
 } vlbe__cr2d_kin;
 
 static inline vlbe_status vlbe__cr2d_check(const vlbe_real *q, const vlbe_real *qd)
@@ -337,16 +445,52 @@ static inline vlbe_status vlbe__cr2d_check(const vlbe_real *q, const vlbe_real *
     return VLBE_OK;
 }
 
-/* Current chord, deformation rotations and eps0; LINEAR: the frame stays
-   at a0, theta_j = phi_j - (v2 - v1)/L and eps0 = (u2 - u1)/L in it. */
+/* Angle of the direction (ca, sa) against the chord (c, s), in (-pi, pi]. */
+static inline vlbe_real vlbe__cr2d_rel_angle(vlbe_real ca, vlbe_real sa, vlbe_real c, vlbe_real s)
+{
+    return vlbe_atan2(sa * c - ca * s, ca * c + sa * s);
+}
+
+/* theta of node j: the cross-section tangent a0 + phi_j against the chord;
+   sine and cosine only, so any number of accumulated turns is harmless */
+static inline vlbe_real vlbe__cr2d_theta(const vlbe_cr2d_elem *el, vlbe_real ph, vlbe_real c,
+                                         vlbe_real s)
+{
+    const vlbe_real cp = vlbe_cos(ph), sp = vlbe_sin(ph);
+    return vlbe__cr2d_rel_angle(el->c0 * cp - el->s0 * sp, el->s0 * cp + el->c0 * sp, c, s);
+}
+
+/* gradients of the chord length and angle; both = 0: the chord starts at
+   a fixed point */
+static inline void vlbe__cr2d_chord_grad(vlbe__cr2d_kin *k, int both)
+{
+    int i;
+    for (i = 0; i < 6; ++i) k->gl[i] = k->gb[i] = k->gL2[i] = VLBE_R(0.0);
+    k->gl[3] = k->c;
+    k->gl[4] = k->s;
+    k->gb[3] = -k->s / k->l;
+    k->gb[4] = k->c / k->l;
+    if (both) {
+        k->gl[0] = -k->c;
+        k->gl[1] = -k->s;
+        k->gb[0] = k->s / k->l;
+        k->gb[1] = -k->c / k->l;
+    }
+}
+
+/* Conventional element; LINEAR: the frame stays at a0, theta_j = phi_j -
+   (v2 - v1)/L and eps0 = (u2 - u1)/L in it. */
 static inline vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin, const vlbe_real *q,
                                               vlbe__cr2d_kin *k)
 {
     const vlbe_real L = el->L;
     int j;
+    k->tr = 0;
+    k->L2 = L;
     if (lin) {
         vlbe_real u[6];
-        vlbe__cr2d_to_loc(el->c0, el->s0, q, u);
+        vlbe__cr2d_fr_set(&k->fr, el->c0, el->s0, 0, el->c0, el->s0, 0);
+        vlbe__cr2d_to_loc(&k->fr, q, u);
         k->c = el->c0;
         k->s = el->s0;
         k->l = L;
@@ -361,30 +505,151 @@ static inline vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin,
         k->l = l;
         k->c = dx / l;
         k->s = dy / l;
-        for (j = 0; j < 2; ++j) {
-            /* direction of the cross-section normal's tangent: a0 + phi_j,
-               taken against e1 (sine and cosine of the difference) */
-            const vlbe_real ph = q[2 + 3 * j];
-            const vlbe_real cp = vlbe_cos(ph), sp = vlbe_sin(ph);
-            const vlbe_real ca = el->c0 * cp - el->s0 * sp, sa = el->s0 * cp + el->c0 * sp;
-            k->th[j] = vlbe_atan2(sa * k->c - ca * k->s, ca * k->c + sa * k->s);
-        }
+        vlbe__cr2d_fr_set(&k->fr, k->c, k->s, 1, k->c, k->s, 1);
+        for (j = 0; j < 2; ++j) k->th[j] = vlbe__cr2d_theta(el, q[2 + 3 * j], k->c, k->s);
         k->eps = (l - L) / L + (VLBE_R(4.0) * k->th[0] * k->th[0] -
                                 VLBE_R(2.0) * k->th[0] * k->th[1] +
                                 VLBE_R(4.0) * k->th[1] * k->th[1]) /
                                    VLBE_R(60.0);
     }
-    k->gl[0] = -k->c;
-    k->gl[1] = -k->s;
-    k->gl[3] = k->c;
-    k->gl[4] = k->s;
-    k->gl[2] = k->gl[5] = VLBE_R(0.0);
-    k->gb[0] = k->s / k->l;
-    k->gb[1] = -k->c / k->l;
-    k->gb[3] = -k->s / k->l;
-    k->gb[4] = k->c / k->l;
-    k->gb[2] = k->gb[5] = VLBE_R(0.0);
+    vlbe__cr2d_chord_grad(k, 1);
     return VLBE_OK;
+}
+
+/* Transition element (section 2.5).  Node 1 must be inside the joint or
+   at its exit (l1 = a.(C - x1) >= 0) and node 2 outside (a.(x2 - C) > 0),
+   else VLBE_EBOUND.  The undeformed lengths follow from the uniform
+   extension (eq. 24) without the first-order expansion of eq. 26:
+   l1/L1 = l2/L2 + eps_v with L1 + L2 = L and eps_v = (4 theta3^2 - 2 theta3
+   theta2 + 4 theta2^2)/60 (eq. 25 with the Hermite v), i.e. the smaller
+   root of F(L1) = eps_v L1^2 - (l1 + l2 + eps_v L) L1 + l1 L = 0, taken as
+   2 l1 L / (P + sqrt(P^2 - 4 eps_v l1 L)), P = l1 + l2 + eps_v L (no
+   cancellation; L1 = 0 exactly when l1 = 0: then the element is the
+   conventional one with theta1 = theta3).  Its y-derivatives by implicit
+   differentiation of F (linear in w = (l1, l2, eps_v) at fixed L1). */
+static inline vlbe_status vlbe__cr2d_kin_tr(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                            const vlbe_real *q, vlbe__cr2d_kin *k)
+{
+    const vlbe_real L = el->L, ax = jt->a[0], ay = jt->a[1];
+    const vlbe_real x1 = el->X[0] + q[0] - jt->C[0], y1 = el->X[1] + q[1] - jt->C[1];
+    const vlbe_real dx = el->X[2] + q[3] - jt->C[0], dy = el->X[3] + q[4] - jt->C[1];
+    const vlbe_real l1 = -(ax * x1 + ay * y1);
+    vlbe_real l, P, disc, FL, Fw[3], Lw[3], FLw[3], Lww[3][3], et[2], wy[3][4];
+    int i, j, a, b;
+    if (!(vlbe_fabs(ax * ax + ay * ay - VLBE_R(1.0)) <= VLBE_R(64.0) * VLBE_EPS) ||
+        !vlbe_all_finite(jt->C, 2))
+        return VLBE_EARG;
+    l = vlbe_sqrt(dx * dx + dy * dy);
+    if (!(l1 >= VLBE_R(0.0)) || !(ax * dx + ay * dy > VLBE_R(0.0)) || !(l > VLBE_R(1e-6) * L))
+        return VLBE_EBOUND;
+    k->tr = 1;
+    k->l1 = l1;
+    k->l = l;
+    k->c = dx / l;
+    k->s = dy / l;
+    vlbe__cr2d_fr_set(&k->fr, ax, ay, 0, k->c, k->s, 1);
+    k->th[0] = vlbe__cr2d_rel_angle(ax, ay, k->c, k->s);
+    k->th[1] = vlbe__cr2d_theta(el, q[5], k->c, k->s);
+    k->ev = (VLBE_R(4.0) * k->th[0] * k->th[0] - VLBE_R(2.0) * k->th[0] * k->th[1] +
+             VLBE_R(4.0) * k->th[1] * k->th[1]) /
+            VLBE_R(60.0);
+    P = l1 + l + k->ev * L;
+    disc = P * P - VLBE_R(4.0) * k->ev * l1 * L;
+    if (!(disc >= VLBE_R(0.0))) return VLBE_ESINGULAR;
+    k->L1 = VLBE_R(2.0) * l1 * L / (P + vlbe_sqrt(disc));
+    k->L2 = L - k->L1;
+    if (!(k->L2 > VLBE_R(1e-6) * L)) return VLBE_EBOUND;
+    k->eps = l / k->L2 + k->ev - VLBE_R(1.0);
+    /* dL1/dw = -F_w / F_L1, d2L1/dw2 = -(2 eps_v L1_w L1_w^T + F_L1w L1_w^T
+       + L1_w F_L1w^T) / F_L1 */
+    FL = VLBE_R(2.0) * k->ev * k->L1 - P;
+    Fw[0] = k->L2;
+    Fw[1] = -k->L1;
+    Fw[2] = -k->L1 * k->L2;
+    FLw[0] = FLw[1] = -VLBE_R(1.0);
+    FLw[2] = VLBE_R(2.0) * k->L1 - L;
+    for (a = 0; a < 3; ++a) Lw[a] = -Fw[a] / FL;
+    for (a = 0; a < 3; ++a)
+        for (b = 0; b < 3; ++b)
+            Lww[a][b] = -(VLBE_R(2.0) * k->ev * Lw[a] * Lw[b] + FLw[a] * Lw[b] + Lw[a] * FLw[b]) / FL;
+    et[0] = (VLBE_R(8.0) * k->th[0] - VLBE_R(2.0) * k->th[1]) / VLBE_R(60.0);
+    et[1] = (VLBE_R(8.0) * k->th[1] - VLBE_R(2.0) * k->th[0]) / VLBE_R(60.0);
+    for (a = 0; a < 3; ++a)
+        for (i = 0; i < 4; ++i) wy[a][i] = VLBE_R(0.0);
+    wy[0][0] = wy[1][1] = VLBE_R(1.0);
+    wy[2][2] = et[0];
+    wy[2][3] = et[1];
+    for (i = 0; i < 4; ++i) {
+        k->L1y[i] = Lw[0] * wy[0][i] + Lw[1] * wy[1][i] + Lw[2] * wy[2][i];
+        for (j = 0; j < 4; ++j) {
+            vlbe_real v = VLBE_R(0.0);
+            for (a = 0; a < 3; ++a)
+                for (b = 0; b < 3; ++b) v += wy[a][i] * Lww[a][b] * wy[b][j];
+            k->L1yy[i * 4 + j] = v;
+        }
+    }
+    /* + L1_eps_v d2 eps_v/dtheta2, d2 eps_v/dtheta2 = [[8, -2], [-2, 8]]/60 */
+    k->L1yy[2 * 4 + 2] += Lw[2] * VLBE_R(8.0) / VLBE_R(60.0);
+    k->L1yy[3 * 4 + 3] += Lw[2] * VLBE_R(8.0) / VLBE_R(60.0);
+    k->L1yy[2 * 4 + 3] -= Lw[2] * VLBE_R(2.0) / VLBE_R(60.0);
+    k->L1yy[3 * 4 + 2] -= Lw[2] * VLBE_R(2.0) / VLBE_R(60.0);
+    vlbe__cr2d_chord_grad(k, 0);
+    for (i = 0; i < 6; ++i) {
+        k->B[0][i] = VLBE_R(0.0);
+        k->B[1][i] = k->gl[i];
+        k->B[2][i] = -k->gb[i];
+        k->B[3][i] = -k->gb[i];
+    }
+    k->B[0][0] = -ax;
+    k->B[0][1] = -ay;
+    k->B[3][5] = VLBE_R(1.0);
+    for (i = 0; i < 6; ++i) {
+        vlbe_real v = VLBE_R(0.0);
+        for (a = 0; a < 4; ++a) v -= k->L1y[a] * k->B[a][i];
+        k->gL2[i] = v;
+    }
+    return VLBE_OK;
+}
+
+/* K += B^T H B for nl local variables with gradient rows B (nl x 6) and
+   local Hessian H (nl x nl). */
+static inline void vlbe__cr2d_bthb(int nl, const vlbe_real *B, const vlbe_real *H, vlbe_real *K)
+{
+    int i, j, a, b;
+    for (a = 0; a < nl; ++a)
+        for (b = 0; b < nl; ++b) {
+            const vlbe_real h = H[a * nl + b];
+            if (h == VLBE_R(0.0)) continue;
+            for (i = 0; i < 6; ++i) {
+                const vlbe_real hb = h * B[a * 6 + i];
+                for (j = 0; j < 6; ++j) K[i * 6 + j] += hb * B[b * 6 + j];
+            }
+        }
+}
+
+/* K += gl d2l/dq2 + gt d2(-b)/dq2 for a chord d = x2 - x1 of length l,
+   direction (c, s), angle b: d2l/dd2 = e2 e2^T / l, d2b/dd2 = -(e1 e2^T +
+   e2 e1^T) / l^2 (e1 e2^T + e2 e1^T = [[-2cs, c^2 - s^2], [c^2 - s^2,
+   2cs]]); gt is the sum of the forces on the angles theta = ... - b.
+   both = 0: the chord starts at a fixed point (only the x2 block). */
+static inline void vlbe__cr2d_chord_hess(vlbe_real c, vlbe_real s, vlbe_real l, vlbe_real gl,
+                                         vlbe_real gt, int both, vlbe_real *K)
+{
+    vlbe_real P[2][2];
+    const vlbe_real l2 = l * l;
+    int a, b;
+    P[0][0] = gl * s * s / l - gt * VLBE_R(2.0) * c * s / l2;
+    P[0][1] = P[1][0] = -gl * c * s / l + gt * (c * c - s * s) / l2;
+    P[1][1] = gl * c * c / l + gt * VLBE_R(2.0) * c * s / l2;
+    for (a = 0; a < 2; ++a)
+        for (b = 0; b < 2; ++b) {
+            K[(3 + a) * 6 + 3 + b] += P[a][b];
+            if (both) {
+                K[a * 6 + b] += P[a][b];
+                K[a * 6 + 3 + b] -= P[a][b];
+                K[(3 + a) * 6 + b] -= P[a][b];
+            }
+        }
 }
 
 /* -- deformation force (nonlinear): F = grad U, K = Hess U --------------- */
@@ -400,7 +665,7 @@ static inline void vlbe__cr2d_elastic(const vlbe_cr2d_elem *el, const vlbe__cr2d
     const vlbe_real g1 = EA * L * eps * a1 + EI / L * (VLBE_R(4.0) * t1 + VLBE_R(2.0) * t2);
     const vlbe_real g2 = EA * L * eps * a2 + EI / L * (VLBE_R(2.0) * t1 + VLBE_R(4.0) * t2);
     vlbe_real B[3][6];
-    int i, j, a, b;
+    int i;
     for (i = 0; i < 6; ++i) {
         B[0][i] = k->gl[i];
         B[1][i] = -k->gb[i];
@@ -413,187 +678,281 @@ static inline void vlbe__cr2d_elastic(const vlbe_cr2d_elem *el, const vlbe__cr2d
     {
         /* Hessian in (l, theta1, theta2) (eq. 21 plus the terms it drops) */
         const vlbe_real kg = EA * L * eps / VLBE_R(30.0), kb = EI / L;
-        vlbe_real H[3][3];
-        vlbe_real P[2][2], Hb[2][2];
-        const vlbe_real c = k->c, s = k->s, l = k->l;
-        const vlbe_real gsum = g1 + g2;
-        H[0][0] = EA / L;
-        H[0][1] = H[1][0] = EA * a1;
-        H[0][2] = H[2][0] = EA * a2;
-        H[1][1] = EA * L * a1 * a1 + VLBE_R(4.0) * kg + VLBE_R(4.0) * kb;
-        H[2][2] = EA * L * a2 * a2 + VLBE_R(4.0) * kg + VLBE_R(4.0) * kb;
-        H[1][2] = H[2][1] = EA * L * a1 * a2 - kg + VLBE_R(2.0) * kb;
-        for (a = 0; a < 3; ++a)
-            for (b = 0; b < 3; ++b) {
-                const vlbe_real h = H[a][b];
-                if (h == VLBE_R(0.0)) continue;
-                for (i = 0; i < 6; ++i) {
-                    const vlbe_real hb = h * B[a][i];
-                    for (j = 0; j < 6; ++j) K[i * 6 + j] += hb * B[b][j];
-                }
-            }
-        /* gl d2l/dd2 - (g1 + g2) d2b/dd2, d = x2 - x1: e2 e2^T / l and
-           -(e1 e2^T + e2 e1^T) / l^2 */
-        P[0][0] = gl * s * s / l;
-        P[0][1] = P[1][0] = -gl * c * s / l;
-        P[1][1] = gl * c * c / l;
-        Hb[0][0] = gsum * VLBE_R(2.0) * (-c * s) / (l * l);
-        Hb[0][1] = Hb[1][0] = gsum * (c * c - s * s) / (l * l);
-        Hb[1][1] = gsum * VLBE_R(2.0) * (c * s) / (l * l);
-        for (a = 0; a < 2; ++a)
-            for (b = 0; b < 2; ++b) {
-                /* -(g1+g2) * (-(e1 e2^T + e2 e1^T)/l^2): e1 e2^T + e2 e1^T =
-                   [[-2cs, c^2 - s^2], [c^2 - s^2, 2cs]] */
-                const vlbe_real v = P[a][b] + Hb[a][b];
-                K[a * 6 + b] += v;
-                K[(3 + a) * 6 + 3 + b] += v;
-                K[a * 6 + 3 + b] -= v;
-                K[(3 + a) * 6 + b] -= v;
-            }
+        vlbe_real H[9];
+        H[0] = EA / L;
+        H[1] = H[3] = EA * a1;
+        H[2] = H[6] = EA * a2;
+        H[4] = EA * L * a1 * a1 + VLBE_R(4.0) * kg + VLBE_R(4.0) * kb;
+        H[8] = EA * L * a2 * a2 + VLBE_R(4.0) * kg + VLBE_R(4.0) * kb;
+        H[5] = H[7] = EA * L * a1 * a2 - kg + VLBE_R(2.0) * kb;
+        vlbe__cr2d_bthb(3, &B[0][0], H, K);
+        vlbe__cr2d_chord_hess(k->c, k->s, k->l, gl, g1 + g2, 1, K);
     }
 }
 
-/* -- nonlinear inertia (eqs. 18-19): local force and its rate Jacobian --- */
-static inline void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, const vlbe_real *u, vlbe_real *f,
-                                  vlbe_real *A)
+/* Transition element: U = EA L eps0^2/2 + EI (2 theta3^2 + 2 theta3 theta2 +
+   2 theta2^2)/L2 with eps0 = l2/L2 + eps_v - 1 (eqs. 24-27, 38-39: the
+   inside segment is straight), derivatives in y = (l1, l2, theta3,
+   theta2) through L2 = L - L1(y), then F = B^T U_y and K = B^T U_yy B +
+   the turning of the outside chord (eqs. 43-44, 48: the paper's k_a, k_b
+   plus the terms of the consistent linearization it drops). */
+static inline void vlbe__cr2d_elastic_tr(const vlbe_cr2d_elem *el, const vlbe__cr2d_kin *k,
+                                         vlbe_real *F, vlbe_real *K)
 {
-    /* v'_t = c0 + c1 xi + c2 xi^2; p = v'_t^2 coefficients; fa_r = rhoA L^2
-       c^T Q_r c with Q_r from the moments alpha_k (fa0), beta_k (fa1) */
-    const vlbe_real L = el->L, rA = el->mat.rhoA * L * L, rI = el->mat.rhoI;
-    const vlbe_real w = (u[4] - u[1]) / L;
-    vlbe_real cc[3], dc[3][6], Qr[2][3][3], Qc[2][3], Gb[16], gu[4], ub[4], ed;
+    const vlbe_real L = el->L, EA = el->mat.EA, EI = el->mat.EI, L2 = k->L2, l2 = k->l;
+    const vlbe_real t3 = k->th[0], t2 = k->th[1], eps = k->eps, iL = VLBE_R(1.0) / L2;
+    const vlbe_real Bt = VLBE_R(2.0) * (t3 * t3 + t3 * t2 + t2 * t2);
+    vlbe_real iLy[4], ey[4], By[4], Uy[4];
+    int i, j;
+    By[0] = By[1] = VLBE_R(0.0);
+    By[2] = VLBE_R(4.0) * t3 + VLBE_R(2.0) * t2;
+    By[3] = VLBE_R(2.0) * t3 + VLBE_R(4.0) * t2;
+    for (i = 0; i < 4; ++i) {
+        iLy[i] = k->L1y[i] * iL * iL; /* d(1/L2)/dy, dL2 = -dL1 */
+        ey[i] = l2 * iLy[i];
+    }
+    ey[1] += iL;
+    ey[2] += (VLBE_R(8.0) * t3 - VLBE_R(2.0) * t2) / VLBE_R(60.0);
+    ey[3] += (VLBE_R(8.0) * t2 - VLBE_R(2.0) * t3) / VLBE_R(60.0);
+    for (i = 0; i < 4; ++i) Uy[i] = EA * L * eps * ey[i] + EI * (By[i] * iL + Bt * iLy[i]);
+    for (i = 0; i < 6; ++i)
+        F[i] += Uy[0] * k->B[0][i] + Uy[1] * k->B[1][i] + Uy[2] * k->B[2][i] +
+                Uy[3] * k->B[3][i];
+    if (!K) return;
+    {
+        static const signed char evyy[2][2] = {{8, -2}, {-2, 8}}, byy[2][2] = {{4, 2}, {2, 4}};
+        vlbe_real H[16];
+        for (i = 0; i < 4; ++i)
+            for (j = 0; j < 4; ++j) {
+                /* d2(1/L2) = 2 L1_y L1_y^T / L2^3 + L1_yy / L2^2 */
+                const vlbe_real iLyy =
+                    VLBE_R(2.0) * k->L1y[i] * k->L1y[j] * iL * iL * iL + k->L1yy[i * 4 + j] * iL * iL;
+                vlbe_real eyy = l2 * iLyy + (i == 1 ? iLy[j] : VLBE_R(0.0)) +
+                                (j == 1 ? iLy[i] : VLBE_R(0.0));
+                vlbe_real b2 = VLBE_R(0.0);
+                if (i >= 2 && j >= 2) {
+                    eyy += (vlbe_real)evyy[i - 2][j - 2] / VLBE_R(60.0);
+                    b2 = (vlbe_real)byy[i - 2][j - 2];
+                }
+                H[i * 4 + j] = EA * L * (ey[i] * ey[j] + eps * eyy) +
+                               EI * (b2 * iL + By[i] * iLy[j] + iLy[i] * By[j] + Bt * iLyy);
+            }
+        vlbe__cr2d_bthb(4, &k->B[0][0], H, K);
+        vlbe__cr2d_chord_hess(k->c, k->s, l2, Uy[1], Uy[2] + Uy[3], 0, K);
+    }
+}
+
+/* -- nonlinear inertia (eqs. 18-19, 45-46) ------------------------------ */
+/* The velocity terms of the inertia force in the element frame, for a
+   bending segment of length L2 at the outer end of an element of length
+   L (L1 = L - L2 inside a joint; a conventional element has L2 = L).
+   u: local rates (u1, v1, phi1, u2, v2, phi2), the segment's slope rate
+   v'_t = N'_b (v1, phi1, v2, phi2) over L2 (the transition element passes
+   v1 = phi1 = 0: the joint holds them).  With xi = x/L2,
+   v'_t = c0 + c1 xi + c2 xi^2 and p = v'_t^2 = sum p_k xi^k,
+        f_a1 = rhoA (W L/6 - (1 - L1/L) I0 + I1/L),
+        f_a2 = rhoA (W L/3 - (L1/L) I0 - I1/L),
+   W = int_0^L2 v'_t^2 = L2 sum p_k/(k+1), I0 = int_0^L2 int_0^x v'_t^2 =
+   L2^2 sum p_k/((k+1)(k+2)), I1 = int_0^L2 x int_0^x v'_t^2 = L2^3 sum
+   p_k/((k+1)(k+3)) (eq. 45; eq. 18 for L1 = 0), and f_b = -2 rhoI
+   ((u2' - u1')/L) G_b(L2) u_b (eqs. 19, 46).  f = f_a + f_b (6), A =
+   df/du (6x6); fL (may be NULL) = df/dL2 at fixed u. */
+static inline void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, vlbe_real L2, const vlbe_real *u,
+                                  vlbe_real *f, vlbe_real *A, vlbe_real *fL)
+{
+    const vlbe_real L = el->L, L1 = L - L2, rA = el->mat.rhoA, rI = el->mat.rhoI;
+    const vlbe_real w = (u[4] - u[1]) / L2, ed = (u[3] - u[0]) / L;
+    const int *ib = vlbe__cr2d_ib;
+    vlbe_real cc[3], dcL[3], dc[3][6], Q[2][3][3], QL[2][3][3], Qc[2][3];
+    vlbe_real Gb[16], GL[16], gu[4], gL[4], ub[4];
     int r, i, j, k;
     cc[0] = u[2];
     cc[1] = -VLBE_R(4.0) * u[2] - VLBE_R(2.0) * u[5] + VLBE_R(6.0) * w;
     cc[2] = VLBE_R(3.0) * u[2] + VLBE_R(3.0) * u[5] - VLBE_R(6.0) * w;
+    dcL[0] = VLBE_R(0.0);
+    dcL[1] = -VLBE_R(6.0) * w / L2;
+    dcL[2] = VLBE_R(6.0) * w / L2;
     for (r = 0; r < 2; ++r) {
-        vlbe_real al[5];
+        vlbe_real g[5], gd[5];
         for (k = 0; k < 5; ++k) {
-            const vlbe_real k1 = (vlbe_real)(k + 1);
-            al[k] = r == 0 ? (VLBE_R(1.0) / VLBE_R(6.0) - VLBE_R(1.0) / (k1 + VLBE_R(1.0)) +
-                              VLBE_R(1.0) / (k1 + VLBE_R(2.0))) / k1
-                           : (VLBE_R(1.0) / VLBE_R(3.0) - VLBE_R(1.0) / (k1 + VLBE_R(2.0))) / k1;
+            const vlbe_real k1 = (vlbe_real)(k + 1), k2 = k1 + VLBE_R(1.0), k3 = k1 + VLBE_R(2.0);
+            const vlbe_real a0 = r == 0 ? VLBE_R(1.0) - L1 / L : L1 / L;
+            const vlbe_real sg = r == 0 ? VLBE_R(1.0) : -VLBE_R(1.0);
+            const vlbe_real wl = r == 0 ? L / VLBE_R(6.0) : L / VLBE_R(3.0);
+            /* gamma_k: the coefficient of p_k, and its L2-derivative
+               (d(1 - L1/L)/dL2 = 1/L, d(L1/L)/dL2 = -1/L) */
+            g[k] = (wl * L2 - a0 * L2 * L2 / k2 + sg * L2 * L2 * L2 / (L * k3)) / k1;
+            gd[k] = (wl - (sg * L2 * L2 / L + a0 * VLBE_R(2.0) * L2) / k2 +
+                     sg * VLBE_R(3.0) * L2 * L2 / (L * k3)) /
+                    k1;
         }
-        Qr[r][0][0] = al[0];
-        Qr[r][0][1] = Qr[r][1][0] = al[1];
-        Qr[r][1][1] = al[2];
-        Qr[r][0][2] = Qr[r][2][0] = al[2];
-        Qr[r][1][2] = Qr[r][2][1] = al[3];
-        Qr[r][2][2] = al[4];
-        for (i = 0; i < 3; ++i) Qc[r][i] = rA * (Qr[r][i][0] * cc[0] + Qr[r][i][1] * cc[1] +
-                                                  Qr[r][i][2] * cc[2]);
+        /* p0 = c0^2, p1 = 2 c0 c1, p2 = c1^2 + 2 c0 c2, p3 = 2 c1 c2, p4 = c2^2 */
+        Q[r][0][0] = g[0];
+        Q[r][0][1] = Q[r][1][0] = g[1];
+        Q[r][1][1] = Q[r][0][2] = Q[r][2][0] = g[2];
+        Q[r][1][2] = Q[r][2][1] = g[3];
+        Q[r][2][2] = g[4];
+        QL[r][0][0] = gd[0];
+        QL[r][0][1] = QL[r][1][0] = gd[1];
+        QL[r][1][1] = QL[r][0][2] = QL[r][2][0] = gd[2];
+        QL[r][1][2] = QL[r][2][1] = gd[3];
+        QL[r][2][2] = gd[4];
+        for (i = 0; i < 3; ++i)
+            Qc[r][i] = rA * (Q[r][i][0] * cc[0] + Q[r][i][1] * cc[1] + Q[r][i][2] * cc[2]);
     }
     for (i = 0; i < 6; ++i) f[i] = VLBE_R(0.0);
     f[0] = cc[0] * Qc[0][0] + cc[1] * Qc[0][1] + cc[2] * Qc[0][2];
     f[3] = cc[0] * Qc[1][0] + cc[1] * Qc[1][1] + cc[2] * Qc[1][2];
-    /* f_b = -2 rhoI eps' G_b u_b, eps' = (u2' - u1')/L */
     ub[0] = u[1];
     ub[1] = u[2];
     ub[2] = u[4];
     ub[3] = u[5];
-    ed = (u[3] - u[0]) / L;
-    vlbe__cr2d_gb(L, Gb);
+    vlbe__cr2d_gb(L2, Gb, fL ? GL : NULL);
     for (i = 0; i < 4; ++i) {
         gu[i] = VLBE_R(0.0);
         for (j = 0; j < 4; ++j) gu[i] += Gb[i * 4 + j] * ub[j];
+        f[ib[i]] = -VLBE_R(2.0) * rI * ed * gu[i];
     }
-    {
-        const int *ib = vlbe__cr2d_ib;
-        for (i = 0; i < 4; ++i) f[ib[i]] = -VLBE_R(2.0) * rI * ed * gu[i];
-        if (!A) return;
-        for (i = 0; i < 36; ++i) A[i] = VLBE_R(0.0);
-        /* dc/du */
-        for (i = 0; i < 3; ++i)
-            for (j = 0; j < 6; ++j) dc[i][j] = VLBE_R(0.0);
-        dc[0][2] = VLBE_R(1.0);
-        dc[1][1] = -VLBE_R(6.0) / L;
-        dc[1][2] = -VLBE_R(4.0);
-        dc[1][4] = VLBE_R(6.0) / L;
-        dc[1][5] = -VLBE_R(2.0);
-        dc[2][1] = VLBE_R(6.0) / L;
-        dc[2][2] = VLBE_R(3.0);
-        dc[2][4] = -VLBE_R(6.0) / L;
-        dc[2][5] = VLBE_R(3.0);
-        for (j = 0; j < 6; ++j) {
-            A[0 * 6 + j] = VLBE_R(2.0) * (Qc[0][0] * dc[0][j] + Qc[0][1] * dc[1][j] +
-                                          Qc[0][2] * dc[2][j]);
-            A[3 * 6 + j] = VLBE_R(2.0) * (Qc[1][0] * dc[0][j] + Qc[1][1] * dc[1][j] +
-                                          Qc[1][2] * dc[2][j]);
+    if (fL) {
+        for (i = 0; i < 6; ++i) fL[i] = VLBE_R(0.0);
+        for (r = 0; r < 2; ++r) {
+            vlbe_real t = VLBE_R(0.0);
+            for (i = 0; i < 3; ++i) {
+                t += VLBE_R(2.0) * Qc[r][i] * dcL[i];
+                for (j = 0; j < 3; ++j) t += rA * cc[i] * QL[r][i][j] * cc[j];
+            }
+            fL[3 * r] = t;
         }
         for (i = 0; i < 4; ++i) {
-            A[ib[i] * 6 + 0] += VLBE_R(2.0) * rI * gu[i] / L;
-            A[ib[i] * 6 + 3] -= VLBE_R(2.0) * rI * gu[i] / L;
-            for (j = 0; j < 4; ++j) A[ib[i] * 6 + ib[j]] -= VLBE_R(2.0) * rI * ed * Gb[i * 4 + j];
+            gL[i] = VLBE_R(0.0);
+            for (j = 0; j < 4; ++j) gL[i] += GL[i * 4 + j] * ub[j];
+            fL[ib[i]] = -VLBE_R(2.0) * rI * ed * gL[i];
         }
     }
+    if (!A) return;
+    for (i = 0; i < 36; ++i) A[i] = VLBE_R(0.0);
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 6; ++j) dc[i][j] = VLBE_R(0.0);
+    dc[0][2] = VLBE_R(1.0);
+    dc[1][1] = -VLBE_R(6.0) / L2;
+    dc[1][2] = -VLBE_R(4.0);
+    dc[1][4] = VLBE_R(6.0) / L2;
+    dc[1][5] = -VLBE_R(2.0);
+    dc[2][1] = VLBE_R(6.0) / L2;
+    dc[2][2] = VLBE_R(3.0);
+    dc[2][4] = -VLBE_R(6.0) / L2;
+    dc[2][5] = VLBE_R(3.0);
+    for (r = 0; r < 2; ++r)
+        for (j = 0; j < 6; ++j)
+            A[3 * r * 6 + j] = VLBE_R(2.0) * (Qc[r][0] * dc[0][j] + Qc[r][1] * dc[1][j] +
+                                              Qc[r][2] * dc[2][j]);
+    for (i = 0; i < 4; ++i) {
+        A[ib[i] * 6 + 0] += VLBE_R(2.0) * rI * gu[i] / L;
+        A[ib[i] * 6 + 3] -= VLBE_R(2.0) * rI * gu[i] / L;
+        for (j = 0; j < 4; ++j) A[ib[i] * 6 + ib[j]] -= VLBE_R(2.0) * rI * ed * Gb[i * 4 + j];
+    }
+}
+
+/* The element's kinematics: conventional (jt NULL) or transition. */
+static inline vlbe_status vlbe__cr2d_kin_any(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                             unsigned mode, const vlbe_real *q, const vlbe_real *qd,
+                                             vlbe__cr2d_kin *k)
+{
+    vlbe_status st;
+    VLBE_ASSERT(el != NULL && q != NULL);
+    if ((st = vlbe__cr2d_check(q, qd)) != VLBE_OK) return st;
+    if (!jt) return vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0, q, k);
+    if (mode & VLBE_CR2D_LINEAR) return VLBE_EARG; /* no linear transition element */
+    return vlbe__cr2d_kin_tr(el, jt, q, k);
+}
+
+/* Local rates u = T q'; the transition element has no node-1 lateral or
+   rotation coordinate (the joint holds them). */
+static inline void vlbe__cr2d_rates(const vlbe__cr2d_kin *k, const vlbe_real *qd, vlbe_real *u)
+{
+    vlbe__cr2d_to_loc(&k->fr, qd, u);
+    if (k->tr) u[1] = u[2] = VLBE_R(0.0);
 }
 
 /* Q, K, D into the caller's zeroed locals (F = -Q accumulated, negated at
    the end) */
-static inline vlbe_status vlbe__cr2d_forces(const vlbe_cr2d_elem *el, unsigned mode,
-                                            const vlbe_real *q, const vlbe_real *qd, vlbe_real *F,
-                                            vlbe_real *K, vlbe_real *D)
+static inline void vlbe__cr2d_forces(const vlbe_cr2d_elem *el, unsigned mode,
+                                     const vlbe__cr2d_kin *k, const vlbe_real *q,
+                                     const vlbe_real *qd, vlbe_real *F, vlbe_real *K, vlbe_real *D)
 {
     const int lin = (mode & VLBE_CR2D_LINEAR) != 0;
-    const int nli = !lin && !(mode & VLBE_CR2D_NO_NLI) &&
-                    (el->mat.rhoA != VLBE_R(0.0) || el->mat.rhoI != VLBE_R(0.0));
+    const int nli = !lin && !(mode & VLBE_CR2D_NO_NLI);
     const int damp = !(mode & VLBE_CR2D_NO_DAMP) &&
                      (el->mat.ray_a != VLBE_R(0.0) || el->mat.ray_b != VLBE_R(0.0));
+    int i, j;
+    if (lin) {
+        vlbe_real k0[36], u[6], f[6], g[6];
+        vlbe__cr2d_lmat(el, 0, el->L, NULL, k0, NULL, NULL);
+        vlbe__cr2d_to_loc(&k->fr, q, u);
+        vlbe_mat_vec(6, 6, k0, u, f);
+        vlbe__cr2d_to_glob(&k->fr, f, g);
+        for (i = 0; i < 6; ++i) F[i] += g[i];
+        if (K) vlbe__cr2d_congr(&k->fr, k0, K);
+    } else if (k->tr)
+        vlbe__cr2d_elastic_tr(el, k, F, K);
+    else
+        vlbe__cr2d_elastic(el, k, F, K);
+    if (nli || damp) {
+        /* local rate u = T q', local force f = f_nl(u) + C u, A = df/du,
+           fL = df/dL2 (transition: L2 depends on q) */
+        vlbe_real u[6], f[6], A[36], fL[6], g[6];
+        vlbe__cr2d_rates(k, qd, u);
+        for (i = 0; i < 6; ++i) f[i] = fL[i] = VLBE_R(0.0);
+        for (i = 0; i < 36; ++i) A[i] = VLBE_R(0.0);
+        if (nli) vlbe__cr2d_nli(el, k->L2, u, f, A, k->tr ? fL : NULL);
+        if (damp) {
+            vlbe_real m[36], k0[36], dm[36], dk[36];
+            vlbe__cr2d_lmat(el, k->tr, k->L2, m, k0, k->tr ? dm : NULL, k->tr ? dk : NULL);
+            for (i = 0; i < 6; ++i)
+                for (j = 0; j < 6; ++j) {
+                    const int e = i * 6 + j;
+                    const vlbe_real c = el->mat.ray_a * m[e] + el->mat.ray_b * k0[e];
+                    f[i] += c * u[j];
+                    A[e] += c;
+                    if (k->tr) fL[i] += (el->mat.ray_a * dm[e] + el->mat.ray_b * dk[e]) * u[j];
+                }
+        }
+        if (k->tr) { /* eq. 46: f_b on v2, phi2 only; no node-1 lateral rates */
+            f[1] = f[2] = fL[1] = fL[2] = VLBE_R(0.0);
+            for (i = 0; i < 6; ++i)
+                A[1 * 6 + i] = A[2 * 6 + i] = A[i * 6 + 1] = A[i * 6 + 2] = VLBE_R(0.0);
+        }
+        vlbe__cr2d_to_glob(&k->fr, f, g);
+        for (i = 0; i < 6; ++i) F[i] += g[i];
+        if (D) vlbe__cr2d_congr(&k->fr, A, D);
+        if (K && !lin) {
+            vlbe__cr2d_frame_col(&k->fr, f, A, u, k->gb, K);
+            if (k->tr) {
+                vlbe__cr2d_to_glob(&k->fr, fL, g);
+                for (i = 0; i < 6; ++i)
+                    for (j = 0; j < 6; ++j) K[i * 6 + j] += g[i] * k->gL2[j];
+            }
+        }
+    }
+}
+
+static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
+                                               const vlbe_cr2d_joint *jt, unsigned mode,
+                                               const vlbe_real *q, const vlbe_real *qd,
+                                               vlbe_real *VLBE_RESTRICT Q,
+                                               vlbe_real *VLBE_RESTRICT K,
+                                               vlbe_real *VLBE_RESTRICT D)
+{
+    vlbe_real F[6], Kt[36], Dt[36];
     vlbe__cr2d_kin k;
     vlbe_status st;
     int i;
-    if ((st = vlbe__cr2d_kin_eval(el, lin, q, &k)) != VLBE_OK) return st;
-    if (lin) {
-        vlbe_real k0[36], u[6], f[6], g[6];
-        vlbe__cr2d_k0loc(el, k0);
-        vlbe__cr2d_to_loc(k.c, k.s, q, u);
-        vlbe_mat_vec(6, 6, k0, u, f);
-        vlbe__cr2d_to_glob(k.c, k.s, f, g);
-        for (i = 0; i < 6; ++i) F[i] += g[i];
-        if (K) vlbe__cr2d_congr(k.c, k.s, k0, K);
-    } else
-        vlbe__cr2d_elastic(el, &k, F, K);
-    if (nli || damp) {
-        /* local rate u = T q', local force f = f_nl(u) + C u, A = df/du */
-        vlbe_real u[6], f[6], A[36], g[6];
-        vlbe__cr2d_to_loc(k.c, k.s, qd, u);
-        if (nli)
-            vlbe__cr2d_nli(el, u, f, A);
-        else {
-            for (i = 0; i < 6; ++i) f[i] = VLBE_R(0.0);
-            for (i = 0; i < 36; ++i) A[i] = VLBE_R(0.0);
-        }
-        if (damp) {
-            vlbe_real m[36], k0[36], cu[6];
-            vlbe__cr2d_mloc(el, m);
-            vlbe__cr2d_k0loc(el, k0);
-            for (i = 0; i < 36; ++i) m[i] = el->mat.ray_a * m[i] + el->mat.ray_b * k0[i];
-            vlbe_mat_vec(6, 6, m, u, cu);
-            for (i = 0; i < 6; ++i) f[i] += cu[i];
-            for (i = 0; i < 36; ++i) A[i] += m[i];
-        }
-        vlbe__cr2d_to_glob(k.c, k.s, f, g);
-        for (i = 0; i < 6; ++i) F[i] += g[i];
-        if (D) vlbe__cr2d_congr(k.c, k.s, A, D);
-        if (K && !lin) vlbe__cr2d_frame_col(k.c, k.s, f, A, u, k.gb, K);
-    }
-    return VLBE_OK;
-}
-
-VLBE_API vlbe_status vlbe_cr2d_force(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
-                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
-                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
-{
-    vlbe_real F[6], Kt[36], Dt[36];
-    vlbe_status st;
-    int i;
-    VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
+    VLBE_ASSERT(el != NULL && qd != NULL && Q != NULL);
     mode |= el->flags;
-    if ((st = vlbe__cr2d_check(q, qd)) != VLBE_OK) return st;
+    if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, qd, &k)) != VLBE_OK) return st;
     for (i = 0; i < 6; ++i) F[i] = VLBE_R(0.0);
     for (i = 0; i < 36; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
-    st = vlbe__cr2d_forces(el, mode, q, qd, F, K ? Kt : NULL, D ? Dt : NULL);
-    if (st != VLBE_OK) return st;
+    vlbe__cr2d_forces(el, mode, &k, q, qd, F, K ? Kt : NULL, D ? Dt : NULL);
     for (i = 0; i < 6; ++i) Q[i] = -F[i];
     if (K)
         for (i = 0; i < 36; ++i) K[i] = -Kt[i];
@@ -602,69 +961,99 @@ VLBE_API vlbe_status vlbe_cr2d_force(const vlbe_cr2d_elem *el, unsigned mode, co
     return VLBE_OK;
 }
 
-VLBE_API vlbe_status vlbe_cr2d_mass(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
-                                    vlbe_real *VLBE_RESTRICT M)
+static inline vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                              unsigned mode, const vlbe_real *q,
+                                              vlbe_real *VLBE_RESTRICT M)
 {
     vlbe__cr2d_kin k;
     vlbe_real m[36];
     vlbe_status st;
     int i;
-    VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
+    VLBE_ASSERT(el != NULL && M != NULL);
     mode |= el->flags;
-    if ((st = vlbe__cr2d_check(q, NULL)) != VLBE_OK) return st;
-    if ((st = vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0, q, &k)) != VLBE_OK)
-        return st;
-    vlbe__cr2d_mloc(el, m);
+    if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, NULL, &k)) != VLBE_OK) return st;
+    vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
     for (i = 0; i < 36; ++i) M[i] = VLBE_R(0.0);
-    vlbe__cr2d_congr(k.c, k.s, m, M);
+    vlbe__cr2d_congr(&k.fr, m, M);
     return VLBE_OK;
+}
+
+/* d(M a)/dq = d(T^T m T a)/dq: the turning frame, and (transition) the
+   L2-dependence of m */
+static inline vlbe_status vlbe__cr2d_mass_jac_any(const vlbe_cr2d_elem *el,
+                                                  const vlbe_cr2d_joint *jt, unsigned mode,
+                                                  const vlbe_real *q, const vlbe_real *a,
+                                                  vlbe_real *VLBE_RESTRICT Mq)
+{
+    vlbe__cr2d_kin k;
+    vlbe_real m[36], dm[36], u[6], f[6], g[6];
+    vlbe_status st;
+    int i, j;
+    VLBE_ASSERT(el != NULL && a != NULL && Mq != NULL);
+    mode |= el->flags;
+    if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, a, &k)) != VLBE_OK) return st;
+    for (i = 0; i < 36; ++i) Mq[i] = VLBE_R(0.0);
+    if (mode & VLBE_CR2D_LINEAR) return VLBE_OK; /* M constant */
+    vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, k.tr ? dm : NULL, NULL);
+    vlbe__cr2d_to_loc(&k.fr, a, u);
+    vlbe_mat_vec(6, 6, m, u, f);
+    vlbe__cr2d_frame_col(&k.fr, f, m, u, k.gb, Mq);
+    if (k.tr) {
+        vlbe_mat_vec(6, 6, dm, u, f);
+        vlbe__cr2d_to_glob(&k.fr, f, g);
+        for (i = 0; i < 6; ++i)
+            for (j = 0; j < 6; ++j) Mq[i * 6 + j] += g[i] * k.gL2[j];
+    }
+    return VLBE_OK;
+}
+
+static inline vlbe_status vlbe__cr2d_energy_any(const vlbe_cr2d_elem *el,
+                                                const vlbe_cr2d_joint *jt, unsigned mode,
+                                                const vlbe_real *q, const vlbe_real *qd,
+                                                vlbe_real *VLBE_RESTRICT E)
+{
+    vlbe__cr2d_kin k;
+    vlbe_real m[36], u[6], mu[6];
+    vlbe_status st;
+    VLBE_ASSERT(el != NULL && qd != NULL && E != NULL);
+    mode |= el->flags;
+    if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, qd, &k)) != VLBE_OK) return st;
+    vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
+    vlbe__cr2d_rates(&k, qd, u);
+    vlbe_mat_vec(6, 6, m, u, mu);
+    E[0] = VLBE_R(0.5) * vlbe_vec_dot(6, u, mu);
+    /* LINEAR: k.eps, k.th are the linear measures, and U = q^T K0 q / 2 has
+       the same form without the quadratic part of eps0 */
+    E[1] = VLBE_R(0.5) * el->mat.EA * el->L * k.eps * k.eps +
+           el->mat.EI / k.L2 * VLBE_R(2.0) *
+               (k.th[0] * k.th[0] + k.th[0] * k.th[1] + k.th[1] * k.th[1]);
+    return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_cr2d_force(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
+                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
+{
+    return vlbe__cr2d_force_any(el, NULL, mode, q, qd, Q, K, D);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_mass(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
+                                    vlbe_real *VLBE_RESTRICT M)
+{
+    return vlbe__cr2d_mass_any(el, NULL, mode, q, M);
 }
 
 VLBE_API vlbe_status vlbe_cr2d_mass_jac(const vlbe_cr2d_elem *el, unsigned mode,
                                         const vlbe_real *q, const vlbe_real *a,
                                         vlbe_real *VLBE_RESTRICT Mq)
 {
-    vlbe__cr2d_kin k;
-    vlbe_real m[36], u[6], f[6];
-    vlbe_status st;
-    int i;
-    VLBE_ASSERT(el != NULL && q != NULL && a != NULL && Mq != NULL);
-    mode |= el->flags;
-    if ((st = vlbe__cr2d_check(q, a)) != VLBE_OK) return st;
-    if ((st = vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0, q, &k)) != VLBE_OK)
-        return st;
-    for (i = 0; i < 36; ++i) Mq[i] = VLBE_R(0.0);
-    if (mode & VLBE_CR2D_LINEAR) return VLBE_OK; /* M constant */
-    vlbe__cr2d_mloc(el, m);
-    vlbe__cr2d_to_loc(k.c, k.s, a, u);
-    vlbe_mat_vec(6, 6, m, u, f);
-    vlbe__cr2d_frame_col(k.c, k.s, f, m, u, k.gb, Mq);
-    return VLBE_OK;
+    return vlbe__cr2d_mass_jac_any(el, NULL, mode, q, a, Mq);
 }
 
 VLBE_API vlbe_status vlbe_cr2d_energy(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
                                       const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
 {
-    vlbe__cr2d_kin k;
-    vlbe_real m[36], u[6], mu[6];
-    vlbe_status st;
-    vlbe_real L;
-    VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
-    L = el->L;
-    mode |= el->flags;
-    if ((st = vlbe__cr2d_check(q, qd)) != VLBE_OK) return st;
-    if ((st = vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0, q, &k)) != VLBE_OK)
-        return st;
-    vlbe__cr2d_mloc(el, m);
-    vlbe__cr2d_to_loc(k.c, k.s, qd, u);
-    vlbe_mat_vec(6, 6, m, u, mu);
-    E[0] = VLBE_R(0.5) * vlbe_vec_dot(6, u, mu);
-    /* LINEAR: k.eps, k.th are the linear measures, and U = q^T K0 q / 2 has
-       the same form without the quadratic part of eps0 */
-    E[1] = VLBE_R(0.5) * el->mat.EA * L * k.eps * k.eps +
-           el->mat.EI / L * VLBE_R(2.0) *
-               (k.th[0] * k.th[0] + k.th[0] * k.th[1] + k.th[1] * k.th[1]);
-    return VLBE_OK;
+    return vlbe__cr2d_energy_any(el, NULL, mode, q, qd, E);
 }
 
 VLBE_API vlbe_status vlbe_cr2d_local(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
@@ -672,15 +1061,65 @@ VLBE_API vlbe_status vlbe_cr2d_local(const vlbe_cr2d_elem *el, unsigned mode, co
 {
     vlbe__cr2d_kin k;
     vlbe_status st;
-    VLBE_ASSERT(el != NULL && q != NULL && loc != NULL);
+    VLBE_ASSERT(el != NULL && loc != NULL);
     mode |= el->flags;
-    if ((st = vlbe__cr2d_check(q, NULL)) != VLBE_OK) return st;
-    if ((st = vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0, q, &k)) != VLBE_OK)
-        return st;
+    if ((st = vlbe__cr2d_kin_any(el, NULL, mode, q, NULL, &k)) != VLBE_OK) return st;
     loc[0] = k.l;
     loc[1] = k.th[0];
     loc[2] = k.th[1];
     loc[3] = k.eps;
+    return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_cr2d_trans_force(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                           unsigned mode, const vlbe_real *q, const vlbe_real *qd,
+                                           vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K,
+                                           vlbe_real *VLBE_RESTRICT D)
+{
+    VLBE_ASSERT(jt != NULL);
+    return vlbe__cr2d_force_any(el, jt, mode, q, qd, Q, K, D);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_trans_mass(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                          unsigned mode, const vlbe_real *q,
+                                          vlbe_real *VLBE_RESTRICT M)
+{
+    VLBE_ASSERT(jt != NULL);
+    return vlbe__cr2d_mass_any(el, jt, mode, q, M);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_trans_mass_jac(const vlbe_cr2d_elem *el,
+                                              const vlbe_cr2d_joint *jt, unsigned mode,
+                                              const vlbe_real *q, const vlbe_real *a,
+                                              vlbe_real *VLBE_RESTRICT Mq)
+{
+    VLBE_ASSERT(jt != NULL);
+    return vlbe__cr2d_mass_jac_any(el, jt, mode, q, a, Mq);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_trans_energy(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                            unsigned mode, const vlbe_real *q,
+                                            const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
+{
+    VLBE_ASSERT(jt != NULL);
+    return vlbe__cr2d_energy_any(el, jt, mode, q, qd, E);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+                                           unsigned mode, const vlbe_real *q,
+                                           vlbe_real *VLBE_RESTRICT loc)
+{
+    vlbe__cr2d_kin k;
+    vlbe_status st;
+    VLBE_ASSERT(el != NULL && jt != NULL && loc != NULL);
+    mode |= el->flags;
+    if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, NULL, &k)) != VLBE_OK) return st;
+    loc[0] = k.l1;
+    loc[1] = k.l;
+    loc[2] = k.th[0];
+    loc[3] = k.th[1];
+    loc[4] = k.eps;
+    loc[5] = k.L1;
     return VLBE_OK;
 }
 
@@ -690,9 +1129,14 @@ VLBE_API vlbe_status vlbe_cr2d_local(const vlbe_cr2d_elem *el, unsigned mode, co
    loads P (n, scaled by `load`) and prescribed coordinates (holonomic,
    rheonomic constraints q[dof] = g(t), m = nfix) complete the vlbe_dae
    problem; the callbacks below take the beam as `user`.  A callback that
-   fails returns 1 for VLBE_ELENGTH and VLBE_ENONFINITE (the point lies
-   outside the model's domain: the integrators retry smaller) and -1
-   otherwise, with the status and the element in err, err_elem. */
+   fails returns 1 for VLBE_ELENGTH, VLBE_ENONFINITE, VLBE_EBOUND and
+   VLBE_ESINGULAR (the point lies outside the model's domain, e.g. a
+   Newton iterate moved a node of the transition element across the
+   joint's exit: the integrators retry smaller) and -1 otherwise, with the
+   status and the element in err, err_elem.  With joint set, element trans
+   is evaluated as the transition element (vlbe_cr2d_trans_*); the caller
+   moves trans (and the constraints of the nodes inside the joint) when a
+   node crosses the exit. */
 typedef struct vlbe_cr2d_fix {
     int dof;          /* index in q                                        */
     vlbe_real g[3];   /* g(t) = g0 + g1 t + g2 t^2/2 when fun is NULL      */
@@ -708,6 +1152,9 @@ typedef struct vlbe_cr2d_beam {
     vlbe_real load;           /* factor on P                              */
     const vlbe_cr2d_fix *fix; /* prescribed coordinates                   */
     int nfix;
+    const vlbe_cr2d_joint *joint; /* prismatic joint (NULL: none)         */
+    int trans;                /* the element that is the transition
+                                 element at the joint (-1: none)          */
     vlbe_status err;          /* last failure of a callback               */
     int err_elem;
 } vlbe_cr2d_beam;
@@ -748,6 +1195,8 @@ VLBE_API vlbe_status vlbe_cr2d_beam_init(vlbe_cr2d_beam *b, const vlbe_cr2d_elem
     b->load = VLBE_R(1.0);
     b->fix = fix;
     b->nfix = nfix;
+    b->joint = NULL;
+    b->trans = -1;
     b->err = VLBE_OK;
     b->err_elem = -1;
     return VLBE_OK;
@@ -764,11 +1213,20 @@ VLBE_API void vlbe_cr2d_fix_eval(const vlbe_cr2d_fix *f, vlbe_real t, vlbe_real 
     g3[2] = f->g[2];
 }
 
+/* the joint when element e is the transition element, else NULL */
+static inline const vlbe_cr2d_joint *vlbe__cr2d_jt(const vlbe_cr2d_beam *b, int e)
+{
+    return (b->joint && e == b->trans) ? b->joint : NULL;
+}
+
 static inline int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
 {
     b->err = st;
     b->err_elem = e;
-    return (st == VLBE_ELENGTH || st == VLBE_ENONFINITE) ? 1 : -1;
+    return (st == VLBE_ELENGTH || st == VLBE_ENONFINITE || st == VLBE_EBOUND ||
+            st == VLBE_ESINGULAR)
+               ? 1
+               : -1;
 }
 
 /* A[3e.., 3e..] += Ae (6x6) in the n x n matrix */
@@ -791,7 +1249,8 @@ VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, co
     (void)v;
     vlbe_vec_zero(b->n * b->n, M);
     for (e = 0; e < b->ne; ++e) {
-        if ((st = vlbe_cr2d_mass(&b->el[e], b->mode, q + 3 * e, Me)) != VLBE_OK)
+        if ((st = vlbe__cr2d_mass_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e, Me)) !=
+            VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
         vlbe__cr2d_scatter(b->n, e, Me, M);
     }
@@ -813,8 +1272,8 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, const vlbe_real *q,
     if (K) vlbe_vec_zero(b->n * b->n, K);
     if (D) vlbe_vec_zero(b->n * b->n, D);
     for (e = 0; e < b->ne; ++e) {
-        if ((st = vlbe_cr2d_force(&b->el[e], b->mode, q + 3 * e, v + 3 * e, Qe, K ? Ke : NULL,
-                                  D ? De : NULL)) != VLBE_OK)
+        if ((st = vlbe__cr2d_force_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e,
+                                       v + 3 * e, Qe, K ? Ke : NULL, D ? De : NULL)) != VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
         if (Q)
             for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
@@ -851,7 +1310,8 @@ VLBE_API int vlbe_cr2d_beam_mass_jac(void *user, vlbe_real t, const vlbe_real *q
     vlbe_vec_zero(b->n * b->n, Mq);
     if (Mv) vlbe_vec_zero(b->n * b->n, Mv);
     for (e = 0; e < b->ne; ++e) {
-        if ((st = vlbe_cr2d_mass_jac(&b->el[e], b->mode, q + 3 * e, a + 3 * e, Me)) != VLBE_OK)
+        if ((st = vlbe__cr2d_mass_jac_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e,
+                                          a + 3 * e, Me)) != VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
         vlbe__cr2d_scatter(b->n, e, Me, Mq);
     }
@@ -911,7 +1371,8 @@ VLBE_API vlbe_status vlbe_cr2d_beam_energy(const vlbe_cr2d_beam *b, const vlbe_r
     int e;
     E[0] = E[1] = VLBE_R(0.0);
     for (e = 0; e < b->ne; ++e) {
-        if ((st = vlbe_cr2d_energy(&b->el[e], b->mode, q + 3 * e, v + 3 * e, Ee)) != VLBE_OK)
+        if ((st = vlbe__cr2d_energy_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e,
+                                        v + 3 * e, Ee)) != VLBE_OK)
             return st;
         E[0] += Ee[0];
         E[1] += Ee[1];
