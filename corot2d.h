@@ -58,7 +58,9 @@ CONVENTIONS
    through the chord angle b only.
    Damping (eqs. 50-51): f^v = (alpha m + beta k0) u', with k0 the linear
    stiffness (no kg) in the element frame; alpha = mat.ray_a [1/s], beta =
-   mat.ray_b [s] (time-dependent damping, eq. 56: the caller updates them).
+   mat.ray_b [s] (time-dependent damping, eq. 56: the caller updates them
+   in el->mat directly; any other change of the material or geometry goes
+   through vlbe_cr2d_elem_init, which tabulates the local m and k0).
    Equations of motion (sign convention of integrators.h):
         M(q) q'' = Q(q, q'),   Q = -(f^d + f^i_nl + f^v)  (global),
    K = dQ/dq, D = dQ/dq'.  Matrices 6x6 row-major in the order of q.
@@ -163,6 +165,7 @@ typedef struct vlbe_cr2d_elem {
     vlbe_real a0;    /* reference angle of X2 - X1                    */
     vlbe_real c0, s0; /* cos a0, sin a0                               */
     unsigned flags;
+    vlbe_real m_[36], k0_[36]; /* local mass and linear stiffness (init) */
 } vlbe_cr2d_elem;
 
 /* The prismatic joint of the transition element: exit point C, unit axis
@@ -208,6 +211,9 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
 
 /* ===== implementation =================================================== */
 
+static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L2, vlbe_real *m,
+                                   vlbe_real *k0, vlbe_real *dm, vlbe_real *dk0);
+
 VLBE_API vlbe_status vlbe_cr2d_elem_init(vlbe_cr2d_elem *el, const vlbe_cr2d_mat *mat,
                                          const vlbe_real *X1, const vlbe_real *X2,
                                          unsigned flags)
@@ -236,6 +242,8 @@ VLBE_API vlbe_status vlbe_cr2d_elem_init(vlbe_cr2d_elem *el, const vlbe_cr2d_mat
     el->s0 = d[1] / L;
     el->a0 = vlbe_atan2(d[1], d[0]);
     el->flags = flags;
+    el->m_[0] = VLBE_R(0.0); /* not yet tabulated: lmat computes them */
+    vlbe__cr2d_lmat(el, 0, L, el->m_, el->k0_, NULL, NULL);
     return VLBE_OK;
 }
 
@@ -295,6 +303,13 @@ static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L
     const vlbe_real L = el->L, ma = el->mat.rhoA * L / VLBE_R(6.0), ka = el->mat.EA / L;
     const int *ib = tr ? vlbe__cr2d_ib2 : vlbe__cr2d_ib;
     int i;
+    if (!tr && L2 == L && el->m_[0] > VLBE_R(0.0)) { /* tabulated by vlbe_cr2d_elem_init */
+        if (m)
+            for (i = 0; i < 36; ++i) m[i] = el->m_[i];
+        if (k0)
+            for (i = 0; i < 36; ++i) k0[i] = el->k0_[i];
+        return;
+    }
     if (m) {
         for (i = 0; i < 36; ++i) m[i] = VLBE_R(0.0);
         if (dm)
@@ -517,8 +532,10 @@ static inline vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin,
 }
 
 /* Transition element (section 2.5).  Node 1 must be inside the joint or
-   at its exit (l1 = a.(C - x1) >= 0) and node 2 outside (a.(x2 - C) > 0),
-   else VLBE_EBOUND.  The undeformed lengths follow from the uniform
+   at its exit (l1 = a.(C - x1) >= 0) and node 2 outside (a.(x2 - C) > 0).
+   The formulas continue smoothly to l1 < 0 (L1 < 0: node 1 just outside),
+   which Newton iterates and the step in which node 1 leaves need; beyond
+   l1 < -L/2 it is VLBE_EBOUND.  The undeformed lengths follow from the uniform
    extension (eq. 24) without the first-order expansion of eq. 26:
    l1/L1 = l2/L2 + eps_v with L1 + L2 = L and eps_v = (4 theta3^2 - 2 theta3
    theta2 + 4 theta2^2)/60 (eq. 25 with the Hermite v), i.e. the smaller
@@ -540,7 +557,8 @@ static inline vlbe_status vlbe__cr2d_kin_tr(const vlbe_cr2d_elem *el, const vlbe
         !vlbe_all_finite(jt->C, 2))
         return VLBE_EARG;
     l = vlbe_sqrt(dx * dx + dy * dy);
-    if (!(l1 >= VLBE_R(0.0)) || !(ax * dx + ay * dy > VLBE_R(0.0)) || !(l > VLBE_R(1e-6) * L))
+    if (!(l1 >= -VLBE_R(0.5) * L) || !(ax * dx + ay * dy > VLBE_R(0.0)) ||
+        !(l > VLBE_R(1e-6) * L))
         return VLBE_EBOUND;
     k->tr = 1;
     k->l1 = l1;
