@@ -69,6 +69,9 @@ REFERENCES
    constrained mechanical systems, Multibody Syst. Dyn. 18 (2007) 185-202.
    J. Chung, G. Hulbert, J. Appl. Mech. 60 (1993) 371-375.
    H. Hilber, T. Hughes, R. Taylor, Earthq. Eng. Struct. Dyn. 5 (1977) 283-292.
+   K.-M. Hsiao et al., co-rotational sliding beam (shared/papers/
+   corotational-sliding-beam.txt): eq. 53, the residual test ||Psi||/sqrt(N)
+   <= e_tol of vlbe_hht_params.ftol.
    C. W. Gear, B. Leimkuhler, G. K. Gupta, J. Comput. Appl. Math. 12 (1985).
    K. Brenan, S. Campbell, L. Petzold, Numerical Solution of Initial-Value
    Problems in DAEs (DASSL), SIAM 1996.
@@ -142,6 +145,18 @@ typedef struct vlbe_hht_params {
     int newton_max;         /* iterations per attempt (default 10)                     */
     int modified;           /* 1: keep the LU while the iteration contracts (default 1) */
     int max_halvings;       /* step halvings on Newton failure (default 0 = off)        */
+    vlbe_real ftol;         /* residual test (default 0 = off): when > 0 an iterate is
+                               converged only if, besides the increment test, the
+                               weighted Euclidean norm of the residual
+                               Psi = (M q'' + C_q^T lambda - Q, C) at it satisfies
+                               ||Psi||_2 / sqrt(n + m) <= ftol (Hsiao et al. eq. 53;
+                               absolute, in the units of Q, C unscaled); costs one
+                               more residual evaluation (mass, force, constraints)
+                               per step, at the accepted iterate, and a fresh
+                               iteration matrix when the test fails on a stale one.
+                               Set it above the rounding of Psi (eps |Q|, eps |M q''|)
+                               or steps fail with VLBE_ENOCONV.  0: the iteration is
+                               bit-for-bit that without the field                  */
 } vlbe_hht_params;
 
 /* Integrator state.  q, v, qdd (= q''), a (algorithmic acceleration), lambda
@@ -587,6 +602,27 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
     return VLBE_OK;
 }
 
+/* sqrt(a^2 + b^2) of a, b >= 0 without overflow of the squares; NaN if
+   either is NaN. */
+VLBE_INLINE vlbe_real vlbe__int_hypot(vlbe_real a, vlbe_real b)
+{
+    vlbe_real s = a > b ? a : b;
+    if (a != a || b != b) return a + b;
+    if (s == VLBE_R(0.0) || !isfinite(s)) return s;
+    a /= s;
+    b /= s;
+    return s * vlbe_sqrt(a * a + b * b);
+}
+
+/* Weighted Euclidean norm of a residual Psi = (r, c), r of n and c of m
+   components: ||Psi||_2 / sqrt(n + m) (Hsiao et al. eq. 53, N = n + m
+   equations); NaN if Psi holds one. */
+VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const vlbe_real *c)
+{
+    return vlbe__int_hypot(vlbe_vec_norm2(n, r), vlbe_vec_norm2(m, c)) /
+           vlbe_sqrt((vlbe_real)(n + m));
+}
+
 /* ===== generalized-alpha family ========================================= */
 
 VLBE_INLINE void vlbe__hht_defaults(vlbe_hht_params *p)
@@ -596,6 +632,7 @@ VLBE_INLINE void vlbe__hht_defaults(vlbe_hht_params *p)
     p->newton_max = 10;
     p->modified = 1;
     p->max_halvings = 0;
+    p->ftol = VLBE_R(0.0);
 }
 
 VLBE_API void vlbe_hht_params_newmark(vlbe_hht_params *p, vlbe_real beta, vlbe_real gamma)
@@ -676,7 +713,8 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
         return VLBE_EWORK;
     if (!(par->alpha_m < VLBE_R(1.0)) || !(par->alpha_f < VLBE_R(1.0)) || !(par->beta > VLBE_R(0.0)) ||
         !(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
-        !(par->rtol + par->atol > VLBE_R(0.0)) || par->newton_max < 1 || par->max_halvings < 0)
+        !(par->rtol + par->atol > VLBE_R(0.0)) || par->newton_max < 1 || par->max_halvings < 0 ||
+        !(par->ftol >= VLBE_R(0.0)) || !isfinite(par->ftol))
         return VLBE_EARG;
     if (!vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n)) return VLBE_ENONFINITE;
     st->sys = sys;
@@ -741,6 +779,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
     vlbe_real bp = h * h * p->beta * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am); /* dq/dq''  */
     vlbe_real gp = h * p->gamma * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);    /* dv/dq''  */
     vlbe_real t1 = st->t + h, prev = VLBE_R(0.0), theta = VLBE_R(0.0);
+    int pending = 0; /* ftol > 0: the increment test passed, the residual is due */
     vlbe_status rc;
 
     /* predictor: q''_{n+1} = q''_n, lambda_{n+1} = lambda_n */
@@ -755,8 +794,9 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
     /* the stored LU belongs to another step size: drop it */
     if (st->have_lu_ && st->h_lu_ != h) st->have_lu_ = 0;
     fresh = 0;
-    for (it = 0; it < p->newton_max; ++it) {
-        vlbe_real nrm, nv;
+    for (it = 0; it < p->newton_max || pending; ++it) {
+        vlbe_real nrm = VLBE_R(0.0), nv;
+        int conv = 0;
         /* residual: r_q = M q'' + C_q^T lambda - Q, r_c = C / bp (scaled) */
         if ((rc = vlbe__int_mass(s, &st->stats, t1, tq, tv, M)) != VLBE_OK) return rc;
         if ((rc = vlbe__int_force(s, &st->stats, t1, tq, tv, Q)) != VLBE_OK) return rc;
@@ -769,6 +809,24 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
             r[n + j] = C[j] / bp;
         }
         if (!vlbe_all_finite(r, N)) return VLBE_ENONFINITE;
+        /* residual test (ftol > 0, eq. 53) at an iterate that passed the
+           increment test.  If it fails, this residual drives the next
+           iteration: with a fresh iteration matrix, if the stored one is
+           stale (modified Newton's slow tail would spend the budget on a
+           residual its increments no longer see), which gets the full
+           budget from this iteration on, as in the refreshes below;
+           otherwise within the budget, which the last iteration may
+           overrun by this one evaluation. */
+        if (pending) {
+            if (vlbe__int_psi_norm(n, r, m, C) <= p->ftol) goto done;
+            pending = 0;
+            if (!fresh) {
+                st->have_lu_ = 0;
+                it = 0;
+            } else if (it >= p->newton_max) {
+                break;
+            }
+        }
         /* iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v, C_q^T; C_q, 0] */
         if (!st->have_lu_ || !p->modified) {
             for (i = 0; i < n; ++i) {
@@ -823,35 +881,44 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
            that size per step, which sums to O(eps/h^2) over a run: for very
            small steps (pendulum h < 5e-5, Andrews h < 5e-7) use full Newton
            (modified = 0) or BDF, as the work-precision charts show. */
-        if (vlbe_vec_norm_inf(n, r) <= VLBE_R(8.0) * VLBE_EPS * vlbe_vec_norm_inf(n, tq)) goto done;
-        nrm = vlbe__int_wrms(n, r, tq, p->rtol, p->atol);
-        for (i = 0; i < n; ++i) r[i] *= gp / bp; /* velocity increment */
-        nv = vlbe__int_wrms(n, r, tv, p->rtol, p->atol);
-        if (nv > nrm) nrm = nv;
-        if (prev > VLBE_R(0.0)) {
-            theta = nrm / prev;
-            if (theta >= VLBE_R(0.5)) {
-                /* slow or diverging: a stale LU gets a fresh one */
-                if (!fresh) {
+        if (vlbe_vec_norm_inf(n, r) <= VLBE_R(8.0) * VLBE_EPS * vlbe_vec_norm_inf(n, tq)) {
+            conv = 1;
+        } else {
+            nrm = vlbe__int_wrms(n, r, tq, p->rtol, p->atol);
+            for (i = 0; i < n; ++i) r[i] *= gp / bp; /* velocity increment */
+            nv = vlbe__int_wrms(n, r, tv, p->rtol, p->atol);
+            if (nv > nrm) nrm = nv;
+            if (prev > VLBE_R(0.0)) {
+                theta = nrm / prev;
+                if (theta >= VLBE_R(0.5)) {
+                    /* slow or diverging: a stale LU gets a fresh one */
+                    if (!fresh) {
+                        st->have_lu_ = 0;
+                        prev = VLBE_R(0.0);
+                        it = -1; /* the fresh matrix gets the full iteration budget */
+                        continue;
+                    }
+                    if (theta >= VLBE_R(1.0)) return VLBE_ENOCONV;
+                }
+                if (theta / (VLBE_R(1.0) - theta) * nrm <= VLBE_R(1.0)) {
+                    conv = 1;
+                } else if (!fresh && vlbe__int_powi(theta, p->newton_max - 1 - it) /
+                                             (VLBE_R(1.0) - theta) * nrm > VLBE_R(1.0)) {
+                    /* will it converge within the iterations left?  If not, a
+                       stale matrix is refreshed now rather than after the
+                       budget is spent */
                     st->have_lu_ = 0;
                     prev = VLBE_R(0.0);
-                    it = -1; /* the fresh matrix gets the full iteration budget */
+                    it = -1;
                     continue;
                 }
-                if (theta >= VLBE_R(1.0)) return VLBE_ENOCONV;
+            } else if (nrm <= VLBE_R(1e-2)) {
+                conv = 1; /* a very small first increment: converged */
             }
-            if (theta / (VLBE_R(1.0) - theta) * nrm <= VLBE_R(1.0)) goto done;
-            /* will it converge within the iterations left?  If not, a stale
-               matrix is refreshed now rather than after the budget is spent */
-            if (!fresh && vlbe__int_powi(theta, p->newton_max - 1 - it) /
-                                  (VLBE_R(1.0) - theta) * nrm > VLBE_R(1.0)) {
-                st->have_lu_ = 0;
-                prev = VLBE_R(0.0);
-                it = -1;
-                continue;
-            }
-        } else if (nrm <= VLBE_R(1e-2)) {
-            goto done; /* a very small first increment: converged */
+        }
+        if (conv) {
+            if (!(p->ftol > VLBE_R(0.0))) goto done; /* increment test only */
+            pending = 1; /* the residual at the new iterate decides */
         }
         prev = nrm;
     }
