@@ -724,8 +724,13 @@ VLBE_INLINE vlbe_status vlbe__sta_resid(const vlbe_dae *s, vlbe_dae_stats *c, vl
    constraint rows above, so that a gap in C weighs as the force that closes
    it), or at alpha = 1 when d passes the increment test.  A callback
    returning > 0 or a non-finite Psi at a trial point counts as no
-   decrease; when no halving is left the call fails with the status of the
-   last trial (VLBE_ENOCONV: no decrease, VLBE_ECALLBACK: outside the
+   decrease.  When no trial lowers the merit but the full step lies inside
+   the domain, the full step is taken: a residual norm is no monotone
+   measure of progress for stiff structures (in a beam, the first Newton
+   step from a linear guess typically raises the axial residual by orders
+   of magnitude while the iteration converges quadratically), and max_iter
+   still bounds a divergence.  Otherwise, when no halving is left, the call
+   fails with the status of the last trial (VLBE_ECALLBACK: outside the
    domain, VLBE_ENONFINITE).  Convergence: see vlbe_static_params.
    Returns VLBE_OK; VLBE_EARG (problem, parameters, t, NULL pointers);
    VLBE_EWORK; VLBE_ENONFINITE (start, Psi at the start, iteration matrix,
@@ -802,7 +807,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     inc_on = par->rtol + par->atol > VLBE_R(0.0);
     inc_ok = !inc_on;
     for (it = 0;; ++it) {
-        int full_ok = 0, accepted = 0;
+        int full_ok = 0, accepted = 0, full_valid = 0;
         vlbe_real alpha = VLBE_R(1.0), mt = VLBE_R(0.0);
         vlbe_status last = VLBE_ENOCONV;
         if (inc_ok && (!(par->ftol > VLBE_R(0.0)) || fnorm <= par->ftol)) break;
@@ -869,6 +874,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
                 last = VLBE_ENONFINITE;
             } else {
                 mt = vlbe__int_hypot(vlbe_vec_norm2(n, Ft), sc * vlbe_vec_norm2(m, Ft + n));
+                if (k == 0) full_valid = 1;
                 if (mt < merit || (k == 0 && full_ok) || par->max_halvings == 0) {
                     accepted = 1;
                     break;
@@ -877,6 +883,14 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             }
             ++stats->rejected;
             alpha *= VLBE_R(0.5);
+        }
+        if (!accepted && last == VLBE_ENOCONV && full_valid) {
+            /* every trial was inside the domain but none lowered the
+               merit: take the full step (see above) */
+            for (i = 0; i < N; ++i) xt[i] = x[i] + d[i];
+            if ((rc = vlbe__sta_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft)) != VLBE_OK) return rc;
+            accepted = 1;
+            k = 0;
         }
         if (!accepted) {
             if (last == VLBE_ENOCONV) ++stats->newton_fails;
