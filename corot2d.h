@@ -59,8 +59,9 @@ CONVENTIONS
    Damping (eqs. 50-51): f^v = (alpha m + beta k0) u', with k0 the linear
    stiffness (no kg) in the element frame; alpha = mat.ray_a [1/s], beta =
    mat.ray_b [s] (time-dependent damping, eq. 56: the caller updates them
-   in el->mat directly; any other change of the material or geometry goes
-   through vlbe_cr2d_elem_init, which tabulates the local m and k0).
+   in el->mat directly).  Geometry changes go through vlbe_cr2d_elem_init;
+   a direct change of el->mat is honoured (the local m and k0 tabulated at
+   init are used only while the material they were made from is unchanged).
    Equations of motion (sign convention of integrators.h):
         M(q) q'' = Q(q, q'),   Q = -(f^d + f^i_nl + f^v)  (global),
    K = dQ/dq, D = dQ/dq'.  Matrices 6x6 row-major in the order of q.
@@ -165,7 +166,10 @@ typedef struct vlbe_cr2d_elem {
     vlbe_real a0;    /* reference angle of X2 - X1                    */
     vlbe_real c0, s0; /* cos a0, sin a0                               */
     unsigned flags;
-    vlbe_real m_[36], k0_[36]; /* local mass and linear stiffness (init) */
+    /* private: local mass and linear stiffness tabulated by init, valid
+       while mat.rhoA, rhoI, EA, EI equal key_ (checked at each use, so a
+       direct change of el->mat is still honoured) */
+    vlbe_real m_[36], k0_[36], key_[4];
 } vlbe_cr2d_elem;
 
 /* The prismatic joint of the transition element: exit point C, unit axis
@@ -243,8 +247,12 @@ VLBE_API vlbe_status vlbe_cr2d_elem_init(vlbe_cr2d_elem *el, const vlbe_cr2d_mat
     el->s0 = d[1] / L;
     el->a0 = vlbe_atan2(d[1], d[0]);
     el->flags = flags;
-    el->m_[0] = VLBE_R(0.0); /* not yet tabulated: lmat computes them */
+    el->key_[0] = -VLBE_R(1.0); /* not yet tabulated: lmat computes them */
     vlbe__cr2d_lmat(el, 0, L, el->m_, el->k0_, NULL, NULL);
+    el->key_[0] = mat->rhoA;
+    el->key_[1] = mat->rhoI;
+    el->key_[2] = mat->EA;
+    el->key_[3] = mat->EI;
     return VLBE_OK;
 }
 
@@ -304,7 +312,8 @@ static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L
     const vlbe_real L = el->L, ma = el->mat.rhoA * L / VLBE_R(6.0), ka = el->mat.EA / L;
     const int *ib = tr ? vlbe__cr2d_ib2 : vlbe__cr2d_ib;
     int i;
-    if (!tr && L2 == L && el->m_[0] > VLBE_R(0.0)) { /* tabulated by vlbe_cr2d_elem_init */
+    if (!tr && L2 == L && el->key_[0] == el->mat.rhoA && el->key_[1] == el->mat.rhoI &&
+        el->key_[2] == el->mat.EA && el->key_[3] == el->mat.EI) { /* tabulated by init */
         if (m)
             for (i = 0; i < 36; ++i) m[i] = el->m_[i];
         if (k0)
