@@ -5,6 +5,8 @@
 #ifndef VLBE_TEST_ALE_FIXTURES_H
 #define VLBE_TEST_ALE_FIXTURES_H
 
+#include "fixtures_common.h"
+
 /* Material of the random tests: every term O(1) so that no contribution
    hides below the rounding of another. */
 static inline vlbe_ale_mat mat_std(void)
@@ -28,20 +30,5 @@ static inline double max_abs(int n, const vlbe_real *a)
     return m;
 }
 
-/* u^T M u in double (M n x n, row-major); *absum = sum of |terms| (the
-   rounding scale) when absum != NULL */
-static inline double quad_form(int n, const vlbe_real *M, const double *u, double *absum)
-{
-    double s = 0.0, a = 0.0;
-    int i, j;
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) {
-            const double t = u[i] * (double)M[i * n + j] * u[j];
-            s += t;
-            a += fabs(t);
-        }
-    if (absum) *absum = a;
-    return s;
-}
 
 #endif /* VLBE_TEST_ALE_FIXTURES_H */

@@ -7,6 +7,8 @@
 #ifndef VLBE_TEST_CR2D_FIXTURES_H
 #define VLBE_TEST_CR2D_FIXTURES_H
 
+#include "fixtures_common.h"
+
 #include <string.h>
 
 static const double CR_PI = 3.14159265358979323846;
@@ -258,20 +260,5 @@ static inline void cr_to_double(int n, const vlbe_real *a, double *d)
     for (i = 0; i < n; ++i) d[i] = (double)a[i];
 }
 
-/* u^T M u in double (M n x n, row-major); *absum = sum of |terms| (the
-   rounding scale) when absum != NULL */
-static inline double cr_quad_form(int n, const vlbe_real *M, const double *u, double *absum)
-{
-    double s = 0.0, a = 0.0;
-    int i, j;
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) {
-            const double t = u[i] * (double)M[i * n + j] * u[j];
-            s += t;
-            a += fabs(t);
-        }
-    if (absum) *absum = a;
-    return s;
-}
 
 #endif /* VLBE_TEST_CR2D_FIXTURES_H */

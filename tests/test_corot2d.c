@@ -548,7 +548,7 @@ static void test_kinetic_energy(void **state)
             const unsigned mode = mode_of(k);
             assert_int_equal(vlbe_cr2d_mass(&el, mode, q, M), VLBE_OK);
             assert_int_equal(vlbe_cr2d_energy(&el, mode, q, qd, E), VLBE_OK);
-            t = 0.5 * cr_quad_form(6, M, x, &absum);
+            t = 0.5 * quad_form(6, M, x, &absum);
             w = fmax(w, fabs((double)E[0] - t) / (EPS * absum));
             ASSERT_CLOSE_CTX(E[0], t, 0, 64.0 * EPS * absum, "mode %u", mode);
             assert_true(E[0] > VLBE_R(0.0));
@@ -772,7 +772,7 @@ static void test_mass_properties(void **state)
                 for (i = 0; i < 5; ++i) {
                     const double ga = 2.0 * CR_PI * tu_rng_uniform(&g);
                     const double u[6] = {cos(ga), sin(ga), 0.0, cos(ga), sin(ga), 0.0};
-                    const double mt = cr_quad_form(6, M, u, NULL);
+                    const double mt = quad_form(6, M, u, NULL);
                     wt = fmax(wt, fabs(mt / ((double)m.rhoA * L) - 1.0) / EPS);
                     ASSERT_CLOSE(mt, (double)m.rhoA * L, 16.0 * EPS, 0);
                 }
@@ -809,7 +809,7 @@ static void test_mass_properties(void **state)
                 rigid_velocity(&el, q, V, w, p, qd);
                 assert_int_equal(vlbe_cr2d_mass(&el, 0, q, M), VLBE_OK);
                 cr_to_double(6, qd, x);
-                Tq = 0.5 * cr_quad_form(6, M, x, &absum);
+                Tq = 0.5 * quad_form(6, M, x, &absum);
                 cx = 0.5 * ((double)el.X[0] + (double)q[0] + (double)el.X[2] + (double)q[3]);
                 cy = 0.5 * ((double)el.X[1] + (double)q[1] + (double)el.X[3] + (double)q[4]);
                 vc[0] = V[0] - w * (cy - p[1]);

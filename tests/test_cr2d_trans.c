@@ -97,7 +97,7 @@ enum { D_QQ, D_QQD, D_MA };
 static void tdiff(const tcase *c, unsigned mode, int which, int j, const vlbe_real *a, double h,
                   double *col)
 {
-    vlbe_real q[6], qd[6], Qp[6], Qm[6], M[36];
+    vlbe_real q[6], qd[6], Qp[6] = {0, 0, 0, 0, 0, 0}, Qm[6] = {0, 0, 0, 0, 0, 0}, M[36];
     int s, i, k;
     for (s = 0; s < 2; ++s) {
         vlbe_real *out = s ? Qm : Qp;
