@@ -24,6 +24,14 @@ USAGE
      for (k = 1; k <= nout; ++k)                       (bs.q, bs.v, bs.lambda at t_k)
          if (vlbe_bdf_advance(&bs, t0 + k * dt)) break;
 
+     Static equilibrium Q(t,q,0) = C_q^T lambda, C = 0 (mass not needed):
+     vlbe_static_params sp;  vlbe_static_params_default(&sp);
+     size_t lw = vlbe_static_work_len(n, m), liw = vlbe_static_iwork_len(n, m);
+     for (k = 1; k <= nload; ++k) {           (load stepping: the caller's job)
+         my.load = k * P / nload;               (q, lambda: start in, solution out)
+         if (vlbe_dae_static(&sys, &sp, t, q, lambda, NULL, work, lw, iwork, liw)) break;
+     }
+
 CONFIG
    Nothing beyond vlbe.h.
 
@@ -52,6 +60,9 @@ API
    vlbe_status vlbe_dae_check(sys)                        validate a problem
    size_t vlbe_dae_work_len(n, m), vlbe_dae_iwork_len(n, m)   workspace of the next one
    vlbe_status vlbe_dae_consistent_acc(sys,t,q,v,a,lam,st,w,lw,iw,liw)  q'', lambda at start
+   void vlbe_static_params_default(p)                     static solver defaults
+   size_t vlbe_static_work_len(n, m), vlbe_static_iwork_len(n, m)
+   vlbe_status vlbe_dae_static(sys, par, t, q, lam, st, w, lw, iw, liw)  static equilibrium
    void vlbe_hht_params_newmark(p, beta, gamma)           classic Newmark
    vlbe_status vlbe_hht_params_hht(p, alpha)              HHT-alpha, alpha in [-1/3, 0]
    vlbe_status vlbe_hht_params_genalpha(p, rho_inf)       generalized-alpha, rho_inf in [0, 1]
@@ -69,6 +80,11 @@ REFERENCES
    constrained mechanical systems, Multibody Syst. Dyn. 18 (2007) 185-202.
    J. Chung, G. Hulbert, J. Appl. Mech. 60 (1993) 371-375.
    H. Hilber, T. Hughes, R. Taylor, Earthq. Eng. Struct. Dyn. 5 (1977) 283-292.
+   K.-M. Hsiao et al., co-rotational sliding beam (shared/papers/
+   corotational-sliding-beam.txt): eq. 53, the residual test ||Psi||/sqrt(N)
+   <= e_tol of vlbe_static_params.ftol and vlbe_hht_params.ftol.
+   J. Dennis, R. Schnabel, Numerical Methods for Unconstrained Optimization
+   and Nonlinear Equations, SIAM 1996, sec. 6.3 (backtracking on ||F||).
    C. W. Gear, B. Leimkuhler, G. K. Gupta, J. Comput. Appl. Math. 12 (1985).
    K. Brenan, S. Campbell, L. Petzold, Numerical Solution of Initial-Value
    Problems in DAEs (DASSL), SIAM 1996.
@@ -142,7 +158,37 @@ typedef struct vlbe_hht_params {
     int newton_max;         /* iterations per attempt (default 10)                     */
     int modified;           /* 1: keep the LU while the iteration contracts (default 1) */
     int max_halvings;       /* step halvings on Newton failure (default 0 = off)        */
+    vlbe_real ftol;         /* residual test (default 0 = off): when > 0 an iterate is
+                               converged only if, besides the increment test, the
+                               weighted Euclidean norm of the residual
+                               Psi = (M q'' + C_q^T lambda - Q, C) at it satisfies
+                               ||Psi||_2 / sqrt(n + m) <= ftol (Hsiao et al. eq. 53;
+                               absolute, in the units of Q, C unscaled); costs one
+                               more residual evaluation (mass, force, constraints)
+                               per step, at the accepted iterate, and a fresh
+                               iteration matrix when the test fails on a stale one.
+                               Set it above the rounding of Psi (eps |Q|, eps |M q''|)
+                               or steps fail with VLBE_ENOCONV.  0: the iteration is
+                               bit-for-bit that without the field                  */
 } vlbe_hht_params;
+
+/* Static equilibrium (vlbe_dae_static).  Converged when every enabled test
+   holds at the iterate: the increment test (enabled when rtol + atol > 0) on
+   the last full Newton step dq (taken without backtracking),
+       |dq_i| <= atol + rtol |q_i|  for every i,   or  max|dq| <= 8 eps max|q|
+   (the rounding floor: in float the default rtol is below eps), and the
+   residual test (enabled when ftol > 0), eq. 53 of Hsiao et al.,
+       ||Psi||_2 / sqrt(n + m) <= ftol,   Psi = (C_q^T lambda - Q, C).
+   The multipliers are not in the increment test: they come out of the same
+   linear solve as dq and converge with it. */
+typedef struct vlbe_static_params {
+    vlbe_real ftol;    /* residual test, absolute, in the units of Q and C
+                          (C enters unscaled); 0 = off (default 0)                */
+    vlbe_real rtol, atol; /* increment test (default 1e-10, 1e-12); both 0 = off */
+    int max_iter;      /* Newton iterations, >= 1 (default 50)                     */
+    int max_halvings;  /* line search: halvings of a Newton step, 0..50 (default 5);
+                          0 = plain Newton, the full step is always taken         */
+} vlbe_static_params;
 
 /* Integrator state.  q, v, qdd (= q''), a (algorithmic acceleration), lambda
    point into the caller's workspace and hold the last accepted step. */
@@ -218,6 +264,14 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
                                              vlbe_real *lambda, vlbe_dae_stats *stats,
                                              vlbe_real *work, size_t work_len, int *iwork,
                                              size_t iwork_len);
+
+VLBE_API void vlbe_static_params_default(vlbe_static_params *p);
+VLBE_API size_t vlbe_static_work_len(int n, int m);
+VLBE_API size_t vlbe_static_iwork_len(int n, int m);
+VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_params *par,
+                                     vlbe_real t, vlbe_real *q, vlbe_real *lambda,
+                                     vlbe_dae_stats *stats, vlbe_real *work, size_t work_len,
+                                     int *iwork, size_t iwork_len);
 
 VLBE_API void vlbe_hht_params_newmark(vlbe_hht_params *p, vlbe_real beta, vlbe_real gamma);
 VLBE_API vlbe_status vlbe_hht_params_hht(vlbe_hht_params *p, vlbe_real alpha);
@@ -519,14 +573,17 @@ VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, 
 }
 
 /* -- problem checks and consistent start -------------------------------- */
-VLBE_API vlbe_status vlbe_dae_check(const vlbe_dae *sys)
+/* need_mass = 0: a problem for the static solver, which never calls mass */
+VLBE_INLINE vlbe_status vlbe__dae_check(const vlbe_dae *sys, int need_mass)
 {
-    if (!sys || sys->n < 1 || sys->m < 0 || sys->m > sys->n || !sys->mass || !sys->force)
+    if (!sys || sys->n < 1 || sys->m < 0 || sys->m > sys->n || (need_mass && !sys->mass) ||
+        !sys->force)
         return VLBE_EARG;
     if (sys->m > 0 && (!sys->constr || !sys->constr_jac)) return VLBE_EARG;
     if ((size_t)sys->n > (size_t)46340) return VLBE_EARG; /* (n+m)^2 must fit an int index */
     return VLBE_OK;
 }
+VLBE_API vlbe_status vlbe_dae_check(const vlbe_dae *sys) { return vlbe__dae_check(sys, 1); }
 
 VLBE_API size_t vlbe_dae_work_len(int n, int m)
 {
@@ -587,6 +644,257 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
     return VLBE_OK;
 }
 
+/* sqrt(a^2 + b^2) of a, b >= 0 without overflow of the squares; NaN if
+   either is NaN. */
+VLBE_INLINE vlbe_real vlbe__int_hypot(vlbe_real a, vlbe_real b)
+{
+    vlbe_real s = a > b ? a : b;
+    if (a != a || b != b) return a + b;
+    if (s == VLBE_R(0.0) || !isfinite(s)) return s;
+    a /= s;
+    b /= s;
+    return s * vlbe_sqrt(a * a + b * b);
+}
+
+/* Weighted Euclidean norm of a residual Psi = (r, c), r of n and c of m
+   components: ||Psi||_2 / sqrt(n + m) (Hsiao et al. eq. 53, N = n + m
+   equations); NaN if Psi holds one. */
+VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const vlbe_real *c)
+{
+    return vlbe__int_hypot(vlbe_vec_norm2(n, r), vlbe_vec_norm2(m, c)) /
+           vlbe_sqrt((vlbe_real)(n + m));
+}
+
+/* ===== static equilibrium ================================================ */
+/* Newton's method with a backtracking line search on
+       Psi(q, lambda) = ( C_q(t,q)^T lambda - Q(t,q,0),  C(t,q) ) = 0,
+   the equations of motion with q' = q'' = 0 (M is never called).  The
+   iteration matrix is dPsi/d(q, lambda) = [ -K + H, C_q^T; C_q, 0 ],
+   K = dQ/dq, H = d(C_q^T lambda)/dq, formed by vlbe__int_tangent2 (the
+   integrators' helper: force_jac or forward differences for K, constr_hess
+   or forward differences for H, H dropped under VLBE_DAE_NO_CHESS).  The
+   constraint rows and multiplier columns are scaled by
+   s = max|-K + H| / max|C_q| (a symmetric scaling: the LU's relative pivot
+   test then sees blocks of the same size whatever the units). */
+
+/* Defaults: ftol 0 (off), rtol 1e-10, atol 1e-12, 50 iterations, up to 5
+   halvings of a step. */
+VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
+{
+    if (!p) return;
+    p->ftol = VLBE_R(0.0);
+    p->rtol = VLBE_R(1e-10);
+    p->atol = VLBE_R(1e-12);
+    p->max_iter = 50;
+    p->max_halvings = 5;
+}
+
+/* Workspace layout (reals), N = n + m: x = (q, lambda), trial x, Psi at x,
+   Psi at the trial, Newton step (5 N); zero velocity, Q at x, Q at the trial
+   (3 n); C_q at x and at the trial (2 m n); iteration matrix (N*N); sink
+   for the unused dQ/dv block (n*n); tangent scratch (3 n*n + m n + 3 n + m). */
+VLBE_API size_t vlbe_static_work_len(int n, int m)
+{
+    size_t N = (size_t)n + (size_t)m, nn = (size_t)n * (size_t)n, mn = (size_t)m * (size_t)n;
+    return 5 * N + 3 * (size_t)n + 2 * mn + N * N + nn + 3 * nn + mn + 3 * (size_t)n + (size_t)m;
+}
+VLBE_API size_t vlbe_static_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
+
+/* Psi = (C_q^T lambda - Q, C) at x = (q, lambda), v = z = 0; leaves Q(t,q,0)
+   in Q and C_q in Cq. */
+VLBE_INLINE vlbe_status vlbe__sta_resid(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                        const vlbe_real *x, const vlbe_real *z, vlbe_real *Q,
+                                        vlbe_real *Cq, vlbe_real *F)
+{
+    int n = s->n, m = s->m, i;
+    vlbe_status rc;
+    if ((rc = vlbe__int_force(s, c, t, x, z, Q)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_cjac(s, c, t, x, Cq, NULL)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_constr(s, c, t, x, F + n)) != VLBE_OK) return rc;
+    vlbe_mat_tvec(m, n, Cq, x + n, F);
+    for (i = 0; i < n; ++i) F[i] -= Q[i];
+    return VLBE_OK;
+}
+
+/* Solves Q(t,q,0) - C_q^T lambda = 0, C(t,q) = 0 for q and lambda, from the
+   given q and lambda (both in/out; lambda may be NULL when m = 0).  Newton
+   step d from [-K + H, C_q^T; C_q, 0] d = -Psi; trial points x + alpha d,
+   alpha = 1, 1/2, ... (par->max_halvings halvings): a trial is accepted when
+   the merit ||(Psi_q, s Psi_c)||_2 decreases (s: the scaling of the
+   constraint rows above, so that a gap in C weighs as the force that closes
+   it), or at alpha = 1 when d passes the increment test.  A callback
+   returning > 0 or a non-finite Psi at a trial point counts as no
+   decrease; when no halving is left the call fails with the status of the
+   last trial (VLBE_ENOCONV: no decrease, VLBE_ECALLBACK: outside the
+   domain, VLBE_ENONFINITE).  Convergence: see vlbe_static_params.
+   Returns VLBE_OK; VLBE_EARG (problem, parameters, t, NULL pointers);
+   VLBE_EWORK; VLBE_ENONFINITE (start, Psi at the start, iteration matrix,
+   step); VLBE_ECALLBACK (a callback < 0 anywhere, != 0 at the start or in
+   a Jacobian, > 0 at the last trial point of a line search);
+   VLBE_ESINGULAR (iteration matrix: e.g. a structure free to move, or
+   K = 0 with lambda = 0 on a curved constraint); VLBE_ENOCONV (max_iter
+   iterations, or no decrease along the step).  On failure q and lambda are
+   as they were.  stats (may be NULL) is added to, not
+   reset: newton_iters, jac_evals, lu_factors, lu_solves, force_calls,
+   constr_calls count as in the integrators; rejected counts rejected trial
+   points, newton_fails the VLBE_ENOCONV returns, steps the solutions (one
+   per successful call); callback_rc holds the last failing callback value
+   (also one backtracked from).
+   Load stepping (and tracing a path past a limit point with a prescribed
+   displacement written as a constraint) is the caller's job: scale the load
+   or move the prescribed value in the user data, call again from the last
+   solution. */
+VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_params *par,
+                                     vlbe_real t, vlbe_real *q, vlbe_real *lambda,
+                                     vlbe_dae_stats *stats, vlbe_real *work, size_t work_len,
+                                     int *iwork, size_t iwork_len)
+{
+    int n, m, N, i, j, it, k, inc_on, inc_ok;
+    size_t NN, e;
+    vlbe_real *x, *xt, *F, *Ft, *d, *z, *Q, *Qt, *Cq, *Cqt, *A, *sink, *scr, *tmp;
+    vlbe_real fnorm, sc, kmax, cmax, merit;
+    vlbe_dae sl;
+    vlbe_dae_stats dummy;
+    vlbe_status rc;
+    if (!sys || (rc = vlbe__dae_check(sys, 0)) != VLBE_OK) return VLBE_EARG;
+    n = sys->n;
+    m = sys->m;
+    N = n + m;
+    NN = (size_t)N * (size_t)N;
+    if (!par || !q || (m > 0 && !lambda) || !isfinite(t)) return VLBE_EARG;
+    if (!(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
+        !(par->ftol >= VLBE_R(0.0)) || !isfinite(par->rtol) || !isfinite(par->atol) ||
+        !isfinite(par->ftol) || !(par->rtol + par->atol + par->ftol > VLBE_R(0.0)) ||
+        par->max_iter < 1 || par->max_halvings < 0 || par->max_halvings > 50)
+        return VLBE_EARG;
+    if (!work || !iwork || work_len < vlbe_static_work_len(n, m) ||
+        iwork_len < vlbe_static_iwork_len(n, m))
+        return VLBE_EWORK;
+    if (!vlbe_all_finite(q, n) || (m > 0 && !vlbe_all_finite(lambda, m))) return VLBE_ENONFINITE;
+    if (!stats) {
+        stats = &dummy;
+        vlbe__int_stats_zero(&dummy);
+    }
+    x = work;
+    xt = x + N;
+    F = xt + N;
+    Ft = F + N;
+    d = Ft + N;
+    z = d + N;
+    Q = z + n;
+    Qt = Q + n;
+    Cq = Qt + n;
+    Cqt = Cq + (size_t)m * n;
+    A = Cqt + (size_t)m * n;
+    sink = A + NN;
+    scr = sink + (size_t)n * n;
+    /* M never enters: no dM/dq terms in the tangent */
+    sl = *sys;
+    sl.flags |= VLBE_DAE_MASS_CONST;
+    vlbe_vec_zero(n, z);
+    vlbe_vec_zero(n * n, sink);
+    vlbe_vec_copy(n, q, x);
+    if (m > 0) vlbe_vec_copy(m, lambda, x + n);
+    /* the start is the caller's point: no backtracking from it */
+    if ((rc = vlbe__sta_resid(&sl, stats, t, x, z, Q, Cq, F)) != VLBE_OK) return rc;
+    if (!vlbe_all_finite(F, N)) return VLBE_ENONFINITE;
+    fnorm = vlbe__int_psi_norm(n, F, m, F + n); /* residual test, eq. 53 */
+    inc_on = par->rtol + par->atol > VLBE_R(0.0);
+    inc_ok = !inc_on;
+    for (it = 0;; ++it) {
+        int full_ok = 0, accepted = 0;
+        vlbe_real alpha = VLBE_R(1.0), mt = VLBE_R(0.0);
+        vlbe_status last = VLBE_ENOCONV;
+        if (inc_ok && (!(par->ftol > VLBE_R(0.0)) || fnorm <= par->ftol)) break;
+        if (it >= par->max_iter) {
+            ++stats->newton_fails;
+            return VLBE_ENOCONV;
+        }
+        /* iteration matrix [-K + H, s C_q^T; s C_q, 0] */
+        for (e = 0; e < NN; ++e) A[e] = VLBE_R(0.0);
+        rc = vlbe__int_tangent2(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), A, N,
+                                VLBE_R(0.0), sink, n, scr);
+        if (rc != VLBE_OK) return rc;
+        kmax = cmax = VLBE_R(0.0);
+        for (i = 0; i < n; ++i)
+            for (j = 0; j < n; ++j) {
+                vlbe_real a = vlbe_fabs(A[(size_t)i * N + j]);
+                if (a > kmax) kmax = a;
+            }
+        cmax = vlbe_vec_norm_inf(m * n, Cq);
+        sc = (kmax > VLBE_R(0.0) && cmax > VLBE_R(0.0) && isfinite(kmax) && isfinite(cmax))
+                 ? kmax / cmax
+                 : VLBE_R(1.0);
+        for (i = 0; i < m; ++i)
+            for (j = 0; j < n; ++j) {
+                vlbe_real c = sc * Cq[(size_t)i * n + j];
+                A[(size_t)(n + i) * N + j] = c;
+                A[(size_t)j * N + n + i] = c;
+            }
+        /* the line search's merit function: ||(Psi_q, s Psi_c)||, the
+           constraint rows in the units of force like the iteration matrix
+           (with C in its own units a metre of gap would weigh as a newton) */
+        merit = vlbe__int_hypot(vlbe_vec_norm2(n, F), sc * vlbe_vec_norm2(m, F + n));
+        ++stats->lu_factors;
+        /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
+        if ((rc = vlbe_lu_factor(N, A, A, iwork, NULL)) != VLBE_OK) return rc;
+        for (i = 0; i < n; ++i) d[i] = -F[i];
+        for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
+        ++stats->lu_solves;
+        ++stats->newton_iters;
+        vlbe_lu_solve(N, A, iwork, 1, d);
+        for (i = 0; i < m; ++i) d[n + i] *= sc;
+        if (!vlbe_all_finite(d, N)) return VLBE_ENONFINITE;
+        /* increment test on the full step, at the new point */
+        if (inc_on) {
+            vlbe_real dmax = VLBE_R(0.0), qmax = VLBE_R(0.0);
+            full_ok = 1;
+            for (i = 0; i < n; ++i) {
+                vlbe_real qi = vlbe_fabs(x[i] + d[i]), di = vlbe_fabs(d[i]);
+                if (di > par->atol + par->rtol * qi) full_ok = 0;
+                if (di > dmax) dmax = di;
+                if (qi > qmax) qmax = qi;
+            }
+            if (dmax <= VLBE_R(8.0) * VLBE_EPS * qmax) full_ok = 1; /* rounding floor */
+        }
+        /* backtracking line search on the merit */
+        for (k = 0; k <= par->max_halvings; ++k) {
+            for (i = 0; i < N; ++i) xt[i] = x[i] + alpha * d[i];
+            if (!vlbe_all_finite(xt, N)) {
+                last = VLBE_ENONFINITE;
+            } else if ((rc = vlbe__sta_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft)) != VLBE_OK) {
+                if (rc != VLBE_ECALLBACK || stats->callback_rc < 0) return rc; /* fatal */
+                last = VLBE_ECALLBACK; /* outside the domain: as no decrease */
+            } else if (!vlbe_all_finite(Ft, N)) {
+                last = VLBE_ENONFINITE;
+            } else {
+                mt = vlbe__int_hypot(vlbe_vec_norm2(n, Ft), sc * vlbe_vec_norm2(m, Ft + n));
+                if (mt < merit || (k == 0 && full_ok) || par->max_halvings == 0) {
+                    accepted = 1;
+                    break;
+                }
+                last = VLBE_ENOCONV;
+            }
+            ++stats->rejected;
+            alpha *= VLBE_R(0.5);
+        }
+        if (!accepted) {
+            if (last == VLBE_ENOCONV) ++stats->newton_fails;
+            return last;
+        }
+        tmp = x, x = xt, xt = tmp;
+        tmp = F, F = Ft, Ft = tmp;
+        tmp = Q, Q = Qt, Qt = tmp;
+        tmp = Cq, Cq = Cqt, Cqt = tmp;
+        fnorm = vlbe__int_psi_norm(n, F, m, F + n);
+        inc_ok = !inc_on || (full_ok && k == 0);
+    }
+    vlbe_vec_copy(n, x, q);
+    if (m > 0) vlbe_vec_copy(m, x + n, lambda);
+    ++stats->steps;
+    return VLBE_OK;
+}
+
 /* ===== generalized-alpha family ========================================= */
 
 VLBE_INLINE void vlbe__hht_defaults(vlbe_hht_params *p)
@@ -596,6 +904,7 @@ VLBE_INLINE void vlbe__hht_defaults(vlbe_hht_params *p)
     p->newton_max = 10;
     p->modified = 1;
     p->max_halvings = 0;
+    p->ftol = VLBE_R(0.0);
 }
 
 VLBE_API void vlbe_hht_params_newmark(vlbe_hht_params *p, vlbe_real beta, vlbe_real gamma)
@@ -676,7 +985,8 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
         return VLBE_EWORK;
     if (!(par->alpha_m < VLBE_R(1.0)) || !(par->alpha_f < VLBE_R(1.0)) || !(par->beta > VLBE_R(0.0)) ||
         !(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
-        !(par->rtol + par->atol > VLBE_R(0.0)) || par->newton_max < 1 || par->max_halvings < 0)
+        !(par->rtol + par->atol > VLBE_R(0.0)) || par->newton_max < 1 || par->max_halvings < 0 ||
+        !(par->ftol >= VLBE_R(0.0)) || !isfinite(par->ftol))
         return VLBE_EARG;
     if (!vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n)) return VLBE_ENONFINITE;
     st->sys = sys;
@@ -741,6 +1051,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
     vlbe_real bp = h * h * p->beta * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am); /* dq/dq''  */
     vlbe_real gp = h * p->gamma * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);    /* dv/dq''  */
     vlbe_real t1 = st->t + h, prev = VLBE_R(0.0), theta = VLBE_R(0.0);
+    int pending = 0; /* ftol > 0: the increment test passed, the residual is due */
     vlbe_status rc;
 
     /* predictor: q''_{n+1} = q''_n, lambda_{n+1} = lambda_n */
@@ -755,8 +1066,9 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
     /* the stored LU belongs to another step size: drop it */
     if (st->have_lu_ && st->h_lu_ != h) st->have_lu_ = 0;
     fresh = 0;
-    for (it = 0; it < p->newton_max; ++it) {
-        vlbe_real nrm, nv;
+    for (it = 0; it < p->newton_max || pending; ++it) {
+        vlbe_real nrm = VLBE_R(0.0), nv;
+        int conv = 0;
         /* residual: r_q = M q'' + C_q^T lambda - Q, r_c = C / bp (scaled) */
         if ((rc = vlbe__int_mass(s, &st->stats, t1, tq, tv, M)) != VLBE_OK) return rc;
         if ((rc = vlbe__int_force(s, &st->stats, t1, tq, tv, Q)) != VLBE_OK) return rc;
@@ -769,6 +1081,24 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
             r[n + j] = C[j] / bp;
         }
         if (!vlbe_all_finite(r, N)) return VLBE_ENONFINITE;
+        /* residual test (ftol > 0, eq. 53) at an iterate that passed the
+           increment test.  If it fails, this residual drives the next
+           iteration: with a fresh iteration matrix, if the stored one is
+           stale (modified Newton's slow tail would spend the budget on a
+           residual its increments no longer see), which gets the full
+           budget from this iteration on, as in the refreshes below;
+           otherwise within the budget, which the last iteration may
+           overrun by this one evaluation. */
+        if (pending) {
+            if (vlbe__int_psi_norm(n, r, m, C) <= p->ftol) goto done;
+            pending = 0;
+            if (!fresh) {
+                st->have_lu_ = 0;
+                it = 0;
+            } else if (it >= p->newton_max) {
+                break;
+            }
+        }
         /* iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v, C_q^T; C_q, 0] */
         if (!st->have_lu_ || !p->modified) {
             for (i = 0; i < n; ++i) {
@@ -823,35 +1153,44 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
            that size per step, which sums to O(eps/h^2) over a run: for very
            small steps (pendulum h < 5e-5, Andrews h < 5e-7) use full Newton
            (modified = 0) or BDF, as the work-precision charts show. */
-        if (vlbe_vec_norm_inf(n, r) <= VLBE_R(8.0) * VLBE_EPS * vlbe_vec_norm_inf(n, tq)) goto done;
-        nrm = vlbe__int_wrms(n, r, tq, p->rtol, p->atol);
-        for (i = 0; i < n; ++i) r[i] *= gp / bp; /* velocity increment */
-        nv = vlbe__int_wrms(n, r, tv, p->rtol, p->atol);
-        if (nv > nrm) nrm = nv;
-        if (prev > VLBE_R(0.0)) {
-            theta = nrm / prev;
-            if (theta >= VLBE_R(0.5)) {
-                /* slow or diverging: a stale LU gets a fresh one */
-                if (!fresh) {
+        if (vlbe_vec_norm_inf(n, r) <= VLBE_R(8.0) * VLBE_EPS * vlbe_vec_norm_inf(n, tq)) {
+            conv = 1;
+        } else {
+            nrm = vlbe__int_wrms(n, r, tq, p->rtol, p->atol);
+            for (i = 0; i < n; ++i) r[i] *= gp / bp; /* velocity increment */
+            nv = vlbe__int_wrms(n, r, tv, p->rtol, p->atol);
+            if (nv > nrm) nrm = nv;
+            if (prev > VLBE_R(0.0)) {
+                theta = nrm / prev;
+                if (theta >= VLBE_R(0.5)) {
+                    /* slow or diverging: a stale LU gets a fresh one */
+                    if (!fresh) {
+                        st->have_lu_ = 0;
+                        prev = VLBE_R(0.0);
+                        it = -1; /* the fresh matrix gets the full iteration budget */
+                        continue;
+                    }
+                    if (theta >= VLBE_R(1.0)) return VLBE_ENOCONV;
+                }
+                if (theta / (VLBE_R(1.0) - theta) * nrm <= VLBE_R(1.0)) {
+                    conv = 1;
+                } else if (!fresh && vlbe__int_powi(theta, p->newton_max - 1 - it) /
+                                             (VLBE_R(1.0) - theta) * nrm > VLBE_R(1.0)) {
+                    /* will it converge within the iterations left?  If not, a
+                       stale matrix is refreshed now rather than after the
+                       budget is spent */
                     st->have_lu_ = 0;
                     prev = VLBE_R(0.0);
-                    it = -1; /* the fresh matrix gets the full iteration budget */
+                    it = -1;
                     continue;
                 }
-                if (theta >= VLBE_R(1.0)) return VLBE_ENOCONV;
+            } else if (nrm <= VLBE_R(1e-2)) {
+                conv = 1; /* a very small first increment: converged */
             }
-            if (theta / (VLBE_R(1.0) - theta) * nrm <= VLBE_R(1.0)) goto done;
-            /* will it converge within the iterations left?  If not, a stale
-               matrix is refreshed now rather than after the budget is spent */
-            if (!fresh && vlbe__int_powi(theta, p->newton_max - 1 - it) /
-                                  (VLBE_R(1.0) - theta) * nrm > VLBE_R(1.0)) {
-                st->have_lu_ = 0;
-                prev = VLBE_R(0.0);
-                it = -1;
-                continue;
-            }
-        } else if (nrm <= VLBE_R(1e-2)) {
-            goto done; /* a very small first increment: converged */
+        }
+        if (conv) {
+            if (!(p->ftol > VLBE_R(0.0))) goto done; /* increment test only */
+            pending = 1; /* the residual at the new iterate decides */
         }
         prev = nrm;
     }

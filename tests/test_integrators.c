@@ -25,6 +25,10 @@
      fail_noconv_and_recovery  huge step -> ENOCONV, unchanged; with halvings: ok
      fail_args                 workspace too small -> EWORK; h <= 0, NaN -> EARG
      counters                  identities of the counters; modified vs full Newton
+     hht_residual_test         ftol (eq. 53): >= the iterations of ftol = 0 step by
+                               step, ||Psi||/sqrt(N) <= ftol after each step, one
+                               more residual evaluation per step; presets ftol = 0;
+                               ftol < 0, NaN -> EARG; unreachable ftol -> ENOCONV
      andrews_consistent_start  vlbe_dae_consistent_acc vs the Test Set values
      andrews_jacobians         analytic Jacobians of the example vs differences
      andrews_reference         HHT and gen-alpha reach the Test Set at 1e-6 */
@@ -809,6 +813,137 @@ static void test_counters(void **state)
 }
 
 /* ------------------------------------------------------------------------ */
+/* The residual test of the Newton iteration (par.ftol, Hsiao et al. eq. 53):
+   ||Psi||_2 / sqrt(n + m) with Psi = (M q'' + C_q^T lambda - Q, C) at the
+   accepted state of the pendulum, evaluated here from the formulas. */
+static double pend_psi(const pend_par *p, const vlbe_hht *st)
+{
+    const double m = (double)p->m, g = (double)p->g, L = (double)p->L;
+    const double x = (double)st->q[0], y = (double)st->q[1], lam = (double)st->lambda[0];
+    const double r0 = m * (double)st->qdd[0] + x * lam;
+    const double r1 = m * (double)st->qdd[1] + y * lam + m * g;
+    const double c = 0.5 * (x * x + y * y - L * L);
+    return sqrt((r0 * r0 + r1 * r1 + c * c) / 3.0);
+}
+/* the rounding of Psi as integrators.h computes it (in vlbe_real) against
+   pend_psi (double, from the same stored state): each component is a sum of
+   at most 3 rounded products (gamma_3 < 3.1 eps of the sum of their
+   moduli), the norm adds ~2 eps of itself: 4 eps (m |q''| + |q| |lambda| +
+   m g + L^2) */
+static double pend_psi_round(const pend_par *p, const vlbe_hht *st)
+{
+    return 4.0 * EPS *
+           ((double)p->m * (fabs((double)st->qdd[0]) + fabs((double)st->qdd[1])) +
+            (fabs((double)st->q[0]) + fabs((double)st->q[1])) * fabs((double)st->lambda[0]) +
+            (double)p->m * (double)p->g + (double)p->L * (double)p->L);
+}
+
+/* Two pendulum runs in lockstep: before every step run B gets run A's
+   whole state (workspace, stored LU and its step size included), then both
+   take the step, A with ftol = 0, B with ftol > 0.  Up to A's convergence
+   both iterate identically, so B needs at least as many iterations; its
+   accepted state has ||Psi||/sqrt(N) <= ftol; and ftol binds (A's residual
+   exceeds it at some steps: the default modified Newton stops on the
+   increment test with residuals up to 5e-7 N in double, 5e-3 N in float).
+   ftol: 1e-9 N in double, 1e-4 N in float, well above the rounding of Psi
+   (a few eps times m g ~ 10 N: 3e-15 N double, 2e-6 N float measured with
+   full Newton).  Psi is evaluated here in double from the state: it may
+   exceed the solver's (vlbe_real) value by pend_psi_round, ~4e-5 N in float. */
+static void test_hht_residual_test(void **state)
+{
+    pend_par p = pend_default();
+    vlbe_dae sys;
+    vlbe_hht_params par, pf;
+    vlbe_real q0[2], v0[2];
+    run *ra = (run *)malloc(sizeof *ra), *rb = (run *)malloc(sizeof *rb);
+    const long nsteps = 300;
+    long k, more = 0, ia, ib;
+    double psi_a = 0.0, psi_b = 0.0;
+#ifndef VLBE_USE_FLOAT
+    const double ftol = 1e-9;
+#else
+    const double ftol = 1e-4;
+#endif
+    (void)state;
+    assert_non_null(ra);
+    assert_non_null(rb);
+    /* every preset leaves the test off; init rejects ftol < 0, NaN, Inf */
+    vlbe_hht_params_newmark(&par, VLBE_R(0.25), VLBE_R(0.5));
+    ASSERT_CLOSE(par.ftol, 0.0, 0.0, 0.0);
+    vlbe_hht_params_hht(&par, VLBE_R(-0.1));
+    ASSERT_CLOSE(par.ftol, 0.0, 0.0, 0.0);
+    vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
+    ASSERT_CLOSE(par.ftol, 0.0, 0.0, 0.0);
+    pend_setup(&sys, &p);
+    pend_initial(&p, q0, v0);
+    pf = par;
+    pf.ftol = VLBE_R(-1e-6);
+    assert_int_equal(run_init(rb, &sys, &pf, q0, v0), VLBE_EARG);
+    pf.ftol = (vlbe_real)NAN;
+    assert_int_equal(run_init(rb, &sys, &pf, q0, v0), VLBE_EARG);
+    pf.ftol = (vlbe_real)INFINITY;
+    assert_int_equal(run_init(rb, &sys, &pf, q0, v0), VLBE_EARG);
+
+    pf = par;
+    pf.ftol = (vlbe_real)ftol;
+    assert_int_equal(run_init(ra, &sys, &par, q0, v0), VLBE_OK);
+    assert_int_equal(run_init(rb, &sys, &pf, q0, v0), VLBE_OK);
+    for (k = 0; k < nsteps; ++k) {
+        /* the same workspace layout (same n, m, lengths): the copy is B's
+           state with A's numbers, the stored LU included */
+        rb->st.t = ra->st.t;
+        memcpy(rb->w, ra->w, sizeof rb->w);
+        memcpy(rb->iw, ra->iw, sizeof rb->iw);
+        rb->st.have_lu_ = ra->st.have_lu_;
+        rb->st.h_lu_ = ra->st.h_lu_;
+        ia = ra->st.stats.newton_iters;
+        ib = rb->st.stats.newton_iters;
+        assert_int_equal(vlbe_hht_step(&ra->st, VLBE_R(1e-2)), VLBE_OK);
+        assert_int_equal(vlbe_hht_step(&rb->st, VLBE_R(1e-2)), VLBE_OK);
+        ia = ra->st.stats.newton_iters - ia;
+        ib = rb->st.stats.newton_iters - ib;
+        assert_true(ib >= ia);
+        if (ib > ia) ++more;
+        psi_a = fmax(psi_a, pend_psi(&p, &ra->st));
+        psi_b = fmax(psi_b, pend_psi(&p, &rb->st));
+        assert_true(pend_psi(&p, &rb->st) <= ftol + pend_psi_round(&p, &rb->st));
+    }
+    tu_report("HHT ftol: max ||Psi||/sqrt(N) with ftol [N]", psi_b, ftol);
+    tu_report("HHT ftol = 0: max ||Psi||/sqrt(N) [N] (vs ftol)", psi_a, ftol);
+    assert_true(psi_a > ftol); /* the test binds ...                       */
+    assert_true(more > 0);     /* ... and costs iterations at some steps */
+    /* counters: ftol = 0 keeps the identities of test_counters (a mass
+       call per iteration + the start's; force: one more per Jacobian);
+       ftol > 0 adds one residual evaluation per step, at the accepted
+       iterate, and nothing else */
+    assert_true(ra->st.stats.mass_calls == ra->st.stats.newton_iters + 1);
+    assert_true(ra->st.stats.force_calls ==
+                ra->st.stats.newton_iters + ra->st.stats.jac_evals + 1);
+    assert_true(rb->st.stats.mass_calls == rb->st.stats.newton_iters + 1 + rb->st.stats.steps);
+    assert_true(rb->st.stats.force_calls ==
+                rb->st.stats.newton_iters + rb->st.stats.jac_evals + 1 + rb->st.stats.steps);
+    assert_true(rb->st.stats.lu_solves == rb->st.stats.newton_iters + 1);
+    /* an ftol below the rounding of Psi can only be met by luck (Psi
+       exactly 0 in vlbe_real, which happens in float): otherwise ENOCONV,
+       the state as it was (measured: ENOCONV in double) */
+    {
+        snap sn;
+        vlbe_status rc;
+        rb->st.par.ftol = (vlbe_real)(1e-6 * EPS * EPS);
+        snap_take(&rb->st, &sn);
+        rc = vlbe_hht_step(&rb->st, VLBE_R(1e-2));
+        if (rc != VLBE_OK) {
+            assert_int_equal(rc, VLBE_ENOCONV);
+            snap_assert_same(&rb->st, &sn);
+        } else {
+            assert_true(pend_psi(&p, &rb->st) <= pend_psi_round(&p, &rb->st));
+        }
+    }
+    free(ra);
+    free(rb);
+}
+
+/* ------------------------------------------------------------------------ */
 /* Andrews' mechanism. */
 static void test_andrews_consistent_start(void **state)
 {
@@ -1004,6 +1139,7 @@ int main(void)
         cmocka_unit_test(test_fail_noconv_and_recovery),
         cmocka_unit_test(test_fail_args),
         cmocka_unit_test(test_counters),
+        cmocka_unit_test(test_hht_residual_test),
         cmocka_unit_test(test_andrews_consistent_start),
         cmocka_unit_test(test_andrews_jacobians),
         cmocka_unit_test(test_andrews_reference),
