@@ -1,0 +1,675 @@
+/* corot_static.c -- static checks of the planar co-rotational Euler beam of
+   corot2d.h (Hsiao et al.): a cantilever rolled up into a circle by an end
+   moment, the cantilever's natural frequencies from the linearised system
+   at rest, and zero deformation force under rigid rotation of any number
+   of turns.  -- part of vlbe                      SPDX-License-Identifier: MIT
+
+   cc -O2 examples/corot_static.c -lm && ./a.out [outdir]
+
+   Section of the paper's sliding beam (its section 5): A = 4.3434e-5 m^2,
+   I = 1.059e-11 m^4, E = 68.96 GPa, rho = 3144.3858 kg/m^3 (EA = 2.995e6 N,
+   EI = 0.7303 N m^2, rhoA = 0.13657 kg/m), rotary inertia rhoI = 0; a
+   cantilever of L = 1 m along x, clamped at node 0 by the prescribed
+   coordinates u = v = phi = 0 (vlbe_cr2d_fix), N equal elements.
+
+   (a) Roll-up.  A moment M = lambda 2 pi EI / L on the tip's phi (beam.P,
+   load factor beam.load = lambda) in NSTEP equal load steps, each solved
+   by vlbe_dae_static (integrators.h) from the previous solution.  Exact
+   (inextensible Euler beam, pure moment: zero axial force, constant
+   curvature k = M / EI = 2 pi lambda / L): the arc r(s) = (sin ks, 1 -
+   cos ks) / k, phi(s) = k s; at lambda = 1 the tip is back at the root
+   with phi = 2 pi.
+   The discrete solution in closed form (by hand from eq. 7 and eqs.
+   16-17, used as a second reference): the free tip carries no force, so
+   every element has zero axial force, EA eps0 = 0, no shear (g1 + g2 = 0
+   in eqs. 16-17) and the end moment M = EI/L_e (2 theta1 + 4 theta2):
+   theta2 = -theta1 = a/2 with a = k L_e exactly (the Hermite cubic holds a
+   constant curvature), so the node rotations are exact, phi_i = i a.
+   eps0 = 0 with eq. 7 fixes the chord, l = L_e (1 - a^2/24), so the nodes
+   lie on a circle of radius
+        R_d = l / (2 sin(a/2)) = R (1 - a^4/1920 + O(a^6)),   R = 1/k,
+   at their exact angles: node i at R_d (sin(i a), 1 - cos(i a)).  The
+   position error is (R - R_d) 2 sin(k s / 2): FOURTH order in the element
+   length, not second: the quadratic term of eps0 (the int v'^2 of eq. 7)
+   shortens the chord by exactly the a^2/24 that an arc's chord has.
+   (An element with eps0 = (l - L)/L alone keeps l = L_e and has R_d = R
+   (1 + a^2/24): second order.)  At lambda = 1 (N a = 2 pi) the polygon
+   closes: the tip returns to the root to rounding for every N.
+   The LINEAR element (VLBE_CR2D_LINEAR) for contrast: the tip deflects by
+   M L^2 / (2 EI) = pi L laterally and does not move axially.
+
+   (b) Natural frequencies of the cantilever from the linearised system at
+   rest: K0 = -dQ/dq (vlbe_cr2d_beam_force_jac at q = 0, q' = 0) and M
+   (vlbe_cr2d_beam_mass), the clamped coordinates removed, K0 x = w^2 M x
+   (examples/ex_eig.h).  Bending modes against Euler-Bernoulli,
+   w = (beta L)^2 sqrt(EI / (rhoA L^4)), beta L the roots of
+   1 + cos(bL) cosh(bL) = 0 (computed here by Newton to full precision;
+   1.8751, 4.6941, 7.8548 to five digits); the first axial mode against
+   the rod, w = (pi/2) sqrt(EA / (rhoA L^2)).  At rest the frame is the
+   reference frame and the axial and bending coordinates decouple: a mode
+   is axial when its u components carry most of its M-norm.  The
+   consistent-mass Hermite element converges as h^4 in frequency (from
+   above: Rayleigh-Ritz), the linear axial element as h^2.
+   Reduction: the eigenproblem is solved as M x = (1/w^2) K0 x, so that the
+   low modes are the LARGE eigenvalues of L^-1 M L^-T (K0 = L L^T).  In the
+   form K0 x = w^2 M x the rounding of the reduction and of Jacobi is
+   relative to ||L^-1 K0 L^-T||, the highest (axial) mode, 1e9 .. 1e11
+   times the fundamental's w^2 = 66: measured against a long-double
+   Rayleigh quotient of the same matrices, w1^2 is off by 1.6e-9 at N = 32
+   (a tenth of w1's discretisation error) and 9e-8 at N = 64; the
+   reciprocal form by 9e-11 and 6e-10.  Both are printed; the N = 64 w1
+   is rounding-limited even so (its h^4 error, 5e-10, is below that).
+
+   (c) Rigid rotation: the beam turned about a point by psi from -2 to +6
+   turns (phi = psi, unbounded): Q is rounding.  Reported as the largest
+   force component over EA (the strain that force would need) and the
+   largest moment over EI / L_e (the deformation rotation it would need).
+
+   Output rows ROW|corot static|..., a convergence table, out/corot_static_
+   shapes.svg (deformed shapes at several load factors, 8 elements, and the
+   exact arcs), out/corot_static_conv.svg (errors against N, log-log) and
+   the CSV files corot_static_shapes.csv, corot_static_conv.csv. */
+#include "../corot2d.h"
+#include "../integrators.h"
+#include "ex_eig.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define CS_L 1.0
+#define CS_A 4.3434e-5
+#define CS_I 1.059e-11
+#define CS_E 68.96e9
+#define CS_RHO 3144.3858
+#define CS_NE_MAX 64
+#define CS_PI 3.14159265358979323846
+
+typedef struct cs_model {
+    vlbe_cr2d_mat mat;
+    vlbe_cr2d_elem el[CS_NE_MAX];
+    vlbe_cr2d_fix fix[3];
+    vlbe_cr2d_beam beam;
+    vlbe_real P[3 * (CS_NE_MAX + 1)];
+    vlbe_dae sys;
+    int ne, n;
+} cs_model;
+
+static inline double cs_EI(void) { return CS_E * CS_I; }
+static inline double cs_EA(void) { return CS_E * CS_A; }
+static inline double cs_rhoA(void) { return CS_RHO * CS_A; }
+
+/* The cantilever of ne elements along x with the section (EA, EI, rhoA),
+   clamped at node 0, tip moment 2 pi EI / L per unit load factor
+   (beam.load = 0: unloaded); flags: the elements' mode (0 or
+   VLBE_CR2D_LINEAR).  Build it in place: the beam points into the model.
+   0 ok, -1 bad ne or element. */
+static inline int cs_build_sec(cs_model *m, int ne, unsigned flags, double EA, double EI,
+                               double rhoA)
+{
+    int i;
+    if (ne < 1 || ne > CS_NE_MAX) return -1;
+    memset(m, 0, sizeof *m);
+    m->ne = ne;
+    m->n = 3 * (ne + 1);
+    m->mat.EA = (vlbe_real)EA;
+    m->mat.EI = (vlbe_real)EI;
+    m->mat.rhoA = (vlbe_real)rhoA;
+    m->mat.rhoI = VLBE_R(0.0);
+    for (i = 0; i < ne; ++i) {
+        vlbe_real X1[2], X2[2];
+        X1[0] = (vlbe_real)(CS_L * i / ne);
+        X2[0] = (vlbe_real)(CS_L * (i + 1) / ne);
+        X1[1] = X2[1] = VLBE_R(0.0);
+        if (vlbe_cr2d_elem_init(&m->el[i], &m->mat, X1, X2, flags | VLBE_CR2D_NO_DAMP))
+            return -1;
+    }
+    for (i = 0; i < 3; ++i) m->fix[i].dof = i; /* g = 0, fun = NULL (memset) */
+    if (vlbe_cr2d_beam_init(&m->beam, m->el, ne, m->fix, 3)) return -1;
+    m->P[3 * ne + 2] = (vlbe_real)(2.0 * CS_PI * EI / CS_L);
+    m->beam.P = m->P;
+    m->beam.load = VLBE_R(0.0);
+    m->sys.n = m->n;
+    m->sys.m = 3;
+    m->sys.user = &m->beam;
+    m->sys.mass = vlbe_cr2d_beam_mass;
+    m->sys.force = vlbe_cr2d_beam_force;
+    m->sys.force_jac = vlbe_cr2d_beam_force_jac;
+    m->sys.mass_jac = vlbe_cr2d_beam_mass_jac;
+    m->sys.constr = vlbe_cr2d_beam_constr;
+    m->sys.constr_jac = vlbe_cr2d_beam_constr_jac;
+    m->sys.constr_acc = vlbe_cr2d_beam_constr_acc;
+    return 0;
+}
+
+/* The scene's cantilever: the paper's section. */
+static inline int cs_build(cs_model *m, int ne, unsigned flags)
+{
+    return cs_build_sec(m, ne, flags, cs_EA(), cs_EI(), cs_rhoA());
+}
+
+/* ===== (a) roll-up ======================================================= */
+
+/* Load steps k = 1..nstep (lambda = k / nstep), each from the previous
+   solution.  qh: (nstep + 1) * n, the solutions (row 0: unloaded).  par:
+   the solver's parameters, NULL for the scene's (the defaults with plain
+   Newton, see below).  st (may be NULL) accumulates the solver's
+   counters.  VLBE_OK or the first failing status (qh then holds the
+   solutions up to the failing step). */
+static inline vlbe_status cs_rollup(cs_model *m, int nstep, const vlbe_static_params *ppar,
+                                    vlbe_real *qh, vlbe_dae_stats *st)
+{
+    const int n = m->n;
+    vlbe_static_params par;
+    size_t lw = vlbe_static_work_len(n, 3), liw = vlbe_static_iwork_len(n, 3);
+    vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w), lam[3] = {0, 0, 0};
+    int *iw = (int *)malloc(liw * sizeof *iw);
+    vlbe_status rc = VLBE_OK;
+    int k, i;
+    vlbe_static_params_default(&par);
+    /* plain Newton: the default backtracking on ||Psi|| rejects the first
+       full step of every load step (it rotates the elements, and the
+       linearised kinematics stretch them: an axial residual EA a^2 / 2,
+       EA / EI = 4e6 m^-2, dwarfs the moment residual), so it never leaves
+       q = 0 (VLBE_ENOCONV after 6 rejected trials); the full Newton steps
+       converge from every load step */
+    par.max_halvings = 0;
+    if (ppar) par = *ppar;
+    if (!w || !iw) rc = VLBE_EWORK;
+    for (i = 0; i < n; ++i) qh[i] = VLBE_R(0.0);
+    for (k = 1; k <= nstep && rc == VLBE_OK; ++k) {
+        vlbe_real *q = qh + (size_t)k * (size_t)n;
+        for (i = 0; i < n; ++i) q[i] = q[i - n];
+        m->beam.load = (vlbe_real)((double)k / nstep);
+        rc = vlbe_dae_static(&m->sys, &par, VLBE_R(0.0), q, lam, st, w, lw, iw, liw);
+    }
+    free(w);
+    free(iw);
+    return rc;
+}
+
+/* Errors of a solution q at load factor lambda against the exact arc (and
+   the closed-form discrete solution, see the top). */
+typedef struct cs_arc_err {
+    double tip;       /* |r_tip - r(L)| / L                                   */
+    double node;      /* max over the nodes |r_i - r(s_i)| / L                */
+    double rot;       /* |phi_tip - 2 pi lambda|                              */
+    double tip_pred;  /* the discrete closed form's tip error (R - R_d) 2 sin(kL/2) / L */
+    double disc;      /* max over the nodes |r_i - discrete closed form| / L  */
+    double xtip, ytip, phitip;
+} cs_arc_err;
+
+static inline void cs_arc_exact(double k, double s, double *x, double *y)
+{
+    if (k == 0.0) {
+        *x = s;
+        *y = 0.0;
+    } else {
+        *x = sin(k * s) / k;
+        *y = (1.0 - cos(k * s)) / k;
+    }
+}
+
+static inline cs_arc_err cs_arc_errors(const cs_model *m, const vlbe_real *q, double lambda)
+{
+    const int ne = m->ne;
+    const double Le = CS_L / ne, k = 2.0 * CS_PI * lambda / CS_L, a = k * Le;
+    /* R_d and R - R_d; the difference in a form without cancellation:
+       R - R_d = (2 sin(a/2) - a (1 - a^2/24)) / (2 k sin(a/2)) */
+    const double sh = sin(0.5 * a);
+    double Rd = 0.0, dR = 0.0;
+    cs_arc_err e;
+    int i;
+    memset(&e, 0, sizeof e);
+    if (k > 0.0) {
+        Rd = Le * (1.0 - a * a / 24.0) / (2.0 * sh);
+        dR = (2.0 * sh - a * (1.0 - a * a / 24.0)) / (2.0 * k * sh);
+        e.tip_pred = fabs(dR) * 2.0 * fabs(sin(0.5 * k * CS_L)) / CS_L;
+    }
+    for (i = 0; i <= ne; ++i) {
+        const double X = CS_L * i / ne;
+        const double x = X + (double)q[3 * i], y = (double)q[3 * i + 1];
+        double xe, ye, xd, yd, d;
+        cs_arc_exact(k, X, &xe, &ye);
+        if (k > 0.0) {
+            xd = Rd * sin(i * a);
+            yd = Rd * (1.0 - cos(i * a));
+        } else {
+            xd = X;
+            yd = 0.0;
+        }
+        d = hypot(x - xe, y - ye) / CS_L;
+        if (d > e.node) e.node = d;
+        if (i == ne) e.tip = d;
+        d = hypot(x - xd, y - yd) / CS_L;
+        if (d > e.disc) e.disc = d;
+    }
+    e.xtip = CS_L + (double)q[3 * ne];
+    e.ytip = (double)q[3 * ne + 1];
+    e.phitip = (double)q[3 * ne + 2];
+    e.rot = fabs(e.phitip - k * CS_L);
+    return e;
+}
+
+/* ===== (b) natural frequencies ========================================== */
+
+/* The n-th root of 1 + cos x cosh x = 0 (n = 1, 2, ...), written as
+   cos x + 1/cosh x = 0 (well scaled), Newton from the asymptotic
+   (2n - 1) pi / 2 (the first from 1.875). */
+static inline double cs_beta_l(int n)
+{
+    double x = n == 1 ? 1.875 : (2.0 * n - 1.0) * CS_PI / 2.0;
+    int it;
+    for (it = 0; it < 50; ++it) {
+        const double ch = cosh(x);
+        const double f = cos(x) + 1.0 / ch, fp = -sin(x) - sinh(x) / (ch * ch);
+        const double dx = f / fp;
+        x -= dx;
+        if (fabs(dx) < 1e-16 * x) break;
+    }
+    return x;
+}
+
+/* Frequencies [rad/s] of the clamped beam of ne elements: the first nb
+   bending modes into wb, the first axial mode into *wa (either may be
+   NULL).  recip = 1: solved as M x = (1/w^2) K0 x (see the top); 0: as
+   K0 x = w^2 M x.  Returns VLBE_OK, a status of the callbacks (as
+   VLBE_ECALLBACK) or of ex_eig_gsym. */
+static inline vlbe_status cs_freqs(int ne, int recip, int nb, double *wb, double *wa)
+{
+    cs_model *m = (cs_model *)malloc(sizeof *m);
+    const int n = 3 * (ne + 1), r = n - 3;
+    vlbe_real *q = NULL, *K = NULL, *M = NULL, *Kr = NULL, *Mr = NULL, *lam = NULL, *X = NULL,
+              *w = NULL;
+    vlbe_status st = VLBE_EWORK;
+    int i, j, kb = 0, ka = 0;
+    if (!m || cs_build(m, ne, 0u)) goto done;
+    q = (vlbe_real *)calloc((size_t)n, sizeof *q);
+    K = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *K);
+    M = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *M);
+    Kr = (vlbe_real *)malloc((size_t)r * (size_t)r * sizeof *Kr);
+    Mr = (vlbe_real *)malloc((size_t)r * (size_t)r * sizeof *Mr);
+    lam = (vlbe_real *)malloc((size_t)r * sizeof *lam);
+    X = (vlbe_real *)malloc((size_t)r * (size_t)r * sizeof *X);
+    w = (vlbe_real *)malloc(ex_eig_work_len(r) * sizeof *w);
+    if (!q || !K || !M || !Kr || !Mr || !lam || !X || !w) goto done;
+    st = VLBE_ECALLBACK;
+    if (vlbe_cr2d_beam_force_jac(&m->beam, VLBE_R(0.0), q, q, K, NULL)) goto done;
+    if (vlbe_cr2d_beam_mass(&m->beam, VLBE_R(0.0), q, q, M)) goto done;
+    for (i = 0; i < r; ++i) /* drop the clamped coordinates 0, 1, 2 */
+        for (j = 0; j < r; ++j) {
+            Kr[i * r + j] = -K[(size_t)(i + 3) * (size_t)n + (size_t)(j + 3)];
+            Mr[i * r + j] = M[(size_t)(i + 3) * (size_t)n + (size_t)(j + 3)];
+        }
+    st = recip ? ex_eig_gsym(r, Mr, Kr, lam, X, NULL, w, ex_eig_work_len(r))
+               : ex_eig_gsym(r, Kr, Mr, lam, X, NULL, w, ex_eig_work_len(r));
+    if (st != VLBE_OK) goto done;
+    /* modes from the lowest frequency up: recip -> eigenvalues descending */
+    for (j = 0; j < r; ++j) {
+        const int c = recip ? r - 1 - j : j;
+        const double om = recip ? 1.0 / sqrt((double)lam[c]) : sqrt((double)lam[c]);
+        double su = 0.0, sa = 0.0;
+        for (i = 0; i < r; ++i) {
+            const double x2 = (double)X[i * r + c] * (double)X[i * r + c];
+            sa += x2;
+            if (i % 3 == 0) su += x2; /* u of node i/3 + 1 */
+        }
+        if (su > 0.5 * sa) {
+            if (ka++ == 0 && wa) *wa = om;
+        } else if (kb < nb) {
+            if (wb) wb[kb] = om;
+            ++kb;
+        }
+    }
+    if (kb < nb) st = VLBE_EARG; /* fewer bending modes than asked for */
+done:
+    free(q);
+    free(K);
+    free(M);
+    free(Kr);
+    free(Mr);
+    free(lam);
+    free(X);
+    free(w);
+    free(m);
+    return st;
+}
+
+/* ===== (c) rigid rotation =============================================== */
+
+/* The beam of ne elements turned rigidly by psi about the point c (and
+   moved by nothing else): largest |Q| of a force coordinate / EA and of a
+   moment coordinate / (EI / L_e), over psi = psi0 + j dpsi, j < npsi.
+   flags: element mode (0, or VLBE_CR2D_LINEAR for the contrast).
+   Returns 0, or -1 when an evaluation failed. */
+static inline int cs_rigid(int ne, unsigned flags, double psi0, double dpsi, int npsi,
+                           const double *c, double *fmax, double *mmax)
+{
+    cs_model *m = (cs_model *)malloc(sizeof *m);
+    vlbe_real q[3 * (CS_NE_MAX + 1)], v[3 * (CS_NE_MAX + 1)], Q[3 * (CS_NE_MAX + 1)];
+    const double Le = CS_L / ne;
+    int j, i, rc = 0;
+    *fmax = *mmax = 0.0;
+    if (!m || cs_build(m, ne, flags)) {
+        free(m);
+        return -1;
+    }
+    for (i = 0; i < m->n; ++i) v[i] = VLBE_R(0.0);
+    for (j = 0; j < npsi && rc == 0; ++j) {
+        const double psi = psi0 + j * dpsi, cp = cos(psi), sp = sin(psi);
+        for (i = 0; i <= ne; ++i) {
+            const double X = CS_L * i / ne, dx = X - c[0], dy = -c[1];
+            q[3 * i] = (vlbe_real)(c[0] + cp * dx - sp * dy - X);
+            q[3 * i + 1] = (vlbe_real)(c[1] + sp * dx + cp * dy);
+            q[3 * i + 2] = (vlbe_real)psi;
+        }
+        if (vlbe_cr2d_beam_force(&m->beam, VLBE_R(0.0), q, v, Q)) {
+            rc = -1;
+            break;
+        }
+        for (i = 0; i < m->n; ++i) {
+            const double a = fabs((double)Q[i]);
+            if (i % 3 == 2) {
+                if (a * Le / cs_EI() > *mmax) *mmax = a * Le / cs_EI();
+            } else if (a / cs_EA() > *fmax)
+                *fmax = a / cs_EA();
+        }
+    }
+    free(m);
+    return rc;
+}
+
+#ifndef VLBE_EXAMPLE_NO_MAIN
+#include "../bench/svgplot.h"
+
+#define CS_NN 5      /* N = 4, 8, 16, 32, 64 */
+#define CS_NSTEP 16  /* load steps of the roll-up */
+#define CS_NLEV 4    /* load factors compared: 1/4, 1/2, 3/4, 1 */
+
+static double cs_cpu(clock_t c0) { return (double)(clock() - c0) / (double)CLOCKS_PER_SEC; }
+
+/* observed order between N and 2N: log2(e(N) / e(2N)) */
+static double cs_order(double e1, double e2)
+{
+    return e1 > 0.0 && e2 > 0.0 ? log(e1 / e2) / log(2.0) : (double)NAN;
+}
+
+/* The deformed shapes of the 8-element beam at lambda = k / CS_NSTEP for
+   the k in ks, drawn along each element's cubic (chord frame, lateral
+   deflection L_e (N2 theta1 + N4 theta2) of eqs. 8-9 scaled by l / L_e:
+   the element's own shape), with the exact arcs; SVG + CSV. */
+static void cs_shapes(const char *dir, const cs_model *m, const vlbe_real *qh)
+{
+    enum { NK = 5, SUB = 8 };
+    static const int ks[NK] = {2, 4, 8, 12, 16};
+    static char names[NK][48];
+    static double xs[NK][CS_NE_MAX * SUB + 1], ys[NK][CS_NE_MAX * SUB + 1];
+    static double xa[NK * 130], ya[NK * 130]; /* the exact arcs, NaN between them */
+    const int ne = m->ne, npt = ne * SUB + 1;
+    char path[512];
+    svgp_chart c;
+    FILE *f;
+    int j, e, s;
+    snprintf(path, sizeof path, "%s/corot_static_shapes.csv", dir);
+    f = svgp_csv_open(path, "lambda,node,x_m,y_m,phi_rad,x_exact_m,y_exact_m");
+    for (j = 0; j < NK; ++j) {
+        const vlbe_real *q = qh + (size_t)ks[j] * (size_t)m->n;
+        const double lam = (double)ks[j] / CS_NSTEP, k = 2.0 * CS_PI * lam / CS_L;
+        for (e = 0; e < ne; ++e) {
+            vlbe_real loc[4];
+            const vlbe_real *qe = q + 3 * e;
+            const double X1 = CS_L * e / ne, X2 = CS_L * (e + 1) / ne, Le = X2 - X1;
+            const double x1 = X1 + (double)qe[0], y1 = (double)qe[1];
+            const double x2 = X2 + (double)qe[3], y2 = (double)qe[4];
+            const double l = hypot(x2 - x1, y2 - y1), cb = (x2 - x1) / l, sb = (y2 - y1) / l;
+            if (vlbe_cr2d_local(&m->el[e], 0u, qe, loc)) return;
+            for (s = (e == 0 ? 0 : 1); s <= SUB; ++s) {
+                const double xi = (double)s / SUB;
+                const double N2 = xi * (1.0 - xi) * (1.0 - xi), N4 = xi * xi * (xi - 1.0);
+                const double vloc = Le * (N2 * (double)loc[1] + N4 * (double)loc[2]) * l / Le;
+                const int p = e * SUB + s;
+                xs[j][p] = x1 + xi * l * cb - vloc * sb;
+                ys[j][p] = y1 + xi * l * sb + vloc * cb;
+            }
+        }
+        for (s = 0; s <= 128; ++s)
+            cs_arc_exact(k, CS_L * s / 128.0, &xa[130 * j + s], &ya[130 * j + s]);
+        xa[130 * j + 129] = ya[130 * j + 129] = (double)NAN;
+        if (f)
+            for (e = 0; e <= ne; ++e) {
+                double row[7];
+                row[0] = lam;
+                row[1] = e;
+                row[2] = CS_L * e / ne + (double)q[3 * e];
+                row[3] = (double)q[3 * e + 1];
+                row[4] = (double)q[3 * e + 2];
+                cs_arc_exact(k, CS_L * e / ne, &row[5], &row[6]);
+                svgp_csv_row(f, 7, row);
+            }
+    }
+    if (!f || fclose(f) != 0) printf("# could not write %s\n", path);
+    svgp_init(&c, "Co-rotational cantilever, end moment lambda 2 pi EI/L, 8 elements",
+              "x [m]", "y [m]", 0, 0);
+    for (j = 0; j < NK; ++j) {
+        snprintf(names[j], sizeof names[j], "lambda = %g", (double)ks[j] / CS_NSTEP);
+        svgp_series(&c, names[j], npt, xs[j], ys[j], SVGP_SOLID);
+    }
+    svgp_series(&c, "exact arcs", NK * 130, xa, ya, SVGP_DOT);
+    /* equal scales: the plot area is 696 x 394 px */
+    svgp_xrange(&c, -0.42, -0.42 + 0.85 * 696.0 / 394.0);
+    svgp_yrange(&c, -0.1, 0.75);
+    c.legend = SVGP_LEGEND_TL;
+    snprintf(path, sizeof path, "%s/corot_static_shapes.svg", dir);
+    if (svgp_write_file(&c, path)) printf("# could not write %s\n", path);
+}
+
+int main(int argc, char **argv)
+{
+    const char *dir = argc > 1 ? argv[1] : "out";
+    static const int Ns[CS_NN] = {4, 8, 16, 32, 64};
+    static const double ref5[3] = {1.8751, 4.6941, 7.8548};
+    static cs_arc_err err[CS_NN][CS_NLEV];
+    static double cpu_roll[CS_NN], wb[2][CS_NN][3], wa[CS_NN], cpu_eig[CS_NN];
+    static double rel_b[CS_NN][3], rel_a[CS_NN];
+    static double xN[CS_NN], cy[6][CS_NN];
+    static vlbe_dae_stats sts[CS_NN];
+    const double EI = cs_EI(), EA = cs_EA(), rA = cs_rhoA();
+    const double wax = 0.5 * CS_PI * sqrt(EA / rA) / CS_L;
+    double bl[3], wex[3], lin_v = 0, lin_u = 0, lin_phi = 0, cpu_lin = 0;
+    char qty[200], path[512];
+    int i, j, k, rc = 0;
+    cs_model *m = (cs_model *)malloc(sizeof *m);
+    vlbe_real *qh = (vlbe_real *)malloc((size_t)(CS_NSTEP + 1) * 3 * (CS_NE_MAX + 1) * sizeof *qh);
+    if (!m || !qh) return 1;
+    printf("# co-rotational beam (corot2d.h), static checks: cantilever L = %g m, EA = %.6g N, "
+           "EI = %.6g N m^2, rhoA = %.6g kg/m (the paper's section), clamped at x = 0\n",
+           CS_L, EA, EI, rA);
+
+    /* (a) roll-up */
+    printf("# (a) roll-up: tip moment lambda 2 pi EI/L in %d load steps, vlbe_dae_static from the "
+           "previous solution; exact: circle of radius L/(2 pi lambda); discrete closed form: "
+           "nodes at exact angles on radius R_d = L_e (1 - a^2/24)/(2 sin(a/2))\n", CS_NSTEP);
+    printf("#  N  lambda  tip err/L      node err/L     pred. tip err  |disc - closed| "
+           "rot err [rad]\n");
+    for (i = 0; i < CS_NN; ++i) {
+        clock_t c0 = clock();
+        vlbe_status st;
+        memset(&sts[i], 0, sizeof sts[i]);
+        if (cs_build(m, Ns[i], 0u)) return 1;
+        st = cs_rollup(m, CS_NSTEP, NULL, qh, &sts[i]);
+        cpu_roll[i] = cs_cpu(c0);
+        if (st != VLBE_OK) {
+            printf("# roll-up, N = %d: %s\n", Ns[i], vlbe_status_str(st));
+            rc = 1;
+            continue;
+        }
+        for (j = 0; j < CS_NLEV; ++j) {
+            const int ks = (j + 1) * CS_NSTEP / CS_NLEV;
+            err[i][j] = cs_arc_errors(m, qh + (size_t)ks * (size_t)m->n, (double)(j + 1) / CS_NLEV);
+            printf("# %3d  %5.3f  %.6e  %.6e  %.6e  %.3e      %.3e\n", Ns[i],
+                   (double)(j + 1) / CS_NLEV, err[i][j].tip, err[i][j].node, err[i][j].tip_pred,
+                   err[i][j].disc, err[i][j].rot);
+        }
+        printf("#      %ld Newton iterations in %d load steps, %ld LU, cpu %.4f s\n",
+               sts[i].newton_iters, CS_NSTEP, sts[i].lu_factors, cpu_roll[i]);
+        if (Ns[i] == 8) cs_shapes(dir, m, qh);
+    }
+    printf("# observed order of the tip error (log2 of the ratio N -> 2N):\n#  lambda");
+    for (i = 0; i + 1 < CS_NN; ++i) printf("   %2d->%-2d", Ns[i], Ns[i + 1]);
+    printf("\n");
+    for (j = 0; j < CS_NLEV - 1; ++j) {
+        printf("#  %5.3f ", (double)(j + 1) / CS_NLEV);
+        for (i = 0; i + 1 < CS_NN; ++i)
+            printf("  %7.3f", cs_order(err[i][j].tip, err[i + 1][j].tip));
+        printf("\n");
+    }
+    for (i = 0; i < CS_NN; ++i) {
+        snprintf(qty, sizeof qty, "roll-up lambda = 1, %d el.: tip-to-root distance / L", Ns[i]);
+        svgp_compare_row(stdout, "corot static", qty, 0.0, err[i][CS_NLEV - 1].tip, (double)NAN,
+                         cpu_roll[i]);
+    }
+    for (i = 0; i < CS_NN; i += 2) {
+        snprintf(qty, sizeof qty, "roll-up lambda = 1, %d el.: tip rotation [rad]", Ns[i]);
+        svgp_compare_row(stdout, "corot static", qty, 2.0 * CS_PI, err[i][CS_NLEV - 1].phitip,
+                         err[i][CS_NLEV - 1].rot / (2.0 * CS_PI), cpu_roll[i]);
+    }
+    for (i = 0; i < CS_NN; ++i) {
+        snprintf(qty, sizeof qty, "roll-up lambda = 1/2, %d el.: tip y = 2L/pi [m]", Ns[i]);
+        svgp_compare_row(stdout, "corot static", qty, 2.0 * CS_L / CS_PI, err[i][1].ytip,
+                         fabs(err[i][1].ytip - 2.0 * CS_L / CS_PI) / (2.0 * CS_L / CS_PI),
+                         cpu_roll[i]);
+    }
+    snprintf(qty, sizeof qty, "roll-up lambda = 1/2: order of the tip error, %d -> %d el.", Ns[2],
+             Ns[3]);
+    svgp_compare_row(stdout, "corot static", qty, 4.0, cs_order(err[2][1].tip, err[3][1].tip),
+                     fabs(cs_order(err[2][1].tip, err[3][1].tip) - 4.0) / 4.0, (double)NAN);
+    /* the linear element */
+    {
+        clock_t c0 = clock();
+        if (cs_build(m, 8, VLBE_CR2D_LINEAR) == 0 && cs_rollup(m, 1, NULL, qh, NULL) == VLBE_OK) {
+            const vlbe_real *q = qh + m->n;
+            lin_u = (double)q[3 * 8];
+            lin_v = (double)q[3 * 8 + 1];
+            lin_phi = (double)q[3 * 8 + 2];
+        } else
+            rc = 1;
+        cpu_lin = cs_cpu(c0);
+        printf("# LINEAR element, 8 el., lambda = 1 (one step): tip u = %.3e m, v = %.12f m "
+               "(M L^2/(2 EI) = pi L = %.12f), phi = %.12f (2 pi = %.12f): the tip stays at "
+               "x = L, %.4f L from the root where the rolled-up beam returns\n",
+               lin_u, lin_v, CS_PI * CS_L, lin_phi, 2.0 * CS_PI, hypot(CS_L + lin_u, lin_v) / CS_L);
+        svgp_compare_row(stdout, "corot static", "LINEAR element, lambda = 1: tip deflection, "
+                         "M L^2/(2 EI) [m]", CS_PI * CS_L, lin_v,
+                         fabs(lin_v - CS_PI * CS_L) / (CS_PI * CS_L), cpu_lin);
+        svgp_compare_row(stdout, "corot static", "LINEAR element, lambda = 1: tip-to-root "
+                         "distance / L (exact 0)", 0.0, hypot(CS_L + lin_u, lin_v) / CS_L,
+                         (double)NAN, cpu_lin);
+    }
+
+    /* (b) frequencies */
+    for (k = 0; k < 3; ++k) {
+        bl[k] = cs_beta_l(k + 1);
+        wex[k] = bl[k] * bl[k] * sqrt(EI / (rA * CS_L * CS_L * CS_L * CS_L));
+    }
+    printf("# (b) cantilever frequencies, K0 x = w^2 M x at rest (clamped coordinates removed), "
+           "solved as M x = (1/w^2) K0 x; "
+           "beta L = %.12f %.12f %.12f (1 + cos cosh = 0; to five digits %.4f %.4f %.4f); exact "
+           "w = %.9g %.9g %.9g rad/s, first axial w = %.9g rad/s\n",
+           bl[0], bl[1], bl[2], ref5[0], ref5[1], ref5[2], wex[0], wex[1], wex[2], wax);
+    printf("#  N   rel. error of w1        w2              w3              axial w1     "
+           "(w1 with K0 x = w^2 M x directly)\n");
+    for (i = 0; i < CS_NN; ++i) {
+        clock_t c0 = clock();
+        vlbe_status st = cs_freqs(Ns[i], 1, 3, wb[0][i], &wa[i]);
+        cpu_eig[i] = cs_cpu(c0);
+        if (st == VLBE_OK) st = cs_freqs(Ns[i], 0, 3, wb[1][i], NULL);
+        if (st != VLBE_OK) {
+            printf("# frequencies, N = %d: %s\n", Ns[i], vlbe_status_str(st));
+            rc = 1;
+            continue;
+        }
+        for (k = 0; k < 3; ++k) rel_b[i][k] = (wb[0][i][k] - wex[k]) / wex[k];
+        rel_a[i] = (wa[i] - wax) / wax;
+        printf("# %3d   %+.6e  %+.6e  %+.6e  %+.6e  (%+.6e)\n", Ns[i], rel_b[i][0], rel_b[i][1],
+               rel_b[i][2], rel_a[i], (wb[1][i][0] - wex[0]) / wex[0]);
+    }
+    printf("# observed orders (N -> 2N):\n");
+    for (k = 0; k < 4; ++k) {
+        printf("#  %s", k < 3 ? (k == 0 ? "bending w1" : k == 1 ? "bending w2" : "bending w3")
+                              : "axial w1  ");
+        for (i = 0; i + 1 < CS_NN; ++i)
+            printf("  %7.3f", k < 3 ? cs_order(rel_b[i][k], rel_b[i + 1][k])
+                                    : cs_order(rel_a[i], rel_a[i + 1]));
+        printf("\n");
+    }
+    printf("#  (w1 at %d elements is rounding-limited: the reduction's error in w^2, about 6e-10, "
+           "exceeds its h^4 error; see the top of corot_static.c)\n", Ns[CS_NN - 1]);
+    for (i = 0; i < CS_NN; i += 3)
+        for (k = 0; k < 3; ++k) {
+            snprintf(qty, sizeof qty, "cantilever bending w%d, %d el. [rad/s]", k + 1, Ns[i]);
+            svgp_compare_row(stdout, "corot static", qty, wex[k], wb[0][i][k], fabs(rel_b[i][k]),
+                             cpu_eig[i]);
+        }
+    snprintf(qty, sizeof qty, "cantilever w1: order of the error, %d -> %d el.", Ns[0], Ns[1]);
+    svgp_compare_row(stdout, "corot static", qty, 4.0, cs_order(rel_b[0][0], rel_b[1][0]),
+                     fabs(cs_order(rel_b[0][0], rel_b[1][0]) - 4.0) / 4.0, (double)NAN);
+    snprintf(qty, sizeof qty, "cantilever w3: order of the error, %d -> %d el.", Ns[1], Ns[2]);
+    svgp_compare_row(stdout, "corot static", qty, 4.0, cs_order(rel_b[1][2], rel_b[2][2]),
+                     fabs(cs_order(rel_b[1][2], rel_b[2][2]) - 4.0) / 4.0, (double)NAN);
+    snprintf(qty, sizeof qty, "cantilever first axial w, %d el. [rad/s]", Ns[2]);
+    svgp_compare_row(stdout, "corot static", qty, wax, wa[2], fabs(rel_a[2]), cpu_eig[2]);
+
+    /* (c) rigid rotation */
+    {
+        static const double cpt[2] = {0.3, -0.2};
+        double fm, mm, fl, ml;
+        clock_t c0 = clock();
+        if (cs_rigid(16, 0u, -4.0 * CS_PI, 0.05, 1006, cpt, &fm, &mm)) rc = 1;
+        if (cs_rigid(16, VLBE_CR2D_LINEAR, -4.0 * CS_PI, 0.05, 1006, cpt, &fl, &ml)) rc = 1;
+        printf("# (c) rigid rotation of the 16-element beam about (0.3, -0.2) m by psi in "
+               "[-4 pi, 12 pi] (1006 angles, phi = psi): max |Q_force|/EA = %.3e, "
+               "max |Q_moment| L_e/EI = %.3e (EPS = %.3e); LINEAR element: %.3e, %.3e\n",
+               fm, mm, (double)VLBE_EPS, fl, ml);
+        svgp_compare_row(stdout, "corot static", "rigid rotation up to 6 turns: max abs Q / EA "
+                         "(forces)", 0.0, fm, (double)NAN, cs_cpu(c0));
+        svgp_compare_row(stdout, "corot static", "rigid rotation up to 6 turns: max abs Q L_e / EI "
+                         "(moments)", 0.0, mm, (double)NAN, cs_cpu(c0));
+    }
+
+    /* convergence chart and CSV */
+    for (i = 0; i < CS_NN; ++i) {
+        xN[i] = Ns[i];
+        cy[0][i] = err[i][0].tip;
+        cy[1][i] = err[i][1].tip;
+        cy[2][i] = err[i][2].tip;
+        cy[3][i] = fabs(rel_b[i][0]);
+        cy[4][i] = fabs(rel_b[i][2]);
+        cy[5][i] = fabs(rel_a[i]);
+    }
+    {
+        const double *cols[7];
+        svgp_chart c;
+        cols[0] = xN;
+        for (k = 0; k < 6; ++k) cols[k + 1] = cy[k];
+        snprintf(path, sizeof path, "%s/corot_static_conv.csv", dir);
+        if (svgp_csv_write(path, "N,tip_err_lambda_0.25,tip_err_lambda_0.5,tip_err_lambda_0.75,"
+                           "w1_rel_err,w3_rel_err,axial_w1_rel_err", 7, CS_NN, cols))
+            printf("# could not write %s\n", path);
+        svgp_init(&c, "Co-rotational beam: discretisation errors against the number of elements",
+                  "elements N", "error", 1, 1);
+        svgp_series(&c, "roll-up tip / L, lambda = 1/4", CS_NN, xN, cy[0], SVGP_MARKERS);
+        svgp_series(&c, "roll-up tip / L, lambda = 1/2", CS_NN, xN, cy[1], SVGP_MARKERS);
+        svgp_series(&c, "roll-up tip / L, lambda = 3/4", CS_NN, xN, cy[2], SVGP_MARKERS);
+        svgp_series(&c, "bending w1, relative", CS_NN, xN, cy[3], SVGP_MARKERS | SVGP_DASH);
+        svgp_series(&c, "bending w3, relative", CS_NN, xN, cy[4], SVGP_MARKERS | SVGP_DASH);
+        svgp_series(&c, "axial w1, relative", CS_NN, xN, cy[5], SVGP_MARKERS | SVGP_DOT);
+        c.legend = SVGP_LEGEND_BL;
+        snprintf(path, sizeof path, "%s/corot_static_conv.svg", dir);
+        if (svgp_write_file(&c, path)) printf("# could not write %s\n", path);
+    }
+    free(qh);
+    free(m);
+    return rc;
+}
+#endif
