@@ -72,6 +72,7 @@
 #include "../corot2d.h"
 #include "../integrators.h"
 #include "ex_eig.h"
+#include "ex_cant.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -254,22 +255,6 @@ static inline cs_arc_err cs_arc_errors(const cs_model *m, const vlbe_real *q, do
 
 /* ===== (b) natural frequencies ========================================== */
 
-/* The n-th root of 1 + cos x cosh x = 0 (n = 1, 2, ...), written as
-   cos x + 1/cosh x = 0 (well scaled), Newton from the asymptotic
-   (2n - 1) pi / 2 (the first from 1.875). */
-static inline double cs_beta_l(int n)
-{
-    double x = n == 1 ? 1.875 : (2.0 * n - 1.0) * CS_PI / 2.0;
-    int it;
-    for (it = 0; it < 50; ++it) {
-        const double ch = cosh(x);
-        const double f = cos(x) + 1.0 / ch, fp = -sin(x) - sinh(x) / (ch * ch);
-        const double dx = f / fp;
-        x -= dx;
-        if (fabs(dx) < 1e-16 * x) break;
-    }
-    return x;
-}
 
 /* Frequencies [rad/s] of the clamped beam of ne elements: the first nb
    bending modes into wb, the first axial mode into *wa (either may be
@@ -569,7 +554,7 @@ int main(int argc, char **argv)
 
     /* (b) frequencies */
     for (k = 0; k < 3; ++k) {
-        bl[k] = cs_beta_l(k + 1);
+        bl[k] = ex_cant_root(k + 1);
         wex[k] = bl[k] * bl[k] * sqrt(EI / (rA * CS_L * CS_L * CS_L * CS_L));
     }
     printf("# (b) cantilever frequencies, K0 x = w^2 M x at rest (clamped coordinates removed), "

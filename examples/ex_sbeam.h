@@ -37,6 +37,7 @@
 
 #include "../corot2d.h"
 #include "../integrators.h"
+#include "ex_cant.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -111,8 +112,8 @@ static inline void sb_ua(const sb_cfg *c, double t, double *g)
 /* cantilever frequency i (0, 1) of length Lf */
 static inline double sb_omega(const sb_cfg *c, int i, double Lf)
 {
-    static const double bl[2] = {1.8751040687, 4.6940911330};
-    return bl[i] * bl[i] / (Lf * Lf) * sqrt(c->E * c->I / (c->rho * c->A));
+    const double bl = ex_cant_b[i];
+    return bl * bl / (Lf * Lf) * sqrt(c->E * c->I / (c->rho * c->A));
 }
 
 /* Rayleigh alpha, beta of eq. (56) at time t */

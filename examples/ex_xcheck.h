@@ -146,6 +146,7 @@
 #define VLBE_EX_XCHECK_H
 
 #include "ex_sbeam.h"
+#include "ex_cant.h"
 #include "../ancf_ale.h"
 
 #include <math.h>
@@ -622,20 +623,6 @@ typedef struct xc_am_out {
     long steps;
 } xc_am_out;
 
-/* i-th root of 1 + cos b cosh b = 0 (i = 0, 1, ...): Newton on
-   f = cos b + 1/cosh b from (i + 1/2) pi. */
-static inline double xc_am_root(int i)
-{
-    double x = (i + 0.5) * 3.14159265358979323846;
-    int it;
-    for (it = 0; it < 60; ++it) {
-        const double ch = cosh(x), f = cos(x) + 1.0 / ch, fp = -sin(x) - tanh(x) / ch;
-        const double dx = f / fp;
-        x -= dx;
-        if (fabs(dx) <= 1e-15 * x) break;
-    }
-    return x;
-}
 
 /* phi and its first three xi-derivatives for root b at xi (overflow-free) */
 static inline void xc_am_mode(double b, double xi, double *d)
@@ -650,7 +637,10 @@ static inline void xc_am_mode(double b, double xi, double *d)
     d[3] = b * b * b * (ep - em - sn - s * c);
 }
 
-/* n-point Gauss-Legendre on [-1, 1] (Newton on P_n, double) */
+/* n-point Gauss-Legendre on [-1, 1] (Newton on P_n, double).  Not
+   vlbe_gl_rule / vlbe_lu_*: those work in vlbe_real, i.e. in float in the
+   float build, and this reference model stays double in every build (its
+   tests assert modal orthonormality to 1e-12 there too). */
 static inline void xc_gauss(int n, double *x, double *w)
 {
     int i, k, it;
@@ -721,7 +711,7 @@ static inline int xc_am_init(xc_am *m, const sb_cfg *c, int nm)
             m->wq[p * 8 + k] = gw[k] / 32.0;
         }
     for (i = 0; i < nm; ++i) {
-        m->b[i] = xc_am_root(i);
+        m->b[i] = ex_cant_root(i + 1);
         xc_am_mode(m->b[i], 1.0, d[0]);
         m->tipv[i] = d[0][0];
     }
