@@ -99,7 +99,9 @@ CONVENTIONS
    VLBE_ELENGTH when the chord length l <= L * 1e-6 (the frame is
    undefined); vlbe_cr2d_elem_init: VLBE_ELENGTH for X1 = X2, VLBE_EARG /
    VLBE_ENONFINITE for a bad material.  Transition element: VLBE_EBOUND
-   when node 1 is not inside the joint (a.(C - x1) < 0), node 2 not outside
+   when node 1 is outside the joint by more than L/2 (a.(x1 - C) > L/2:
+   the formulas continue smoothly to a node just outside, as Newton
+   iterates and the step in which it leaves need), node 2 not outside
    (a.(x2 - C) <= 0, or |x2 - C| <= 1e-6 L) or L2 <= 1e-6 L; VLBE_EARG for
    |a| != 1, a non-finite C or the LINEAR mode (no linear transition
    element); VLBE_ESINGULAR when eq. 24 has no solution.  On failure no

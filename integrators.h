@@ -60,6 +60,7 @@ API
    vlbe_status vlbe_dae_check(sys)                        validate a problem
    size_t vlbe_dae_work_len(n, m), vlbe_dae_iwork_len(n, m)   workspace of the next one
    vlbe_status vlbe_dae_consistent_acc(sys,t,q,v,a,lam,st,w,lw,iw,liw)  q'', lambda at start
+   void vlbe_dae_stats_add(a, b)                          a += b, counter by counter (restarts)
    void vlbe_static_params_default(p)                     static solver defaults
    size_t vlbe_static_work_len(n, m), vlbe_static_iwork_len(n, m)
    vlbe_status vlbe_dae_static(sys, par, t, q, lam, st, w, lw, iw, liw)  static equilibrium
@@ -259,6 +260,7 @@ typedef struct vlbe_bdf {
 VLBE_API vlbe_status vlbe_dae_check(const vlbe_dae *sys);
 VLBE_API size_t vlbe_dae_work_len(int n, int m);
 VLBE_API size_t vlbe_dae_iwork_len(int n, int m);
+VLBE_API void vlbe_dae_stats_add(vlbe_dae_stats *a, const vlbe_dae_stats *b);
 VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, const vlbe_real *q,
                                              const vlbe_real *v, vlbe_real *qdd,
                                              vlbe_real *lambda, vlbe_dae_stats *stats,
@@ -594,6 +596,24 @@ VLBE_API size_t vlbe_dae_work_len(int n, int m)
 VLBE_API size_t vlbe_dae_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
 
 /* Solves [M C_q^T; C_q 0] [qdd; lambda] = [Q; gamma] at (t, q, v). */
+/* a += b for every counter (runs made of several integrator starts, e.g.
+   restarts after a change of the model); callback_rc: b's when nonzero. */
+VLBE_API void vlbe_dae_stats_add(vlbe_dae_stats *a, const vlbe_dae_stats *b)
+{
+    VLBE_ASSERT(a != NULL && b != NULL);
+    a->steps += b->steps;
+    a->rejected += b->rejected;
+    a->newton_iters += b->newton_iters;
+    a->newton_fails += b->newton_fails;
+    a->force_calls += b->force_calls;
+    a->mass_calls += b->mass_calls;
+    a->constr_calls += b->constr_calls;
+    a->jac_evals += b->jac_evals;
+    a->lu_factors += b->lu_factors;
+    a->lu_solves += b->lu_solves;
+    if (b->callback_rc != 0) a->callback_rc = b->callback_rc;
+}
+
 VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, const vlbe_real *q,
                                              const vlbe_real *v, vlbe_real *qdd,
                                              vlbe_real *lambda, vlbe_dae_stats *stats,

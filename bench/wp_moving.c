@@ -220,20 +220,6 @@ static void measure(int var, int ne, int bend, double x, point *pt)
     pt->reps = reps;
 }
 
-static void stats_add(vlbe_dae_stats *a, const vlbe_dae_stats *b)
-{
-    a->steps += b->steps;
-    a->rejected += b->rejected;
-    a->newton_iters += b->newton_iters;
-    a->newton_fails += b->newton_fails;
-    a->force_calls += b->force_calls;
-    a->mass_calls += b->mass_calls;
-    a->constr_calls += b->constr_calls;
-    a->jac_evals += b->jac_evals;
-    a->lu_factors += b->lu_factors;
-    a->lu_solves += b->lu_solves;
-}
-
 /* Richardson point from the raw points at h (a) and h/2 (b). */
 static void richardson(const point *a, const point *b, point *r)
 {
@@ -244,7 +230,7 @@ static void richardson(const point *a, const point *b, point *r)
     r->cpu = a->cpu + b->cpu;
     r->reps = a->reps < b->reps ? a->reps : b->reps;
     r->st = a->st;
-    stats_add(&r->st, &b->st);
+    vlbe_dae_stats_add(&r->st, &b->st);
 }
 
 /* Every series of a scene (the errors come later, with the reference). */

@@ -448,13 +448,16 @@ static inline void sb_run(sb_model *m, const sb_cfg *c, sb_observer obs, void *c
     for (k = 1; k <= nsteps; ++k) {
         if ((out->status = vlbe_hht_step(&st, (vlbe_real)c->h)) != VLBE_OK) break;
         if (obs) obs(ctx, m, (double)st.t, st.q, st.v);
-        if (k < nsteps && (memcpy(was, m->inside, (size_t)m->nn), sb_layout(m, st.q, (double)st.t, 0))) {
+        if (k == nsteps) break;
+        memcpy(was, m->inside, (size_t)m->nn);
+        if (sb_layout(m, st.q, (double)st.t, 0)) {
             /* a node crossed the exit: project the entering ones, relax
                the leaving ones, restart */
             const double hout = c->L0 / c->n_out;
-            vlbe_dae_stats s = st.stats;
             const vlbe_real t = st.t;
             int i;
+            vlbe_dae_stats_add(&out->stats, &st.stats); /* the segment ends here */
+            memset(&st.stats, 0, sizeof st.stats);
             memcpy(q, st.q, sizeof(vlbe_real) * (size_t)m->n);
             memcpy(v, st.v, sizeof(vlbe_real) * (size_t)m->n);
             for (i = 1; i < m->nn; ++i)
@@ -469,22 +472,12 @@ static inline void sb_run(sb_model *m, const sb_cfg *c, sb_observer obs, void *c
                     goto done;
             ++m->events;
             ++out->restarts;
-            out->stats.steps += s.steps;
-            out->stats.newton_iters += s.newton_iters;
-            out->stats.lu_factors += s.lu_factors;
-            out->stats.force_calls += s.force_calls;
-            out->stats.rejected += s.rejected;
             if ((out->status = vlbe_hht_init(&st, &m->sys, &par, t, q, v, w, lw, iw, liw)) !=
                 VLBE_OK)
                 break;
         }
     }
-    out->stats.steps += st.stats.steps;
-    out->stats.newton_iters += st.stats.newton_iters;
-    out->stats.lu_factors += st.stats.lu_factors;
-    out->stats.force_calls += st.stats.force_calls;
-    out->stats.rejected += st.stats.rejected;
-    out->stats.callback_rc = st.stats.callback_rc;
+    vlbe_dae_stats_add(&out->stats, &st.stats);
 done:
     out->cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
     free(q);
