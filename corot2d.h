@@ -148,6 +148,9 @@ REFERENCES
 #define VLBE_CR2D_LINEAR 1u
 #define VLBE_CR2D_NO_NLI 2u
 #define VLBE_CR2D_NO_DAMP 4u
+/* internal: the caller needs the frame only (mass routines of the
+   conventional element: no deformation rotations, no atan2) */
+#define VLBE__CR2D_FRAME_ONLY 0x100u
 
 /* -- types -------------------------------------------------------------- */
 /* Section and material, per unit reference length. */
@@ -507,8 +510,8 @@ static inline void vlbe__cr2d_chord_grad(vlbe__cr2d_kin *k, int both)
 
 /* Conventional element; LINEAR: the frame stays at a0, theta_j = phi_j -
    (v2 - v1)/L and eps0 = (u2 - u1)/L in it. */
-static inline vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin, const vlbe_real *q,
-                                              vlbe__cr2d_kin *k)
+static inline vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin, int frame_only,
+                                              const vlbe_real *q, vlbe__cr2d_kin *k)
 {
     const vlbe_real L = el->L;
     int j;
@@ -533,7 +536,8 @@ static inline vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin,
         k->c = dx / l;
         k->s = dy / l;
         vlbe__cr2d_fr_set(&k->fr, k->c, k->s, 1, k->c, k->s, 1);
-        for (j = 0; j < 2; ++j) k->th[j] = vlbe__cr2d_theta(el, q[2 + 3 * j], k->c, k->s);
+        for (j = 0; j < 2; ++j)
+            k->th[j] = frame_only ? VLBE_R(0.0) : vlbe__cr2d_theta(el, q[2 + 3 * j], k->c, k->s);
         k->eps = (l - L) / L + (VLBE_R(4.0) * k->th[0] * k->th[0] -
                                 VLBE_R(2.0) * k->th[0] * k->th[1] +
                                 VLBE_R(4.0) * k->th[1] * k->th[1]) /
@@ -891,7 +895,9 @@ static inline vlbe_status vlbe__cr2d_kin_any(const vlbe_cr2d_elem *el, const vlb
     vlbe_status st;
     VLBE_ASSERT(el != NULL && q != NULL);
     if ((st = vlbe__cr2d_check(q, qd)) != VLBE_OK) return st;
-    if (!jt) return vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0, q, k);
+    if (!jt)
+        return vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0,
+                                   (mode & VLBE__CR2D_FRAME_ONLY) != 0, q, k);
     if (mode & VLBE_CR2D_LINEAR) return VLBE_EARG; /* no linear transition element */
     return vlbe__cr2d_kin_tr(el, jt, q, k);
 }
@@ -978,7 +984,7 @@ static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
     vlbe_status st;
     int i;
     VLBE_ASSERT(el != NULL && qd != NULL && Q != NULL);
-    mode |= el->flags;
+    mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, qd, &k)) != VLBE_OK) return st;
     for (i = 0; i < 6; ++i) F[i] = VLBE_R(0.0);
     for (i = 0; i < 36; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
@@ -1000,7 +1006,7 @@ static inline vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vl
     vlbe_status st;
     int i;
     VLBE_ASSERT(el != NULL && M != NULL);
-    mode |= el->flags;
+    mode |= el->flags | VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, NULL, &k)) != VLBE_OK) return st;
     vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
     for (i = 0; i < 36; ++i) M[i] = VLBE_R(0.0);
@@ -1020,7 +1026,7 @@ static inline vlbe_status vlbe__cr2d_mass_jac_any(const vlbe_cr2d_elem *el,
     vlbe_status st;
     int i, j;
     VLBE_ASSERT(el != NULL && a != NULL && Mq != NULL);
-    mode |= el->flags;
+    mode |= el->flags | VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, a, &k)) != VLBE_OK) return st;
     for (i = 0; i < 36; ++i) Mq[i] = VLBE_R(0.0);
     if (mode & VLBE_CR2D_LINEAR) return VLBE_OK; /* M constant */
@@ -1046,7 +1052,7 @@ static inline vlbe_status vlbe__cr2d_energy_any(const vlbe_cr2d_elem *el,
     vlbe_real m[36], u[6], mu[6];
     vlbe_status st;
     VLBE_ASSERT(el != NULL && qd != NULL && E != NULL);
-    mode |= el->flags;
+    mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, qd, &k)) != VLBE_OK) return st;
     vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
     vlbe__cr2d_rates(&k, qd, u);
@@ -1092,7 +1098,7 @@ VLBE_API vlbe_status vlbe_cr2d_local(const vlbe_cr2d_elem *el, unsigned mode, co
     vlbe__cr2d_kin k;
     vlbe_status st;
     VLBE_ASSERT(el != NULL && loc != NULL);
-    mode |= el->flags;
+    mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, NULL, mode, q, NULL, &k)) != VLBE_OK) return st;
     loc[0] = k.l;
     loc[1] = k.th[0];
@@ -1142,7 +1148,7 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
     vlbe__cr2d_kin k;
     vlbe_status st;
     VLBE_ASSERT(el != NULL && jt != NULL && loc != NULL);
-    mode |= el->flags;
+    mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, NULL, &k)) != VLBE_OK) return st;
     loc[0] = k.l1;
     loc[1] = k.l;

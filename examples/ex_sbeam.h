@@ -15,9 +15,11 @@
    element.  With delta = 1e-3 h_out (h_out = L0/n_out), an outside node
    enters at x <= din = delta + 2 h max(0, -U_A'), a step before it would
    reach C (where the outside chord of the transition element would
-   vanish), and an inside node leaves at x > din + delta, so that the
-   outside segment of a transition element is never shorter than delta
-   (its bending stiffness grows like L2^-3) and a node does not toggle.  When a node
+   vanish), and an inside node leaves at x > din + delta + h max(0, U_A'),
+   so that the outside segment of a transition element is never shorter
+   than delta (its bending stiffness grows like L2^-3), does not grow by
+   more than its own length in the step after a release, and a node does
+   not toggle.  When a node
    crosses, the constraint list and the transition element are rebuilt and
    the integrator restarts from the current state; a node that enters has
    its v, phi and their rates set to zero first (the joint takes them: the
@@ -58,6 +60,9 @@ typedef struct sb_cfg {
     double h, t_end;    /* step, end time                              */
     double alpha;       /* HHT alpha (0: trapezoidal Newmark)          */
     double rho_inf;     /* > 0: generalized-alpha with this rho_inf instead */
+    int newton_max;     /* Newton iterations per attempt (0: default 10)     */
+    int full_newton;    /* 1: fresh iteration matrix every iteration         */
+    int max_halvings;   /* step halvings on Newton failure (0: 10)           */
 } sb_cfg;
 
 /* The paper's section and material, 14 + 10 elements, dt = 1 ms. */
@@ -220,19 +225,22 @@ static inline double sb_x(const sb_model *m, const vlbe_real *q, int i)
    element; returns 1 when something changed. */
 static inline int sb_layout(sb_model *m, const vlbe_real *q, double t, int first)
 {
-    double g[3], din;
+    double g[3], din, dout;
     int i, nf = 0, changed = 0, trans = -1;
     sb_ua(&m->cfg, t, g);
     /* an outside node enters at x <= din = delta + 2 h max(0, -U_A'),
        before the step that would carry it across C (where the transition
        element's outside chord would vanish); an inside one leaves at x >
-       din + delta (a band of delta against toggling) */
+       dout = din + delta + h max(0, U_A') (a band of delta against
+       toggling, and an outside chord of at least one step's travel, so
+       that the next step does not multiply it) */
     din = m->delta + 2.0 * m->cfg.h * fmax(0.0, -g[1]);
+    dout = din + m->delta + m->cfg.h * fmax(0.0, g[1]);
     for (i = 0; i < m->nn; ++i) {
         const double x = sb_x(m, q, i);
         const unsigned char in =
             (unsigned char)(first ? x <= m->delta
-                                  : (m->inside[i] ? x <= din + m->delta : x <= din));
+                                  : (m->inside[i] ? x <= dout : x <= din));
         if (first || in != m->inside[i]) changed = 1;
         m->inside[i] = in;
     }
@@ -439,7 +447,9 @@ static inline void sb_run(sb_model *m, const sb_cfg *c, sb_observer obs, void *c
         vlbe_hht_params_newmark(&par, VLBE_R(0.25), VLBE_R(0.5));
     else if ((out->status = vlbe_hht_params_hht(&par, (vlbe_real)c->alpha)) != VLBE_OK)
         goto done;
-    par.max_halvings = 6;
+    par.max_halvings = c->max_halvings > 0 ? c->max_halvings : 10;
+    if (c->newton_max > 0) par.newton_max = c->newton_max;
+    if (c->full_newton) par.modified = 0;
     nsteps = (long)floor(c->t_end / c->h + 0.5);
     if (obs) obs(ctx, m, 0.0, q, v);
     if ((out->status = vlbe_hht_init(&st, &m->sys, &par, VLBE_R(0.0), q, v, w, lw, iw, liw)) !=

@@ -162,7 +162,9 @@ enum { XC_START_IMPULSE = 0, XC_START_STEADY = 1 };
 /* assumed modes: the stiffness-proportional damping on the rate of the
    curvature at fixed xi = x/l instead of the material rate (drops the
    term g (P - 2K) a of q_d): the convention the co-rotational model
-   turns out to follow (sliding_xcheck.c, README) */
+   follows through its transition element, whose beta k0 (eqs. 50-51)
+   damps the rates of its coordinates over the outside segment at fixed
+   s / L2 (sliding_xcheck.c, README) */
 #define XC_AM_BETA_FIXED_XI 1u
 
 /* A history: tip deflection y(t) at the recorded instants. */

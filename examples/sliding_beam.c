@@ -7,9 +7,10 @@
 
    Section A = 4.3434e-5 m^2, I = 1.059e-11 m^4, E = 68.96 GPa, rho =
    3144.3858 kg/m^3; 14 elements inside the joint and 10 outside at t = 0;
-   dt = 1 ms, HHT alpha = -0.05 (the index-3 constraints of the joint rule
-   out the undamped trapezoidal Newmark the paper names: it drifts on
-   them, see DESIGN.md); modal damping of eq. (56).
+   dt = 1 ms, HHT alpha = -0.05 (the trapezoidal Newmark the paper names
+   leaves the index-3 multiplier modes of the joint undamped and gets
+   through only by sb_run's step halvings, at 8-27 times the CPU: see
+   bench/wp_sliding.c); modal damping of eq. (56).
    (a) L = 0.762 m, L0 = 0.521 m, U_A = v0 t + a0 t^2/2, v0 = -0.03 m/s,
        a0 = -0.054 m/s^2 (retraction), 0 <= t <= 2.5 s;
    (b) L = 1.05 m, L0 = 0.35 m, the smooth deployment of eq. (55), c0 =
