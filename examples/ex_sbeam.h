@@ -63,6 +63,9 @@ typedef struct sb_cfg {
     int newton_max;     /* Newton iterations per attempt (0: default 10)     */
     int full_newton;    /* 1: fresh iteration matrix every iteration         */
     int max_halvings;   /* step halvings on Newton failure (0: 10)           */
+    int fixed_release;  /* 1: release at x > din + delta, without the step's
+                           travel h max(0, U_A') (the rule that fails at
+                           h >= 2e-3 in case (b); for the tests)            */
 } sb_cfg;
 
 /* The paper's section and material, 14 + 10 elements, dt = 1 ms. */
@@ -235,7 +238,7 @@ static inline int sb_layout(sb_model *m, const vlbe_real *q, double t, int first
        toggling, and an outside chord of at least one step's travel, so
        that the next step does not multiply it) */
     din = m->delta + 2.0 * m->cfg.h * fmax(0.0, -g[1]);
-    dout = din + m->delta + m->cfg.h * fmax(0.0, g[1]);
+    dout = din + m->delta + (m->cfg.fixed_release ? 0.0 : m->cfg.h * fmax(0.0, g[1]));
     for (i = 0; i < m->nn; ++i) {
         const double x = sb_x(m, q, i);
         const unsigned char in =

@@ -18,6 +18,12 @@
                          restarts, the constraint count and the transition
                          element follow U_A; a node that leaves is relaxed,
                          not projected
+     release_rule        both sides of the limit the release rule moves:
+                         case (b) at h = 4e-3 with at most 6 step halvings
+                         fails at the first release (t = 0.032 s) as
+                         VLBE_ENOCONV with a finite state when a node is
+                         released a fixed 2 delta past the exit, and runs
+                         when it is released h U_A' further out
    Tolerances in each test's comment.
 
    Float build: the iteration matrix of this beam spans the axial stiffness
@@ -182,6 +188,45 @@ static void test_crossings(void **state)
     assert_true(g_m.proj_max == 0.0);
 }
 
+/* Case (b) at h = 4e-3 to 0.1 s, max_halvings = 6: the first node leaves
+   the joint at t = 0.032 s.  Released a fixed 2 delta = 7e-5 m past C, the
+   outside segment of the new transition element (bending stiffness ~
+   L2^-3) grows within the next step by U_A' h, many times its length, and
+   Newton fails even at h / 64: VLBE_ENOCONV, reported with the last
+   accepted state finite.  Released once it is h U_A' further out, the same
+   run gets through (README, bench/wp_sliding.c). */
+static double g_last_t;
+static int g_last_finite;
+static void last_obs(void *ctx, const sb_model *m, double t, const vlbe_real *q, const vlbe_real *v)
+{
+    (void)ctx;
+    g_last_t = t;
+    g_last_finite = vlbe_all_finite(q, m->n) && vlbe_all_finite(v, m->n);
+}
+
+static void test_release_rule(void **state)
+{
+    sb_cfg c;
+    sb_out out;
+    (void)state;
+    sb_cfg_paper(&c, 'b');
+    c.h = 4e-3;
+    c.t_end = 0.1;
+    c.max_halvings = 6;
+    c.fixed_release = 1;
+    sb_run(&g_m, &c, last_obs, NULL, &out);
+    assert_int_equal(out.status, VLBE_ENOCONV);
+    assert_int_equal(out.restarts, 1);
+    assert_true(g_last_finite);
+    assert_true(fabs(g_last_t - 0.032) < 1e-9); /* 8 whole steps */
+    c.fixed_release = 0;
+    sb_run(&g_m, &c, last_obs, NULL, &out);
+    assert_int_equal(out.status, VLBE_OK);
+    assert_true(out.restarts >= 1);
+    assert_true(g_last_finite);
+    assert_true(fabs(g_last_t - c.t_end) < 1e-9);
+}
+
 #endif
 
 int main(void)
@@ -192,6 +237,7 @@ int main(void)
         cmocka_unit_test(test_fixed_joint),
         cmocka_unit_test(test_retraction),
         cmocka_unit_test(test_crossings),
+        cmocka_unit_test(test_release_rule),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
