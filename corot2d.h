@@ -95,6 +95,27 @@ CONVENTIONS
      VLBE_CR2D_NO_NLI   drop the nonlinear (velocity) inertia terms only
      VLBE_CR2D_NO_DAMP  drop the Rayleigh damping
 
+   Floating frame of a LINEAR element (vlbe_cr2d_*_ff, vlbe_cr2d_beam.frame):
+   the caller gives the angle theta and rate theta' of a frame turning
+   about the global origin (a hub), fth = {theta, theta'}.  The element
+   measures its linear deformation in that frame:
+        d = R^T(theta) (X + u) - X per node (positions), phi - theta (rotations),
+   elastic force -T^T K0 d with T = blockdiag(R^T(theta), 1) per node and K0
+   = the fixed-frame LINEAR stiffness (k0 turned to a0), tangent K = -T^T
+   K0 T; damping (alpha m + beta k0) on the rate relative to the frame, dd =
+   R^T(theta) (u' + theta' J (X + u)), J (x, y) = (y, -x), phi' - theta'
+   (so rigid rotation with the frame is not damped), which adds D theta' J
+   to K.  Mass matrix and inertia stay those of the fixed-frame LINEAR
+   element: constant M, exact in the global coordinates, so centrifugal
+   softening and Coriolis forces are present but no geometric (centrifugal)
+   stiffening -- the linear floating-frame (FFRF-equivalent) model that
+   diverges in a spin-up above the first bending frequency.  theta = 0
+   reproduces the fixed-frame LINEAR element bit for bit (cos - 1 is
+   computed as -2 sin^2(theta/2)).  Energies: strain of d, kinetic of q'.
+   theta'' is not used (the frame's acceleration acts through the global
+   inertia).  A beam with frame != NULL passes the frame at the callback's
+   t to every element whose mode has LINEAR; others ignore it.
+
    Errors: VLBE_ENONFINITE for NaN/Inf in q, q' or an acceleration;
    VLBE_ELENGTH when the chord length l <= L * 1e-6 (the frame is
    undefined); vlbe_cr2d_elem_init: VLBE_ELENGTH for X1 = X2, VLBE_EARG /
@@ -104,9 +125,12 @@ CONVENTIONS
    iterates and the step in which it leaves need), node 2 not outside
    (a.(x2 - C) <= 0, or |x2 - C| <= 1e-6 L) or L2 <= 1e-6 L; VLBE_EARG for
    |a| != 1, a non-finite C or the LINEAR mode (no linear transition
-   element); VLBE_ESINGULAR when eq. 24 has no solution.  On failure no
-   output is written.
-   Stack: under 2 kB per call.
+   element); VLBE_ESINGULAR when eq. 24 has no solution.  Floating frame
+   (*_ff): VLBE_EARG when the element's mode has no LINEAR, VLBE_ENONFINITE
+   for NaN/Inf in fth; vlbe_cr2d_beam_energy: VLBE_EARG for a beam with a
+   frame (it needs t: vlbe_cr2d_beam_energy_t).  On failure no output is
+   written.
+   Stack: under 2 kB per call (the *_ff calls add 0.5 kB).
 
 API
    vlbe_status vlbe_cr2d_elem_init(el, mat, X1, X2, flags)   element (geometry, material)
@@ -115,6 +139,10 @@ API
    vlbe_status vlbe_cr2d_mass_jac(el, mode, q, a, Mq)        d(M a)/dq, 6x6
    vlbe_status vlbe_cr2d_energy(el, mode, q, qd, E)          E = {T, U}: kinetic (q'^T M q'/2), strain
    vlbe_status vlbe_cr2d_local(el, mode, q, loc)             loc = {l, theta1, theta2, eps0}
+   floating frame fth = {theta, theta'} of a LINEAR element:
+   vlbe_status vlbe_cr2d_force_ff(el, mode, fth, q, qd, Q, K, D)  as force, deformation in the frame
+   vlbe_status vlbe_cr2d_energy_ff(el, mode, fth, q, qd, E)  {T of q', U of d}
+   vlbe_status vlbe_cr2d_local_ff(el, mode, fth, q, loc)     local of d
    transition element at the joint jt (node 1 inside, node 2 outside):
    vlbe_status vlbe_cr2d_trans_force / _mass / _mass_jac / _energy(el, jt, mode, ...)  as above
    vlbe_status vlbe_cr2d_trans_local(el, jt, mode, q, loc)   loc = {l1, l2, theta3, theta2, eps0, L1}
@@ -123,7 +151,8 @@ API
    void vlbe_cr2d_fix_eval(f, t, g3)                         g, g', g'' of a prescribed coordinate
    int vlbe_cr2d_beam_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc (user = beam, ...)                      vlbe_dae callbacks
-   vlbe_status vlbe_cr2d_beam_energy(b, q, v, E)             T, U of the beam
+   vlbe_status vlbe_cr2d_beam_energy(b, q, v, E)             T, U of the beam (no frame)
+   vlbe_status vlbe_cr2d_beam_energy_t(b, t, q, v, E)        T, U at t (frame at t)
 
 REFERENCES
    [H] K. M. Hsiao, T. F. Liu, M. H. Tsai, Geometrically nonlinear dynamic
@@ -200,6 +229,16 @@ VLBE_API vlbe_status vlbe_cr2d_energy(const vlbe_cr2d_elem *el, unsigned mode, c
                                       const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E);
 VLBE_API vlbe_status vlbe_cr2d_local(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
                                      vlbe_real *VLBE_RESTRICT loc);
+VLBE_API vlbe_status vlbe_cr2d_force_ff(const vlbe_cr2d_elem *el, unsigned mode,
+                                        const vlbe_real *fth, const vlbe_real *q,
+                                        const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                        vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D);
+VLBE_API vlbe_status vlbe_cr2d_energy_ff(const vlbe_cr2d_elem *el, unsigned mode,
+                                         const vlbe_real *fth, const vlbe_real *q,
+                                         const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E);
+VLBE_API vlbe_status vlbe_cr2d_local_ff(const vlbe_cr2d_elem *el, unsigned mode,
+                                        const vlbe_real *fth, const vlbe_real *q,
+                                        vlbe_real *VLBE_RESTRICT loc);
 VLBE_API vlbe_status vlbe_cr2d_trans_force(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
                                            unsigned mode, const vlbe_real *q, const vlbe_real *qd,
                                            vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K,
@@ -972,23 +1011,89 @@ static inline void vlbe__cr2d_forces(const vlbe_cr2d_elem *el, unsigned mode,
     }
 }
 
+/* -- the floating frame of a LINEAR element ------------------------------ */
+/* fth = (theta, theta') of the floating frame; d = the element's
+   coordinates measured in it: per node R^T(theta) (X + u) - X, written
+   R^T(theta) u + (R^T(theta) - I) X with cos theta - 1 = -2 sin^2(theta/2)
+   (no cancellation; theta = 0 gives d = q exactly), and phi - theta;
+   dd (optional, with qd) its rate R^T(theta) (u' + theta' J (X + u)), J:
+   (x, y) -> (y, -x), and phi' - theta'.  fr receives the rotation
+   T = blockdiag(R^T(theta), 1) of both nodes (to_loc applies T). */
+static inline vlbe_status vlbe__cr2d_float(const vlbe_cr2d_elem *el, const vlbe_real *fth,
+                                           const vlbe_real *q, const vlbe_real *qd,
+                                           vlbe__cr2d_fr *fr, vlbe_real *d, vlbe_real *dd)
+{
+    const vlbe_real c = vlbe_cos(fth[0]), s = vlbe_sin(fth[0]);
+    const vlbe_real sh = vlbe_sin(VLBE_R(0.5) * fth[0]), cm = -VLBE_R(2.0) * sh * sh;
+    vlbe_real off[6], w[6];
+    int k;
+    if (!vlbe_all_finite(fth, 2)) return VLBE_ENONFINITE;
+    if ((vlbe__cr2d_check(q, qd)) != VLBE_OK) return VLBE_ENONFINITE;
+    vlbe__cr2d_fr_set(fr, c, s, 0, c, s, 0);
+    vlbe__cr2d_to_loc(fr, q, d);
+    for (k = 0; k < 2; ++k) {
+        const vlbe_real X = el->X[2 * k], Y = el->X[2 * k + 1];
+        off[3 * k] = cm * X + s * Y;
+        off[3 * k + 1] = -s * X + cm * Y;
+        d[3 * k] += off[3 * k];
+        d[3 * k + 1] += off[3 * k + 1];
+        d[3 * k + 2] -= fth[0];
+        if (qd) {
+            w[3 * k] = qd[3 * k] + fth[1] * (Y + q[3 * k + 1]);
+            w[3 * k + 1] = qd[3 * k + 1] - fth[1] * (X + q[3 * k]);
+            w[3 * k + 2] = qd[3 * k + 2] - fth[1];
+        }
+    }
+    if (qd && dd) vlbe__cr2d_to_loc(fr, w, dd);
+    return VLBE_OK;
+}
+
 static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
                                                const vlbe_cr2d_joint *jt, unsigned mode,
-                                               const vlbe_real *q, const vlbe_real *qd,
-                                               vlbe_real *VLBE_RESTRICT Q,
+                                               const vlbe_real *fth, const vlbe_real *q,
+                                               const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
                                                vlbe_real *VLBE_RESTRICT K,
                                                vlbe_real *VLBE_RESTRICT D)
 {
-    vlbe_real F[6], Kt[36], Dt[36];
+    vlbe_real F[6], Kt[36], Dt[36], d[6], dd[6];
+    vlbe__cr2d_fr fr;
     vlbe__cr2d_kin k;
     vlbe_status st;
-    int i;
+    int i, j;
     VLBE_ASSERT(el != NULL && qd != NULL && Q != NULL);
     mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
+    if (fth) { /* floating frame: the element sees d, dd (LINEAR only) */
+        if (jt || !(mode & VLBE_CR2D_LINEAR)) return VLBE_EARG;
+        if ((st = vlbe__cr2d_float(el, fth, q, qd, &fr, d, dd)) != VLBE_OK) return st;
+        q = d;
+        qd = dd;
+    }
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, qd, &k)) != VLBE_OK) return st;
     for (i = 0; i < 6; ++i) F[i] = VLBE_R(0.0);
     for (i = 0; i < 36; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
     vlbe__cr2d_forces(el, mode, &k, q, qd, F, K ? Kt : NULL, D ? Dt : NULL);
+    if (fth) {
+        /* Q = -T^T F(d, dd), K = T^T K_d T + D J theta' (dd depends on q
+           through theta' J u), D = T^T D_d T */
+        vlbe_real G[36];
+        vlbe__cr2d_to_glob(&fr, F, d);
+        for (i = 0; i < 6; ++i) F[i] = d[i];
+        if (K || D) {
+            for (i = 0; i < 36; ++i) G[i] = VLBE_R(0.0);
+            vlbe__cr2d_congr(&fr, Dt, G);
+            for (i = 0; i < 36; ++i) Dt[i] = G[i];
+        }
+        if (K) {
+            for (i = 0; i < 36; ++i) G[i] = VLBE_R(0.0);
+            vlbe__cr2d_congr(&fr, Kt, G);
+            for (i = 0; i < 6; ++i)
+                for (j = 0; j < 2; ++j) {
+                    G[i * 6 + 3 * j] -= fth[1] * Dt[i * 6 + 3 * j + 1];
+                    G[i * 6 + 3 * j + 1] += fth[1] * Dt[i * 6 + 3 * j];
+                }
+            for (i = 0; i < 36; ++i) Kt[i] = G[i];
+        }
+    }
     for (i = 0; i < 6; ++i) Q[i] = -F[i];
     if (K)
         for (i = 0; i < 36; ++i) K[i] = -Kt[i];
@@ -1043,16 +1148,24 @@ static inline vlbe_status vlbe__cr2d_mass_jac_any(const vlbe_cr2d_elem *el,
     return VLBE_OK;
 }
 
+/* fth: floating frame (LINEAR): the strain energy of d, the kinetic energy
+   of the global rates q' */
 static inline vlbe_status vlbe__cr2d_energy_any(const vlbe_cr2d_elem *el,
                                                 const vlbe_cr2d_joint *jt, unsigned mode,
-                                                const vlbe_real *q, const vlbe_real *qd,
-                                                vlbe_real *VLBE_RESTRICT E)
+                                                const vlbe_real *fth, const vlbe_real *q,
+                                                const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
 {
     vlbe__cr2d_kin k;
-    vlbe_real m[36], u[6], mu[6];
+    vlbe__cr2d_fr fr;
+    vlbe_real m[36], u[6], mu[6], d[6];
     vlbe_status st;
     VLBE_ASSERT(el != NULL && qd != NULL && E != NULL);
     mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
+    if (fth) {
+        if (jt || !(mode & VLBE_CR2D_LINEAR)) return VLBE_EARG;
+        if ((st = vlbe__cr2d_float(el, fth, q, qd, &fr, d, NULL)) != VLBE_OK) return st;
+        q = d;
+    }
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, qd, &k)) != VLBE_OK) return st;
     vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
     vlbe__cr2d_rates(&k, qd, u);
@@ -1070,7 +1183,7 @@ VLBE_API vlbe_status vlbe_cr2d_force(const vlbe_cr2d_elem *el, unsigned mode, co
                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
                                      vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
 {
-    return vlbe__cr2d_force_any(el, NULL, mode, q, qd, Q, K, D);
+    return vlbe__cr2d_force_any(el, NULL, mode, NULL, q, qd, Q, K, D);
 }
 
 VLBE_API vlbe_status vlbe_cr2d_mass(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
@@ -1089,16 +1202,47 @@ VLBE_API vlbe_status vlbe_cr2d_mass_jac(const vlbe_cr2d_elem *el, unsigned mode,
 VLBE_API vlbe_status vlbe_cr2d_energy(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
                                       const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
 {
-    return vlbe__cr2d_energy_any(el, NULL, mode, q, qd, E);
+    return vlbe__cr2d_energy_any(el, NULL, mode, NULL, q, qd, E);
 }
 
 VLBE_API vlbe_status vlbe_cr2d_local(const vlbe_cr2d_elem *el, unsigned mode, const vlbe_real *q,
                                      vlbe_real *VLBE_RESTRICT loc)
 {
+    return vlbe_cr2d_local_ff(el, mode, NULL, q, loc);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_force_ff(const vlbe_cr2d_elem *el, unsigned mode,
+                                        const vlbe_real *fth, const vlbe_real *q,
+                                        const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                        vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
+{
+    VLBE_ASSERT(fth != NULL);
+    return vlbe__cr2d_force_any(el, NULL, mode, fth, q, qd, Q, K, D);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_energy_ff(const vlbe_cr2d_elem *el, unsigned mode,
+                                         const vlbe_real *fth, const vlbe_real *q,
+                                         const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
+{
+    VLBE_ASSERT(fth != NULL);
+    return vlbe__cr2d_energy_any(el, NULL, mode, fth, q, qd, E);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_local_ff(const vlbe_cr2d_elem *el, unsigned mode,
+                                        const vlbe_real *fth, const vlbe_real *q,
+                                        vlbe_real *VLBE_RESTRICT loc)
+{
     vlbe__cr2d_kin k;
+    vlbe__cr2d_fr fr;
+    vlbe_real d[6];
     vlbe_status st;
     VLBE_ASSERT(el != NULL && loc != NULL);
     mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
+    if (fth) {
+        if (!(mode & VLBE_CR2D_LINEAR)) return VLBE_EARG;
+        if ((st = vlbe__cr2d_float(el, fth, q, NULL, &fr, d, NULL)) != VLBE_OK) return st;
+        q = d;
+    }
     if ((st = vlbe__cr2d_kin_any(el, NULL, mode, q, NULL, &k)) != VLBE_OK) return st;
     loc[0] = k.l;
     loc[1] = k.th[0];
@@ -1113,7 +1257,7 @@ VLBE_API vlbe_status vlbe_cr2d_trans_force(const vlbe_cr2d_elem *el, const vlbe_
                                            vlbe_real *VLBE_RESTRICT D)
 {
     VLBE_ASSERT(jt != NULL);
-    return vlbe__cr2d_force_any(el, jt, mode, q, qd, Q, K, D);
+    return vlbe__cr2d_force_any(el, jt, mode, NULL, q, qd, Q, K, D);
 }
 
 VLBE_API vlbe_status vlbe_cr2d_trans_mass(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
@@ -1138,7 +1282,7 @@ VLBE_API vlbe_status vlbe_cr2d_trans_energy(const vlbe_cr2d_elem *el, const vlbe
                                             const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
 {
     VLBE_ASSERT(jt != NULL);
-    return vlbe__cr2d_energy_any(el, jt, mode, q, qd, E);
+    return vlbe__cr2d_energy_any(el, jt, mode, NULL, q, qd, E);
 }
 
 VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
@@ -1191,6 +1335,9 @@ typedef struct vlbe_cr2d_beam {
     const vlbe_cr2d_joint *joint; /* prismatic joint (NULL: none)         */
     int trans;                /* the element that is the transition
                                  element at the joint (-1: none)          */
+    const vlbe_cr2d_fix *frame; /* floating frame of the LINEAR elements:
+                                 theta(t), theta', theta'' as a prescribed
+                                 coordinate (dof not used); NULL: none    */
     vlbe_status err;          /* last failure of a callback               */
     int err_elem;
 } vlbe_cr2d_beam;
@@ -1214,6 +1361,9 @@ VLBE_API int vlbe_cr2d_beam_constr_acc(void *user, vlbe_real t, const vlbe_real 
                                        const vlbe_real *v, vlbe_real *gamma);
 VLBE_API vlbe_status vlbe_cr2d_beam_energy(const vlbe_cr2d_beam *b, const vlbe_real *q,
                                            const vlbe_real *v, vlbe_real *E);
+VLBE_API vlbe_status vlbe_cr2d_beam_energy_t(const vlbe_cr2d_beam *b, vlbe_real t,
+                                             const vlbe_real *q, const vlbe_real *v,
+                                             vlbe_real *E);
 
 VLBE_API vlbe_status vlbe_cr2d_beam_init(vlbe_cr2d_beam *b, const vlbe_cr2d_elem *el, int ne,
                                          const vlbe_cr2d_fix *fix, int nfix)
@@ -1233,6 +1383,7 @@ VLBE_API vlbe_status vlbe_cr2d_beam_init(vlbe_cr2d_beam *b, const vlbe_cr2d_elem
     b->nfix = nfix;
     b->joint = NULL;
     b->trans = -1;
+    b->frame = NULL;
     b->err = VLBE_OK;
     b->err_elem = -1;
     return VLBE_OK;
@@ -1253,6 +1404,19 @@ VLBE_API void vlbe_cr2d_fix_eval(const vlbe_cr2d_fix *f, vlbe_real t, vlbe_real 
 static inline const vlbe_cr2d_joint *vlbe__cr2d_jt(const vlbe_cr2d_beam *b, int e)
 {
     return (b->joint && e == b->trans) ? b->joint : NULL;
+}
+
+/* the floating frame (theta, theta') of element e at t into fth: NULL when
+   the beam has none or the element is not LINEAR */
+static inline const vlbe_real *vlbe__cr2d_bframe(const vlbe_cr2d_beam *b, int e, vlbe_real t,
+                                                 vlbe_real *fth)
+{
+    vlbe_real g[3];
+    if (!b->frame || !((b->mode | b->el[e].flags) & VLBE_CR2D_LINEAR)) return NULL;
+    vlbe_cr2d_fix_eval(b->frame, t, g);
+    fth[0] = g[0];
+    fth[1] = g[1];
+    return fth;
 }
 
 static inline int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
@@ -1293,11 +1457,11 @@ VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, co
     return 0;
 }
 
-static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, const vlbe_real *q,
+static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const vlbe_real *q,
                                          const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                          vlbe_real *D)
 {
-    vlbe_real Qe[6], Ke[36], De[36];
+    vlbe_real Qe[6], Ke[36], De[36], fth[2];
     vlbe_status st;
     int e, i;
     if (Q) {
@@ -1308,8 +1472,9 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, const vlbe_real *q,
     if (K) vlbe_vec_zero(b->n * b->n, K);
     if (D) vlbe_vec_zero(b->n * b->n, D);
     for (e = 0; e < b->ne; ++e) {
-        if ((st = vlbe__cr2d_force_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e,
-                                       v + 3 * e, Qe, K ? Ke : NULL, D ? De : NULL)) != VLBE_OK)
+        if ((st = vlbe__cr2d_force_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode,
+                                       vlbe__cr2d_bframe(b, e, t, fth), q + 3 * e, v + 3 * e,
+                                       Qe, K ? Ke : NULL, D ? De : NULL)) != VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
         if (Q)
             for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
@@ -1322,15 +1487,13 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, const vlbe_real *q,
 VLBE_API int vlbe_cr2d_beam_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                                   vlbe_real *Q)
 {
-    (void)t;
-    return vlbe__cr2d_beam_forces((vlbe_cr2d_beam *)user, q, v, Q, NULL, NULL);
+    return vlbe__cr2d_beam_forces((vlbe_cr2d_beam *)user, t, q, v, Q, NULL, NULL);
 }
 
 VLBE_API int vlbe_cr2d_beam_force_jac(void *user, vlbe_real t, const vlbe_real *q,
                                       const vlbe_real *v, vlbe_real *K, vlbe_real *D)
 {
-    (void)t;
-    return vlbe__cr2d_beam_forces((vlbe_cr2d_beam *)user, q, v, NULL, K, D);
+    return vlbe__cr2d_beam_forces((vlbe_cr2d_beam *)user, t, q, v, NULL, K, D);
 }
 
 VLBE_API int vlbe_cr2d_beam_mass_jac(void *user, vlbe_real t, const vlbe_real *q,
@@ -1402,17 +1565,27 @@ VLBE_API int vlbe_cr2d_beam_constr_acc(void *user, vlbe_real t, const vlbe_real 
 VLBE_API vlbe_status vlbe_cr2d_beam_energy(const vlbe_cr2d_beam *b, const vlbe_real *q,
                                            const vlbe_real *v, vlbe_real *E)
 {
-    vlbe_real Ee[2];
+    if (b->frame) return VLBE_EARG; /* the frame needs the time: _energy_t */
+    return vlbe_cr2d_beam_energy_t(b, VLBE_R(0.0), q, v, E);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_beam_energy_t(const vlbe_cr2d_beam *b, vlbe_real t,
+                                             const vlbe_real *q, const vlbe_real *v,
+                                             vlbe_real *E)
+{
+    vlbe_real Ee[2], fth[2], T = VLBE_R(0.0), U = VLBE_R(0.0);
     vlbe_status st;
     int e;
-    E[0] = E[1] = VLBE_R(0.0);
     for (e = 0; e < b->ne; ++e) {
-        if ((st = vlbe__cr2d_energy_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e,
-                                        v + 3 * e, Ee)) != VLBE_OK)
-            return st;
-        E[0] += Ee[0];
-        E[1] += Ee[1];
+        if ((st = vlbe__cr2d_energy_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode,
+                                        vlbe__cr2d_bframe(b, e, t, fth), q + 3 * e, v + 3 * e,
+                                        Ee)) != VLBE_OK)
+            return st; /* E untouched */
+        T += Ee[0];
+        U += Ee[1];
     }
+    E[0] = T;
+    E[1] = U;
     return VLBE_OK;
 }
 

@@ -74,7 +74,16 @@
                             g): C, C_q, C_t, gamma vs the definitions and vs
                             differences in t
      beam_errors            beam_init EARG (beam not written); a failing
-                            element: callbacks return 1, err, err_elem */
+                            element: callbacks return 1, err, err_elem
+     floating_frame_zero    frame (0, 0): force_ff, energy_ff, local_ff and the
+                            beam with frame = 0 equal the LINEAR element bit
+                            for bit; beam_energy with a frame -> EARG
+     floating_frame         frames up to 7 rad, rates up to 3 rad/s: Q vs the
+                            definition in double (textbook k0, m); K, D vs
+                            differences (affine: rounding-only tolerance);
+                            rigid motion with the frame: Q = 0, local = (L, 0)
+     floating_frame_errors  non-LINEAR -> EARG; NaN/Inf frame or q' ->
+                            ENONFINITE; outputs untouched */
 #include "test_util.h"
 #include "../corot2d.h"
 #include "cr2d_fixtures.h"
@@ -2238,6 +2247,274 @@ static void test_beam_errors(void **state)
     for (i = 0; i < NB; ++i) assert_true(Q[i] == Q[i]);
 }
 
+/* ======================================================================= */
+/* floating frame of the LINEAR element (vlbe_cr2d_*_ff, beam.frame)        */
+/* ======================================================================= */
+
+/* fth = (theta, theta') = (0, 0): force_ff, energy_ff, local_ff give what
+   force, energy, local give in LINEAR, bit for bit (d = q, dd = q' exactly
+   at theta = 0: the frame's offset (cos - 1) X + sin Y is computed as
+   -2 sin^2(theta/2) X + sin Y = 0, and rotations by (1, 0) are exact), for
+   every LINEAR mode and both materials; the beam with frame = 0 gives the
+   same callbacks as the beam without one.  Tolerance: none (rtol = atol =
+   0). */
+static void test_floating_frame_zero(void **state)
+{
+    vlbe_cr2d_mat mats[2];
+    const vlbe_real fth0[2] = {VLBE_R(0.0), VLBE_R(0.0)};
+    tu_rng g = tu_rng_seed(201);
+    int im, s, k;
+    (void)state;
+    mats[0] = cr_mat_unit();
+    mats[1] = cr_mat_stiff();
+    for (im = 0; im < 2; ++im)
+        for (s = 0; s < 4; ++s) {
+            vlbe_cr2d_elem el;
+            vlbe_real q[6], qd[6];
+            elem_rand(&el, &mats[im], &g, 0);
+            cr_state_rand(&el, &g, 0.3, 0.01, 0, 1.0, q, qd, NULL);
+            for (k = 0; k < 4; ++k) {
+                const unsigned mode = VLBE_CR2D_LINEAR | (unsigned)(2 * k);
+                vlbe_real Q[6], K[36], D[36], Q2[6], K2[36], D2[36], E[2], E2[2], l[4], l2[4];
+                assert_int_equal(vlbe_cr2d_force(&el, mode, q, qd, Q, K, D), VLBE_OK);
+                assert_int_equal(vlbe_cr2d_force_ff(&el, mode, fth0, q, qd, Q2, K2, D2), VLBE_OK);
+                ASSERT_VEC_CLOSE(Q2, Q, 6, 0, 0);
+                ASSERT_VEC_CLOSE(K2, K, 36, 0, 0);
+                ASSERT_VEC_CLOSE(D2, D, 36, 0, 0);
+                assert_int_equal(vlbe_cr2d_energy(&el, mode, q, qd, E), VLBE_OK);
+                assert_int_equal(vlbe_cr2d_energy_ff(&el, mode, fth0, q, qd, E2), VLBE_OK);
+                ASSERT_VEC_CLOSE(E2, E, 2, 0, 0);
+                assert_int_equal(vlbe_cr2d_local(&el, mode, q, l), VLBE_OK);
+                assert_int_equal(vlbe_cr2d_local_ff(&el, mode, fth0, q, l2), VLBE_OK);
+                ASSERT_VEC_CLOSE(l2, l, 4, 0, 0);
+            }
+        }
+    {
+        vlbe_cr2d_elem el[NE];
+        vlbe_cr2d_beam b0, b1;
+        vlbe_cr2d_fix fr;
+        vlbe_real q[NB], v[NB], a[NB], Q0[NB], Q1[NB], E0[2], E1[2];
+        static vlbe_real K0[NB * NB], D0[NB * NB], K1[NB * NB], D1[NB * NB];
+        beam_elems(el);
+        beam_state(&g, 0.1, q, v, a);
+        memset(&fr, 0, sizeof fr);
+        assert_int_equal(vlbe_cr2d_beam_init(&b0, el, NE, NULL, 0), VLBE_OK);
+        assert_int_equal(vlbe_cr2d_beam_init(&b1, el, NE, NULL, 0), VLBE_OK);
+        b0.mode = b1.mode = VLBE_CR2D_LINEAR;
+        b1.frame = &fr;
+        assert_int_equal(vlbe_cr2d_beam_force(&b0, VLBE_R(0.3), q, v, Q0), 0);
+        assert_int_equal(vlbe_cr2d_beam_force(&b1, VLBE_R(0.3), q, v, Q1), 0);
+        ASSERT_VEC_CLOSE(Q1, Q0, NB, 0, 0);
+        assert_int_equal(vlbe_cr2d_beam_force_jac(&b0, VLBE_R(0.3), q, v, K0, D0), 0);
+        assert_int_equal(vlbe_cr2d_beam_force_jac(&b1, VLBE_R(0.3), q, v, K1, D1), 0);
+        ASSERT_VEC_CLOSE(K1, K0, NB * NB, 0, 0);
+        ASSERT_VEC_CLOSE(D1, D0, NB * NB, 0, 0);
+        assert_int_equal(vlbe_cr2d_beam_energy(&b0, q, v, E0), VLBE_OK);
+        assert_int_equal(vlbe_cr2d_beam_energy_t(&b1, VLBE_R(0.3), q, v, E1), VLBE_OK);
+        ASSERT_VEC_CLOSE(E1, E0, 2, 0, 0);
+        /* with a frame the time is needed: beam_energy refuses, E untouched */
+        E1[0] = E1[1] = SENTINEL;
+        assert_int_equal(vlbe_cr2d_beam_energy(&b1, q, v, E1), VLBE_EARG);
+        assert_all_equal(2, E1, SENTINEL);
+    }
+}
+
+/* Reference of the floating-frame force, in double from the definitions:
+   d = R^T(th)(X + u) - X, phi - th; dd = R^T(th)(u' + th' J (X + u)),
+   phi' - th'; F = T^T T0^T (k0 T0 d + (alpha m + beta k0) T0 dd) with T0 the
+   rotation into the reference chord (a0) and m, k0 the textbook matrices. */
+static void ff_ref(const vlbe_cr2d_elem *el, unsigned mode, const double *fth, const double *q,
+                   const double *qd, double *Q)
+{
+    const double c = cos(fth[0]), s = sin(fth[0]), L = (double)el->L;
+    const double a0 = atan2((double)el->X[3] - (double)el->X[1], (double)el->X[2] - (double)el->X[0]);
+    double T0[36], m[36], k0[36], d[6], dd[6], u[6], ud[6], f[6], g[6];
+    int i, j, k;
+    cr_rot6(a0, T0);
+    cr_textbook_mass((double)el->mat.rhoA, (double)el->mat.rhoI, L, m);
+    cr_textbook_stiffness((double)el->mat.EA, (double)el->mat.EI, L, k0);
+    for (k = 0; k < 2; ++k) {
+        const double X = (double)el->X[2 * k] + q[3 * k], Y = (double)el->X[2 * k + 1] + q[3 * k + 1];
+        const double wx = qd[3 * k] + fth[1] * Y, wy = qd[3 * k + 1] - fth[1] * X;
+        d[3 * k] = c * X + s * Y - (double)el->X[2 * k];
+        d[3 * k + 1] = -s * X + c * Y - (double)el->X[2 * k + 1];
+        d[3 * k + 2] = q[3 * k + 2] - fth[0];
+        dd[3 * k] = c * wx + s * wy;
+        dd[3 * k + 1] = -s * wx + c * wy;
+        dd[3 * k + 2] = qd[3 * k + 2] - fth[1];
+    }
+    for (i = 0; i < 6; ++i) {
+        u[i] = ud[i] = 0.0;
+        for (j = 0; j < 6; ++j) {
+            u[i] += T0[i * 6 + j] * d[j];
+            ud[i] += T0[i * 6 + j] * dd[j];
+        }
+    }
+    for (i = 0; i < 6; ++i) {
+        f[i] = 0.0;
+        for (j = 0; j < 6; ++j) {
+            f[i] += k0[i * 6 + j] * u[j];
+            if (!(mode & VLBE_CR2D_NO_DAMP))
+                f[i] += ((double)el->mat.ray_a * m[i * 6 + j] +
+                         (double)el->mat.ray_b * k0[i * 6 + j]) *
+                        ud[j];
+        }
+    }
+    for (i = 0; i < 6; ++i) {
+        g[i] = 0.0;
+        for (j = 0; j < 6; ++j) g[i] += T0[j * 6 + i] * f[j];
+    }
+    for (k = 0; k < 2; ++k) {
+        Q[3 * k] = -(c * g[3 * k] - s * g[3 * k + 1]);
+        Q[3 * k + 1] = -(s * g[3 * k] + c * g[3 * k + 1]);
+        Q[3 * k + 2] = -g[3 * k + 2];
+    }
+}
+
+/* Random frames theta in [-7, 7] rad (more than a turn), theta' in [-3,
+   3], random LINEAR states, both materials, with and without damping:
+   (1) Q against ff_ref: the same sums in double; rounding of the sums of
+       |terms| ~ max|k0| (1 + alpha + beta) (|X| + |u| + |dd|), |u| <= 0.3,
+       |u'| <= 1, |dd| <= |u'| + |theta'| (|X| + |u|): tolerance 16 EPS
+       max|k0| (1 + alpha + beta) (R + 1) (1 + 2 |theta'|), R = max|X|;
+   (2) K = dQ/dq, D = dQ/dq' against central differences: Q is affine in q
+       and q' at a given frame, so the differences have no truncation
+       error; step 1, tolerance 16 EPS max|Q| / 1 (two roundings of Q);
+   (3) rigid motion with the frame: X + u = R(theta) X (turned about the
+       origin), phi = theta, u' = theta' J^T (X + u), phi' = theta': d = 0,
+       dd = 0, so Q = 0 to the rounding of the terms 64 EPS max|k0| |X|
+       and local_ff = (L, 0, 0, 0) to 64 EPS. */
+static void test_floating_frame(void **state)
+{
+    vlbe_cr2d_mat mats[2];
+    tu_rng g = tu_rng_seed(202);
+    double werr = 0.0, wk = 0.0, wr = 0.0;
+    int im, s, k, i, j;
+    (void)state;
+    mats[0] = cr_mat_unit();
+    mats[1] = cr_mat_stiff();
+    for (im = 0; im < 2; ++im)
+        for (s = 0; s < 6; ++s) {
+            vlbe_cr2d_elem el;
+            vlbe_real q[6], qd[6], fth[2];
+            double qdd[6], qdb[6], fthd[2], kmax = 0.0, xmax0 = 0.0;
+            elem_rand(&el, &mats[im], &g, 0);
+            for (i = 0; i < 4; ++i) xmax0 = fmax(xmax0, fabs((double)el.X[i]));
+            for (i = 0; i < 6; ++i) {
+                q[i] = (vlbe_real)(0.3 * tu_rng_uniform(&g));
+                qd[i] = (vlbe_real)tu_rng_uniform(&g);
+                qdd[i] = (double)q[i];
+                qdb[i] = (double)qd[i];
+            }
+            fth[0] = (vlbe_real)(7.0 * tu_rng_uniform(&g));
+            fth[1] = (vlbe_real)(3.0 * tu_rng_uniform(&g));
+            fthd[0] = (double)fth[0];
+            fthd[1] = (double)fth[1];
+            for (i = 0; i < 36; ++i) kmax = fmax(kmax, fabs((double)el.k0_[i]));
+            for (k = 0; k < 2; ++k) {
+                const unsigned mode = VLBE_CR2D_LINEAR | (k ? VLBE_CR2D_NO_DAMP : 0u);
+                vlbe_real Q[6], K[36], D[36], Qp[6], Qm[6];
+                double Qr[6], qmax, tol, Jfd;
+                assert_int_equal(vlbe_cr2d_force_ff(&el, mode, fth, q, qd, Q, K, D), VLBE_OK);
+                ff_ref(&el, mode, fthd, qdd, qdb, Qr);
+                tol = 16.0 * EPS * kmax * (1.0 + (double)el.mat.ray_b + (double)el.mat.ray_a) *
+                      (xmax0 + 1.0 + 2.0 * fabs(fthd[1]) * (xmax0 + 1.0));
+                for (i = 0; i < 6; ++i) {
+                    ASSERT_CLOSE((double)Q[i], Qr[i], 0, tol);
+                    werr = fmax(werr, fabs((double)Q[i] - Qr[i]) / tol);
+                }
+                qmax = cr_max_abs(6, Q);
+                /* (2) columns by central differences, step 1 */
+                for (j = 0; j < 12; ++j) {
+                    vlbe_real x[6], xd[6];
+                    memcpy(x, q, sizeof x);
+                    memcpy(xd, qd, sizeof xd);
+                    if (j < 6) x[j] += VLBE_R(1.0); else xd[j - 6] += VLBE_R(1.0);
+                    assert_int_equal(vlbe_cr2d_force_ff(&el, mode, fth, x, xd, Qp, NULL, NULL), VLBE_OK);
+                    qmax = fmax(qmax, cr_max_abs(6, Qp));
+                    memcpy(x, q, sizeof x);
+                    memcpy(xd, qd, sizeof xd);
+                    if (j < 6) x[j] -= VLBE_R(1.0); else xd[j - 6] -= VLBE_R(1.0);
+                    assert_int_equal(vlbe_cr2d_force_ff(&el, mode, fth, x, xd, Qm, NULL, NULL), VLBE_OK);
+                    qmax = fmax(qmax, cr_max_abs(6, Qm));
+                    for (i = 0; i < 6; ++i) {
+                        Jfd = 0.5 * ((double)Qp[i] - (double)Qm[i]);
+                        tol = 16.0 * EPS * qmax;
+                        ASSERT_CLOSE_CTX(Jfd, j < 6 ? K[i * 6 + j] : D[i * 6 + j - 6], 0, tol,
+                                         "floating frame: %s (%d, %d), mode %u",
+                                         j < 6 ? "K" : "D", i, j % 6, mode);
+                        wk = fmax(wk, fabs(Jfd - (double)(j < 6 ? K[i * 6 + j] : D[i * 6 + j - 6])) / tol);
+                    }
+                }
+            }
+            { /* (3) rigid motion with the frame */
+                const double c = cos(fthd[0]), sn = sin(fthd[0]);
+                vlbe_real Q[6], loc[4];
+                double xmax = 0.0, tol;
+                for (k = 0; k < 2; ++k) {
+                    const double X = (double)el.X[2 * k], Y = (double)el.X[2 * k + 1];
+                    const double x = c * X - sn * Y, y = sn * X + c * Y;
+                    q[3 * k] = (vlbe_real)(x - X);
+                    q[3 * k + 1] = (vlbe_real)(y - Y);
+                    q[3 * k + 2] = fth[0];
+                    qd[3 * k] = (vlbe_real)(-fthd[1] * y);
+                    qd[3 * k + 1] = (vlbe_real)(fthd[1] * x);
+                    qd[3 * k + 2] = fth[1];
+                    xmax = fmax(xmax, fmax(fabs(X), fabs(Y)));
+                }
+                assert_int_equal(vlbe_cr2d_force_ff(&el, VLBE_CR2D_LINEAR, fth, q, qd, Q, NULL, NULL),
+                                 VLBE_OK);
+                tol = 64.0 * EPS * kmax * (1.0 + (double)el.mat.ray_b * 3.0) * (xmax + 1.0);
+                for (i = 0; i < 6; ++i) {
+                    ASSERT_CLOSE((double)Q[i], 0.0, 0, tol);
+                    wr = fmax(wr, fabs((double)Q[i]) / tol);
+                }
+                cr_fill(4, SENTINEL, loc);
+                assert_int_equal(vlbe_cr2d_local_ff(&el, VLBE_CR2D_LINEAR, fth, q, loc), VLBE_OK);
+                ASSERT_CLOSE((double)loc[0], (double)el.L, 0, 0);
+                for (i = 1; i < 4; ++i) ASSERT_CLOSE((double)loc[i], 0.0, 0, 64.0 * EPS * (xmax + 1.0));
+            }
+        }
+    tu_report("floating frame: Q vs definition (err / tol)", werr, 1.0);
+    tu_report("floating frame: K, D vs differences (err / tol)", wk, 1.0);
+    tu_report("floating frame: rigid motion Q (err / tol)", wr, 1.0);
+}
+
+/* Errors of the floating frame: a non-LINEAR element or mode -> EARG;
+   NaN/Inf in the frame or in q, q' -> ENONFINITE; no output written. */
+static void test_floating_frame_errors(void **state)
+{
+    const vlbe_cr2d_mat m = cr_mat_unit();
+    vlbe_cr2d_elem el;
+    vlbe_real q[6], qd[6], fth[2] = {VLBE_R(0.4), VLBE_R(1.0)}, Q[6], K[36], D[36], E[2], l[4];
+    tu_rng g = tu_rng_seed(203);
+    (void)state;
+    elem_rand(&el, &m, &g, 0);
+    cr_state_rand(&el, &g, 0.3, 0.01, 0, 1.0, q, qd, NULL);
+    cr_fill(6, SENTINEL, Q);
+    cr_fill(36, SENTINEL, K);
+    cr_fill(36, SENTINEL, D);
+    cr_fill(2, SENTINEL, E);
+    cr_fill(4, SENTINEL, l);
+    assert_int_equal(vlbe_cr2d_force_ff(&el, 0, fth, q, qd, Q, K, D), VLBE_EARG);
+    assert_int_equal(vlbe_cr2d_energy_ff(&el, VLBE_CR2D_NO_NLI, fth, q, qd, E), VLBE_EARG);
+    assert_int_equal(vlbe_cr2d_local_ff(&el, 0, fth, q, l), VLBE_EARG);
+    fth[1] = (vlbe_real)NAN;
+    assert_int_equal(vlbe_cr2d_force_ff(&el, VLBE_CR2D_LINEAR, fth, q, qd, Q, K, D), VLBE_ENONFINITE);
+    assert_int_equal(vlbe_cr2d_energy_ff(&el, VLBE_CR2D_LINEAR, fth, q, qd, E), VLBE_ENONFINITE);
+    fth[1] = VLBE_R(1.0);
+    fth[0] = (vlbe_real)INFINITY;
+    assert_int_equal(vlbe_cr2d_local_ff(&el, VLBE_CR2D_LINEAR, fth, q, l), VLBE_ENONFINITE);
+    fth[0] = VLBE_R(0.4);
+    qd[2] = (vlbe_real)NAN;
+    assert_int_equal(vlbe_cr2d_force_ff(&el, VLBE_CR2D_LINEAR, fth, q, qd, Q, K, D), VLBE_ENONFINITE);
+    assert_all_equal(6, Q, SENTINEL);
+    assert_all_equal(36, K, SENTINEL);
+    assert_all_equal(36, D, SENTINEL);
+    assert_all_equal(2, E, SENTINEL);
+    assert_all_equal(4, l, SENTINEL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2263,6 +2540,9 @@ int main(void)
         cmocka_unit_test(test_beam_jacobians),
         cmocka_unit_test(test_beam_constraints),
         cmocka_unit_test(test_beam_errors),
+        cmocka_unit_test(test_floating_frame_zero),
+        cmocka_unit_test(test_floating_frame),
+        cmocka_unit_test(test_floating_frame_errors),
     };
     return cmocka_run_group_tests_name("corot2d", tests, NULL, NULL);
 }
