@@ -139,13 +139,14 @@ typedef struct wp_obs {
     point *pt;
 } wp_obs;
 
-static void wp_obs_step(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
-                        const vlbe_real *lambda)
+static vlbe_status wp_obs_step(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
+                               const vlbe_real *lambda)
 {
     wp_obs *o = (wp_obs *)ctx;
     (void)lambda;
     if (o->pend) pend_period_add(&o->pp, t, (double)q[0], (double)v[0]);
     if (o->instr && t > 0.0) drift(o->sys, (vlbe_real)t, q, v, o->pt);
+    return VLBE_OK;
 }
 
 /* One run of series s at x (h or rtol); instr: record the drift.  Returns

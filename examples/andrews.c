@@ -464,8 +464,8 @@ typedef struct andr_obs {
     andr_result *res;
 } andr_obs;
 
-static inline void andr_obs_step(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
-                                 const vlbe_real *lambda)
+static inline vlbe_status andr_obs_step(void *ctx, double t, const vlbe_real *q,
+                                        const vlbe_real *v, const vlbe_real *lambda)
 {
     andr_obs *o = (andr_obs *)ctx;
     vlbe_real g[ANDR_M];
@@ -474,6 +474,7 @@ static inline void andr_obs_step(void *ctx, double t, const vlbe_real *q, const 
     o->sys->constr(o->sys->user, (vlbe_real)t, q, g);
     for (i = 0; i < ANDR_M; ++i)
         if (fabs((double)g[i]) > o->res->max_c) o->res->max_c = fabs((double)g[i]);
+    return VLBE_OK;
 }
 
 /* Runs method m on sys from the Test Set start to t = 0.03 s and compares

@@ -73,6 +73,7 @@
 #include "../integrators.h"
 #include "ex_eig.h"
 #include "ex_cant.h"
+#include "ex_cr2d.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -131,16 +132,7 @@ static inline int cs_build_sec(cs_model *m, int ne, unsigned flags, double EA, d
     m->P[3 * ne + 2] = (vlbe_real)(2.0 * CS_PI * EI / CS_L);
     m->beam.P = m->P;
     m->beam.load = VLBE_R(0.0);
-    m->sys.n = m->n;
-    m->sys.m = 3;
-    m->sys.user = &m->beam;
-    m->sys.mass = vlbe_cr2d_beam_mass;
-    m->sys.force = vlbe_cr2d_beam_force;
-    m->sys.force_jac = vlbe_cr2d_beam_force_jac;
-    m->sys.mass_jac = vlbe_cr2d_beam_mass_jac;
-    m->sys.constr = vlbe_cr2d_beam_constr;
-    m->sys.constr_jac = vlbe_cr2d_beam_constr_jac;
-    m->sys.constr_acc = vlbe_cr2d_beam_constr_acc;
+    ex_cr2d_dae(&m->sys, &m->beam, m->n, 3);
     return 0;
 }
 

@@ -17,9 +17,11 @@
 #include <time.h>
 
 /* Called at t = t0 and after every accepted step with the state then
-   (may be NULL: no observation). */
-typedef void (*ex_observer)(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
-                            const vlbe_real *lambda);
+   (may be NULL: no observation).  Returns VLBE_OK to go on; any other
+   status ends the run with that status (e.g. VLBE_EBOUND from a bound on
+   the state that the caller sets), the state of that step kept. */
+typedef vlbe_status (*ex_observer)(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
+                                   const vlbe_real *lambda);
 
 /* The integrator: hht != NULL: that generalized-alpha scheme with the fixed
    step h (t_end - t0 rounded to a whole number of steps); else BDF with bdf. */
@@ -39,6 +41,28 @@ typedef struct ex_run_out {
     vlbe_dae_stats stats; /* counters (zero if init failed early)        */
     double cpu;           /* seconds                                      */
 } ex_run_out;
+
+/* g (double value, rate, acceleration) into the vlbe_real triple of a
+   prescribed-coordinate function (corot2d.h vlbe_cr2d_fix.fun). */
+static inline void ex_real3(const double *g, vlbe_real *g3)
+{
+    g3[0] = (vlbe_real)g[0];
+    g3[1] = (vlbe_real)g[1];
+    g3[2] = (vlbe_real)g[2];
+}
+
+/* The HHT family by the examples' settings: rho_inf > 0: generalized-alpha
+   with that rho_inf; else alpha == 0: trapezoidal Newmark (beta 1/4, gamma
+   1/2); else HHT-alpha.  The status of the params call. */
+static inline vlbe_status ex_hht_pick(vlbe_hht_params *par, double alpha, double rho_inf)
+{
+    if (rho_inf > 0.0) return vlbe_hht_params_genalpha(par, (vlbe_real)rho_inf);
+    if (alpha == 0.0) {
+        vlbe_hht_params_newmark(par, VLBE_R(0.25), VLBE_R(0.5));
+        return VLBE_OK;
+    }
+    return vlbe_hht_params_hht(par, (vlbe_real)alpha);
+}
 
 /* Makes the caller workspace of m large enough for either integrator on a
    problem of n coordinates and nm constraints, growing the buffers m
@@ -107,10 +131,10 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
         rc = vlbe_hht_init(&hs, sys, m->hht, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
         if (rc == VLBE_OK) {
             q = hs.q, v = hs.v, lam = hs.lambda;
-            if (obs) obs(ctx, 0.0, q, v, lam);
-            for (k = 1; k <= nsteps; ++k) {
+            if (obs) rc = obs(ctx, 0.0, q, v, lam);
+            for (k = 1; k <= nsteps && rc == VLBE_OK; ++k) {
                 if ((rc = vlbe_hht_step(&hs, (vlbe_real)m->h)) != VLBE_OK) break;
-                if (obs) obs(ctx, (double)k * m->h, q, v, lam);
+                if (obs) rc = obs(ctx, (double)k * m->h, q, v, lam);
             }
             out->stats = hs.stats;
         }
@@ -118,10 +142,10 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
         rc = vlbe_bdf_init(&bs, sys, m->bdf, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
         if (rc == VLBE_OK) {
             q = bs.q, v = bs.v, lam = bs.lambda;
-            if (obs) obs(ctx, 0.0, q, v, lam);
-            while ((double)bs.t < t_end) {
+            if (obs) rc = obs(ctx, 0.0, q, v, lam);
+            while (rc == VLBE_OK && (double)bs.t < t_end) {
                 if ((rc = vlbe_bdf_step(&bs, (vlbe_real)t_end)) != VLBE_OK) break;
-                if (obs) obs(ctx, (double)bs.t, q, v, lam);
+                if (obs) rc = obs(ctx, (double)bs.t, q, v, lam);
             }
             out->stats = bs.stats;
         }

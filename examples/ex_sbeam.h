@@ -40,6 +40,7 @@
 #include "../corot2d.h"
 #include "../integrators.h"
 #include "ex_cant.h"
+#include "ex_run.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -156,9 +157,7 @@ static inline void sb_ua_fun(void *ctx, vlbe_real t, vlbe_real *g3)
 {
     double g[3];
     sb_ua((const sb_cfg *)ctx, (double)t, g);
-    g3[0] = (vlbe_real)g[0];
-    g3[1] = (vlbe_real)g[1];
-    g3[2] = (vlbe_real)g[2];
+    ex_real3(g, g3);
 }
 
 /* damping of eq. 56 set on every element for time t */
@@ -443,13 +442,7 @@ static inline void sb_run(sb_model *m, const sb_cfg *c, sb_observer obs, void *c
         goto done;
     }
     if ((out->status = sb_static(m, q, &out->F0)) != VLBE_OK) goto done;
-    if (c->rho_inf > 0.0) {
-        if ((out->status = vlbe_hht_params_genalpha(&par, (vlbe_real)c->rho_inf)) != VLBE_OK)
-            goto done;
-    } else if (c->alpha == 0.0)
-        vlbe_hht_params_newmark(&par, VLBE_R(0.25), VLBE_R(0.5));
-    else if ((out->status = vlbe_hht_params_hht(&par, (vlbe_real)c->alpha)) != VLBE_OK)
-        goto done;
+    if ((out->status = ex_hht_pick(&par, c->alpha, c->rho_inf)) != VLBE_OK) goto done;
     par.max_halvings = c->max_halvings > 0 ? c->max_halvings : 10;
     if (c->newton_max > 0) par.newton_max = c->newton_max;
     if (c->full_newton) par.modified = 0;

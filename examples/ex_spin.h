@@ -32,11 +32,12 @@
 
 #include "../corot2d.h"
 #include "../integrators.h"
+#include "ex_cr2d.h"
+#include "ex_run.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #define SP_MAXEL 64
 #define SP_PI 3.14159265358979323846
@@ -99,9 +100,7 @@ static inline void sp_theta_fun(void *ctx, vlbe_real t, vlbe_real *g3)
 {
     double g[3];
     sp_theta((const sp_cfg *)ctx, (double)t, g);
-    g3[0] = (vlbe_real)g[0];
-    g3[1] = (vlbe_real)g[1];
-    g3[2] = (vlbe_real)g[2];
+    ex_real3(g, g3);
 }
 
 typedef struct sp_model {
@@ -145,17 +144,8 @@ static inline vlbe_status sp_init(sp_model *m, const sp_cfg *c)
     m->fix[2].ctx = &m->cfg;
     if ((st = vlbe_cr2d_beam_init(&m->beam, m->el, c->ne, m->fix, 3)) != VLBE_OK) return st;
     if (c->linear) m->beam.frame = &m->fix[2]; /* the hub frame */
-    m->sys.n = m->n;
-    m->sys.m = 3;
-    m->sys.flags = c->linear ? VLBE_DAE_MASS_CONST : 0u;
-    m->sys.user = &m->beam;
-    m->sys.mass = vlbe_cr2d_beam_mass;
-    m->sys.force = vlbe_cr2d_beam_force;
-    m->sys.force_jac = vlbe_cr2d_beam_force_jac;
-    m->sys.mass_jac = vlbe_cr2d_beam_mass_jac;
-    m->sys.constr = vlbe_cr2d_beam_constr;
-    m->sys.constr_jac = vlbe_cr2d_beam_constr_jac;
-    m->sys.constr_acc = vlbe_cr2d_beam_constr_acc;
+    ex_cr2d_dae(&m->sys, &m->beam, m->n, 3);
+    if (c->linear) m->sys.flags = VLBE_DAE_MASS_CONST;
     return VLBE_OK;
 }
 
@@ -185,68 +175,72 @@ typedef struct sp_out {
     double tip_max[2];    /* max |axial|, max |transverse|              */
 } sp_out;
 
-/* The whole run from rest (q = v = 0 is consistent: theta(0) = theta'(0) = 0). */
-static inline void sp_run(sp_model *m, const sp_cfg *c, sp_observer obs, void *ctx, sp_out *out)
+/* ex_run's observer: the tip in the hub frame, its record in out, the
+   caller's observer, and the bound (VLBE_EBOUND ends the run). */
+typedef struct sp_watch {
+    const sp_model *m;
+    sp_out *out;
+    long kTs;             /* the step that ends at Ts            */
+    sp_observer obs;
+    void *ctx;
+} sp_watch;
+
+static inline vlbe_status sp_watch_step(void *ctx, double t, const vlbe_real *q,
+                                        const vlbe_real *v, const vlbe_real *lambda)
 {
-    vlbe_hht_params par;
-    vlbe_hht st;
-    vlbe_real *q = NULL, *v = NULL, *w = NULL;
-    int *iw = NULL;
-    size_t lw, liw;
-    long k, nsteps, kTs;
-    double tip[2];
-    clock_t c0 = clock();
-    memset(out, 0, sizeof *out);
-    out->tip_Ts[0] = out->tip_Ts[1] = NAN;
-    if ((out->status = sp_init(m, c)) != VLBE_OK) return;
-    q = (vlbe_real *)calloc((size_t)m->n, sizeof *q);
-    v = (vlbe_real *)calloc((size_t)m->n, sizeof *v);
-    lw = vlbe_hht_work_len(m->n, 3);
-    liw = vlbe_hht_iwork_len(m->n, 3);
-    w = (vlbe_real *)malloc(lw * sizeof *w);
-    iw = (int *)malloc(liw * sizeof *iw);
-    if (!q || !v || !w || !iw) {
-        out->status = VLBE_EWORK;
-        goto done;
-    }
-    if (c->alpha == 0.0)
-        vlbe_hht_params_newmark(&par, VLBE_R(0.25), VLBE_R(0.5));
-    else if ((out->status = vlbe_hht_params_hht(&par, (vlbe_real)c->alpha)) != VLBE_OK)
-        goto done;
-    par.max_halvings = c->max_halvings > 0 ? c->max_halvings : 10;
-    nsteps = (long)floor(c->t_end / c->h + 0.5);
-    kTs = (long)floor(c->Ts / c->h + 0.5);
-    if ((out->status = vlbe_hht_init(&st, &m->sys, &par, VLBE_R(0.0), q, v, w, lw, iw, liw)) !=
-        VLBE_OK)
-        goto done;
-    tip[0] = tip[1] = 0.0;
-    if (obs) obs(ctx, m, 0.0, tip, st.q, st.v);
-    for (k = 1; k <= nsteps; ++k) {
-        const double t = (double)k * c->h;
-        if ((out->status = vlbe_hht_step(&st, (vlbe_real)c->h)) != VLBE_OK) break;
-        sp_tip(m, t, st.q, tip);
+    sp_watch *w = (sp_watch *)ctx;
+    sp_out *out = w->out;
+    const sp_cfg *c = &w->m->cfg;
+    double tip[2] = {0.0, 0.0};
+    (void)lambda;
+    if (t > 0.0) {
+        sp_tip(w->m, t, q, tip);
         out->t_stop = t;
         out->tip_end[0] = tip[0];
         out->tip_end[1] = tip[1];
-        if (k == kTs) {
+        if ((long)floor(t / c->h + 0.5) == w->kTs) {
             out->tip_Ts[0] = tip[0];
             out->tip_Ts[1] = tip[1];
         }
         out->tip_max[0] = fmax(out->tip_max[0], fabs(tip[0]));
         out->tip_max[1] = fmax(out->tip_max[1], fabs(tip[1]));
-        if (obs) obs(ctx, m, t, tip, st.q, st.v);
-        if (c->bound > 0.0 && !(hypot(tip[0], tip[1]) <= c->bound)) {
-            out->status = VLBE_EBOUND;
-            break;
-        }
     }
-    out->stats = st.stats;
-done:
-    out->cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
-    free(q);
-    free(v);
-    free(w);
-    free(iw);
+    if (w->obs) w->obs(w->ctx, w->m, t, tip, q, v);
+    if (c->bound > 0.0 && !(hypot(tip[0], tip[1]) <= c->bound)) return VLBE_EBOUND;
+    return VLBE_OK;
+}
+
+/* The whole run from rest (q = v = 0 is consistent: theta(0) = theta'(0) =
+   0), by ex_run with HHT (cfg.alpha) at the fixed step cfg.h. */
+static inline void sp_run(sp_model *m, const sp_cfg *c, sp_observer obs, void *ctx, sp_out *out)
+{
+    vlbe_hht_params par;
+    ex_method meth;
+    ex_run_out ro;
+    sp_watch w;
+    vlbe_real *q0 = NULL;
+    memset(out, 0, sizeof *out);
+    out->tip_Ts[0] = out->tip_Ts[1] = NAN;
+    if ((out->status = sp_init(m, c)) != VLBE_OK) return;
+    if ((out->status = ex_hht_pick(&par, c->alpha, 0.0)) != VLBE_OK) return;
+    par.max_halvings = c->max_halvings > 0 ? c->max_halvings : 10;
+    q0 = (vlbe_real *)calloc((size_t)m->n, sizeof *q0);
+    if (!q0) {
+        out->status = VLBE_EWORK;
+        return;
+    }
+    memset(&meth, 0, sizeof meth);
+    meth.hht = &par;
+    meth.h = c->h;
+    w.m = m;
+    w.out = out;
+    w.kTs = (long)floor(c->Ts / c->h + 0.5);
+    w.obs = obs;
+    w.ctx = ctx;
+    out->status = ex_run(&m->sys, &meth, q0, q0, c->t_end, sp_watch_step, &w, NULL, NULL, NULL, &ro);
+    out->stats = ro.stats;
+    out->cpu = ro.cpu;
+    free(q0);
 }
 
 #endif /* VLBE_EX_SPIN_H */

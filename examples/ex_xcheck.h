@@ -568,13 +568,7 @@ static inline xc_ale_out xc_ale_run(const sb_cfg *c, int N, int start, xc_hist *
     iw = (int *)malloc(liw * sizeof *iw);
     res.status = VLBE_EWORK;
     if (!w || !iw) goto done;
-    if (c->rho_inf > 0.0) {
-        if ((res.status = vlbe_hht_params_genalpha(&par, (vlbe_real)c->rho_inf)) != VLBE_OK)
-            goto done;
-    } else if (c->alpha == 0.0)
-        vlbe_hht_params_newmark(&par, VLBE_R(0.25), VLBE_R(0.5));
-    else if ((res.status = vlbe_hht_params_hht(&par, (vlbe_real)c->alpha)) != VLBE_OK)
-        goto done;
+    if ((res.status = ex_hht_pick(&par, c->alpha, c->rho_inf)) != VLBE_OK) goto done;
     par.max_halvings = 6;
     par.modified = 0;
     tip = m->node[N].ofs + 1;

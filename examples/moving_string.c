@@ -149,12 +149,13 @@ typedef struct ms_obs {
     double *y;
 } ms_obs;
 
-static inline void ms_observe(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
-                              const vlbe_real *lam)
+static inline vlbe_status ms_observe(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
+                                     const vlbe_real *lam)
 {
     ms_obs *o = (ms_obs *)ctx;
     (void)t, (void)v, (void)lam;
     if (o->n < o->cap) o->y[o->n++] = (double)q[o->idx];
+    return VLBE_OK;
 }
 
 /* One run: first frequency from the response of ne elements with step h

@@ -297,11 +297,12 @@ typedef struct pend_obs {
     double t_end;
 } pend_obs;
 
-static inline void pend_obs_step(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
-                                 const vlbe_real *lambda)
+static inline vlbe_status pend_obs_step(void *ctx, double t, const vlbe_real *q,
+                                        const vlbe_real *v, const vlbe_real *lambda)
 {
     pend_obs *o = (pend_obs *)ctx;
     pend_observe(o->p, &o->pp, o->res, t, o->t_end, q, v, lambda);
+    return VLBE_OK;
 }
 
 /* Runs method m on sys (whose user is a pend_par) to t_end and fills *res,
