@@ -953,13 +953,17 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
     vlbe_real sc[4], r[8], u[8], H[VLBE_ALE_INV_NP * 8], y[8], S[VLBE_ALE_INV_NP], Qs[8], Ks[64],
         Ds[64];
     int a, b, i, j, P, R;
+    /* positions relative to node 1: the force is invariant to translation
+       (s_1' + s_3' = 0), and so the Gram entries stay of size L^2 instead of
+       |r|^2 (their rounding would grow like (|r|/L)^2) */
     for (a = 0; a < 4; ++a) {
         sc[a] = VLBE__ALE_M(a) ? L : VLBE_R(1.0);
         for (i = 0; i < 2; ++i) {
-            r[2 * a + i] = sc[a] * q[VLBE__ALE_E(a) + i];
+            r[2 * a + i] = sc[a] * (q[VLBE__ALE_E(a) + i] - (a == 2 ? q[i] : VLBE_R(0.0)));
             u[2 * a + i] = damp ? sc[a] * qd[VLBE__ALE_E(a) + i] : VLBE_R(0.0);
         }
     }
+    r[0] = r[1] = VLBE_R(0.0);
     for (i = 0; i < 8; ++i) Qs[i] = VLBE_R(0.0);
     for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
         a = pa[P];
@@ -1672,6 +1676,14 @@ static inline void vlbe__ale_sys_row(int ne, int P, int *start, int *c0, int *w)
     }
 }
 
+/* slot A of a chain's x (slope, or position relative to x0) */
+static inline void vlbe__ale_sys_pos(const vlbe_real *x, int A, const vlbe_real *x0, vlbe_real *r)
+{
+    const int pos = !(A & 1);
+    r[0] = x[2 * A] - (pos ? x0[0] : VLBE_R(0.0));
+    r[1] = x[2 * A + 1] - (pos ? x0[1] : VLBE_R(0.0));
+}
+
 VLBE_API size_t vlbe_ale_inv_sys_work_len(int ne)
 {
     /* T (91 ne + 9), B (np), scratch H (8 np), load vector (4 ne + 4) */
@@ -1748,7 +1760,7 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
     const signed char *pa = vlbe__ale_inv_pa();
     const vlbe_real *F = sys->B + sys->np, *T = sys->T;
     const vlbe_real EA = sys->EA, EAc = sys->EA * sys->c;
-    vlbe_real *H = sys->H, y[8];
+    vlbe_real *H = sys->H, y[8], x0[2];
     vlbe_status st;
     int nd, t, i;
     VLBE_ASSERT(sys != NULL && x != NULL && Q != NULL);
@@ -1756,13 +1768,20 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
     for (i = 0; i < n; ++i) Q[i] = F[i];
     for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
     for (i = 0; D && i < n * VLBE_ALE_INV_BW; ++i) D[i] = VLBE_R(0.0);
-    /* pair products, node by node (pair 7 nd + t) */
+    /* pair products, node by node (pair 7 nd + t), positions relative to
+       the middle node's (exact: the force is invariant to translation; the
+       Gram entries of positions are then of the size of half the chain's
+       extent squared, not |r|^2: their rounding relative to the strain
+       grows like the square of that size over L) */
+    for (i = 0; i < 2; ++i) x0[i] = x[4 * (ne / 2) + i];
     for (nd = 0; nd <= ne; ++nd)
         for (t = 0; t < (nd < ne ? 7 : 3); ++t) {
             const int A = 2 * nd + pa[t], B = 2 * nd + pa[10 + t];
-            vlbe__ale_inv_prod(x + 2 * A, x + 2 * B, damp ? v + 2 * A : NULL,
-                               damp ? v + 2 * B : NULL, sys->c, VLBE_R(1.0), jac,
-                               H + 8 * (7 * nd + t));
+            vlbe_real ra[2], rb[2];
+            vlbe__ale_sys_pos(x, A, x0, ra);
+            vlbe__ale_sys_pos(x, B, x0, rb);
+            vlbe__ale_inv_prod(ra, rb, damp ? v + 2 * A : NULL, damp ? v + 2 * B : NULL, sys->c,
+                               VLBE_R(1.0), jac, H + 8 * (7 * nd + t));
         }
     /* the rows of T, stored one after another (vlbe__ale_sys_row) */
     for (nd = 0; nd <= ne; ++nd) {
@@ -1770,7 +1789,9 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
         for (t = 0; t < (nd < ne ? 7 : 3); ++t) {
             const int A = 2 * nd + pa[t], B = 2 * nd + pa[10 + t], P = 7 * nd + t;
             const int w = t < 3 ? wn : 10, c = t < 3 ? c0 : 7 * nd;
-            vlbe_real S;
+            vlbe_real S, ra[2], rb[2];
+            vlbe__ale_sys_pos(x, A, x0, ra);
+            vlbe__ale_sys_pos(x, B, x0, rb);
             if (jac) {
                 vlbe__ale_inv_row(T, w, H + 8 * c, y);
                 S = y[0];
@@ -1780,8 +1801,7 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
                 for (j = 0; j < w; ++j) S += T[j] * H[8 * (c + j)];
             }
             T += w;
-            vlbe__ale_inv_out(VLBE_R(0.5) * (S - sys->B[P]), y, jac, EA, EAc, x + 2 * A, x + 2 * B,
-                              A == B, Q + 2 * A, Q + 2 * B,
+            vlbe__ale_inv_out(VLBE_R(0.5) * (S - sys->B[P]), y, jac, EA, EAc, ra, rb, A == B, Q + 2 * A, Q + 2 * B,
                               K ? K + VLBE__ALE_BAND(2 * A, 2 * B) : NULL,
                               K ? K + VLBE__ALE_BAND(2 * B, 2 * A) : NULL,
                               D ? D + VLBE__ALE_BAND(2 * A, 2 * B) : NULL,
