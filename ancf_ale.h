@@ -49,6 +49,11 @@ CONVENTIONS
      VLBE_ALE_CONSERVATIVE   add to the p-rows the flux of strain energy
                         through the element ends (see NOTES): the elastic
                         p-forces become the gradient of the strain energy.
+     VLBE_ALE_INV_AXIAL with both p fixed: the axial force (with its
+                        Kelvin-Voigt part) and the load from the invariant
+                        tables instead of Gauss points (INVARIANTS); the
+                        same numbers to rounding.  Off by default: per
+                        element it is slower for Q alone (see README).
    Gauss orders per term (init; 0 = default): nm for mass, transport inertia
    and loads (default 4, exact: the integrands are polynomials of degree 6
    in xi), nl for the axial force (default 5, exact: degree 8), nt for the
@@ -62,7 +67,8 @@ CONVENTIONS
    Stack: vlbe_ale_force with K, D uses up to about 7 kB (gcc -fstack-usage,
    -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
    e-columns and the point scratch), the other eval calls at most 3 kB.
-   vlbe_ale_elem is about 15 kB: make one per material, not per element.
+   vlbe_ale_elem is about 16 kB: make one per material, not per element.
+   The invariant routes need about 2 kB of stack more than vlbe_ale_force.
 
 NOTES (how the Jacobians are formed)
    At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
@@ -94,6 +100,38 @@ NOTES (how the Jacobians are formed)
    themselves, as the Jacobian needs them.  The two routes agree to rounding
    (test: 64 EPS of max|Q|).
 
+INVARIANTS (issue 7: invariant-matrix force evaluation)
+   With both p fixed the Green-strain axial force is a cubic polynomial of
+   the nodal data: with B_ab = int s_a' s_b' dp and I_abcd = int s_a' s_b'
+   s_c' s_d' dp over the four slots r1, r1', r2, r2' and the Gram matrix
+   G_cd = r_c . r_d,  Q_a = -EA sum_b (sum_cd I_abcd H_cd - B_ab)/2 r_b with
+   H = G + c_eps dG/dt (the Kelvin-Voigt part is polynomial too); K and D
+   in closed form (derivation above vlbe__ale_inv_slots).  vlbe_ale_elem_init
+   tabulates B, I (35 unique numbers, stored as a 10 x 10 matrix over the
+   symmetric slot pairs) and int N at L = 1 (vlbe_ale_inv, el->inv); a
+   slope carries one power of L, so one table serves every L: I scales
+   with L^-3, B with L^-1 once the slopes are multiplied by L.  The same
+   gives an ALE element's e-rows and e-columns at its current L (undamped);
+   its p-rows and p-columns are not offered here.  Bending (exact
+   curvature, rational) stays on Gauss points: vlbe_ale_inv_force gives the
+   cable (NO_BEND) force wholly from invariants and the beam's as invariant
+   axial force + Gauss bending.
+   Chains of fixed-length cable elements: coordinates node by node x = [x,
+   y, x', y'] (vlbe_ale_chain's layout with every p fixed and no sliding
+   node), n = 4 (ne + 1); K, D in band storage, row i holding columns i-7
+   .. i+7: entry (i, j) at K[i*VLBE_ALE_INV_BW + j - i + VLBE_ALE_INV_KD].
+   vlbe_ale_inv_chain_force loops over the elements (gather, element call,
+   scatter); the system invariants (vlbe_ale_inv_sys_*) hold B and I of the
+   whole chain assembled once in the caller's buffer (nonzero structure
+   only: 7 ne + 3 scalar slot pairs, each row a contiguous range of 10 or
+   17 pairs, 91 ne + 9 numbers; the x/y Kronecker factor is never stored)
+   and evaluate Q, K, D without an element loop.  Rounding: the invariant
+   routes form Gram entries of positions; they work relative to an
+   element's node 1 / the chain's middle node (exact: the force is
+   invariant to translation), and the system route's rounding relative to
+   the strain still grows like (R/L)^2, R the chain's half extent
+   (tests/test_ale_inv.c: 64 EPS (1 + R/L)^2).
+
 API
    vlbe_status vlbe_ale_elem_init(el, mat, flags, nm, nl, nt)  element type, Gauss tables
    vlbe_status vlbe_ale_mass(el, mode, q, M)                M(q), 10x10
@@ -105,6 +143,16 @@ API
    vlbe_status vlbe_ale_point(q, p, r, rp)                  r(p), r'(p)
    vlbe_status vlbe_ale_strain(q, p, &eps, &kap)            strain, curvature at p
    vlbe_status vlbe_ale_split(q, qd, ph, qh, qhd)           exact segmentation at ph
+   invariants (fixed-length elements and chains, see INVARIANTS):
+   vlbe_status vlbe_ale_inv_init(inv)                       unit tables B, I, int N
+   vlbe_status vlbe_ale_inv_force(el, mode, q, qd, Q, K, D) vlbe_ale_force, p fixed, axial
+                                                            force and load from invariants
+   vlbe_status vlbe_ale_inv_chain_force(el, mode, ne, L, x, v, Q, K, D)  cable chain by an
+                                                            element loop (Gauss, or invariants
+                                                            with VLBE_ALE_INV_AXIAL), band K, D
+   size_t vlbe_ale_inv_sys_work_len(ne)                     buffer for the system invariants
+   vlbe_status vlbe_ale_inv_sys_init(sys, el, mode, ne, L, work, len)  assemble B, I, load once
+   vlbe_status vlbe_ale_inv_sys_force(sys, x, v, Q, K, D)   cable chain Q, band K, D from them
    chains (node p modes fixed / prescribed / free, sliding nodes, point masses):
    vlbe_status vlbe_ale_chain_init(ch, el, nodes, nn, cap, cons, ccap)
    vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint
@@ -950,8 +998,8 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
     const vlbe_real Li = VLBE_R(1.0) / L, L3 = Li * Li * Li;
     const signed char *pa = vlbe__ale_inv_pa();
     const int damp = c != VLBE_R(0.0), jac = K != NULL;
-    vlbe_real sc[4], r[8], u[8], H[VLBE_ALE_INV_NP * 8], y[8], S[VLBE_ALE_INV_NP], Qs[8], Ks[64],
-        Ds[64];
+    vlbe_real sc[4], r[8], u[8], H[VLBE_ALE_INV_NP * 8], S[VLBE_ALE_INV_NP], Qs[8], Ks[64], Ds[64];
+    vlbe_real y[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     int a, b, i, j, P, R;
     /* positions relative to node 1: the force is invariant to translation
        (s_1' + s_3' = 0), and so the Gram entries stay of size L^2 instead of
@@ -1584,6 +1632,10 @@ VLBE_API vlbe_status vlbe_ale_inv_init(vlbe_ale_inv *inv)
     return VLBE_OK;
 }
 
+/* vlbe_ale_force of the fixed-length element (FIX_P1 | FIX_P2 implied:
+   p-rows and -columns zero, p' ignored) with the axial force and the load
+   from the invariants; bending (unless NO_BEND) on Gauss points.  Errors
+   and outputs as vlbe_ale_force. */
 VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
                                         const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
                                         vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
@@ -1612,6 +1664,14 @@ static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const v
     return VLBE_OK;
 }
 
+/* Cable forces (axial + load; NO_BEND, both p fixed implied) of a chain of
+   ne >= 1 elements of lengths L[ne] by an element loop: each element by
+   vlbe_ale_force's Gauss route, or by the invariants when mode has
+   VLBE_ALE_INV_AXIAL.  x, v (v may be NULL = 0): n = 4 (ne + 1)
+   coordinates (INVARIANTS); Q (n) is overwritten, K, D (n *
+   VLBE_ALE_INV_BW, band storage, either may be NULL) too.  Errors (nothing
+   written): VLBE_ENONFINITE for NaN/Inf in L, x, v; VLBE_ELENGTH for
+   L[e] <= 0. */
 VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned mode, int ne,
                                               const vlbe_real *L, const vlbe_real *x,
                                               const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
@@ -1684,6 +1744,8 @@ static inline void vlbe__ale_sys_pos(const vlbe_real *x, int A, const vlbe_real 
     r[1] = x[2 * A + 1] - (pos ? x0[1] : VLBE_R(0.0));
 }
 
+/* Length (in vlbe_real) of the buffer of vlbe_ale_inv_sys_init for ne
+   elements, 158 ne + 40; 0 for ne < 1 or too large for int indexing. */
 VLBE_API size_t vlbe_ale_inv_sys_work_len(int ne)
 {
     /* T (91 ne + 9), B (np), scratch H (8 np), load vector (4 ne + 4) */
@@ -1691,6 +1753,16 @@ VLBE_API size_t vlbe_ale_inv_sys_work_len(int ne)
     return (size_t)158 * (size_t)ne + 40;
 }
 
+/* System invariants of a chain of ne fixed-length cable elements of
+   lengths L[ne] (material, load and the tables from el; damping unless
+   (mode | el->flags) has NO_DAMP): the assembled I and B (each element's
+   table scaled to its L and added into the pair rows it touches) and the
+   load vector, in work (work_len >= vlbe_ale_inv_sys_work_len(ne)), which
+   must live as long as sys and is also the scratch of
+   vlbe_ale_inv_sys_force (one evaluation at a time per buffer).  Errors
+   (sys and work untouched): VLBE_EARG for ne < 1 or too large, VLBE_EWORK
+   for a short buffer, VLBE_ENONFINITE for NaN/Inf in L, VLBE_ELENGTH for
+   L[e] <= 0. */
 VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale_elem *el,
                                            unsigned mode, int ne, const vlbe_real *L,
                                            vlbe_real *work, size_t work_len)
@@ -1750,6 +1822,12 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
     return VLBE_OK;
 }
 
+/* The chain's cable force Q (n = 4 (ne + 1), overwritten) and, when not
+   NULL, K = dQ/dx and D = dQ/dv in band storage, from the system
+   invariants: one pass over the 7 ne + 3 slot pairs for their products,
+   one over the stored rows.  v may be NULL (= 0; D is still c dQ/dv).
+   Same numbers as vlbe_ale_inv_chain_force to rounding.  Errors (nothing
+   written): VLBE_ENONFINITE for NaN/Inf in x, v. */
 VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
                                             const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
                                             vlbe_real *VLBE_RESTRICT K,
@@ -1760,7 +1838,7 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
     const signed char *pa = vlbe__ale_inv_pa();
     const vlbe_real *F = sys->B + sys->np, *T = sys->T;
     const vlbe_real EA = sys->EA, EAc = sys->EA * sys->c;
-    vlbe_real *H = sys->H, y[8], x0[2];
+    vlbe_real *H = sys->H, y[8] = {0, 0, 0, 0, 0, 0, 0, 0}, x0[2];
     vlbe_status st;
     int nd, t, i;
     VLBE_ASSERT(sys != NULL && x != NULL && Q != NULL);
