@@ -922,7 +922,7 @@ static inline void vlbe__ale_inv_prod(const vlbe_real *ra, const vlbe_real *rb, 
         za[i] = ra[i];
         zb[i] = rb[i];
     }
-    if (va) {
+    if (va && vb) {
         H[0] += c * (vlbe_v2_dot(ra, vb) + vlbe_v2_dot(rb, va));
         vlbe_v2_axpy(c, va, za);
         vlbe_v2_axpy(c, vb, zb);
@@ -1701,7 +1701,10 @@ VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned 
         }
         qe[4] = ve[4] = ve[9] = VLBE_R(0.0);
         qe[9] = L[e];
-        (void)vlbe__ale_force(el, mode, qe, ve, Qe, K ? Ke : NULL, D ? De : NULL);
+        if (K || D) /* K and D come together; the Q-only route without */
+            (void)vlbe_ale_force(el, mode, qe, ve, Qe, Ke, De);
+        else
+            (void)vlbe_ale_force(el, mode, qe, ve, Qe, NULL, NULL);
         for (i = 0; i < 8; ++i) {
             const int ri = i + (i >= 4), gi = o + i;
             Q[gi] += Qe[ri];
@@ -1822,16 +1825,16 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
     return VLBE_OK;
 }
 
-/* The chain's cable force Q (n = 4 (ne + 1), overwritten) and, when not
+/* vlbe_ale_inv_sys_force (the public wrapper below asserts the pointers):
+   the chain's cable force Q (n = 4 (ne + 1), overwritten) and, when not
    NULL, K = dQ/dx and D = dQ/dv in band storage, from the system
    invariants: one pass over the 7 ne + 3 slot pairs for their products,
    one over the stored rows.  v may be NULL (= 0; D is still c dQ/dv).
    Same numbers as vlbe_ale_inv_chain_force to rounding.  Errors (nothing
    written): VLBE_ENONFINITE for NaN/Inf in x, v. */
-VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
-                                            const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
-                                            vlbe_real *VLBE_RESTRICT K,
-                                            vlbe_real *VLBE_RESTRICT D)
+static inline vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
+                                              const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
+                                              vlbe_real *D)
 {
     const int n = 4 * (sys->ne + 1), damp = sys->c != VLBE_R(0.0) && v != NULL;
     const int jac = K != NULL || D != NULL, ne = sys->ne;
@@ -1841,7 +1844,6 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
     vlbe_real *H = sys->H, y[8] = {0, 0, 0, 0, 0, 0, 0, 0}, x0[2];
     vlbe_status st;
     int nd, t, i;
-    VLBE_ASSERT(sys != NULL && x != NULL && Q != NULL);
     if ((st = vlbe__ale_chain_in(ne, NULL, x, damp ? v : NULL)) != VLBE_OK) return st;
     for (i = 0; i < n; ++i) Q[i] = F[i];
     for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
@@ -1887,6 +1889,15 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
         }
     }
     return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
+                                            const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
+                                            vlbe_real *VLBE_RESTRICT K,
+                                            vlbe_real *VLBE_RESTRICT D)
+{
+    VLBE_ASSERT(sys != NULL && x != NULL && Q != NULL);
+    return vlbe__ale_sys_force(sys, x, v, Q, K, D);
 }
 
 /* ===== chains of elements ================================================ */
