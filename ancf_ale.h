@@ -1521,7 +1521,7 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
     vlbe_status st;
     VLBE_ASSERT(q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    if (!vlbe_all_finite(&p, 1)) return VLBE_ENONFINITE;
+    if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[4], q[9], 1, 0, &b);
     if (r) vlbe__ale_sum(&b, 0, 0, q, r);
     if (rp) vlbe__ale_sum(&b, 1, 0, q, rp);
@@ -1538,7 +1538,7 @@ VLBE_API vlbe_status vlbe_ale_strain(const vlbe_real *q, vlbe_real p, vlbe_real 
     vlbe_status st;
     VLBE_ASSERT(q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    if (!vlbe_all_finite(&p, 1)) return VLBE_ENONFINITE;
+    if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[4], q[9], 2, 0, &b);
     vlbe__ale_sum(&b, 1, 0, q, r1);
     vlbe__ale_sum(&b, 2, 0, q, r2);
@@ -1561,7 +1561,7 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
     int j, k, l;
     VLBE_ASSERT(q != NULL && F != NULL && Q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    if (!vlbe_all_finite(&pf, 1) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
+    if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
     if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
     vlbe_herm_ale_eval(pf, q[4], q[9], 0, 2, &b);
     for (j = 0; j < 4; ++j) {
@@ -2635,7 +2635,7 @@ VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlb
     int k;
     VLBE_ASSERT(q != NULL && qh != NULL);
     if ((st = vlbe__ale_check(q, qd)) != VLBE_OK) return st;
-    if (!vlbe_all_finite(&ph, 1)) return VLBE_ENONFINITE;
+    if (!isfinite(ph)) return VLBE_ENONFINITE;
     if (!(ph > q[4] && ph < q[9])) return VLBE_EBOUND;
     vlbe_herm_ale_eval(ph, q[4], q[9], 1, 1, &b);
     for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
