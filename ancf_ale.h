@@ -49,6 +49,11 @@ CONVENTIONS
      VLBE_ALE_CONSERVATIVE   add to the p-rows the flux of strain energy
                         through the element ends (see NOTES): the elastic
                         p-forces become the gradient of the strain energy.
+     VLBE_ALE_INV_AXIAL with both p fixed: the axial force (with its
+                        Kelvin-Voigt part) and the load from the invariant
+                        tables instead of Gauss points (INVARIANTS); the
+                        same numbers to rounding.  Off by default: per
+                        element it is slower for Q alone (see README).
    Gauss orders per term (init; 0 = default): nm for mass, transport inertia
    and loads (default 4, exact: the integrands are polynomials of degree 6
    in xi), nl for the axial force (default 5, exact: degree 8), nt for the
@@ -62,7 +67,8 @@ CONVENTIONS
    Stack: vlbe_ale_force with K, D uses up to about 7 kB (gcc -fstack-usage,
    -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
    e-columns and the point scratch), the other eval calls at most 3 kB.
-   vlbe_ale_elem is about 15 kB: make one per material, not per element.
+   vlbe_ale_elem is about 16 kB: make one per material, not per element.
+   The invariant routes need about 2 kB of stack more than vlbe_ale_force.
 
 NOTES (how the Jacobians are formed)
    At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
@@ -94,6 +100,38 @@ NOTES (how the Jacobians are formed)
    themselves, as the Jacobian needs them.  The two routes agree to rounding
    (test: 64 EPS of max|Q|).
 
+INVARIANTS (issue 7: invariant-matrix force evaluation)
+   With both p fixed the Green-strain axial force is a cubic polynomial of
+   the nodal data: with B_ab = int s_a' s_b' dp and I_abcd = int s_a' s_b'
+   s_c' s_d' dp over the four slots r1, r1', r2, r2' and the Gram matrix
+   G_cd = r_c . r_d,  Q_a = -EA sum_b (sum_cd I_abcd H_cd - B_ab)/2 r_b with
+   H = G + c_eps dG/dt (the Kelvin-Voigt part is polynomial too); K and D
+   in closed form (derivation above vlbe__ale_inv_slots).  vlbe_ale_elem_init
+   tabulates B, I (35 unique numbers, stored as a 10 x 10 matrix over the
+   symmetric slot pairs) and int N at L = 1 (vlbe_ale_inv, el->inv); a
+   slope carries one power of L, so one table serves every L: I scales
+   with L^-3, B with L^-1 once the slopes are multiplied by L.  The same
+   gives an ALE element's e-rows and e-columns at its current L (undamped);
+   its p-rows and p-columns are not offered here.  Bending (exact
+   curvature, rational) stays on Gauss points: vlbe_ale_inv_force gives the
+   cable (NO_BEND) force wholly from invariants and the beam's as invariant
+   axial force + Gauss bending.
+   Chains of fixed-length cable elements: coordinates node by node x = [x,
+   y, x', y'] (vlbe_ale_chain's layout with every p fixed and no sliding
+   node), n = 4 (ne + 1); K, D in band storage, row i holding columns i-7
+   .. i+7: entry (i, j) at K[i*VLBE_ALE_INV_BW + j - i + VLBE_ALE_INV_KD].
+   vlbe_ale_inv_chain_force loops over the elements (gather, element call,
+   scatter); the system invariants (vlbe_ale_inv_sys_*) hold B and I of the
+   whole chain assembled once in the caller's buffer (nonzero structure
+   only: 7 ne + 3 scalar slot pairs, each row a contiguous range of 10 or
+   17 pairs, 91 ne + 9 numbers; the x/y Kronecker factor is never stored)
+   and evaluate Q, K, D without an element loop.  Rounding: the invariant
+   routes form Gram entries of positions; they work relative to an
+   element's node 1 / the chain's middle node (exact: the force is
+   invariant to translation), and the system route's rounding relative to
+   the strain still grows like (R/L)^2, R the chain's half extent
+   (tests/test_ale_inv.c: 64 EPS (1 + R/L)^2).
+
 API
    vlbe_status vlbe_ale_elem_init(el, mat, flags, nm, nl, nt)  element type, Gauss tables
    vlbe_status vlbe_ale_mass(el, mode, q, M)                M(q), 10x10
@@ -105,6 +143,16 @@ API
    vlbe_status vlbe_ale_point(q, p, r, rp)                  r(p), r'(p)
    vlbe_status vlbe_ale_strain(q, p, &eps, &kap)            strain, curvature at p
    vlbe_status vlbe_ale_split(q, qd, ph, qh, qhd)           exact segmentation at ph
+   invariants (fixed-length elements and chains, see INVARIANTS):
+   vlbe_status vlbe_ale_inv_init(inv)                       unit tables B, I, int N
+   vlbe_status vlbe_ale_inv_force(el, mode, q, qd, Q, K, D) vlbe_ale_force, p fixed, axial
+                                                            force and load from invariants
+   vlbe_status vlbe_ale_inv_chain_force(el, mode, ne, L, x, v, Q, K, D)  cable chain by an
+                                                            element loop (Gauss, or invariants
+                                                            with VLBE_ALE_INV_AXIAL), band K, D
+   size_t vlbe_ale_inv_sys_work_len(ne)                     buffer for the system invariants
+   vlbe_status vlbe_ale_inv_sys_init(sys, el, mode, ne, L, work, len)  assemble B, I, load once
+   vlbe_status vlbe_ale_inv_sys_force(sys, x, v, Q, K, D)   cable chain Q, band K, D from them
    chains (node p modes fixed / prescribed / free, sliding nodes, point masses):
    vlbe_status vlbe_ale_chain_init(ch, el, nodes, nn, cap, cons, ccap)
    vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint
@@ -135,6 +183,7 @@ REFERENCES
 #ifndef VLBE_ANCF_ALE_H
 #define VLBE_ANCF_ALE_H
 #include "vlbe.h"
+#include <limits.h>
 
 #if !defined(VLBE_VERSION_MAJOR) || VLBE_VERSION_MAJOR != 0 || VLBE_VERSION_MINOR < 1
 #error "ancf_ale.h needs vlbe.h 0.1 or newer in the same directory"
@@ -149,6 +198,12 @@ REFERENCES
 #define VLBE_ALE_FIX_P1 4u
 #define VLBE_ALE_FIX_P2 8u
 #define VLBE_ALE_CONSERVATIVE 16u
+#define VLBE_ALE_INV_AXIAL 32u /* both p fixed: axial force and load from the
+                                  invariants (vlbe_ale_inv_*), not Gauss  */
+
+#define VLBE_ALE_INV_NP 10 /* symmetric slot pairs of one element         */
+#define VLBE_ALE_INV_KD 7  /* half bandwidth of a chain's K, D (band form) */
+#define VLBE_ALE_INV_BW 15 /* stored band width, 2 KD + 1                  */
 
 /* -- types -------------------------------------------------------------- */
 /* Section and material, per unit material (reference) length. */
@@ -175,15 +230,40 @@ typedef struct vlbe_ale_rule {
     vlbe_ale_gp g[VLBE_ALE_NGP_MAX];
 } vlbe_ale_rule;
 
-/* An element type: material, default mode flags, a rule per term and the
-   two element ends (xi = 0, 1; w unused) for the energy fluxes. */
+/* Invariants of the cubic Hermite basis at unit length (xi in [0, 1], '
+   = d/dxi), over the 10 symmetric slot pairs P = (a, b), a <= b, of the
+   slots a = 0..3 (r1, r1', r2, r2') in the order
+     (0,0) (0,1) (1,1) | (0,2) (0,3) (1,2) (1,3) | (2,2) (2,3) (3,3)
+   (node 1, link, node 2): t[P*10 + R] = int h_a' h_b' h_c' h_d' dxi times
+   2 for c != d (so that a contraction over R sums each unordered pair
+   (c, d) once), R = (c, d); b[P] = int h_a' h_b' dxi; n[a] = int h_a dxi. */
+typedef struct vlbe_ale_inv {
+    vlbe_real t[VLBE_ALE_INV_NP * VLBE_ALE_INV_NP];
+    vlbe_real b[VLBE_ALE_INV_NP];
+    vlbe_real n[4];
+} vlbe_ale_inv;
+
+/* An element type: material, default mode flags, a rule per term, the
+   two element ends (xi = 0, 1; w unused) for the energy fluxes and the
+   invariant tables of fixed-length elements. */
 typedef struct vlbe_ale_elem {
     vlbe_ale_mat mat;
     unsigned flags;
     vlbe_ale_rule rm, rl, rt; /* mass/inertia/loads, axial, bending */
     vlbe_ale_gp ends[2];
     vlbe_real b3[4]; /* third xi-derivatives of the Hermite functions (constants) */
+    vlbe_ale_inv inv;
 } vlbe_ale_elem;
+
+/* The system invariants of a chain of ne fixed-length elements (see
+   vlbe_ale_inv_sys_init): pointers into the caller's buffer. */
+typedef struct vlbe_ale_inv_sys {
+    int ne, np;        /* elements, slot pairs 7 ne + 3                     */
+    vlbe_real EA, c;   /* axial stiffness, Kelvin-Voigt time (0: undamped)  */
+    const vlbe_real *T; /* assembled quartic invariants, band rows of pairs  */
+    const vlbe_real *B; /* assembled quadratic invariants, one per pair      */
+    vlbe_real *H;      /* scratch: 8 pair products per pair                 */
+} vlbe_ale_inv_sys;
 
 /* -- API prototypes ----------------------------------------------------- */
 VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *mat,
@@ -203,6 +283,23 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
                                     vlbe_real *VLBE_RESTRICT rp);
 VLBE_API vlbe_status vlbe_ale_strain(const vlbe_real *q, vlbe_real p, vlbe_real *VLBE_RESTRICT eps,
                                      vlbe_real *VLBE_RESTRICT kap);
+VLBE_API vlbe_status vlbe_ale_inv_init(vlbe_ale_inv *inv);
+VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
+                                        const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                        vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D);
+VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned mode, int ne,
+                                              const vlbe_real *L, const vlbe_real *x,
+                                              const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
+                                              vlbe_real *VLBE_RESTRICT K,
+                                              vlbe_real *VLBE_RESTRICT D);
+VLBE_API size_t vlbe_ale_inv_sys_work_len(int ne);
+VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale_elem *el,
+                                           unsigned mode, int ne, const vlbe_real *L,
+                                           vlbe_real *work, size_t work_len);
+VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
+                                            const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
+                                            vlbe_real *VLBE_RESTRICT K,
+                                            vlbe_real *VLBE_RESTRICT D);
 
 /* ===== implementation =================================================== */
 
@@ -264,6 +361,7 @@ VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *m
         vlbe_herm_ale_eval(VLBE_R(0.0), VLBE_R(0.0), VLBE_R(1.0), 3, 0, &b);
         for (j = 0; j < 4; ++j) el->b3[j] = b.h[3][0][j];
     }
+    if ((st = vlbe_ale_inv_init(&el->inv)) != VLBE_OK) return st;
     el->mat = *mat;
     el->flags = flags;
     return VLBE_OK;
@@ -761,6 +859,211 @@ static inline vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe
     return VLBE_OK;
 }
 
+/* -- invariant-matrix axial force of fixed-length elements --------------
+   With both material coordinates fixed the axial force is a polynomial of
+   the nodal data.  With r' = sum_a s_a' r_a (slots a = 0..3: r1, r1', r2,
+   r2'; s_a the Hermite functions in p) the Green strain and its rate are
+        eps  = (sum_cd s_c' s_d' G_cd - 1)/2,   G_cd = r_c . r_d,
+        eps' = sum_cd s_c' s_d' r_c . v_d       (v = r-dot, fixed p),
+   so with B_ab = int s_a' s_b' dp and I_abcd = int s_a' s_b' s_c' s_d' dp
+   the axial force Q_a = -EA int s_a' r' (eps + c eps') dp (the -Q_l of
+   NOTES, c = c_eps) is
+        Q_a = -EA sum_b S_ab r_b,   S_ab = (sum_cd I_abcd H_cd - B_ab)/2,
+        H_cd = G_cd + c (r_c . v_d + r_d . v_c).
+   Its Jacobians (dS_ab/dr_e = sum_d I_abed (r_d + c v_d), dS_ab/dv_e =
+   c sum_d I_abed r_d; 2x2 blocks, i, j = x, y):
+        K_ae,ij = -EA (S_ae delta_ij + sum_bd I_aebd r_b,i z_d,j),  z = r + c v,
+        D_ae,ij = -EA c sum_bd I_aebd r_b,i r_d,j.
+   Both blocks are symmetric in (a, e), so one symmetric slot pair P = (a,
+   e) gives the blocks (a, e) and (e, a), and every contraction is the
+   matrix t of vlbe_ale_inv times a vector of symmetrized pair products
+   (vlbe__ale_inv_prod).  Scaling: s_a(p) = L^m_a h_a(xi) (m = 0 positions,
+   1 slopes) gives B_ab = L^(m_a+m_b-1) b_ab, I_abcd = L^(m_a+m_b+m_c+m_d-3)
+   i_abcd: with the slopes multiplied by L (r~_a = L^m_a r_a) the unit
+   tables serve every L with the overall factors L^-3 (quartic part) and
+   L^-1 (quadratic part), and Q_a = L^m_a Q~_a, K_ae = L^(m_a+m_e) K~_ae.
+   An ALE element at its current L = p2 - p1 gets the e-rows and e-columns
+   of its axial force from the same tables the same way (undamped; with
+   damping eps' also has the p1', p2' terms of the material rate); the
+   p-rows and p-columns are not done here (vlbe_ale_force's Gauss route). */
+
+/* slots (A, B), A <= B, of pair P in the order of vlbe_ale_inv, which is
+   also the order of a chain's pairs: node n's three pairs (2n, 2n), (2n,
+   2n+1), (2n+1, 2n+1) at 7n + 0..2, its four links to node n+1 (2n, 2n+2),
+   (2n, 2n+3), (2n+1, 2n+2), (2n+1, 2n+3) at 7n + 3..6.  vlbe__ale_inv_pa:
+   the offsets from 2n, A for t = P - 7n in [0, 10) at [t], B at [10 + t]. */
+static inline const signed char *vlbe__ale_inv_pa(void)
+{
+    static const signed char pa[20] = {0, 0, 1, 0, 0, 1, 1, 2, 2, 3,
+                                       0, 1, 1, 2, 3, 2, 3, 2, 3, 3};
+    return pa;
+}
+
+static inline void vlbe__ale_inv_slots(int P, int *A, int *B)
+{
+    const signed char *pa = vlbe__ale_inv_pa();
+    const int n = P / 7, t = P % 7;
+    *A = 2 * n + pa[t];
+    *B = 2 * n + pa[10 + t];
+}
+
+/* Pair products of slots a, b (2-vectors r, v; v may be NULL = 0), times
+   s: H[0] = H_ab; with jac the symmetrized r (x) z, z = r + c v: H[1..4] =
+   (r_a,i z_b,j + r_b,i z_a,j)/2 for ij = xx, xy, yx, yy, and the
+   symmetrized r (x) r: H[5..7] for xx, xy, yy. */
+static inline void vlbe__ale_inv_prod(const vlbe_real *ra, const vlbe_real *rb, const vlbe_real *va,
+                                      const vlbe_real *vb, vlbe_real c, vlbe_real s, int jac,
+                                      vlbe_real *H)
+{
+    vlbe_real za[2], zb[2], hs;
+    int i;
+    H[0] = vlbe_v2_dot(ra, rb);
+    for (i = 0; i < 2; ++i) {
+        za[i] = ra[i];
+        zb[i] = rb[i];
+    }
+    if (va && vb) {
+        H[0] += c * (vlbe_v2_dot(ra, vb) + vlbe_v2_dot(rb, va));
+        vlbe_v2_axpy(c, va, za);
+        vlbe_v2_axpy(c, vb, zb);
+    }
+    H[0] *= s;
+    if (!jac) return;
+    hs = VLBE_R(0.5) * s;
+    H[1] = hs * (ra[0] * zb[0] + rb[0] * za[0]);
+    H[2] = hs * (ra[0] * zb[1] + rb[0] * za[1]);
+    H[3] = hs * (ra[1] * zb[0] + rb[1] * za[0]);
+    H[4] = hs * (ra[1] * zb[1] + rb[1] * za[1]);
+    H[5] = s * ra[0] * rb[0];
+    H[6] = hs * (ra[0] * rb[1] + rb[0] * ra[1]);
+    H[7] = s * ra[1] * rb[1];
+}
+
+/* y[k] = sum_j T[j] H[8 j + k], j < w, k < 8: one row of a contraction
+   (eight independent sums: they vectorize) */
+static inline void vlbe__ale_inv_row(const vlbe_real *T, int w, const vlbe_real *H, vlbe_real *y)
+{
+    int j, k;
+    for (k = 0; k < 8; ++k) y[k] = VLBE_R(0.0);
+    for (j = 0; j < w; ++j)
+        for (k = 0; k < 8; ++k) y[k] += T[j] * H[8 * j + k];
+}
+
+/* The part of pair (a, b) (same: a = b) with S = S_ab and, with jac, the
+   contracted products y (vlbe__ale_inv_row): Qa += -EA S r_b, Qb += -EA S
+   r_a and the 2x2 blocks (a, b), (b, a) of K and D (EAc = EA c; D only for
+   EAc != 0), leading dimension ld; K, D may be NULL. */
+static inline void vlbe__ale_inv_out(vlbe_real S, const vlbe_real *y, int jac, vlbe_real EA,
+                                     vlbe_real EAc, const vlbe_real *ra, const vlbe_real *rb,
+                                     int same, vlbe_real *Qa, vlbe_real *Qb, vlbe_real *Kab,
+                                     vlbe_real *Kba, vlbe_real *Dab, vlbe_real *Dba, int ld)
+{
+    const vlbe_real f = -EA * S;
+    vlbe_real k[4], d[3];
+    int i, m;
+    vlbe_v2_axpy(f, rb, Qa);
+    if (!same) vlbe_v2_axpy(f, ra, Qb);
+    if (!jac) return;
+    k[0] = f - EA * y[1];
+    k[1] = -EA * y[2];
+    k[2] = -EA * y[3];
+    k[3] = f - EA * y[4];
+    for (m = 0; Kab && m < 2 - same; ++m) {
+        vlbe_real *Kb = m ? Kba : Kab;
+        for (i = 0; i < 2; ++i) {
+            Kb[i * ld] += k[2 * i];
+            Kb[i * ld + 1] += k[2 * i + 1];
+        }
+    }
+    if (EAc == VLBE_R(0.0) || !Dab) return;
+    for (i = 0; i < 3; ++i) d[i] = -EAc * y[5 + i];
+    for (m = 0; m < 2 - same; ++m) {
+        vlbe_real *Db = m ? Dba : Dab;
+        Db[0] += d[0];
+        Db[1] += d[1];
+        Db[ld] += d[1];
+        Db[ld + 1] += d[2];
+    }
+}
+
+/* Axial force of a fixed-length element from the unit tables (see above):
+   Q += (e-rows), K += (e-block), D += (e-block, damped only), 10-coordinate
+   layout; K, D may be NULL (with K given, D must be too).  c: Kelvin-Voigt
+   time (0: undamped, qd not read).  Q alone contracts column by column
+   (ten independent sums), with K row by row over eight products. */
+static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlbe_real c,
+                                       vlbe_real L, const vlbe_real *q, const vlbe_real *qd,
+                                       vlbe_real *Q, vlbe_real *K, vlbe_real *D)
+{
+    const vlbe_real Li = VLBE_R(1.0) / L, L3 = Li * Li * Li;
+    const signed char *pa = vlbe__ale_inv_pa();
+    const int damp = c != VLBE_R(0.0), jac = K != NULL;
+    vlbe_real sc[4], r[8], u[8], H[VLBE_ALE_INV_NP * 8], S[VLBE_ALE_INV_NP], Qs[8], Ks[64], Ds[64];
+    vlbe_real y[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    int a, b, i, j, P, R;
+    /* positions relative to node 1: the force is invariant to translation
+       (s_1' + s_3' = 0), and so the Gram entries stay of size L^2 instead of
+       |r|^2 (their rounding would grow like (|r|/L)^2) */
+    for (a = 0; a < 4; ++a) {
+        sc[a] = VLBE__ALE_M(a) ? L : VLBE_R(1.0);
+        for (i = 0; i < 2; ++i) {
+            r[2 * a + i] = sc[a] * (q[VLBE__ALE_E(a) + i] - (a == 2 ? q[i] : VLBE_R(0.0)));
+            u[2 * a + i] = damp ? sc[a] * qd[VLBE__ALE_E(a) + i] : VLBE_R(0.0);
+        }
+    }
+    r[0] = r[1] = VLBE_R(0.0);
+    for (i = 0; i < 8; ++i) Qs[i] = VLBE_R(0.0);
+    for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
+        a = pa[P];
+        b = pa[10 + P];
+        vlbe__ale_inv_prod(r + 2 * a, r + 2 * b, damp ? u + 2 * a : NULL, damp ? u + 2 * b : NULL,
+                           c, L3, jac, H + 8 * P);
+    }
+    if (!jac) {
+        for (P = 0; P < VLBE_ALE_INV_NP; ++P) S[P] = -Li * iv->b[P];
+        for (R = 0; R < VLBE_ALE_INV_NP; ++R)
+            for (P = 0; P < VLBE_ALE_INV_NP; ++P) S[P] += iv->t[P * VLBE_ALE_INV_NP + R] * H[8 * R];
+        for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
+            a = pa[P];
+            b = pa[10 + P];
+            vlbe__ale_inv_out(VLBE_R(0.5) * S[P], y, 0, EA, EA * c, r + 2 * a, r + 2 * b, a == b,
+                              Qs + 2 * a, Qs + 2 * b, NULL, NULL, NULL, NULL, 8);
+        }
+    } else {
+        for (i = 0; i < 64; ++i) Ks[i] = Ds[i] = VLBE_R(0.0);
+        for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
+            a = pa[P];
+            b = pa[10 + P];
+            vlbe__ale_inv_row(iv->t + P * VLBE_ALE_INV_NP, VLBE_ALE_INV_NP, H, y);
+            vlbe__ale_inv_out(VLBE_R(0.5) * (y[0] - Li * iv->b[P]), y, 1, EA, EA * c, r + 2 * a,
+                              r + 2 * b, a == b, Qs + 2 * a, Qs + 2 * b, Ks + 2 * a * 8 + 2 * b,
+                              Ks + 2 * b * 8 + 2 * a, Ds + 2 * a * 8 + 2 * b,
+                              Ds + 2 * b * 8 + 2 * a, 8);
+        }
+    }
+    for (a = 0; a < 4; ++a)
+        for (i = 0; i < 2; ++i) {
+            const int ra = VLBE__ALE_E(a) + i;
+            Q[ra] += sc[a] * Qs[2 * a + i];
+            if (!jac) continue;
+            for (b = 0; b < 4; ++b)
+                for (j = 0; j < 2; ++j) {
+                    const int cb = VLBE__ALE_E(b) + j, k = (2 * a + i) * 8 + 2 * b + j;
+                    K[ra * 10 + cb] += sc[a] * sc[b] * Ks[k];
+                    if (damp) D[ra * 10 + cb] += sc[a] * sc[b] * Ds[k];
+                }
+        }
+}
+
+/* Distributed load of a fixed-length element: Q_a += L^(m_a+1) n_a f. */
+static inline void vlbe__ale_inv_load(const vlbe_ale_inv *iv, vlbe_real L, const vlbe_real *f,
+                                      vlbe_real *Q)
+{
+    int a;
+    for (a = 0; a < 4; ++a)
+        vlbe_v2_axpy((VLBE__ALE_M(a) ? L * L : L) * iv->n[a], f, Q + VLBE__ALE_E(a));
+}
+
 /* Q alone (K = D = NULL): the inertia/load, axial and bending terms in
    straight-line code per point.  Only the p-derivative rows N, N', N'' of
    the basis are scaled; every p1/p2 partial comes from the identity of
@@ -776,8 +1079,9 @@ static inline vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe
    damping) is v^(c) + (p2' - p1') Y2_c - p1' r^(c+1).  Agrees with the
    Gauss-point route of the Jacobian calls to rounding (test). */
 static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp, int bend,
-                                      int shared, const vlbe_real *Lp, const vlbe_real *pd,
-                                      const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q)
+                                      int shared, int inv, const vlbe_real *Lp,
+                                      const vlbe_real *pd, const vlbe_real *q, const vlbe_real *qd,
+                                      vlbe_real *Q)
 {
     const vlbe_ale_mat *mt = &el->mat;
     const vlbe_real *e0 = q, *e1 = q + 2, *e2 = q + 5, *e3 = q + 7;
@@ -791,8 +1095,10 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
         r3[b] = Lp[1] * (el->b3[0] * e0[b] + el->b3[2] * e2[b]) +
                 Lp[2] * (el->b3[1] * e1[b] + el->b3[3] * e3[b]);
 
-    /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19) */
-    for (g = 0; g < el->rm.n; ++g) {
+    /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19);
+       fixed length (inv): the load alone, from the tables */
+    if (inv) vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
+    for (g = 0; !inv && g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         const vlbe_real *b0 = gp->b[0][0], *b1 = gp->b[1][0], *b2 = gp->b[2][0];
         const vlbe_real w = gp->w * L, xi = gp->xi, s = a + xi * dl;
@@ -825,9 +1131,13 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
         if (pm & 2) Q[9] += w * vlbe_v2_dot(Y2, z);
     }
 
-    /* axial (with bending when the rules share the points), then bending */
+    /* axial (with bending when the rules share the points), then bending;
+       inv: the axial part from the invariants */
+    if (inv && mt->EA != VLBE_R(0.0))
+        vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, q, qd, Q, NULL,
+                            NULL);
     for (pass = 0; pass < 2; ++pass) {
-        const int ax = pass == 0 && mt->EA != VLBE_R(0.0);
+        const int ax = pass == 0 && mt->EA != VLBE_R(0.0) && !inv;
         const int bd = pass == 0 ? shared : (bend && !shared);
         const vlbe_ale_rule *ru = pass == 0 ? &el->rl : &el->rt;
         if (!ax && !bd) continue;
@@ -910,7 +1220,8 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     const int damp = !(mode & VLBE_ALE_NO_DAMP);
     const int bend = !(mode & VLBE_ALE_NO_BEND) && mt->EI != VLBE_R(0.0);
     const vlbe_real L = q[9] - q[4];
-    const int shared = bend && mt->EA != VLBE_R(0.0) && el->rl.n == el->rt.n;
+    const int inv = pm == 0 && (mode & VLBE_ALE_INV_AXIAL);
+    const int shared = bend && mt->EA != VLBE_R(0.0) && el->rl.n == el->rt.n && !inv;
     vlbe_real pd[2], Lp[6], dQ[10], dQx[10], Ke[80], De[80];
     vlbe__ale_pt pt;
     vlbe_status st;
@@ -919,7 +1230,8 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     pd[0] = (pm & 1) ? qd[4] : VLBE_R(0.0);
     pd[1] = (pm & 2) ? qd[9] : VLBE_R(0.0);
     if (!jac) {
-        if ((st = vlbe__ale_q(el, pm, damp, bend, shared, Lp, pd, q, qd, Q)) != VLBE_OK) return st;
+        if ((st = vlbe__ale_q(el, pm, damp, bend, shared, inv, Lp, pd, q, qd, Q)) != VLBE_OK)
+            return st;
         if (mode & VLBE_ALE_CONSERVATIVE) return vlbe__ale_flux(el, pm, bend, q, L, Q, NULL, NULL);
         return VLBE_OK;
     }
@@ -928,8 +1240,15 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
         for (i = 0; i < 80; ++i) Ke[i] = De[i] = VLBE_R(0.0);
     }
 
-    /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19) */
-    for (g = 0; g < el->rm.n; ++g) {
+    /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19);
+       fixed length (inv): the load alone (constant), and the axial force,
+       from the tables */
+    if (inv) {
+        vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
+        if (mt->EA != VLBE_R(0.0))
+            vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, q, qd, Q, K, D);
+    }
+    for (g = 0; !inv && g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         const vlbe_real w = gp->w * L;
         vlbe_real z[2], c[4], dd[4];
@@ -984,7 +1303,7 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
 
     /* axial and bending; at the axial points the bending term too when
        the rules have the same points (the default) */
-    if (mt->EA != VLBE_R(0.0))
+    if (mt->EA != VLBE_R(0.0) && !inv)
         for (g = 0; g < el->rl.n; ++g)
             if ((st = vlbe__ale_strain_gp(mt, &el->rl.g[g], Lp, pm, pd, 1, shared, damp, q, qd, Q,
                                           jac ? Ke : NULL, De, D, dQx)) != VLBE_OK)
@@ -1014,16 +1333,15 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     return VLBE_OK;
 }
 
-VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
-                                    const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
-                                    vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
+/* vlbe_ale_force with the final mode (element flags already ORed in) */
+static inline vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode,
+                                          const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
+                                          vlbe_real *K, vlbe_real *D)
 {
     vlbe_real Qt[10], Kt[100], Dt[100];
     const int jac = K != NULL || D != NULL;
     vlbe_status st;
     int i;
-    VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
-    mode |= el->flags;
     if ((st = vlbe__ale_check(q, qd)) != VLBE_OK) return st;
     for (i = 0; i < 10; ++i) Qt[i] = VLBE_R(0.0);
     if (jac)
@@ -1036,6 +1354,14 @@ VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, cons
     if (D)
         for (i = 0; i < 100; ++i) D[i] = Dt[i];
     return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
+                                    const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                    vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
+{
+    VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
+    return vlbe__ale_force(el, mode | el->flags, q, qd, Q, K, D);
 }
 
 /* One point's part w G^T G of M (eq. 19): e-e blocks and p1-p2 for
@@ -1195,7 +1521,7 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
     vlbe_status st;
     VLBE_ASSERT(q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    if (!vlbe_all_finite(&p, 1)) return VLBE_ENONFINITE;
+    if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[4], q[9], 1, 0, &b);
     if (r) vlbe__ale_sum(&b, 0, 0, q, r);
     if (rp) vlbe__ale_sum(&b, 1, 0, q, rp);
@@ -1212,7 +1538,7 @@ VLBE_API vlbe_status vlbe_ale_strain(const vlbe_real *q, vlbe_real p, vlbe_real 
     vlbe_status st;
     VLBE_ASSERT(q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    if (!vlbe_all_finite(&p, 1)) return VLBE_ENONFINITE;
+    if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[4], q[9], 2, 0, &b);
     vlbe__ale_sum(&b, 1, 0, q, r1);
     vlbe__ale_sum(&b, 2, 0, q, r2);
@@ -1235,7 +1561,7 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
     int j, k, l;
     VLBE_ASSERT(q != NULL && F != NULL && Q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    if (!vlbe_all_finite(&pf, 1) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
+    if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
     if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
     vlbe_herm_ale_eval(pf, q[4], q[9], 0, 2, &b);
     for (j = 0; j < 4; ++j) {
@@ -1265,6 +1591,313 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
             K[VLBE__ALE_P(k) * 10 + VLBE__ALE_P(l)] += vlbe_v2_dot(x, F);
         }
     return VLBE_OK;
+}
+
+/* ===== invariant-matrix forces of fixed-length elements and chains ====== */
+/* Unit tables (L = 1) by the 5-point Gauss rule on [0, 1], exact for the
+   integrands of degree <= 9 here (h_a' quadratic: degree 8; h_a: 3) up to
+   the rounding of the rule's nodes and weights. */
+VLBE_API vlbe_status vlbe_ale_inv_init(vlbe_ale_inv *inv)
+{
+    const vlbe_real *x, *w;
+    vlbe_real d[5][4], n[5][4], wg[5];
+    vlbe_status st;
+    int g, P, R, a, b, c, e, j;
+    VLBE_ASSERT(inv != NULL);
+    if ((st = vlbe_gl_rule(5, &x, &w)) != VLBE_OK) return st;
+    for (g = 0; g < 5; ++g) {
+        vlbe_herm_ale hb;
+        vlbe_herm_ale_eval(VLBE_R(0.5) * (x[g] + VLBE_R(1.0)), VLBE_R(0.0), VLBE_R(1.0), 1, 0, &hb);
+        wg[g] = VLBE_R(0.5) * w[g];
+        for (j = 0; j < 4; ++j) {
+            n[g][j] = hb.h[0][0][j];
+            d[g][j] = hb.h[1][0][j];
+        }
+    }
+    for (j = 0; j < 4; ++j) {
+        inv->n[j] = VLBE_R(0.0);
+        for (g = 0; g < 5; ++g) inv->n[j] += wg[g] * n[g][j];
+    }
+    for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
+        vlbe__ale_inv_slots(P, &a, &b);
+        inv->b[P] = VLBE_R(0.0);
+        for (g = 0; g < 5; ++g) inv->b[P] += wg[g] * d[g][a] * d[g][b];
+        for (R = 0; R < VLBE_ALE_INV_NP; ++R) {
+            vlbe_real t = VLBE_R(0.0);
+            vlbe__ale_inv_slots(R, &c, &e);
+            for (g = 0; g < 5; ++g) t += wg[g] * d[g][a] * d[g][b] * d[g][c] * d[g][e];
+            inv->t[P * VLBE_ALE_INV_NP + R] = c == e ? t : VLBE_R(2.0) * t;
+        }
+    }
+    return VLBE_OK;
+}
+
+/* vlbe_ale_force of the fixed-length element (FIX_P1 | FIX_P2 implied:
+   p-rows and -columns zero, p' ignored) with the axial force and the load
+   from the invariants; bending (unless NO_BEND) on Gauss points.  Errors
+   and outputs as vlbe_ale_force. */
+VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
+                                        const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                        vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
+{
+    VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
+    mode |= el->flags | VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2 | VLBE_ALE_INV_AXIAL;
+    return vlbe__ale_force(el, mode, q, qd, Q, K, D);
+}
+
+/* n x n band storage (VLBE_ALE_INV_BW per row): entry (i, j) */
+#define VLBE__ALE_BAND(i, j) ((size_t)(i) * VLBE_ALE_INV_BW + (size_t)((j) - (i) + VLBE_ALE_INV_KD))
+
+/* Inputs of a chain of ne elements: lengths (L may be NULL), x, v (may be
+   NULL), n = 4 (ne + 1) coordinates each. */
+static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const vlbe_real *x,
+                                             const vlbe_real *v)
+{
+    const int n = 4 * (ne + 1);
+    int e;
+    if (!vlbe_all_finite(x, n) || (v && !vlbe_all_finite(v, n))) return VLBE_ENONFINITE;
+    if (L) {
+        if (!vlbe_all_finite(L, ne)) return VLBE_ENONFINITE;
+        for (e = 0; e < ne; ++e)
+            if (!(L[e] > VLBE_R(0.0))) return VLBE_ELENGTH;
+    }
+    return VLBE_OK;
+}
+
+/* Cable forces (axial + load; NO_BEND, both p fixed implied) of a chain of
+   ne >= 1 elements of lengths L[ne] by an element loop: each element by
+   vlbe_ale_force's Gauss route, or by the invariants when mode has
+   VLBE_ALE_INV_AXIAL.  x, v (v may be NULL = 0): n = 4 (ne + 1)
+   coordinates (INVARIANTS); Q (n) is overwritten, K, D (n *
+   VLBE_ALE_INV_BW, band storage, either may be NULL) too.  Errors (nothing
+   written): VLBE_ENONFINITE for NaN/Inf in L, x, v; VLBE_ELENGTH for
+   L[e] <= 0. */
+VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned mode, int ne,
+                                              const vlbe_real *L, const vlbe_real *x,
+                                              const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
+                                              vlbe_real *VLBE_RESTRICT K,
+                                              vlbe_real *VLBE_RESTRICT D)
+{
+    const int n = 4 * (ne + 1);
+    vlbe_real qe[10], ve[10], Qe[10], Ke[100], De[100];
+    vlbe_status st;
+    int e, i, j;
+    VLBE_ASSERT(el != NULL && L != NULL && x != NULL && Q != NULL && ne >= 1);
+    VLBE_ASSERT(ne <= (INT_MAX - 4) / 4 / VLBE_ALE_INV_BW);
+    mode |= el->flags | VLBE_ALE_NO_BEND | VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2;
+    if ((st = vlbe__ale_chain_in(ne, L, x, v)) != VLBE_OK) return st;
+    /* nothing fails below: a cable element with p fixed, finite data and
+       L > 0 has no failing case */
+    for (i = 0; i < n; ++i) Q[i] = VLBE_R(0.0);
+    for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
+    for (i = 0; D && i < n * VLBE_ALE_INV_BW; ++i) D[i] = VLBE_R(0.0);
+    for (e = 0; e < ne; ++e) {
+        const int o = 4 * e;
+        for (i = 0; i < 4; ++i) {
+            qe[i] = x[o + i];
+            qe[5 + i] = x[o + 4 + i];
+            ve[i] = v ? v[o + i] : VLBE_R(0.0);
+            ve[5 + i] = v ? v[o + 4 + i] : VLBE_R(0.0);
+        }
+        qe[4] = ve[4] = ve[9] = VLBE_R(0.0);
+        qe[9] = L[e];
+        if (K || D) /* K and D come together; the Q-only route without */
+            (void)vlbe_ale_force(el, mode, qe, ve, Qe, Ke, De);
+        else
+            (void)vlbe_ale_force(el, mode, qe, ve, Qe, NULL, NULL);
+        for (i = 0; i < 8; ++i) {
+            const int ri = i + (i >= 4), gi = o + i;
+            Q[gi] += Qe[ri];
+            for (j = 0; j < 8; ++j) {
+                const int cj = j + (j >= 4), gj = o + j;
+                if (K) K[VLBE__ALE_BAND(gi, gj)] += Ke[ri * 10 + cj];
+                if (D) D[VLBE__ALE_BAND(gi, gj)] += De[ri * 10 + cj];
+            }
+        }
+    }
+    return VLBE_OK;
+}
+
+/* Rows of the assembled quartic invariants T of a chain of ne elements
+   (pairs in the order of vlbe__ale_inv_slots, np = 7 ne + 3): row P holds
+   the pairs R in [c0, c0 + w) that share an element with P, which is a
+   contiguous range: node n's pairs meet nodes n-1..n+1 (w = 17, 10 at an
+   end node), a link n..n+1 meets nodes n, n+1 (w = 10).  start: offset of
+   the row in the stored T, nnz = 91 ne + 9 in all. */
+static inline void vlbe__ale_sys_row(int ne, int P, int *start, int *c0, int *w)
+{
+    const int n = P / 7, t = P % 7, wn = (n == 0 || n == ne) ? 10 : 17;
+    const int blk = n == 0 ? 0 : 70 + 91 * (n - 1); /* rows of the nodes before n */
+    if (t < 3) {
+        *start = blk + t * wn;
+        *c0 = n > 0 ? 7 * (n - 1) : 0;
+        *w = wn;
+    } else {
+        *start = blk + 3 * wn + 10 * (t - 3);
+        *c0 = 7 * n;
+        *w = 10;
+    }
+}
+
+/* slot A of a chain's x (slope, or position relative to x0) */
+static inline void vlbe__ale_sys_pos(const vlbe_real *x, int A, const vlbe_real *x0, vlbe_real *r)
+{
+    const int pos = !(A & 1);
+    r[0] = x[2 * A] - (pos ? x0[0] : VLBE_R(0.0));
+    r[1] = x[2 * A + 1] - (pos ? x0[1] : VLBE_R(0.0));
+}
+
+/* Length (in vlbe_real) of the buffer of vlbe_ale_inv_sys_init for ne
+   elements, 158 ne + 40; 0 for ne < 1 or too large for int indexing. */
+VLBE_API size_t vlbe_ale_inv_sys_work_len(int ne)
+{
+    /* T (91 ne + 9), B (np), scratch H (8 np), load vector (4 ne + 4) */
+    if (ne < 1 || ne > (INT_MAX - 64) / 158) return 0;
+    return (size_t)158 * (size_t)ne + 40;
+}
+
+/* System invariants of a chain of ne fixed-length cable elements of
+   lengths L[ne] (material, load and the tables from el; damping unless
+   (mode | el->flags) has NO_DAMP): the assembled I and B (each element's
+   table scaled to its L and added into the pair rows it touches) and the
+   load vector, in work (work_len >= vlbe_ale_inv_sys_work_len(ne)), which
+   must live as long as sys and is also the scratch of
+   vlbe_ale_inv_sys_force (one evaluation at a time per buffer).  Errors
+   (sys and work untouched): VLBE_EARG for ne < 1 or too large, VLBE_EWORK
+   for a short buffer, VLBE_ENONFINITE for NaN/Inf in L, VLBE_ELENGTH for
+   L[e] <= 0. */
+VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale_elem *el,
+                                           unsigned mode, int ne, const vlbe_real *L,
+                                           vlbe_real *work, size_t work_len)
+{
+    const vlbe_ale_inv *iv;
+    const size_t need = vlbe_ale_inv_sys_work_len(ne);
+    vlbe_real *T, *B, *F;
+    int np, nnz, e, p, r, i, a, b, c, d;
+    VLBE_ASSERT(sys != NULL && el != NULL && L != NULL && work != NULL);
+    if (need == 0) return VLBE_EARG;
+    if (work_len < need) return VLBE_EWORK;
+    if (!vlbe_all_finite(L, ne)) return VLBE_ENONFINITE;
+    for (e = 0; e < ne; ++e)
+        if (!(L[e] > VLBE_R(0.0))) return VLBE_ELENGTH;
+    mode |= el->flags;
+    iv = &el->inv;
+    np = 7 * ne + 3;
+    nnz = 91 * ne + 9;
+    T = work;
+    B = T + nnz;
+    F = B + np;
+    for (i = 0; i < nnz + np + 4 * ne + 4; ++i) work[i] = VLBE_R(0.0);
+    /* sum of the element tables, each scaled to its L:
+       I_abcd = L^(m_a+m_b+m_c+m_d-3) i_abcd, B_ab = L^(m_a+m_b-1) b_ab,
+       load L^(m_a+1) n_a f */
+    for (e = 0; e < ne; ++e) {
+        vlbe_real Lp[8];
+        Lp[3] = VLBE_R(1.0);
+        for (i = 4; i < 8; ++i) Lp[i] = Lp[i - 1] * L[e];
+        for (i = 2; i >= 0; --i) Lp[i] = Lp[i + 1] / L[e]; /* Lp[k] = L^(k-3) */
+        for (p = 0; p < VLBE_ALE_INV_NP; ++p) {
+            int start, c0, w;
+            const int P = 7 * e + p;
+            vlbe__ale_inv_slots(p, &a, &b);
+            vlbe__ale_sys_row(ne, P, &start, &c0, &w);
+            B[P] += Lp[2 + (a & 1) + (b & 1)] * iv->b[p];
+            for (r = 0; r < VLBE_ALE_INV_NP; ++r) {
+                vlbe__ale_inv_slots(r, &c, &d);
+                T[start + 7 * e + r - c0] +=
+                    Lp[(a & 1) + (b & 1) + (c & 1) + (d & 1)] * iv->t[p * VLBE_ALE_INV_NP + r];
+            }
+        }
+        {
+            vlbe_real Fe[10];
+            for (i = 0; i < 10; ++i) Fe[i] = VLBE_R(0.0);
+            vlbe__ale_inv_load(iv, L[e], el->mat.f, Fe);
+            for (i = 0; i < 8; ++i) F[4 * e + i] += Fe[i + (i >= 4)];
+        }
+    }
+    sys->ne = ne;
+    sys->np = np;
+    sys->EA = el->mat.EA;
+    sys->c = (mode & VLBE_ALE_NO_DAMP) ? VLBE_R(0.0) : el->mat.c_eps;
+    sys->T = T;
+    sys->B = B;
+    sys->H = F + 4 * ne + 4;
+    return VLBE_OK;
+}
+
+/* vlbe_ale_inv_sys_force (the public wrapper below asserts the pointers):
+   the chain's cable force Q (n = 4 (ne + 1), overwritten) and, when not
+   NULL, K = dQ/dx and D = dQ/dv in band storage, from the system
+   invariants: one pass over the 7 ne + 3 slot pairs for their products,
+   one over the stored rows.  v may be NULL (= 0; D is still c dQ/dv).
+   Same numbers as vlbe_ale_inv_chain_force to rounding.  Errors (nothing
+   written): VLBE_ENONFINITE for NaN/Inf in x, v. */
+static inline vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
+                                              const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
+                                              vlbe_real *D)
+{
+    const int n = 4 * (sys->ne + 1), damp = sys->c != VLBE_R(0.0) && v != NULL;
+    const int jac = K != NULL || D != NULL, ne = sys->ne;
+    const signed char *pa = vlbe__ale_inv_pa();
+    const vlbe_real *F = sys->B + sys->np, *T = sys->T;
+    const vlbe_real EA = sys->EA, EAc = sys->EA * sys->c;
+    vlbe_real *H = sys->H, y[8] = {0, 0, 0, 0, 0, 0, 0, 0}, x0[2];
+    vlbe_status st;
+    int nd, t, i;
+    if ((st = vlbe__ale_chain_in(ne, NULL, x, damp ? v : NULL)) != VLBE_OK) return st;
+    for (i = 0; i < n; ++i) Q[i] = F[i];
+    for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
+    for (i = 0; D && i < n * VLBE_ALE_INV_BW; ++i) D[i] = VLBE_R(0.0);
+    /* pair products, node by node (pair 7 nd + t), positions relative to
+       the middle node's (exact: the force is invariant to translation; the
+       Gram entries of positions are then of the size of half the chain's
+       extent squared, not |r|^2: their rounding relative to the strain
+       grows like the square of that size over L) */
+    for (i = 0; i < 2; ++i) x0[i] = x[4 * (ne / 2) + i];
+    for (nd = 0; nd <= ne; ++nd)
+        for (t = 0; t < (nd < ne ? 7 : 3); ++t) {
+            const int A = 2 * nd + pa[t], B = 2 * nd + pa[10 + t];
+            vlbe_real ra[2], rb[2];
+            vlbe__ale_sys_pos(x, A, x0, ra);
+            vlbe__ale_sys_pos(x, B, x0, rb);
+            vlbe__ale_inv_prod(ra, rb, damp ? v + 2 * A : NULL, damp ? v + 2 * B : NULL, sys->c,
+                               VLBE_R(1.0), jac, H + 8 * (7 * nd + t));
+        }
+    /* the rows of T, stored one after another (vlbe__ale_sys_row) */
+    for (nd = 0; nd <= ne; ++nd) {
+        const int wn = (nd == 0 || nd == ne) ? 10 : 17, c0 = nd > 0 ? 7 * (nd - 1) : 0;
+        for (t = 0; t < (nd < ne ? 7 : 3); ++t) {
+            const int A = 2 * nd + pa[t], B = 2 * nd + pa[10 + t], P = 7 * nd + t;
+            const int w = t < 3 ? wn : 10, c = t < 3 ? c0 : 7 * nd;
+            vlbe_real S, ra[2], rb[2];
+            vlbe__ale_sys_pos(x, A, x0, ra);
+            vlbe__ale_sys_pos(x, B, x0, rb);
+            if (jac) {
+                vlbe__ale_inv_row(T, w, H + 8 * c, y);
+                S = y[0];
+            } else {
+                int j;
+                S = VLBE_R(0.0);
+                for (j = 0; j < w; ++j) S += T[j] * H[8 * (c + j)];
+            }
+            T += w;
+            vlbe__ale_inv_out(VLBE_R(0.5) * (S - sys->B[P]), y, jac, EA, EAc, ra, rb, A == B, Q + 2 * A, Q + 2 * B,
+                              K ? K + VLBE__ALE_BAND(2 * A, 2 * B) : NULL,
+                              K ? K + VLBE__ALE_BAND(2 * B, 2 * A) : NULL,
+                              D ? D + VLBE__ALE_BAND(2 * A, 2 * B) : NULL,
+                              D ? D + VLBE__ALE_BAND(2 * B, 2 * A) : NULL, VLBE_ALE_INV_BW - 1);
+        }
+    }
+    return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
+                                            const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
+                                            vlbe_real *VLBE_RESTRICT K,
+                                            vlbe_real *VLBE_RESTRICT D)
+{
+    VLBE_ASSERT(sys != NULL && x != NULL && Q != NULL);
+    return vlbe__ale_sys_force(sys, x, v, Q, K, D);
 }
 
 /* ===== chains of elements ================================================ */
@@ -2002,7 +2635,7 @@ VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlb
     int k;
     VLBE_ASSERT(q != NULL && qh != NULL);
     if ((st = vlbe__ale_check(q, qd)) != VLBE_OK) return st;
-    if (!vlbe_all_finite(&ph, 1)) return VLBE_ENONFINITE;
+    if (!isfinite(ph)) return VLBE_ENONFINITE;
     if (!(ph > q[4] && ph < q[9])) return VLBE_EBOUND;
     vlbe_herm_ale_eval(ph, q[4], q[9], 1, 1, &b);
     for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */

@@ -33,13 +33,7 @@
 static volatile double sink;
 
 static unsigned long long rng_state = 0x9E3779B97F4A7C15ULL;
-static double urand(void) /* uniform in [-1, 1), xorshift64* */
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return (double)((rng_state * 2685821657736338717ULL) >> 11) * (2.0 / 9007199254740992.0) - 1.0;
-}
+static double urand(void) { return benchu_urand(&rng_state); }
 
 static double cpu_mhz(void)
 {

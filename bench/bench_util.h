@@ -36,6 +36,15 @@ static inline int benchu_cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* uniform in [-1, 1), xorshift64* on the caller's state (nonzero seed) */
+static inline double benchu_urand(unsigned long long *st)
+{
+    *st ^= *st >> 12;
+    *st ^= *st << 25;
+    *st ^= *st >> 27;
+    return (double)((*st * 2685821657736338717ULL) >> 11) * (2.0 / 9007199254740992.0) - 1.0;
+}
+
 /* CPU model name and MHz from /proc/cpuinfo ("unknown cpu", 0 elsewhere) */
 static inline void benchu_cpu_info(char *model, size_t len, double *mhz)
 {

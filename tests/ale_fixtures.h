@@ -22,6 +22,24 @@ static inline vlbe_ale_mat mat_std(void)
     return m;
 }
 
+/* Element coordinates of a chord from (x1, y1) at angle th, stretch s,
+   material length L from p1, nodal slopes at angles a1, a2 with magnitudes
+   s1, s2 (the random states of the suites draw these numbers). */
+static inline void ale_chord_q(double p1, double L, double x1, double y1, double th, double s,
+                               double a1, double a2, double s1, double s2, vlbe_real *q)
+{
+    q[0] = (vlbe_real)x1;
+    q[1] = (vlbe_real)y1;
+    q[2] = (vlbe_real)(s1 * cos(a1));
+    q[3] = (vlbe_real)(s1 * sin(a1));
+    q[4] = (vlbe_real)p1;
+    q[5] = (vlbe_real)(x1 + s * L * cos(th));
+    q[6] = (vlbe_real)(y1 + s * L * sin(th));
+    q[7] = (vlbe_real)(s2 * cos(a2));
+    q[8] = (vlbe_real)(s2 * sin(a2));
+    q[9] = (vlbe_real)(p1 + L);
+}
+
 static inline double max_abs(int n, const vlbe_real *a)
 {
     double m = 0.0;

@@ -20,4 +20,18 @@ static inline double quad_form(int n, const vlbe_real *M, const double *u, doubl
     return s;
 }
 
+/* a[i] = v, i < n */
+static inline void fill(int n, vlbe_real v, vlbe_real *a)
+{
+    int i;
+    for (i = 0; i < n; ++i) a[i] = v;
+}
+
+/* every a[i] == v exactly (e.g. an output left untouched) */
+static inline void assert_all_equal(int n, const vlbe_real *a, vlbe_real v)
+{
+    int i;
+    for (i = 0; i < n; ++i) ASSERT_CLOSE_CTX(a[i], v, 0, 0, "entry %d", i);
+}
+
 #endif /* VLBE_TEST_FIXTURES_COMMON_H */

@@ -90,33 +90,12 @@ static void make_state(tu_rng *g, double curv, double stretch, vlbe_real *q, vlb
     const double a1 = th + curv * tu_rng_uniform(g), a2 = th + curv * tu_rng_uniform(g);
     const double s1 = s * (1.0 + 0.1 * tu_rng_uniform(g)), s2 = s * (1.0 + 0.1 * tu_rng_uniform(g));
     int i;
-    q[0] = (vlbe_real)x1;
-    q[1] = (vlbe_real)y1;
-    q[2] = (vlbe_real)(s1 * cos(a1));
-    q[3] = (vlbe_real)(s1 * sin(a1));
-    q[4] = (vlbe_real)p1;
-    q[5] = (vlbe_real)(x1 + s * L * cos(th));
-    q[6] = (vlbe_real)(y1 + s * L * sin(th));
-    q[7] = (vlbe_real)(s2 * cos(a2));
-    q[8] = (vlbe_real)(s2 * sin(a2));
-    q[9] = (vlbe_real)(p1 + L);
+    ale_chord_q(p1, L, x1, y1, th, s, a1, a2, s1, s2, q);
     if (qd)
         for (i = 0; i < 10; ++i) qd[i] = (vlbe_real)((is_p(i) ? 0.5 : 1.0) * tu_rng_uniform(g));
 }
 
 
-
-static void fill(int n, vlbe_real v, vlbe_real *a)
-{
-    int i;
-    for (i = 0; i < n; ++i) a[i] = v;
-}
-
-static void assert_all_equal(int n, const vlbe_real *a, vlbe_real v)
-{
-    int i;
-    for (i = 0; i < n; ++i) ASSERT_CLOSE_CTX(a[i], v, 0, 0, "entry %d", i);
-}
 
 /* Cholesky in double of the n x n leading principal submatrix of the 10 x 10
    matrix M restricted to the index list idx; 1 when every pivot is > 0. */

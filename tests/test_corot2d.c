@@ -106,12 +106,6 @@ static unsigned mode_of(int k) { return (unsigned)k; }
 /* helpers                                                                    */
 /* ------------------------------------------------------------------------ */
 
-static void assert_all_equal(int n, const vlbe_real *a, vlbe_real v)
-{
-    int i;
-    for (i = 0; i < n; ++i) ASSERT_CLOSE_CTX(a[i], v, 0, 0, "entry %d", i);
-}
-
 /* 5-point Gauss-Legendre on [-1, 1] (exact to degree 9), typed here */
 static const double GL5_X[5] = {-0.90617984593866399, -0.53846931010568309, 0.0,
                                 0.53846931010568309, 0.90617984593866399};

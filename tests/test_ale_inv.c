@@ -1,0 +1,592 @@
+/* test_ale_inv.c -- cmocka suite of the invariant-matrix axial force of
+   ancf_ale.h (fixed-length planar ANCF cable/beam: element invariants,
+   chains, system invariants)                 -- part of vlbe
+                                                   SPDX-License-Identifier: MIT
+   cc -std=c99 -Wall -Wextra -Wpedantic ... -O2 tests/test_ale_inv.c -lcmocka -lm
+   (add -DVLBE_USE_FLOAT for the float build; the same source passes in both)
+
+   Tolerances are multiples of EPS (machine epsilon of vlbe_real) for
+   rounding-only checks and of FD = EPS^(2/3) for central differences, as in
+   test_ancf_ale.c.  VLBE_TEST_REPORT=1 prints each measured error.
+
+   Tests
+     tables_exact           unit tables against closed forms: b = classic cable
+                            stiffness integrals, n = Hermite integrals,
+                            int h1'^4 = 72/35, int h1'^2 h2'^2 = 3/35
+     inv_equals_gauss       vlbe_ale_inv_force = vlbe_ale_force (Gauss points,
+                            both p fixed): cable undamped / damped and beam,
+                            Q, K, D, random stretched curved moving states,
+                            L from 0.05 to 40
+     inv_jacobians          K = dQ/dq, D = dQ/dq' of the invariant route vs
+                            central differences (cable, damped)
+     chain_routes           element invariants assembled = Gauss elements
+                            assembled by hand (dense); system invariants =
+                            element invariants (rounding model (1+R/L)^2),
+                            ne = 1, 2, 5, 16, mixed lengths, damped and not,
+                            K or D alone, v = NULL
+     rigid_motion           straight unstretched chain moved and rotated
+                            rigidly (with the rigid velocity): zero force
+     errors                 bad L, NaN, ne, short work: the status, and the
+                            outputs, system and work untouched */
+#include "test_util.h"
+#include "../ancf_ale.h"
+#include "ale_fixtures.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#define EPS ((double)VLBE_EPS)
+#define ARRAY_LEN(a) ((int)(sizeof(a) / sizeof((a)[0])))
+#define FD_STEP (cbrt(EPS))
+#define FD_ERR (EPS / FD_STEP)
+#define SENTINEL VLBE_R(12345.0)
+#define FIX (VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2)
+#define NE_MAX 16
+#define N_MAX (4 * (NE_MAX + 1))
+#define BW VLBE_ALE_INV_BW
+
+static const double PI = 3.14159265358979323846;
+
+/* max |a - b| / max |b| over n entries (0 when both are zero) */
+static double rel_diff(int n, const vlbe_real *a, const vlbe_real *b)
+{
+    double d = 0.0, m = 0.0;
+    int i;
+    for (i = 0; i < n; ++i) {
+        d = fmax(d, fabs((double)a[i] - (double)b[i]));
+        m = fmax(m, fabs((double)b[i]));
+    }
+    return m > 0.0 ? d / m : d;
+}
+
+/* A random fixed-length element state of length L: chord at a random angle
+   stretched by up to +-stretch, slopes turned by up to +-0.6 rad with
+   magnitudes +-10 %, velocities O(1) (nodal velocities ~ 1, slope rates ~
+   1/L); p1 random, p' = 0. */
+static void make_state(tu_rng *g, double L, double stretch, vlbe_real *q, vlbe_real *qd)
+{
+    const double p1 = 0.3 * tu_rng_uniform(g), th = PI * tu_rng_uniform(g);
+    const double s = 1.0 + stretch * tu_rng_uniform(g);
+    const double x1 = L * tu_rng_uniform(g), y1 = L * tu_rng_uniform(g);
+    const double a1 = th + 0.6 * tu_rng_uniform(g), a2 = th + 0.6 * tu_rng_uniform(g);
+    const double s1 = s * (1.0 + 0.1 * tu_rng_uniform(g)), s2 = s * (1.0 + 0.1 * tu_rng_uniform(g));
+    int i;
+    ale_chord_q(p1, L, x1, y1, th, s, a1, a2, s1, s2, q);
+    for (i = 0; i < 10; ++i)
+        qd[i] = (i == 4 || i == 9) ? VLBE_R(0.0)
+                                   : (vlbe_real)(((i % 5) >= 2 ? 1.0 / L : 1.0) * tu_rng_uniform(g));
+}
+
+/* A random chain of ne elements of lengths L (nodes on a wavy stretched
+   line, slopes along it, velocities O(1)). */
+static void make_chain(tu_rng *g, int ne, const vlbe_real *L, vlbe_real *x, vlbe_real *v)
+{
+    double px = 0.0, py = 0.0, th = PI * tu_rng_uniform(g);
+    int k, i;
+    for (k = 0; k <= ne; ++k) {
+        const double s = 1.0 + 0.15 * tu_rng_uniform(g), a = th + 0.5 * tu_rng_uniform(g);
+        x[4 * k + 0] = (vlbe_real)px;
+        x[4 * k + 1] = (vlbe_real)py;
+        x[4 * k + 2] = (vlbe_real)(s * cos(a));
+        x[4 * k + 3] = (vlbe_real)(s * sin(a));
+        if (k < ne) {
+            const double l = (double)L[k] * (1.0 + 0.1 * tu_rng_uniform(g));
+            th += 0.4 * tu_rng_uniform(g);
+            px += l * cos(th);
+            py += l * sin(th);
+        }
+    }
+    for (i = 0; i < 4 * (ne + 1); ++i) v[i] = (vlbe_real)tu_rng_uniform(g);
+}
+
+static void elem_make(vlbe_ale_elem *el, const vlbe_ale_mat *m)
+{
+    assert_int_equal(vlbe_ale_elem_init(el, m, 0, 0, 0, 0), VLBE_OK);
+}
+
+/* ======================================================================= */
+
+/* The unit tables are exact integrals computed by a 5-point Gauss rule:
+   equal to the closed forms to a few EPS (the rule's nodes and weights are
+   rounded; sums of 5 terms of size <= 2.4).  Tolerance 16 EPS of the
+   largest entry of each table. */
+static void test_tables_exact(void **state)
+{
+    static const double bex[4][4] = {{6.0 / 5.0, 1.0 / 10.0, -6.0 / 5.0, 1.0 / 10.0},
+                                     {1.0 / 10.0, 2.0 / 15.0, -1.0 / 10.0, -1.0 / 30.0},
+                                     {-6.0 / 5.0, -1.0 / 10.0, 6.0 / 5.0, -1.0 / 10.0},
+                                     {1.0 / 10.0, -1.0 / 30.0, -1.0 / 10.0, 2.0 / 15.0}};
+    static const double nex[4] = {0.5, 1.0 / 12.0, 0.5, -1.0 / 12.0};
+    static const int A[10] = {0, 0, 1, 0, 0, 1, 1, 2, 2, 3}, B[10] = {0, 1, 1, 2, 3, 2, 3, 2, 3, 3};
+    vlbe_ale_inv iv;
+    int P, a;
+    (void)state;
+    assert_int_equal(vlbe_ale_inv_init(&iv), VLBE_OK);
+    for (P = 0; P < 10; ++P) ASSERT_CLOSE_CTX(iv.b[P], bex[A[P]][B[P]], 0, 16.0 * EPS * 1.2, "b[%d]", P);
+    for (a = 0; a < 4; ++a) ASSERT_CLOSE_CTX(iv.n[a], nex[a], 0, 16.0 * EPS, "n[%d]", a);
+    /* h1' = -6 xi (1 - xi): int h1'^4 = 1296 B(5,5) = 72/35; h2' = (1 - xi)(1 - 3 xi):
+       int h1'^2 h2'^2 = 36 (B(3,5) - 6 B(4,5) + 9 B(5,5)) = 3/35 (pair (0,0) x
+       (1,1): no multiplicity) */
+    ASSERT_CLOSE(iv.t[0], 72.0 / 35.0, 0, 16.0 * EPS * 2.1);
+    ASSERT_CLOSE(iv.t[0 * 10 + 2], 3.0 / 35.0, 0, 16.0 * EPS * 2.1);
+    /* symmetry of I: t[P][R] / m(R) = t[R][P] / m(P) */
+    for (P = 0; P < 10; ++P)
+        for (a = 0; a < 10; ++a) {
+            const double mp = A[P] == B[P] ? 1.0 : 2.0, mr = A[a] == B[a] ? 1.0 : 2.0;
+            ASSERT_CLOSE_CTX((double)iv.t[P * 10 + a] / mr, (double)iv.t[a * 10 + P] / mp, 0,
+                             16.0 * EPS * 2.1, "t[%d][%d]", P, a);
+        }
+    /* the element carries the same tables */
+    {
+        const vlbe_ale_mat m = mat_std();
+        vlbe_ale_elem el;
+        elem_make(&el, &m);
+        assert_memory_equal(&el.inv, &iv, sizeof iv);
+    }
+}
+
+/* vlbe_ale_inv_force against vlbe_ale_force (Gauss points, nl = 5 exact for
+   the degree-8 axial integrand) with both p fixed.  Both evaluate the same
+   exact integrals in another order: the difference is rounding.  Each entry
+   is a sum of ~100 products whose size reaches a few times the largest
+   entry (the quartic and quadratic parts of S cancel to eps ~ 0.1 at +-15 %
+   stretch), so a few tens of EPS of the largest entry; tolerance 64 EPS
+   relative to max |entry| of each of Q, K, D (1.4e-14 in double, well
+   inside the 1e-12 asked for), for L = 0.05 .. 40 (the L powers of the
+   tables are exact scalings).  Measured: see VLBE_TEST_REPORT. */
+static void test_inv_equals_gauss(void **state)
+{
+    static const double Ls[] = {0.05, 0.4, 1.3, 6.0, 40.0};
+    static const unsigned modes[] = {VLBE_ALE_NO_BEND | VLBE_ALE_NO_DAMP, VLBE_ALE_NO_BEND,
+                                     VLBE_ALE_NO_DAMP, 0u};
+    const vlbe_ale_mat m = mat_std();
+    const double tol = 64.0 * EPS;
+    vlbe_ale_elem el;
+    tu_rng g = tu_rng_seed(701);
+    double wq = 0.0, wk = 0.0, wd = 0.0;
+    int il, s, k;
+    (void)state;
+    elem_make(&el, &m);
+    for (il = 0; il < ARRAY_LEN(Ls); ++il)
+        for (s = 0; s < 4; ++s) {
+            vlbe_real q[10], qd[10];
+            make_state(&g, Ls[il], 0.15, q, qd);
+            for (k = 0; k < ARRAY_LEN(modes); ++k) {
+                const unsigned mode = modes[k] | FIX;
+                vlbe_real Q[10], K[100], D[100], Qg[10], Kg[100], Dg[100], Q1[10];
+                double e;
+                assert_int_equal(vlbe_ale_force(&el, mode, q, qd, Qg, Kg, Dg), VLBE_OK);
+                assert_int_equal(vlbe_ale_inv_force(&el, modes[k], q, qd, Q, K, D), VLBE_OK);
+                assert_int_equal(vlbe_ale_inv_force(&el, modes[k], q, qd, Q1, NULL, NULL), VLBE_OK);
+                /* the flag on vlbe_ale_force is the same route, bit for bit */
+                {
+                    vlbe_real Q2[10], K2[100], D2[100];
+                    assert_int_equal(vlbe_ale_force(&el, mode | VLBE_ALE_INV_AXIAL, q, qd, Q2, K2, D2),
+                                     VLBE_OK);
+                    assert_memory_equal(Q2, Q, sizeof Q);
+                    assert_memory_equal(K2, K, sizeof K);
+                    assert_memory_equal(D2, D, sizeof D);
+                }
+                e = fmax(rel_diff(10, Q, Qg), rel_diff(10, Q1, Qg));
+                wq = fmax(wq, e);
+                if (!(e <= tol))
+                    fail_msg("Q: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
+                e = rel_diff(100, K, Kg);
+                wk = fmax(wk, e);
+                if (!(e <= tol))
+                    fail_msg("K: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
+                e = rel_diff(100, D, Dg);
+                wd = fmax(wd, e);
+                if (!(e <= tol))
+                    fail_msg("D: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
+            }
+        }
+    tu_report("inv vs Gauss Q, in EPS of max|Q|", wq / EPS, 64.0);
+    tu_report("inv vs Gauss K, in EPS of max|K|", wk / EPS, 64.0);
+    tu_report("inv vs Gauss D, in EPS of max|D|", wd / EPS, 64.0);
+}
+
+/* central differences of the invariant route's Q in q[j] (or qd[j]) */
+typedef struct fd_ctx {
+    const vlbe_ale_elem *el;
+    unsigned mode;
+    int j, rate;
+    vlbe_real q[10], qd[10];
+} fd_ctx;
+
+static double fd_fn(void *vc, double x, double *out)
+{
+    const fd_ctx *c = (const fd_ctx *)vc;
+    vlbe_real q[10], qd[10], Q[10];
+    const vlbe_real xr = (vlbe_real)x;
+    int i;
+    memcpy(q, c->q, sizeof q);
+    memcpy(qd, c->qd, sizeof qd);
+    if (c->rate)
+        qd[c->j] = xr;
+    else
+        q[c->j] = xr;
+    assert_int_equal(vlbe_ale_inv_force(c->el, c->mode, q, qd, Q, NULL, NULL), VLBE_OK);
+    for (i = 0; i < 10; ++i) out[i] = (double)Q[i];
+    return (double)xr;
+}
+
+/* K and D of the invariant route against central differences of its Q over
+   the e-coordinates (the p rows and columns are exactly zero).  Tolerance
+   64 FD relative to the largest entry, as in test_ancf_ale.c (truncation
+   h^2 f'''/6 with f''' tens times the entries for L ~ 1). */
+static void test_inv_jacobians(void **state)
+{
+    static const unsigned modes[] = {VLBE_ALE_NO_BEND, VLBE_ALE_NO_BEND | VLBE_ALE_NO_DAMP, 0u};
+    const vlbe_ale_mat m = mat_std();
+    const double tol = 64.0 * FD_ERR;
+    vlbe_ale_elem el;
+    tu_rng g = tu_rng_seed(702);
+    double worst = 0.0;
+    int s, k, r, i, j;
+    (void)state;
+    elem_make(&el, &m);
+    for (s = 0; s < 3; ++s)
+        for (k = 0; k < ARRAY_LEN(modes); ++k) {
+            fd_ctx c;
+            vlbe_real Q[10], K[100], D[100];
+            c.el = &el;
+            c.mode = modes[k];
+            make_state(&g, 0.8 + 0.3 * s, 0.15, c.q, c.qd);
+            assert_int_equal(vlbe_ale_inv_force(&el, c.mode, c.q, c.qd, Q, K, D), VLBE_OK);
+            for (r = 0; r < 2; ++r) {
+                const vlbe_real *J = r ? D : K;
+                double Jfd[100], d[10], work[10], scale;
+                for (i = 0; i < 100; ++i) Jfd[i] = 0.0;
+                c.rate = r;
+                for (j = 0; j < 10; ++j) {
+                    const double x = r ? (double)c.qd[j] : (double)c.q[j];
+                    if (j == 4 || j == 9) continue;
+                    c.j = j;
+                    tu_central_diff(fd_fn, &c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
+                    for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = d[i];
+                }
+                scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
+                if (scale == 0.0) continue; /* D of the undamped cable: both zero */
+                for (i = 0; i < 100; ++i) {
+                    const int pi = i / 10 == 4 || i / 10 == 9 || i % 10 == 4 || i % 10 == 9;
+                    if (pi) ASSERT_CLOSE_CTX(J[i], 0.0, 0, 0, "p entry %d", i);
+                    worst = fmax(worst, fabs(Jfd[i] - (double)J[i]) / scale);
+                    ASSERT_CLOSE_CTX(Jfd[i], J[i], 0, tol * scale, "%s (%d, %d), mode %u",
+                                     r ? "D" : "K", i / 10, i % 10, c.mode);
+                }
+            }
+        }
+    tu_report("inv K, D vs differences, / max entry", worst, tol);
+}
+
+/* dense n x n of a band matrix (VLBE_ALE_INV_BW per row) */
+static void band_to_dense(int n, const vlbe_real *Kb, vlbe_real *K)
+{
+    int i, j;
+    for (i = 0; i < n; ++i)
+        for (j = 0; j < n; ++j) {
+            const int o = j - i + VLBE_ALE_INV_KD;
+            K[i * n + j] = (o >= 0 && o < BW) ? Kb[i * BW + o] : VLBE_R(0.0);
+        }
+}
+
+/* Gauss elements (vlbe_ale_force, p fixed, cable) assembled by hand into
+   dense n x n */
+static void assemble_gauss(const vlbe_ale_elem *el, unsigned mode, int ne, const vlbe_real *L,
+                           const vlbe_real *x, const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
+                           vlbe_real *D)
+{
+    static const int loc[8] = {0, 1, 2, 3, 5, 6, 7, 8};
+    const int n = 4 * (ne + 1);
+    int e, i, j;
+    fill(n, VLBE_R(0.0), Q);
+    fill(n * n, VLBE_R(0.0), K);
+    fill(n * n, VLBE_R(0.0), D);
+    for (e = 0; e < ne; ++e) {
+        vlbe_real q[10], qd[10], Qe[10], Ke[100], De[100];
+        for (i = 0; i < 8; ++i) {
+            q[loc[i]] = x[4 * e + i];
+            qd[loc[i]] = v ? v[4 * e + i] : VLBE_R(0.0);
+        }
+        q[4] = VLBE_R(1.0);
+        q[9] = VLBE_R(1.0) + L[e];
+        qd[4] = qd[9] = VLBE_R(0.0);
+        assert_int_equal(vlbe_ale_force(el, mode | FIX | VLBE_ALE_NO_BEND, q, qd, Qe, Ke, De),
+                         VLBE_OK);
+        for (i = 0; i < 8; ++i) {
+            Q[4 * e + i] += Qe[loc[i]];
+            for (j = 0; j < 8; ++j) {
+                K[(4 * e + i) * n + 4 * e + j] += Ke[loc[i] * 10 + loc[j]];
+                D[(4 * e + i) * n + 4 * e + j] += De[loc[i] * 10 + loc[j]];
+            }
+        }
+    }
+}
+
+/* Rounding factor of the system route: it contracts Gram entries of the
+   positions relative to the middle node, of size R^2 (R = the largest such
+   distance), against quartic invariants ~ L^-3 to strains ~ L^-1 per unit
+   length: the relative rounding is (R/L)^2 larger than in an element's own
+   frame (which starts at its node 1).  Returns (1 + R/Lmin)^2. */
+static double sys_factor(int ne, const vlbe_real *L, const vlbe_real *x)
+{
+    double R = 0.0, Lmin = HUGE_VAL;
+    int k;
+    for (k = 0; k <= ne; ++k)
+        R = fmax(R, hypot((double)x[4 * k] - (double)x[4 * (ne / 2)],
+                          (double)x[4 * k + 1] - (double)x[4 * (ne / 2) + 1]));
+    for (k = 0; k < ne; ++k) Lmin = fmin(Lmin, (double)L[k]);
+    return (1.0 + R / Lmin) * (1.0 + R / Lmin);
+}
+
+/* The three chain routes: element invariants assembled
+   (vlbe_ale_inv_chain_force with VLBE_ALE_INV_AXIAL) = Gauss elements
+   assembled by hand (dense) to the element tolerance 64 EPS of the largest
+   entry (an assembled entry adds at most two element entries), and the
+   system invariants (vlbe_ale_inv_sys_force) = element invariants to 64 EPS
+   times sys_factor (the system route's own rounding, see there); K or D
+   alone, Q alone and v = NULL too.  ne = 1, 2, 5, 16 (sys_factor up to
+   ~400), random lengths in [0.3, 1.3]; the load of mat_std is included. */
+static void test_chain_routes(void **state)
+{
+    static const int nes[] = {1, 2, 5, NE_MAX};
+    static const unsigned dmodes[] = {0u, VLBE_ALE_NO_DAMP};
+    const vlbe_ale_mat m = mat_std();
+    const double tol = 64.0 * EPS;
+    static vlbe_real work[158 * NE_MAX + 40];
+    static vlbe_real Kd[N_MAX * N_MAX], Dd[N_MAX * N_MAX], Kg[N_MAX * N_MAX], Dg[N_MAX * N_MAX];
+    vlbe_ale_elem el;
+    tu_rng g = tu_rng_seed(703);
+    double we = 0.0, ws = 0.0;
+    int ie, id, e;
+    (void)state;
+    elem_make(&el, &m);
+    for (ie = 0; ie < ARRAY_LEN(nes); ++ie)
+        for (id = 0; id < ARRAY_LEN(dmodes); ++id) {
+            const int ne = nes[ie], n = 4 * (ne + 1);
+            vlbe_real L[NE_MAX], x[N_MAX], v[N_MAX], Q[N_MAX], Qe[N_MAX], Qg[N_MAX];
+            vlbe_real K[N_MAX * BW], D[N_MAX * BW], Ke[N_MAX * BW], De[N_MAX * BW];
+            vlbe_real Q2[N_MAX], K2[N_MAX * BW], D2[N_MAX * BW];
+            vlbe_ale_inv_sys sys;
+            const unsigned md = dmodes[id];
+            double ts, sf;
+            for (e = 0; e < ne; ++e) L[e] = (vlbe_real)(0.3 + 0.5 * (1.0 + tu_rng_uniform(&g)));
+            make_chain(&g, ne, L, x, v);
+            sf = sys_factor(ne, L, x);
+            ts = tol * sf;
+            /* element invariants assembled = Gauss elements assembled */
+            assert_int_equal(
+                vlbe_ale_inv_chain_force(&el, md | VLBE_ALE_INV_AXIAL, ne, L, x, v, Qe, Ke, De),
+                VLBE_OK);
+            assemble_gauss(&el, md, ne, L, x, v, Qg, Kg, Dg);
+            band_to_dense(n, Ke, Kd);
+            band_to_dense(n, De, Dd);
+            we = fmax(we, fmax(rel_diff(n, Qe, Qg), fmax(rel_diff(n * n, Kd, Kg), rel_diff(n * n, Dd, Dg))));
+            ASSERT_VEC_CLOSE(Qe, Qg, n, 0, tol * max_abs(n, Qg));
+            ASSERT_VEC_CLOSE(Kd, Kg, n * n, 0, tol * max_abs(n * n, Kg));
+            ASSERT_VEC_CLOSE(Dd, Dg, n * n, 0, tol * max_abs(n * n, Dg));
+            /* system = element invariants */
+            assert_true(vlbe_ale_inv_sys_work_len(ne) <= (size_t)ARRAY_LEN(work));
+            assert_int_equal(vlbe_ale_inv_sys_init(&sys, &el, md, ne, L, work,
+                                                   vlbe_ale_inv_sys_work_len(ne)),
+                             VLBE_OK);
+            assert_int_equal(vlbe_ale_inv_sys_force(&sys, x, v, Q, K, D), VLBE_OK);
+            ws = fmax(ws, fmax(rel_diff(n, Q, Qe), fmax(rel_diff(n * BW, K, Ke), rel_diff(n * BW, D, De))) / sf);
+            ASSERT_VEC_CLOSE(Q, Qe, n, 0, ts * max_abs(n, Qe));
+            ASSERT_VEC_CLOSE(K, Ke, n * BW, 0, ts * max_abs(n * BW, Ke));
+            ASSERT_VEC_CLOSE(D, De, n * BW, 0, ts * max_abs(n * BW, De));
+            if (md & VLBE_ALE_NO_DAMP) assert_all_equal(n * BW, D, VLBE_R(0.0));
+            /* K alone, D alone: the same numbers, bit for bit */
+            assert_int_equal(vlbe_ale_inv_sys_force(&sys, x, v, Q2, K2, NULL), VLBE_OK);
+            assert_memory_equal(Q2, Q, (size_t)n * sizeof Q[0]);
+            assert_memory_equal(K2, K, (size_t)n * BW * sizeof K[0]);
+            assert_int_equal(vlbe_ale_inv_sys_force(&sys, x, v, Q2, NULL, D2), VLBE_OK);
+            assert_memory_equal(D2, D, (size_t)n * BW * sizeof D[0]);
+            /* Q alone (its own contraction order): rounding */
+            assert_int_equal(vlbe_ale_inv_sys_force(&sys, x, v, Q2, NULL, NULL), VLBE_OK);
+            ASSERT_VEC_CLOSE(Q2, Q, n, 0, ts * max_abs(n, Q));
+            /* v = NULL: the undamped force, D still c dQ/dv */
+            assert_int_equal(vlbe_ale_inv_sys_force(&sys, x, NULL, Q2, K2, D2), VLBE_OK);
+            assert_int_equal(vlbe_ale_inv_chain_force(&el, md | VLBE_ALE_INV_AXIAL, ne, L, x, NULL,
+                                                      Qe, Ke, De),
+                             VLBE_OK);
+            ASSERT_VEC_CLOSE(Q2, Qe, n, 0, ts * max_abs(n, Qe));
+            ASSERT_VEC_CLOSE(K2, Ke, n * BW, 0, ts * max_abs(n * BW, Ke));
+            ASSERT_VEC_CLOSE(D2, De, n * BW, 0, ts * max_abs(n * BW, De));
+        }
+    tu_report("chain: elem inv vs Gauss, in EPS of max entry", we / EPS, 64.0);
+    tu_report("chain: sys vs elem inv, in EPS sys_factor of max", ws / EPS, 64.0);
+}
+
+/* Straight unstretched chain (r' = t unit everywhere: eps = 0), rotated and
+   translated, moving rigidly (v = omega x r, slopes omega x t: eps' = 0):
+   no force from any route.  As in test_ancf_ale.c: tolerance 64 EPS (1 +
+   |r|/L) EA per entry (eps from nodal values of size |r| over L). */
+static void test_rigid_motion(void **state)
+{
+    static const double angles[] = {0.0, 0.7, -2.3, 9.1};
+    vlbe_ale_mat m = mat_std();
+    static vlbe_real work[158 * 8 + 40];
+    vlbe_ale_elem el;
+    double w = 0.0;
+    int ia, e, i;
+    (void)state;
+    m.f[0] = m.f[1] = VLBE_R(0.0);
+    elem_make(&el, &m);
+    for (ia = 0; ia < ARRAY_LEN(angles); ++ia) {
+        const int ne = 8, n = 4 * (ne + 1);
+        const double c = cos(angles[ia]), sn = sin(angles[ia]), om = 0.7;
+        vlbe_real L[8], x[36], v[36], Q[36], Qe[36], Qi[10];
+        vlbe_ale_inv_sys sys;
+        double s = 0.0, rmax = 0.0, tol;
+        for (e = 0; e < ne; ++e) L[e] = (vlbe_real)(0.2 + 0.1 * e);
+        for (e = 0; e <= ne; ++e) {
+            const double px = 3.0 + s * c, py = -2.0 + s * sn;
+            x[4 * e + 0] = (vlbe_real)px;
+            x[4 * e + 1] = (vlbe_real)py;
+            x[4 * e + 2] = (vlbe_real)c;
+            x[4 * e + 3] = (vlbe_real)sn;
+            v[4 * e + 0] = (vlbe_real)(0.4 - om * py);
+            v[4 * e + 1] = (vlbe_real)(-0.1 + om * px);
+            v[4 * e + 2] = (vlbe_real)(-om * sn);
+            v[4 * e + 3] = (vlbe_real)(om * c);
+            rmax = fmax(rmax, fmax(fabs(px), fabs(py)));
+            if (e < ne) s += (double)L[e];
+        }
+        tol = 64.0 * EPS * (1.0 + rmax / 0.2) * (double)m.EA;
+        assert_int_equal(vlbe_ale_inv_sys_init(&sys, &el, 0u, ne, L, work, ARRAY_LEN(work)), VLBE_OK);
+        assert_int_equal(vlbe_ale_inv_sys_force(&sys, x, v, Q, NULL, NULL), VLBE_OK);
+        assert_int_equal(vlbe_ale_inv_chain_force(&el, VLBE_ALE_INV_AXIAL, ne, L, x, v, Qe, NULL, NULL),
+                         VLBE_OK);
+        for (i = 0; i < n; ++i) {
+            w = fmax(w, fmax(fabs((double)Q[i]), fabs((double)Qe[i])) /
+                            (EPS * (1.0 + rmax / 0.2) * (double)m.EA));
+            ASSERT_CLOSE_CTX(Q[i], 0.0, 0, tol, "sys, angle %g, entry %d", angles[ia], i);
+            ASSERT_CLOSE_CTX(Qe[i], 0.0, 0, tol, "elem, angle %g, entry %d", angles[ia], i);
+        }
+        { /* one element, with bending (straight: kap = 0 too) */
+            vlbe_real q[10], qd[10];
+            for (i = 0; i < 4; ++i) {
+                q[i] = x[i];
+                q[5 + i] = x[4 + i];
+                qd[i] = v[i];
+                qd[5 + i] = v[4 + i];
+            }
+            q[4] = VLBE_R(0.0);
+            q[9] = L[0];
+            qd[4] = qd[9] = VLBE_R(0.0);
+            assert_int_equal(vlbe_ale_inv_force(&el, 0u, q, qd, Qi, NULL, NULL), VLBE_OK);
+            for (i = 0; i < 10; ++i) ASSERT_CLOSE_CTX(Qi[i], 0.0, 0, tol, "element entry %d", i);
+        }
+    }
+    tu_report("rigid motion |Q| in EPS (1 + |r|/L) EA", w, 64.0);
+}
+
+/* Bad input: the status, and nothing written (outputs, system, work). */
+static void test_errors(void **state)
+{
+    const vlbe_ale_mat m = mat_std();
+    static vlbe_real work[158 * 3 + 40], wcopy[158 * 3 + 40];
+    vlbe_ale_elem el;
+    vlbe_ale_inv_sys sys, sys0;
+    tu_rng g = tu_rng_seed(704);
+    vlbe_real q[10], qd[10], Q[10], K[100], D[100];
+    vlbe_real L[3] = {VLBE_R(0.5), VLBE_R(0.7), VLBE_R(0.6)}, x[16], v[16], Qc[16], Kc[16 * BW], Dc[16 * BW];
+    const vlbe_real bad[3] = {(vlbe_real)NAN, (vlbe_real)INFINITY, (vlbe_real)-INFINITY};
+    int i, b;
+    (void)state;
+    elem_make(&el, &m);
+    make_state(&g, 1.0, 0.1, q, qd);
+    make_chain(&g, 3, L, x, v);
+    /* element: L <= 0, non-finite q, qd */
+    fill(10, SENTINEL, Q);
+    fill(100, SENTINEL, K);
+    fill(100, SENTINEL, D);
+    {
+        vlbe_real qb[10];
+        memcpy(qb, q, sizeof q);
+        qb[9] = qb[4];
+        assert_int_equal(vlbe_ale_inv_force(&el, 0u, qb, qd, Q, K, D), VLBE_ELENGTH);
+        qb[9] = qb[4] - VLBE_R(0.5);
+        assert_int_equal(vlbe_ale_inv_force(&el, 0u, qb, qd, Q, NULL, NULL), VLBE_ELENGTH);
+        for (b = 0; b < 3; ++b)
+            for (i = 0; i < 10; ++i) {
+                vlbe_real qdb[10];
+                memcpy(qb, q, sizeof q);
+                memcpy(qdb, qd, sizeof qd);
+                qb[i] = bad[b];
+                assert_int_equal(vlbe_ale_inv_force(&el, 0u, qb, qd, Q, K, D), VLBE_ENONFINITE);
+                qdb[i] = bad[b];
+                assert_int_equal(vlbe_ale_inv_force(&el, 0u, q, qdb, Q, K, D), VLBE_ENONFINITE);
+            }
+    }
+    assert_all_equal(10, Q, SENTINEL);
+    assert_all_equal(100, K, SENTINEL);
+    assert_all_equal(100, D, SENTINEL);
+    /* chain, element route */
+    fill(16, SENTINEL, Qc);
+    fill(16 * BW, SENTINEL, Kc);
+    fill(16 * BW, SENTINEL, Dc);
+    for (b = 0; b < 3; ++b) {
+        vlbe_real Lb[3], xb[16];
+        memcpy(Lb, L, sizeof L);
+        Lb[1] = bad[b];
+        assert_int_equal(vlbe_ale_inv_chain_force(&el, 0u, 3, Lb, x, v, Qc, Kc, Dc), VLBE_ENONFINITE);
+        memcpy(xb, x, sizeof x);
+        xb[7] = bad[b];
+        assert_int_equal(vlbe_ale_inv_chain_force(&el, 0u, 3, L, xb, v, Qc, Kc, Dc), VLBE_ENONFINITE);
+        assert_int_equal(vlbe_ale_inv_chain_force(&el, 0u, 3, L, x, xb, Qc, Kc, Dc), VLBE_ENONFINITE);
+    }
+    {
+        vlbe_real Lb[3] = {VLBE_R(0.5), VLBE_R(0.0), VLBE_R(0.6)};
+        assert_int_equal(vlbe_ale_inv_chain_force(&el, 0u, 3, Lb, x, v, Qc, Kc, Dc), VLBE_ELENGTH);
+        Lb[1] = VLBE_R(-0.3);
+        assert_int_equal(vlbe_ale_inv_chain_force(&el, 0u, 3, Lb, x, v, Qc, Kc, Dc), VLBE_ELENGTH);
+    }
+    /* system: work_len, init and force */
+    assert_true(vlbe_ale_inv_sys_work_len(0) == 0);
+    assert_true(vlbe_ale_inv_sys_work_len(-2) == 0);
+    assert_true(vlbe_ale_inv_sys_work_len(3) == 158 * 3 + 40);
+    fill(ARRAY_LEN(work), SENTINEL, work);
+    memcpy(wcopy, work, sizeof work);
+    memset(&sys, 0x5a, sizeof sys);
+    sys0 = sys;
+    assert_int_equal(vlbe_ale_inv_sys_init(&sys, &el, 0u, 0, L, work, ARRAY_LEN(work)), VLBE_EARG);
+    assert_int_equal(vlbe_ale_inv_sys_init(&sys, &el, 0u, 3, L, work, vlbe_ale_inv_sys_work_len(3) - 1),
+                     VLBE_EWORK);
+    for (b = 0; b < 3; ++b) {
+        vlbe_real Lb[3];
+        memcpy(Lb, L, sizeof L);
+        Lb[2] = bad[b];
+        assert_int_equal(vlbe_ale_inv_sys_init(&sys, &el, 0u, 3, Lb, work, ARRAY_LEN(work)),
+                         VLBE_ENONFINITE);
+    }
+    {
+        vlbe_real Lb[3] = {VLBE_R(0.5), VLBE_R(0.7), VLBE_R(0.0)};
+        assert_int_equal(vlbe_ale_inv_sys_init(&sys, &el, 0u, 3, Lb, work, ARRAY_LEN(work)), VLBE_ELENGTH);
+    }
+    assert_memory_equal(&sys, &sys0, sizeof sys);
+    assert_memory_equal(work, wcopy, sizeof work);
+    assert_int_equal(vlbe_ale_inv_sys_init(&sys, &el, 0u, 3, L, work, ARRAY_LEN(work)), VLBE_OK);
+    for (b = 0; b < 3; ++b) {
+        vlbe_real xb[16];
+        memcpy(xb, x, sizeof x);
+        xb[12] = bad[b];
+        assert_int_equal(vlbe_ale_inv_sys_force(&sys, xb, v, Qc, Kc, Dc), VLBE_ENONFINITE);
+        assert_int_equal(vlbe_ale_inv_sys_force(&sys, x, xb, Qc, Kc, Dc), VLBE_ENONFINITE);
+    }
+    assert_all_equal(16, Qc, SENTINEL);
+    assert_all_equal(16 * BW, Kc, SENTINEL);
+    assert_all_equal(16 * BW, Dc, SENTINEL);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_tables_exact),  cmocka_unit_test(test_inv_equals_gauss),
+        cmocka_unit_test(test_inv_jacobians), cmocka_unit_test(test_chain_routes),
+        cmocka_unit_test(test_rigid_motion),  cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests_name("ale_inv", tests, NULL, NULL);
+}
