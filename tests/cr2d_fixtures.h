@@ -176,25 +176,15 @@ static inline void cr_congr(const double *T, const double *A, double *G)
         }
 }
 
-/* L = T A T^T: a global matrix seen in the frame */
+/* L = T A T^T: a global matrix seen in the frame (T^T A T with T^T) */
 static inline void cr_to_frame(const double *T, const double *A, double *Lm)
 {
-    double B[36];
-    int i, j, k;
+    double Tt[36];
+    int i, j;
     for (i = 0; i < 6; ++i)
-        for (j = 0; j < 6; ++j) {
-            double s = 0.0;
-            for (k = 0; k < 6; ++k) s += A[i * 6 + k] * T[j * 6 + k];
-            B[i * 6 + j] = s;
-        }
-    for (i = 0; i < 6; ++i)
-        for (j = 0; j < 6; ++j) {
-            double s = 0.0;
-            for (k = 0; k < 6; ++k) s += T[i * 6 + k] * B[k * 6 + j];
-            Lm[i * 6 + j] = s;
-        }
+        for (j = 0; j < 6; ++j) Tt[i * 6 + j] = T[j * 6 + i];
+    cr_congr(Tt, A, Lm);
 }
-
 /* -- textbook matrices of the planar frame element (u1 v1 phi1 u2 v2 phi2) -- */
 /* Przemieniecki, Theory of Matrix Structural Analysis (1968), or any FE text:
    the consistent mass (rhoA L/420 with the axial part rhoA L/6 [2 1; 1 2]),

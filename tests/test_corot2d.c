@@ -1663,6 +1663,17 @@ static void test_errors_eval(void **state)
     }
 }
 
+/* the material's fields in the order EA, EI, rhoA, rhoI, ray_a, ray_b */
+static void mat_fields(vlbe_cr2d_mat *m, vlbe_real **field)
+{
+    field[0] = &m->EA;
+    field[1] = &m->EI;
+    field[2] = &m->rhoA;
+    field[3] = &m->rhoI;
+    field[4] = &m->ray_a;
+    field[5] = &m->ray_b;
+}
+
 /* vlbe_cr2d_elem_init: X1 = X2 -> VLBE_ELENGTH; negative EA, EI, rhoI,
    ray_a, ray_b or rhoA <= 0 (also -0) -> VLBE_EARG; NaN or +-Inf in any
    material field or node coordinate -> VLBE_ENONFINITE.  The element is
@@ -1694,14 +1705,11 @@ static void test_errors_init(void **state)
     EXPECT_INIT(m, X1, X2, VLBE_EARG);
     m.rhoA = VLBE_R(-1.0);
     EXPECT_INIT(m, X1, X2, VLBE_EARG);
-    for (f = 0; f < 5; ++f) {
-        vlbe_real *field[5];
+    for (f = 0; f < 6; ++f) {
+        vlbe_real *field[6];
+        if (f == 2) continue; /* rhoA: tested above (must be > 0) */
         m = good;
-        field[0] = &m.EA;
-        field[1] = &m.EI;
-        field[2] = &m.rhoI;
-        field[3] = &m.ray_a;
-        field[4] = &m.ray_b;
+        mat_fields(&m, field);
         *field[f] = VLBE_R(-0.5);
         EXPECT_INIT(m, X1, X2, VLBE_EARG);
         *field[f] = -VLBE_EPS; /* just below zero */
@@ -1711,12 +1719,7 @@ static void test_errors_init(void **state)
         for (b = 0; b < 3; ++b) {
             vlbe_real *field[6];
             m = good;
-            field[0] = &m.EA;
-            field[1] = &m.EI;
-            field[2] = &m.rhoA;
-            field[3] = &m.rhoI;
-            field[4] = &m.ray_a;
-            field[5] = &m.ray_b;
+            mat_fields(&m, field);
             *field[f] = nonfinite[b];
             EXPECT_INIT(m, X1, X2, VLBE_ENONFINITE);
         }

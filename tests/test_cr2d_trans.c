@@ -21,6 +21,7 @@
    central difference with step EPS^(1/3). */
 #include "test_util.h"
 #include "../corot2d.h"
+#include "cr2d_fixtures.h"
 
 #include <string.h>
 
@@ -28,20 +29,6 @@
 #define FD_STEP (cbrt(EPS))
 #define FD_ERR (EPS / FD_STEP)
 
-static const double PI = 3.14159265358979323846;
-
-/* O(1) material: every term comparable (as cr_mat_unit of the other suite) */
-static vlbe_cr2d_mat tmat(void)
-{
-    vlbe_cr2d_mat m;
-    m.EA = VLBE_R(40.0);
-    m.EI = VLBE_R(1.5);
-    m.rhoA = VLBE_R(1.3);
-    m.rhoI = VLBE_R(0.15);
-    m.ray_a = VLBE_R(0.3);
-    m.ray_b = VLBE_R(0.02);
-    return m;
-}
 
 /* A joint with axis at angle ax through C, and an element of length L
    along it with node 1 at distance d1 inside (negative: outside); the
@@ -80,7 +67,7 @@ static void tcase_make(tcase *c, const vlbe_cr2d_mat *m, double ax, double L, do
     c->q[2] = (vlbe_real)(0.1 * defo * tu_rng_uniform(g));
     c->q[3] = (vlbe_real)(x2 - (double)X2[0]);
     c->q[4] = (vlbe_real)(y2 - (double)X2[1]);
-    c->q[5] = (vlbe_real)(0.4 * defo * tu_rng_uniform(g) + 2.0 * PI * 3.0);
+    c->q[5] = (vlbe_real)(0.4 * defo * tu_rng_uniform(g) + 2.0 * CR_PI * 3.0);
     for (i = 0; i < 6; ++i) c->qd[i] = (vlbe_real)tu_rng_uniform(g);
 }
 
@@ -126,7 +113,7 @@ static void tdiff(const tcase *c, unsigned mode, int which, int j, const vlbe_re
    the rounding of Q itself where Q is much larger than the entry. */
 static void test_trans_jacobians(void **state)
 {
-    const vlbe_cr2d_mat m = tmat();
+    const vlbe_cr2d_mat m = cr_mat_unit();
     static const unsigned modes[4] = {0u, VLBE_CR2D_NO_NLI, VLBE_CR2D_NO_DAMP,
                                       VLBE_CR2D_NO_NLI | VLBE_CR2D_NO_DAMP};
     tu_rng g = tu_rng_seed(71);
@@ -138,7 +125,7 @@ static void test_trans_jacobians(void **state)
         const double d1 = s < 6 ? 0.33 * 1.2 * (0.5 + 0.5 * tu_rng_uniform(&g))
                                 : -0.05 * 1.2; /* node 1 just outside (L1 < 0) */
         vlbe_real a[6];
-        tcase_make(&c, &m, 2.0 * PI * tu_rng_uniform(&g), 1.2, d1, &g, 1.0);
+        tcase_make(&c, &m, 2.0 * CR_PI * tu_rng_uniform(&g), 1.2, d1, &g, 1.0);
         for (i = 0; i < 6; ++i) a[i] = (vlbe_real)tu_rng_uniform(&g);
         for (k = 0; k < 4; ++k) {
             vlbe_real Q[6], K[36], D[36], Mq[36];
@@ -196,8 +183,8 @@ static double u_ref(const tcase *c, const vlbe_real *q, double *L1o, double *con
     int it, gq;
     static const double gx[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
     static const double gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-    t3 -= 2.0 * PI * floor(t3 / (2.0 * PI) + 0.5);
-    t2 -= 2.0 * PI * floor(t2 / (2.0 * PI) + 0.5);
+    t3 -= 2.0 * CR_PI * floor(t3 / (2.0 * CR_PI) + 0.5);
+    t2 -= 2.0 * CR_PI * floor(t2 / (2.0 * CR_PI) + 0.5);
     ev = (4.0 * t3 * t3 - 2.0 * t3 * t2 + 4.0 * t2 * t2) / 60.0;
     /* f(L1) = l1/L1 - l2/(L - L1) - ev is decreasing in L1 on (0, L) for l1 > 0 */
     lo = 1e-300;
@@ -232,7 +219,7 @@ static double u_ref(const tcase *c, const vlbe_real *q, double *L1o, double *con
    references are double, the element's U float: 64 EPS still holds. */
 static void test_trans_energy(void **state)
 {
-    const vlbe_cr2d_mat m = tmat();
+    const vlbe_cr2d_mat m = cr_mat_unit();
     tu_rng g = tu_rng_seed(72);
     double wu = 0.0, wg = 0.0;
     int s, j;
@@ -241,7 +228,7 @@ static void test_trans_energy(void **state)
         tcase c;
         vlbe_real E[2], Q[6], zero[6] = {0, 0, 0, 0, 0, 0};
         double Ur, cond;
-        tcase_make(&c, &m, 2.0 * PI * tu_rng_uniform(&g), 1.2, 0.4 * (0.2 + 0.8 * (s + 1) / 6.0),
+        tcase_make(&c, &m, 2.0 * CR_PI * tu_rng_uniform(&g), 1.2, 0.4 * (0.2 + 0.8 * (s + 1) / 6.0),
                    &g, 1.0);
         assert_int_equal(vlbe_cr2d_trans_energy(&c.el, &c.jt, 0, c.q, zero, E), VLBE_OK);
         Ur = u_ref(&c, c.q, NULL, &cond);
@@ -270,7 +257,7 @@ static void test_trans_energy(void **state)
    of L (the element's closed root has no cancellation). */
 static void test_trans_lengths(void **state)
 {
-    const vlbe_cr2d_mat m = tmat();
+    const vlbe_cr2d_mat m = cr_mat_unit();
     tu_rng g = tu_rng_seed(73);
     int s;
     (void)state;
@@ -278,7 +265,7 @@ static void test_trans_lengths(void **state)
         tcase c;
         vlbe_real loc[6] = {0, 0, 0, 0, 0, 0};
         double L1;
-        tcase_make(&c, &m, 2.0 * PI * tu_rng_uniform(&g), 1.2, 0.05 + 0.1 * s, &g, 1.0);
+        tcase_make(&c, &m, 2.0 * CR_PI * tu_rng_uniform(&g), 1.2, 0.05 + 0.1 * s, &g, 1.0);
         assert_int_equal(vlbe_cr2d_trans_local(&c.el, &c.jt, 0, c.q, loc), VLBE_OK);
         u_ref(&c, c.q, &L1, NULL);
         ASSERT_CLOSE(loc[5], L1, 0, 64.0 * EPS * 1.2);
@@ -296,12 +283,12 @@ static void test_trans_lengths(void **state)
    different but exact formulas. */
 static void test_trans_conventional(void **state)
 {
-    const vlbe_cr2d_mat m = tmat();
+    const vlbe_cr2d_mat m = cr_mat_unit();
     tu_rng g = tu_rng_seed(74);
     int s, i, j;
     (void)state;
     for (s = 0; s < 4; ++s) {
-        const double ax = 2.0 * PI * tu_rng_uniform(&g), ca = cos(ax), sa = sin(ax);
+        const double ax = 2.0 * CR_PI * tu_rng_uniform(&g), ca = cos(ax), sa = sin(ax);
         vlbe_cr2d_joint jt;
         vlbe_cr2d_elem el;
         vlbe_real X1[2], X2[2], q[6], qd[6], Qc[6], Qt[6], Kc[36], Kt[36], Dc[36], Dt[36];
@@ -357,7 +344,7 @@ static void test_trans_conventional(void **state)
    sliding through the joint): no elastic force, 16 EPS of EA. */
 static void test_trans_rigid(void **state)
 {
-    vlbe_cr2d_mat m = tmat();
+    vlbe_cr2d_mat m = cr_mat_unit();
     tu_rng g = tu_rng_seed(75);
     int s, i;
     (void)state;
@@ -366,7 +353,7 @@ static void test_trans_rigid(void **state)
         tcase c;
         vlbe_real Q[6], zero[6] = {0, 0, 0, 0, 0, 0};
         const double sl = 0.3 * tu_rng_uniform(&g);
-        tcase_make(&c, &m, 2.0 * PI * tu_rng_uniform(&g), 1.2, 0.5, &g, 0.0);
+        tcase_make(&c, &m, 2.0 * CR_PI * tu_rng_uniform(&g), 1.2, 0.5, &g, 0.0);
         c.q[0] = (vlbe_real)(sl * (double)c.jt.a[0]);
         c.q[1] = (vlbe_real)(sl * (double)c.jt.a[1]);
         c.q[2] = VLBE_R(0.0);
@@ -381,7 +368,7 @@ static void test_trans_rigid(void **state)
 
 static void test_trans_errors(void **state)
 {
-    const vlbe_cr2d_mat m = tmat();
+    const vlbe_cr2d_mat m = cr_mat_unit();
     tu_rng g = tu_rng_seed(76);
     tcase c;
     vlbe_real q[6], Q[6], K[36], D[36], M[36], E[2], loc[6];
