@@ -1915,6 +1915,8 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
 #define VLBE_ALE_CON_EQUAL_LEN 5 /* nodes node..node2 equally spaced in p (eq. 51 of [V]) (node2-node-1) */
 #define VLBE_ALE_CON_SLIDE_C 6   /* sliding node: r'(1) = r'(2) (eq. 40 of [R]) (2) */
 #define VLBE_ALE_CON_SLIDE_D 7   /* sliding node: |r'(1)| = |r'(2)| (eq. 40)    (1) */
+#define VLBE_ALE_CON_SLOPE_ANGLE 8 /* r'_node x (cos a, sin a) = 0, a(t) = v0 + v1 t +
+                                      v2 t^2/2 or the chain's afun (slope `which`) (1) */
 
 typedef struct vlbe_ale_node {
     int pmode;     /* VLBE_ALE_PFIXED / PPRESCRIBED / PFREE                          */
@@ -1949,6 +1951,9 @@ typedef struct vlbe_ale_chain {
     vlbe_real Lmin;      /* element length below which callbacks fail (ELENGTH)   */
     /* optional p(t), p'(t), p''(t) of prescribed nodes; returns 0 on success */
     int (*pfun)(void *user, int node, vlbe_real t, vlbe_real *p3);
+    /* optional a(t), a'(t), a''(t) of VLBE_ALE_CON_SLOPE_ANGLE constraint `con`
+       (its index in con[]), e.g. a hub angle; returns 0 on success */
+    int (*afun)(void *user, int con, vlbe_real t, vlbe_real *a3);
     void *user;
     vlbe_status err;     /* status of the last failed callback (VLBE_OK if none)   */
     int err_elem;        /* element (or node) where it happened                    */
@@ -2013,6 +2018,7 @@ VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem
     ch->g[0] = ch->g[1] = VLBE_R(0.0);
     ch->Lmin = VLBE_R(0.0);
     ch->pfun = NULL;
+    ch->afun = NULL;
     ch->user = NULL;
     ch->err = VLBE_OK;
     ch->err_elem = -1;
@@ -2023,7 +2029,8 @@ static inline int vlbe__ale_con_rows(const vlbe_ale_con *c)
 {
     switch (c->type) {
     case VLBE_ALE_CON_POS: case VLBE_ALE_CON_SLOPE: case VLBE_ALE_CON_SLIDE_C: return 2;
-    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_P: case VLBE_ALE_CON_SLIDE_D: return 1;
+    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_P: case VLBE_ALE_CON_SLIDE_D:
+    case VLBE_ALE_CON_SLOPE_ANGLE: return 1;
     case VLBE_ALE_CON_EQUAL_LEN: return c->node2 - c->node - 1;
     default: return -1;
     }
@@ -2428,6 +2435,30 @@ static inline vlbe_status vlbe__ale_eql_end(const vlbe_ale_chain *ch, int i, vlb
     return vlbe_ale_chain_pnode(ch, i, t, q, NULL, p3);
 }
 
+/* a, a', a'' of the VLBE_ALE_CON_SLOPE_ANGLE constraint k at t, and the
+   slope s = r' it acts on: cs = [cos a, sin a], w = [a', a''], the index of
+   the slope in q. */
+static inline vlbe_status vlbe__ale_angle(const vlbe_ale_chain *ch, int k, vlbe_real t,
+                                          vlbe_real *cs, vlbe_real *w, int *s)
+{
+    const vlbe_ale_con *c = &ch->con[k];
+    vlbe_real a3[3];
+    if (ch->afun) {
+        if (ch->afun(ch->user, k, t, a3)) return VLBE_ECALLBACK;
+        if (!vlbe_all_finite(a3, 3)) return VLBE_ENONFINITE;
+    } else {
+        a3[0] = c->v[0] + (c->v[1] + VLBE_R(0.5) * c->v[2] * t) * t;
+        a3[1] = c->v[1] + c->v[2] * t;
+        a3[2] = c->v[2];
+    }
+    cs[0] = vlbe_cos(a3[0]);
+    cs[1] = vlbe_sin(a3[0]);
+    w[0] = a3[1];
+    w[1] = a3[2];
+    *s = vlbe__ale_sidx(ch, c->node, c->which);
+    return VLBE_OK;
+}
+
 /* Constraint rows: C (may be NULL), Cq rows (n wide, may be NULL), Ct. */
 static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_real t,
                                               const vlbe_real *q, vlbe_real *C, vlbe_real *Cq,
@@ -2466,6 +2497,17 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
                 row[s + 1] = -c->v[0];
             }
             if (Ct) Ct[r] = VLBE_R(0.0);
+        } break;
+        case VLBE_ALE_CON_SLOPE_ANGLE: { /* C = r' x e(a) = x' sin a - y' cos a */
+            vlbe_real cs[2], w[2];
+            int s;
+            if ((st = vlbe__ale_angle(ch, k, t, cs, w, &s)) != VLBE_OK) return st;
+            if (C) C[r] = q[s] * cs[1] - q[s + 1] * cs[0];
+            if (row) {
+                row[s] = cs[1];
+                row[s + 1] = -cs[0];
+            }
+            if (Ct) Ct[r] = w[0] * (q[s] * cs[0] + q[s + 1] * cs[1]);
         } break;
         case VLBE_ALE_CON_P: {
             const int pi = vlbe__ale_pidx(ch, c->node);
@@ -2537,7 +2579,8 @@ VLBE_API int vlbe_ale_chain_constr_jac(void *user, vlbe_real t, const vlbe_real 
 }
 
 /* gamma = -((C_q v)_q v + 2 C_qt v + C_tt): nonzero for prescribed p (p''),
-   equal lengths with prescribed ends, and the |r'(1)| = |r'(2)| constraint. */
+   equal lengths with prescribed ends, the |r'(1)| = |r'(2)| constraint and
+   a turning slope direction. */
 VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real *q,
                                        const vlbe_real *v, vlbe_real *gamma)
 {
@@ -2571,6 +2614,15 @@ VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real 
                 g += (s ? VLBE_R(-1.0) : VLBE_R(1.0)) * (vlbe_v2_dot(ad, ad) - d * d / (na * na)) / na;
             }
             gamma[r] = -g;
+        } else if (c->type == VLBE_ALE_CON_SLOPE_ANGLE) {
+            /* C = s x e(a): C_qt v = a' (s'.e), C_tt = a'' (s.e) - a'^2 (s x e) */
+            vlbe_real cs[2], w[2];
+            int s;
+            const vlbe_status st = vlbe__ale_angle(ch, k, t, cs, w, &s);
+            if (st != VLBE_OK) return vlbe__ale_fail(ch, st, -1);
+            gamma[r] = -(VLBE_R(2.0) * w[0] * (v[s] * cs[0] + v[s + 1] * cs[1]) +
+                         w[1] * (q[s] * cs[0] + q[s + 1] * cs[1]) -
+                         w[0] * w[0] * (q[s] * cs[1] - q[s + 1] * cs[0]));
         }
         r += rows;
     }

@@ -229,6 +229,19 @@ static int pfun_sine(void *user, int node, vlbe_real t, vlbe_real *p3)
     return 0;
 }
 
+/* a(t) of the turning-slope constraint of the assembly chain in its pfun
+   variant: a hub-like angle with a sine wobble */
+static int afun_wobble(void *user, int con, vlbe_real t, vlbe_real *a3)
+{
+    const double tt = (double)t;
+    (void)user;
+    (void)con;
+    a3[0] = (vlbe_real)(0.4 + 1.3 * tt + 0.2 * sin(2.0 * tt));
+    a3[1] = (vlbe_real)(1.3 + 0.4 * cos(2.0 * tt));
+    a3[2] = (vlbe_real)(-0.8 * sin(2.0 * tt));
+    return 0;
+}
+
 /* ======================================================================= */
 /* 1. assembly by central differences                                        */
 /* ======================================================================= */
@@ -240,7 +253,8 @@ static int pfun_sine(void *user, int node, vlbe_real t, vlbe_real *p3)
                                       SLIDE_C, SLIDE_D, EQUAL_LEN 0..2 end
      3 prescribed: p = 0.8 + 0.3 t - 0.35 t^2 (or pfun: sine)  EQUAL_LEN 3..6 start
      4 free                           P (v = 1.0, 0.2, -0.5), EQUAL_LEN interior
-     5 free                           EQUAL_LEN interior
+     5 free                           EQUAL_LEN interior, SLOPE_ANGLE
+                                      (a = 0.3 + 0.7 t - 0.45 t^2, or afun)
      6 fixed p (1.5), point mass 0.25 SLOPE_DIR, EQUAL_LEN 3..6 end
    Material with damping and a distributed load, gravity g on the masses.
    Every constraint type appears; the state need not satisfy them. */
@@ -267,6 +281,7 @@ static void assembly_chain(chn *c, unsigned mode, int use_pfun, double *pfun_p0)
     if (use_pfun) {
         *pfun_p0 = 0.82;
         c->ch.pfun = pfun_sine;
+        c->ch.afun = afun_wobble;
         c->ch.user = pfun_p0;
     }
     chn_add(c, con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0.1, -0.2, 0));
@@ -278,6 +293,7 @@ static void assembly_chain(chn *c, unsigned mode, int use_pfun, double *pfun_p0)
     chn_add(c, con_make(VLBE_ALE_CON_EQUAL_LEN, 0, 2, 0, 0, 0, 0));
     chn_add(c, con_make(VLBE_ALE_CON_SLIDE_C, 2, 0, 0, 0, 0, 0));
     chn_add(c, con_make(VLBE_ALE_CON_SLIDE_D, 2, 0, 0, 0, 0, 0));
+    chn_add(c, con_make(VLBE_ALE_CON_SLOPE_ANGLE, 5, 0, 0, 0.3, 0.7, -0.9));
     chn_wire(c);
 }
 
@@ -457,9 +473,9 @@ static void test_assembly_fd(void **state)
         assembly_chain(&c, mode, use_pfun, &pf0);
         n = c.ch.n;
         m = c.ch.m;
-        /* 34 coordinates, 13 equations: (4 + 5 + 7 + 4 + 5 + 5 + 4), (2+2+1+1+1+2+1+2+1) */
+        /* 34 coordinates, 14 equations: (4 + 5 + 7 + 4 + 5 + 5 + 4), (2+2+1+1+1+2+1+2+1+1) */
         assert_int_equal(n, 34);
-        assert_int_equal(m, 13);
+        assert_int_equal(m, 14);
         random_state(&c, &g, 0.7 + 0.4 * variant, q, v);
         for (i = 0; i < n; ++i) a[i] = (vlbe_real)(2.0 * tu_rng_uniform(&g));
         for (i = 0; i < m; ++i) lam[i] = (vlbe_real)tu_rng_uniform(&g);
@@ -1105,6 +1121,19 @@ static int pfun_bad(void *user, int node, vlbe_real t, vlbe_real *p3)
     return 0;
 }
 
+/* a(t) of a turning slope that fails (kind 1) or returns NaN (kind 2) */
+static int afun_bad(void *user, int con, vlbe_real t, vlbe_real *a3)
+{
+    const int kind = *(const int *)user;
+    (void)con;
+    a3[0] = t;
+    a3[1] = VLBE_R(1.0);
+    a3[2] = VLBE_R(0.0);
+    if (kind == 1) return 1;
+    if (kind == 2) a3[1] = (vlbe_real)NAN;
+    return 0;
+}
+
 /* Every callback of the chain at (t, q, v) must fail with status st at
    element (or node) `where`; ch.err is reset before each call. */
 static void expect_fail(chn *c, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
@@ -1307,6 +1336,32 @@ static void test_bad_inputs(void **state)
     expect_fail(&c, 0, q, v, VLBE_ECALLBACK, 2);
     kind = 2;
     expect_fail(&c, 0, q, v, VLBE_ENONFINITE, 2);
+
+    /* -- a failing or NaN angle function of a turning slope (node 0): the
+       constraint callbacks report it (err_elem -1: not an element) */
+    c.ch.pfun = NULL;
+    c.ch.afun = afun_bad;
+    {
+        const vlbe_ale_con ka = con_make(VLBE_ALE_CON_SLOPE_ANGLE, 0, 0, 0, 0, 0, 0);
+        vlbe_real C[M_MAX], Ct[M_MAX], gam[M_MAX];
+        static vlbe_real Cq[M_MAX * N_MAX];
+        assert_int_equal(vlbe_ale_chain_add(&c.ch, &ka), VLBE_OK);
+        assert_int_equal(vlbe_ale_chain_layout(&c.ch), VLBE_OK);
+        for (kind = 1; kind <= 2; ++kind) {
+            const vlbe_status st = kind == 1 ? VLBE_ECALLBACK : VLBE_ENONFINITE;
+            c.ch.err = VLBE_OK;
+            assert_int_not_equal(vlbe_ale_chain_constr(&c.ch, 0, q, C), 0);
+            assert_int_equal(c.ch.err, st);
+            c.ch.err = VLBE_OK;
+            assert_int_not_equal(vlbe_ale_chain_constr_jac(&c.ch, 0, q, Cq, Ct), 0);
+            assert_int_equal(c.ch.err, st);
+            c.ch.err = VLBE_OK;
+            assert_int_not_equal(vlbe_ale_chain_constr_acc(&c.ch, 0, q, v, gam), 0);
+            assert_int_equal(c.ch.err, st);
+        }
+        kind = 0;
+        assert_int_equal(vlbe_ale_chain_constr(&c.ch, 0, q, C), 0);
+    }
 }
 
 /* ======================================================================= */
