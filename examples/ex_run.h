@@ -24,11 +24,15 @@ typedef vlbe_status (*ex_observer)(void *ctx, double t, const vlbe_real *q, cons
                                    const vlbe_real *lambda);
 
 /* The integrator: hht != NULL: that generalized-alpha scheme with the fixed
-   step h (t_end - t0 rounded to a whole number of steps); else BDF with bdf. */
+   step h (t_end - t0 rounded to a whole number of steps); else BDF with bdf,
+   whose steps land exactly on the times marks[0 .. n_marks-1] (increasing;
+   times the observer wants to see, may be NULL). */
 typedef struct ex_method {
     const vlbe_hht_params *hht;
     double h;
     const vlbe_bdf_params *bdf;
+    const double *marks;
+    int n_marks;
     vlbe_real *work; /* optional caller workspace (NULL: malloc'ed per run) */
     size_t work_len; /* at least vlbe_hht/bdf_work_len(n, m)                */
     int *iwork;
@@ -116,6 +120,7 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
     vlbe_bdf bs;
     const vlbe_real *q = NULL, *v = NULL, *lam = NULL;
     vlbe_status rc;
+    int mk = 0; /* next BDF mark */
 
     out->stats = zero_stats;
     out->cpu = 0.0;
@@ -144,7 +149,10 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
             q = bs.q, v = bs.v, lam = bs.lambda;
             if (obs) rc = obs(ctx, 0.0, q, v, lam);
             while (rc == VLBE_OK && (double)bs.t < t_end) {
-                if ((rc = vlbe_bdf_step(&bs, (vlbe_real)t_end)) != VLBE_OK) break;
+                double t_stop = t_end;
+                while (mk < m->n_marks && m->marks[mk] <= (double)bs.t) ++mk;
+                if (mk < m->n_marks && m->marks[mk] < t_end) t_stop = m->marks[mk];
+                if ((rc = vlbe_bdf_step(&bs, (vlbe_real)t_stop)) != VLBE_OK) break;
                 if (obs) rc = obs(ctx, (double)bs.t, q, v, lam);
             }
             out->stats = bs.stats;

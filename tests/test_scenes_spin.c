@@ -51,7 +51,7 @@ static void test_setup(void **state)
     assert_int_equal(g_m.sys.m, 3);
     assert_true(g_m.beam.frame == &g_m.fix[2]);
     assert_true(g_m.el[0].flags == VLBE_CR2D_LINEAR);
-    c.linear = 0;
+    c.model = SP_CR;
     assert_int_equal(sp_init(&g_m, &c), VLBE_OK);
     assert_true(g_m.beam.frame == NULL);
     c.ne = SP_MAXEL + 1;
