@@ -1,11 +1,13 @@
 /* test_scenes_spin.c -- regression tests of the spin-up scene (issue 7,
    scenes 1 and 2; examples/ex_spin.h, examples/spin_up.c): the nonlinear
-   co-rotational beam and the LINEAR element in the floating hub frame.
+   co-rotational beam, the nonlinear ANCF beam and the LINEAR element in
+   the floating hub frame.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 
    Tests (coarse: 4 elements, h = 10 ms or 5 ms; each under 0.3 s at -O2)
-     stability_limit     bound 1 m = L/10: the nonlinear model stays inside
-                         for W = 2, 4, 6, 10 rad/s; the linear one for W = 2
+     stability_limit     bound 1 m = L/10: the nonlinear models (CR, ANCF)
+                         stay inside for W = 2, 4, 6, 10 rad/s; the linear
+                         one for W = 2
                          < omega_1 = 3.80 rad/s, and stops with VLBE_EBOUND
                          (status, finite state, t_stop < t_end) for W = 4,
                          6, 10 > omega_1
@@ -16,7 +18,10 @@
      slow_spin           W = 0.5 rad/s: linear and nonlinear agree (largest
                          transverse tip within 3 W^2/omega_1^2)
      centrifugal_extension  W = 6, 10: the axial tip after the spin-up is the
-                         rod's rhoA W^2 L^3 / (3 EA)
+                         rod's rhoA W^2 L^3 / (3 EA) (CR and ANCF)
+     nonlinear_agreement W = 10: ANCF and CR agree to their O(eps_max) model
+                         gap plus their mesh errors, and the difference
+                         falls with the mesh (8 -> 16 elements)
    Tolerances in each test's comment.  The runs are checked in double only
    (their statuses and margins were measured in double); the float build
    checks the setup. */
@@ -56,12 +61,46 @@ static void test_setup(void **state)
     assert_true(g_m.beam.frame == NULL);
     c.ne = SP_MAXEL + 1;
     assert_int_equal(sp_init(&g_m, &c), VLBE_EARG);
+    /* ANCF: 4 coordinates per node, the clamp's 3 rows (position 2, slope
+       direction 1) following theta(t), constant mass */
+    sp_cfg_default(&c, 4.0, SP_ANCF);
+    assert_int_equal(sp_init(&g_m, &c), VLBE_OK);
+    assert_int_equal(g_m.sys.n, 4 * (c.ne + 1));
+    assert_int_equal(g_m.sys.m, 3);
+    assert_true(g_m.sys.flags == VLBE_DAE_MASS_CONST);
+    assert_true(g_m.ch.con[1].type == VLBE_ALE_CON_SLOPE_ANGLE && g_m.ch.afun == sp_afun);
+    {
+        vlbe_real q[SP_NMAX], v[SP_NMAX], C[3], a3[3];
+        double th[3];
+        int i;
+        sp_rest(&g_m, q, v);
+        assert_int_equal(g_m.sys.constr(g_m.sys.user, VLBE_R(0.0), q, C), 0);
+        for (i = 0; i < 3; ++i) assert_true(C[i] == VLBE_R(0.0)); /* rest is consistent */
+        assert_int_equal(sp_afun(g_m.ch.user, 1, VLBE_R(9.0), a3), 0);
+        sp_theta(&c, 9.0, th);
+        assert_true(a3[0] == (vlbe_real)th[0] && a3[1] == (vlbe_real)th[1]);
+    }
+    /* bad settings: unknown model or route, negative damping, ANCF
+       settings on a co-rotational model, rotary inertia on ANCF */
+    c.inv = SP_INV_SYS + 1;
+    assert_int_equal(sp_init(&g_m, &c), VLBE_EARG);
+    sp_cfg_default(&c, 4.0, SP_ANCF);
+    c.c_kv = -1e-3;
+    assert_int_equal(sp_init(&g_m, &c), VLBE_EARG);
+    sp_cfg_default(&c, 4.0, SP_ANCF);
+    c.rhoI = 1e-3;
+    assert_int_equal(sp_init(&g_m, &c), VLBE_EARG);
+    sp_cfg_default(&c, 4.0, SP_CR);
+    c.c_kv = 1e-3;
+    assert_int_equal(sp_init(&g_m, &c), VLBE_EARG);
+    sp_cfg_default(&c, 4.0, SP_ANCF + 1);
+    assert_int_equal(sp_init(&g_m, &c), VLBE_EARG);
 }
 
 #ifndef VLBE_USE_FLOAT
-static void coarse(sp_cfg *c, double W, int linear)
+static void coarse(sp_cfg *c, double W, int model)
 {
-    sp_cfg_default(c, W, linear);
+    sp_cfg_default(c, W, model);
     c->ne = 4;
     c->h = 1e-2;
 }
@@ -78,13 +117,17 @@ static void test_stability_limit(void **state)
     int i;
     (void)state;
     for (i = 0; i < 4; ++i) {
-        coarse(&c, Ws[i], 0);
-        sp_run(&g_m, &c, NULL, NULL, &o);
-        tu_report("nonlinear max |transverse tip| / bound", o.tip_max[1], 1.0);
-        assert_int_equal(o.status, VLBE_OK);
-        ASSERT_CLOSE(o.t_stop, c.t_end, 1e-12, 0);
-        assert_true(o.tip_max[1] < c.bound && isfinite(o.tip_end[1]));
-        coarse(&c, Ws[i], 1);
+        int nl;
+        for (nl = 0; nl < 2; ++nl) { /* CR, ANCF */
+            coarse(&c, Ws[i], nl ? SP_ANCF : SP_CR);
+            sp_run(&g_m, &c, NULL, NULL, &o);
+            tu_report(nl ? "ANCF max |transverse tip| / bound" : "CR max |transverse tip| / bound",
+                      o.tip_max[1], 1.0);
+            assert_int_equal(o.status, VLBE_OK);
+            ASSERT_CLOSE(o.t_stop, c.t_end, 1e-12, 0);
+            assert_true(o.tip_max[1] < c.bound && isfinite(o.tip_end[1]));
+        }
+        coarse(&c, Ws[i], SP_LINEAR);
         sp_run(&g_m, &c, NULL, NULL, &o);
         if (Ws[i] < sp_omega1(&c)) {
             assert_int_equal(o.status, VLBE_OK);
@@ -114,7 +157,7 @@ static void test_exponential_growth(void **state)
     (void)state;
     for (i = 0; i < 4; ++i) {
         double g[3];
-        coarse(&c, Ws[i], 1);
+        coarse(&c, Ws[i], SP_LINEAR);
         c.bound = c.L;
         sp_run(&g_m, &c, NULL, NULL, &o);
         if (Ws[i] < sp_omega1(&c)) {
@@ -144,7 +187,7 @@ static void test_slow_spin(void **state)
     int k;
     (void)state;
     for (k = 0; k < 2; ++k) {
-        coarse(&c, 0.5, k);
+        coarse(&c, 0.5, k ? SP_LINEAR : SP_CR);
         sp_run(&g_m, &c, NULL, NULL, &o[k]);
         assert_int_equal(o[k].status, VLBE_OK);
     }
@@ -168,18 +211,59 @@ static void test_centrifugal_extension(void **state)
     static const double Ws[2] = {6.0, 10.0};
     sp_cfg c;
     sp_out o;
-    int i;
+    int i, nl;
     (void)state;
-    for (i = 0; i < 2; ++i) {
-        double u;
-        coarse(&c, Ws[i], 0);
-        c.h = 5e-3;
-        sp_run(&g_m, &c, NULL, NULL, &o);
-        assert_int_equal(o.status, VLBE_OK);
-        u = c.rhoA * Ws[i] * Ws[i] * c.L * c.L * c.L / (3.0 * c.EA);
-        tu_report("axial tip vs rhoA W^2 L^3/(3 EA) (rel.)", fabs(o.tip_end[0] / u - 1.0), 2e-3);
-        ASSERT_CLOSE(o.tip_end[0], u, 2e-3, 0);
+    for (i = 0; i < 2; ++i)
+        for (nl = 0; nl < 2; ++nl) {
+            double u;
+            coarse(&c, Ws[i], nl ? SP_ANCF : SP_CR);
+            c.h = 5e-3;
+            sp_run(&g_m, &c, NULL, NULL, &o);
+            assert_int_equal(o.status, VLBE_OK);
+            u = c.rhoA * Ws[i] * Ws[i] * c.L * c.L * c.L / (3.0 * c.EA);
+            tu_report(nl ? "ANCF axial tip vs rhoA W^2 L^3/(3 EA) (rel.)"
+                         : "CR axial tip vs rhoA W^2 L^3/(3 EA) (rel.)",
+                      fabs(o.tip_end[0] / u - 1.0), 2e-3);
+            ASSERT_CLOSE(o.tip_end[0], u, 2e-3, 0);
+        }
+}
+
+/* ANCF against CR at W = 10 (the most nonlinear case), h = 5 ms, 8 and 16
+   elements: d = max over the 0.5 s samples of |transverse ANCF - CR| /
+   max |transverse CR|.  The two are different continua at the level of
+   the axial strain eps_max = rhoA W^2 L^2 / (2 EA) = 2.1e-4 (ANCF: Green
+   strain, curvature per deformed length; CR: engineering strain, rotation
+   gradient per reference length), and the step error is common to both
+   (d does not change from h = 5 ms to 1.25 ms).  spin_up's convergence
+   table measures the gap at 32 elements, 0.66 eps_max (1.04 eps_max at W
+   = 6), and the mesh errors at 16 elements, 1.0e-4 (CR) and 0.4e-4 (ANCF).
+   Tolerance at 16 elements: twice the gap and twice the mesh errors, 2
+   eps_max + 2.8e-4 = 7.1e-4 (measured 2.8e-4).  Convergence: d falls by
+   more than 2 from 8 to 16 elements (CR's mesh error is of order 2,
+   towards the gap: measured 2.5). */
+static void test_nonlinear_agreement(void **state)
+{
+    static const int nes[2] = {8, 16};
+    static sp_out o[2][2];
+    double d[2], eps, tol;
+    sp_cfg c;
+    int k, nl;
+    (void)state;
+    for (k = 0; k < 2; ++k) {
+        for (nl = 0; nl < 2; ++nl) {
+            sp_cfg_default(&c, 10.0, nl ? SP_ANCF : SP_CR);
+            c.ne = nes[k];
+            sp_run(&g_m, &c, NULL, NULL, &o[k][nl]);
+            assert_int_equal(o[k][nl].status, VLBE_OK);
+        }
+        d[k] = sp_sample_diff(&o[k][1], &o[k][0]) / o[k][0].tip_max[1];
     }
+    eps = c.rhoA * 100.0 * c.L * c.L / (2.0 * c.EA);
+    tol = 2.0 * eps + 2.8e-4;
+    tu_report("ANCF vs CR, 16 elements: max |d tr| / max |tr|", d[1], tol);
+    tu_report("ANCF vs CR: d(16) / d(8), at most 1/2", d[1] / d[0], 0.5);
+    assert_true(d[1] <= tol);
+    assert_true(d[0] > 2.0 * d[1]);
 }
 #endif
 
@@ -192,6 +276,7 @@ int main(void)
         cmocka_unit_test(test_exponential_growth),
         cmocka_unit_test(test_slow_spin),
         cmocka_unit_test(test_centrifugal_extension),
+        cmocka_unit_test(test_nonlinear_agreement),
 #endif
     };
     return cmocka_run_group_tests_name("scenes_spin", tests, NULL, NULL);
