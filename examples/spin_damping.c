@@ -55,7 +55,7 @@
    "Steady" is the mean over [Ts, t_end] (the residual vibration that the
    spin-up leaves, about 1e-3 m, averages out); the tip at t = 20 s and
    the residual amplitude (half the peak-to-peak over the window) are
-   printed too.
+   printed too, and the abs. M steady tip's convergence in mesh and step.
    Output: <outdir>/spin_damping_w<W>.csv (t, axial and transverse tip of
    each model, nan after a stop) and <outdir>/spin_damping_w<W>.svg
    (transverse tip, all models, and the abs. M reference). */
@@ -448,6 +448,33 @@ int main(int argc, char **argv)
             &out[SD_UNDAMPED]);
         row(W, "abs. K0: tip leaves the bound (2 m) at t [s]", NAN, out[SD_ABS_K].t_stop,
             &out[SD_ABS_K]);
+    }
+
+    /* the abs. M steady tip in mesh and step (the error budget of
+       tests/test_spin_damping.c) */
+    printf("\nconvergence (abs. M): steady transverse and axial tip against the elastica\n");
+    printf("  %4s %4s %8s  %-13s %-10s  %-13s %-10s  %7s\n", "W", "ne", "h [s]", "steady tr.",
+           "rel. err", "steady ax.", "rel. err", "cpu [s]");
+    for (iw = 1; iw < 3; ++iw) {
+        static const int nes[4] = {4, 8, 16, 8};
+        static const double hs[4] = {5e-3, 5e-3, 5e-3, 2.5e-3};
+        sd_ref rb;
+        double ref[2];
+        sd_cfg(&c, Ws[iw], SD_ABS_M);
+        sd_ref_set(&rb, &c, Ws[iw], c.abs_a);
+        if (sd_ref_tip(&rb, SD_NS_REF, ref)) ok = 0;
+        for (k = 0; k < 4; ++k) {
+            sp_out o;
+            sd_cfg(&c, Ws[iw], SD_ABS_M);
+            c.ne = nes[k];
+            c.h = hs[k];
+            sd_rec_init(&rec[0], 1000000, c.Ts);
+            sp_run(&m, &c, sd_rec_obs, &rec[0], &o);
+            if (o.status != VLBE_OK) ok = 0;
+            printf("  %4g %4d %8g  %+.6e %+.2e  %+.6e %+.2e  %7.3f\n", Ws[iw], c.ne, c.h,
+                   sd_rec_mean(&rec[0]), sd_rec_mean(&rec[0]) / ref[1] - 1.0,
+                   sd_rec_mean_ax(&rec[0]), sd_rec_mean_ax(&rec[0]) / ref[0] - 1.0, o.cpu);
+        }
     }
     return ok ? 0 : 1;
 }

@@ -307,14 +307,14 @@ static void test_reference_closed_forms(void **state)
 /* The scene at W = 6 rad/s (the scene's 5 ms step; abs. M on the scene's
    8 elements, the others on 4).
    abs. M: the mean transverse tip over [Ts, t_end] against the elastica
-   (shooting, 1000 RK4 steps): error budget, measured in spin_damping's
-   runs: mesh 1.2e-4 (8 vs 16 elements), step 3e-5 (5 vs 2.5 ms), the
-   residual vibration's share of the window mean 3.4e-4 (amplitude 1.9e-3
-   m times T/(pi Tw) = 0.09, T = 1.4 s the period of the first in-plane
-   mode at W = 6, omega^2 = omega_1^2 + 0.17 W^2, Tw = 5 s), the
-   element's Green strain / curvature per deformed length against the
-   elastica's laws O(N/EA) = 8e-5: 5.7e-4 together; tolerance rtol 1e-3
-   (measured 2.2e-4).  The linear bound without stiffening is 45 % larger
+   (shooting, 1000 RK4 steps): error budget, from spin_damping's
+   convergence table: mesh 1.2e-4 (8 vs 16 elements), step 3e-5 (5 vs 2.5
+   ms), the residual vibration's share of the window mean 3.4e-4
+   (amplitude 1.9e-3 m times T/(pi Tw) = 0.09, T = 1.4 s the period of the
+   first in-plane mode at W = 6, omega^2 = omega_1^2 + 0.17 W^2, Tw = 5
+   s), the element's Green strain / curvature per deformed length against
+   the elastica's laws O(N/EA) = 8e-5: 5.7e-4 together; tolerance rtol
+   1e-3 (measured 2.2e-4).  The linear bound without stiffening is 45 % larger
    in magnitude: the check sees the centrifugal stiffening.
    Kelvin-Voigt: no steady lag: the tip vibrates about 0 (0 within the
    window's [min, max]); the window mean within 0.1 of the vibration's
