@@ -496,4 +496,29 @@ static inline void sp_run(sp_model *m, const sp_cfg *c, sp_observer obs, void *c
     free(q0);
 }
 
+#define SP_NHIST 4096
+
+/* tip history, every `every`-th observation (an sp_observer: pass
+   sp_hist_obs with an sp_hist zeroed and its `every` set) */
+typedef struct sp_hist {
+    long k, every;
+    int n;
+    double t[SP_NHIST], ax[SP_NHIST], tr[SP_NHIST];
+} sp_hist;
+
+static inline void sp_hist_obs(void *ctx, const sp_model *m, double t, const double *tip,
+                               const vlbe_real *q, const vlbe_real *v)
+{
+    sp_hist *hh = (sp_hist *)ctx;
+    (void)m;
+    (void)q;
+    (void)v;
+    if (hh->k++ % hh->every == 0 && hh->n < SP_NHIST) {
+        hh->t[hh->n] = t;
+        hh->ax[hh->n] = tip[0];
+        hh->tr[hh->n] = tip[1];
+        ++hh->n;
+    }
+}
+
 #endif /* VLBE_EX_SPIN_H */

@@ -73,7 +73,6 @@
 
 #define SD_ZETA 0.02  /* first-mode damping ratio at rest              */
 #define SD_BOUND 2.0  /* |tip| bound in the hub frame [m]              */
-#define SD_NHIST 4096
 #define SD_NS_REF 2000 /* RK4 steps of the reference (shooting)        */
 
 static inline const char *sd_kind_name(int kind)
@@ -99,18 +98,16 @@ static inline void sd_cfg(sp_cfg *c, double W, int kind)
    the window t >= t0 the mean axial tip and the transverse tip's mean,
    least and largest value. */
 typedef struct sd_rec {
-    long k, every;
-    int n;
+    sp_hist h; /* the history */
     double t0;
     long cnt;
     double sum_ax, sum, lo, hi;
-    double t[SD_NHIST], ax[SD_NHIST], tr[SD_NHIST];
 } sd_rec;
 
 static inline void sd_rec_init(sd_rec *r, long every, double t0)
 {
     memset(r, 0, sizeof *r);
-    r->every = every;
+    r->h.every = every;
     r->t0 = t0;
     r->lo = HUGE_VAL;
     r->hi = -HUGE_VAL;
@@ -120,15 +117,7 @@ static inline void sd_rec_obs(void *ctx, const sp_model *m, double t, const doub
                               const vlbe_real *q, const vlbe_real *v)
 {
     sd_rec *r = (sd_rec *)ctx;
-    (void)m;
-    (void)q;
-    (void)v;
-    if (r->k++ % r->every == 0 && r->n < SD_NHIST) {
-        r->t[r->n] = t;
-        r->ax[r->n] = tip[0];
-        r->tr[r->n] = tip[1];
-        ++r->n;
-    }
+    sp_hist_obs(&r->h, m, t, tip, q, v);
     if (t >= r->t0 - 1e-9) {
         ++r->cnt;
         r->sum_ax += tip[0];
@@ -348,12 +337,12 @@ static void write_scene(const char *dir, double W, const sd_rec *rec, const sp_o
     snprintf(path, sizeof path, "%s/spin_damping_w%g.csv", dir, W);
     csv = svgp_csv_open(path, head);
     if (csv) {
-        for (k = 0; k < rec[0].n; ++k) {
+        for (k = 0; k < rec[0].h.n; ++k) {
             double row[1 + 2 * SD_NKIND];
-            row[0] = rec[0].t[k];
+            row[0] = rec[0].h.t[k];
             for (j = 0; j < SD_NKIND; ++j) {
-                row[1 + 2 * j] = k < rec[j].n ? rec[j].ax[k] : (double)NAN;
-                row[2 + 2 * j] = k < rec[j].n ? rec[j].tr[k] : (double)NAN;
+                row[1 + 2 * j] = k < rec[j].h.n ? rec[j].h.ax[k] : (double)NAN;
+                row[2 + 2 * j] = k < rec[j].h.n ? rec[j].h.tr[k] : (double)NAN;
             }
             svgp_csv_row(csv, 1 + 2 * SD_NKIND, row);
         }
@@ -371,7 +360,7 @@ static void write_scene(const char *dir, double W, const sd_rec *rec, const sp_o
                      sd_kind_name(j), SD_BOUND, out[j].t_stop);
         else
             snprintf(names[j], sizeof names[j], "%s", sd_kind_name(j));
-        svgp_series(&ch, names[j], rec[j].n, rec[j].t, rec[j].tr, 0);
+        svgp_series(&ch, names[j], rec[j].h.n, rec[j].h.t, rec[j].h.tr, 0);
     }
     rx[0] = rec[0].t0;
     rx[1] = t_end;

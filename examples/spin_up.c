@@ -26,30 +26,6 @@
 
 #include <stdio.h>
 
-#define SP_NHIST 4096
-
-/* tip history, every `every`-th step */
-typedef struct sp_hist {
-    long k, every;
-    int n;
-    double t[SP_NHIST], ax[SP_NHIST], tr[SP_NHIST];
-} sp_hist;
-
-static inline void sp_hist_obs(void *ctx, const sp_model *m, double t, const double *tip,
-                               const vlbe_real *q, const vlbe_real *v)
-{
-    sp_hist *hh = (sp_hist *)ctx;
-    (void)m;
-    (void)q;
-    (void)v;
-    if (hh->k++ % hh->every == 0 && hh->n < SP_NHIST) {
-        hh->t[hh->n] = t;
-        hh->ax[hh->n] = tip[0];
-        hh->tr[hh->n] = tip[1];
-        ++hh->n;
-    }
-}
-
 /* the models in the order of the runs, tables and CSV columns */
 #define SP_NMODEL 3
 static const int sp_models[SP_NMODEL] = {SP_CR, SP_LINEAR, SP_ANCF};
@@ -161,17 +137,17 @@ int main(int argc, char **argv)
             }
             snprintf(q, sizeof q, "W=%g: CR transverse tip at t=15 s [m]", W);
             svgp_compare_row(stdout, "spin-up", q, NAN, cr->tip_Ts[1], NAN, cr->cpu);
-            snprintf(q, sizeof q, "W=%g: max |transverse tip| [m], ANCF vs CR", W);
+            snprintf(q, sizeof q, "W=%g: max abs. transverse tip [m], ANCF vs CR", W);
             svgp_compare_row(stdout, "spin-up", q, cr->tip_max[1], an->tip_max[1],
                              an->tip_max[1] / cr->tip_max[1] - 1.0, an->cpu);
-            snprintf(q, sizeof q, "W=%g: max_t |tip ANCF - tip CR| / max |tr| (0.5 s samples)", W);
+            snprintf(q, sizeof q, "W=%g: max_t abs(ANCF - CR) / max abs. tr (0.5 s samples)", W);
             svgp_compare_row(stdout, "spin-up", q, NAN, sp_sample_diff(an, cr) / cr->tip_max[1],
                              NAN, an->cpu);
             if (lin->status == VLBE_OK) {
-                snprintf(q, sizeof q, "W=%g: linear (bounded) max |transverse tip| [m]", W);
+                snprintf(q, sizeof q, "W=%g: linear (bounded) max abs. transverse tip [m]", W);
                 svgp_compare_row(stdout, "spin-up", q, NAN, lin->tip_max[1], NAN, lin->cpu);
             } else {
-                snprintf(q, sizeof q, "W=%g: linear diverged: |tip| > %g m at t [s]", W, c.bound);
+                snprintf(q, sizeof q, "W=%g: linear diverged: abs(tip) > %g m at t [s]", W, c.bound);
                 svgp_compare_row(stdout, "spin-up", q, NAN, lin->t_stop, NAN, lin->cpu);
             }
         }
@@ -244,7 +220,7 @@ int main(int argc, char **argv)
             printf("  W = %g: refs max|tr| CR %.6e, ANCF %.6e; ANCF - CR (32 el.): %.3e of max|tr| "
                    "= %.2f eps_max (eps_max = %.2e)\n",
                    Ws[iw], ref[0].tip_max[1], ref[1].tip_max[1], d, d / eps, eps);
-            snprintf(q, sizeof q, "W=%g: max_t |ANCF - CR| / max|tr| at 32 el. (eps_max %.1e)",
+            snprintf(q, sizeof q, "W=%g: max_t abs(ANCF - CR) / max abs. tr at 32 el. (eps_max %.1e)",
                      Ws[iw], eps);
             svgp_compare_row(stdout, "spin-up", q, NAN, d, NAN, ref[1].cpu);
         }
