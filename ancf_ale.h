@@ -1065,19 +1065,24 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
                               Ds + 2 * b * 8 + 2 * a, 8);
         }
         /* damped ALE: the slot rates depend on r through the y_k, du_c/dr_e
-           = sum_k p_k' dp[k][e][c] / L: K_ae += sum_c D_ac du_c/dr_e */
+           = sum_k p_k' dp[k][e][c] / L: K_ae += sum_c D_ac du_c/dr_e.  D is
+           symmetric, so the column (e, j) of the sum is a combination of
+           rows of D (contiguous: T row by row, then added transposed) */
         if (damp && pm) {
-            vlbe_real cp[16];
+            vlbe_real cp[16], T[64];
             for (i = 0; i < 16; ++i)
                 cp[i] = Li * (((pm & 1) ? pd[0] * iv->dp[0][i] : VLBE_R(0.0)) +
                               ((pm & 2) ? pd[1] * iv->dp[1][i] : VLBE_R(0.0)));
-            for (m = 0; m < 8; ++m)
-                for (a = 0; a < 4; ++a)
+            for (i = 0; i < 64; ++i) T[i] = VLBE_R(0.0);
+            for (a = 0; a < 4; ++a)
+                for (b = 1; b < 4; ++b)
                     for (j = 0; j < 2; ++j) {
-                        vlbe_real t = VLBE_R(0.0);
-                        for (b = 1; b < 4; ++b) t += cp[4 * a + b] * Ds[m * 8 + 2 * b + j];
-                        Ks[m * 8 + 2 * a + j] += t;
+                        const vlbe_real cf = cp[4 * a + b], *Db = Ds + (2 * b + j) * 8;
+                        vlbe_real *Ta = T + (2 * a + j) * 8;
+                        for (m = 0; m < 8; ++m) Ta[m] += cf * Db[m];
                     }
+            for (m = 0; m < 8; ++m)
+                for (i = 0; i < 8; ++i) Ks[m * 8 + i] += T[i * 8 + m];
         }
     }
     for (a = 0; a < 4; ++a)
@@ -1094,37 +1099,41 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
         }
     if (!pm) return;
     /* p-rows: eps_pk = r'.dr'/dp_k = sum_b y_k,b . eps_{r_b} (scaled slots),
-       so Q_pk = sum_b y_k,b . Q_b; K, D by the product rule */
+       so Q_pk = sum_b y_k,b . Q_b; K, D by the product rule: the rows y_k^T
+       K + Q . dy_k/dr, y_k^T D; the p'-columns D y_k (= (y_k^T D)^T: D is
+       symmetric), the corner y_l^T D y_k */
     for (k = 0; k < 2; ++k) {
         const int rp = VLBE__ALE_P(k);
         const vlbe_real *yk = y[k];
+        vlbe_real kr[8], dy[8];
         if (!(pm & (1 << k))) continue;
         for (m = 0; m < 8; ++m) Q[rp] += yk[m] * Qs[m];
         if (!jac) continue;
+        for (i = 0; i < 8; ++i) kr[i] = dy[i] = VLBE_R(0.0);
+        for (m = 0; m < 8; ++m) {
+            const vlbe_real ym = yk[m], *Km = Ks + m * 8, *Dm = Ds + m * 8;
+            for (i = 0; i < 8; ++i) {
+                kr[i] += ym * Km[i];
+                dy[i] += ym * Dm[i];
+            }
+        }
         for (b = 0; b < 4; ++b)
             for (j = 0; j < 2; ++j) {
-                vlbe_real kv = VLBE_R(0.0), dv = VLBE_R(0.0);
+                vlbe_real kv = VLBE_R(0.0);
                 for (a = 1; a < 4; ++a) kv += iv->dp[k][4 * b + a] * Qs[2 * a + j];
-                kv *= Li;
-                for (m = 0; m < 8; ++m) {
-                    kv += yk[m] * Ks[m * 8 + 2 * b + j];
-                    dv += yk[m] * Ds[m * 8 + 2 * b + j];
-                }
-                K[rp * 10 + VLBE__ALE_E(b) + j] += sc[b] * kv;
-                if (damp) D[rp * 10 + VLBE__ALE_E(b) + j] += sc[b] * dv;
+                K[rp * 10 + VLBE__ALE_E(b) + j] += sc[b] * (kr[2 * b + j] + Li * kv);
             }
-        if (damp) { /* p'-columns: du/dp_k' = y_k */
-            vlbe_real Dy[8];
-            for (m = 0; m < 8; ++m) {
-                Dy[m] = VLBE_R(0.0);
-                for (i = 0; i < 8; ++i) Dy[m] += Ds[m * 8 + i] * yk[i];
+        if (!damp) continue;
+        for (a = 0; a < 4; ++a)
+            for (i = 0; i < 2; ++i) {
+                const int ra = VLBE__ALE_E(a) + i;
+                const vlbe_real d = sc[a] * dy[2 * a + i];
+                D[rp * 10 + ra] += d;
+                D[ra * 10 + rp] += d;
             }
-            for (a = 0; a < 4; ++a)
-                for (i = 0; i < 2; ++i) D[(VLBE__ALE_E(a) + i) * 10 + rp] += sc[a] * Dy[2 * a + i];
-            for (l = 0; l < 2; ++l)
-                if (pm & (1 << l))
-                    for (m = 0; m < 8; ++m) D[VLBE__ALE_P(l) * 10 + rp] += y[l][m] * Dy[m];
-        }
+        for (l = 0; l < 2; ++l)
+            if (pm & (1 << l))
+                for (m = 0; m < 8; ++m) D[VLBE__ALE_P(l) * 10 + rp] += y[l][m] * dy[m];
     }
     /* degree weights: the quartic part of the force (all but the -1/2 of
        eps) is 4 below the standard row degrees, the quadratic part Q0 (from
