@@ -49,11 +49,13 @@ CONVENTIONS
      VLBE_ALE_CONSERVATIVE   add to the p-rows the flux of strain energy
                         through the element ends (see NOTES): the elastic
                         p-forces become the gradient of the strain energy.
-     VLBE_ALE_INV_AXIAL with both p fixed: the axial force (with its
-                        Kelvin-Voigt part) and the load from the invariant
-                        tables instead of Gauss points (INVARIANTS); the
-                        same numbers to rounding.  Off by default: per
-                        element it is slower for Q alone (see README).
+     VLBE_ALE_INV_AXIAL the axial force (with its Kelvin-Voigt part) from
+                        the invariant tables instead of Gauss points
+                        (INVARIANTS), fixed-length and ALE elements; with
+                        both p fixed the load too.  The same numbers to
+                        rounding.  Off by default: per element it is slower
+                        for Q alone, and for ALE elements not faster with
+                        K and D either (see README, bench_inv_ale.c).
    Gauss orders per term (init; 0 = default): nm for mass, transport inertia
    and loads (default 4, exact: the integrands are polynomials of degree 6
    in xi), nl for the axial force (default 5, exact: degree 8), nt for the
@@ -68,7 +70,8 @@ CONVENTIONS
    -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
    e-columns and the point scratch), the other eval calls at most 3 kB.
    vlbe_ale_elem is about 16 kB: make one per material, not per element.
-   The invariant routes need about 2 kB of stack more than vlbe_ale_force.
+   The invariant routes need about 2.5 kB of stack more than vlbe_ale_force
+   (VLBE_ALE_INV_AXIAL with K, D: about 8.5 kB at -O2).
 
 NOTES (how the Jacobians are formed)
    At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
@@ -110,12 +113,34 @@ INVARIANTS (issue 7: invariant-matrix force evaluation)
    tabulates B, I (35 unique numbers, stored as a 10 x 10 matrix over the
    symmetric slot pairs) and int N at L = 1 (vlbe_ale_inv, el->inv); a
    slope carries one power of L, so one table serves every L: I scales
-   with L^-3, B with L^-1 once the slopes are multiplied by L.  The same
-   gives an ALE element's e-rows and e-columns at its current L (undamped);
-   its p-rows and p-columns are not offered here.  Bending (exact
-   curvature, rational) stays on Gauss points: vlbe_ale_inv_force gives the
-   cable (NO_BEND) force wholly from invariants and the beam's as invariant
-   axial force + Gauss bending.
+   with L^-3, B with L^-1 once the slopes are multiplied by L.  Bending
+   (exact curvature, rational) stays on Gauss points: vlbe_ale_inv_force
+   gives the cable (NO_BEND) force wholly from invariants and the beam's as
+   invariant axial force + Gauss bending.
+   ALE elements (p1 and/or p2 free; vlbe_ale_force with VLBE_ALE_INV_AXIAL)
+   need no further integrals.  At fixed p the partial of a slope function,
+   d s_a'/dp_k = L^(m_a - 2) ((m_a - 1) h_a' - xi h_a'') for p2 (p1: -(m_a
+   - 1) h_a' + (xi - 1) h_a''), is a quadratic in xi, and the slopes h_b'
+   of the cubic basis span the quadratics, so d s_a'/dp_k = L^(m_a - 2)
+   sum_b dp_k[a][b] h_b' with small integer maps dp_k (vlbe_ale_inv.dp).
+   Hence dr'/dp_k is the r' of virtual slot vectors y_k (with the slots
+   scaled, r~_a = L^m_a r_a: y~_k,b = sum_a dp_k[a][b] r~_a / L), and:
+   eps_pk = r' . dr'/dp_k =
+   sum_b y_k,b . eps_{r_b}, so the p-rows are Q_pk = sum_b y_k,b . Q_b; the
+   material rate of r' is that of the slot rates r_b' + p1' y_1,b + p2'
+   y_2,b, which enter the fixed-length Kelvin-Voigt formula in place of
+   r_b'; K and D follow by the product rule (p-rows y^T K + Q . dy/dr and
+   y^T D, p'-columns D y, and in K the rates' own dependence on r through
+   y), and the p-columns of K from the scaling identity of NOTES with the
+   degree weights -4 Q + 2 Q0 of the axial force (Q0: its B part), as on
+   the Gauss route.  The transport inertia, the load of a free-p element,
+   the bending force and CONSERVATIVE's end fluxes stay on Gauss points /
+   the end points.  Same numbers as the Gauss route to rounding (tests:
+   64 EPS of the largest entry; at small strain eps both routes' rounding
+   relative to Q is ~EPS/eps, the Green strain's cancellation).  Not faster
+   per element call (bench/bench_inv_ale.c): invariants are slower for Q
+   alone, about even for the ALE cable's Q+K+D and slower for the beam,
+   whose Gauss route evaluates bending at the axial points.
    Chains of fixed-length cable elements: coordinates node by node x = [x,
    y, x', y'] (vlbe_ale_chain's layout with every p fixed and no sliding
    node), n = 4 (ne + 1); K, D in band storage, row i holding columns i-7
@@ -143,8 +168,9 @@ API
    vlbe_status vlbe_ale_point(q, p, r, rp)                  r(p), r'(p)
    vlbe_status vlbe_ale_strain(q, p, &eps, &kap)            strain, curvature at p
    vlbe_status vlbe_ale_split(q, qd, ph, qh, qhd)           exact segmentation at ph
-   invariants (fixed-length elements and chains, see INVARIANTS):
-   vlbe_status vlbe_ale_inv_init(inv)                       unit tables B, I, int N
+   invariants (fixed-length elements and chains, see INVARIANTS; ALE
+   elements: vlbe_ale_force with VLBE_ALE_INV_AXIAL):
+   vlbe_status vlbe_ale_inv_init(inv)                       unit tables B, I, int N, dp
    vlbe_status vlbe_ale_inv_force(el, mode, q, qd, Q, K, D) vlbe_ale_force, p fixed, axial
                                                             force and load from invariants
    vlbe_status vlbe_ale_inv_chain_force(el, mode, ne, L, x, v, Q, K, D)  cable chain by an
@@ -198,8 +224,8 @@ REFERENCES
 #define VLBE_ALE_FIX_P1 4u
 #define VLBE_ALE_FIX_P2 8u
 #define VLBE_ALE_CONSERVATIVE 16u
-#define VLBE_ALE_INV_AXIAL 32u /* both p fixed: axial force and load from the
-                                  invariants (vlbe_ale_inv_*), not Gauss  */
+#define VLBE_ALE_INV_AXIAL 32u /* axial force (both p fixed: and load) from
+                                  the invariants (vlbe_ale_inv_*), not Gauss */
 
 #define VLBE_ALE_INV_NP 10 /* symmetric slot pairs of one element         */
 #define VLBE_ALE_INV_KD 7  /* half bandwidth of a chain's K, D (band form) */
@@ -886,10 +912,15 @@ static inline vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe
    i_abcd: with the slopes multiplied by L (r~_a = L^m_a r_a) the unit
    tables serve every L with the overall factors L^-3 (quartic part) and
    L^-1 (quadratic part), and Q_a = L^m_a Q~_a, K_ae = L^(m_a+m_e) K~_ae.
-   An ALE element at its current L = p2 - p1 gets the e-rows and e-columns
-   of its axial force from the same tables the same way (undamped; with
-   damping eps' also has the p1', p2' terms of the material rate); the
-   p-rows and p-columns are not done here (vlbe_ale_force's Gauss route). */
+   An ALE element at its current L = p2 - p1 (INVARIANTS): with y_k,b =
+   (1/L) sum_a dp_k[a][b] r~_a (scaled, like r~) dr'/dp_k = (1/L) sum_b
+   h_b' y_k,b, so the scaled material slot rates are w = v~ + p1' y_1 +
+   p2' y_2 (H built with w), Q_pk = sum_b y_k,b . Q~_b (the scalings
+   cancel: y_b = L^-m_b y~_b), and with W_eb = sum_k p_k' dp_k[e][b] / L
+   (w = v~ + W^T r~):  K~_ae += sum_b D~_ab W_eb,  K_pk,e = L^m_e (sum_b
+   y_k,b^T K~_be + (1/L) sum_b dp_k[e][b] Q~_b),  D_pk,e = L^m_e sum_b
+   y_k,b^T D~_be,  D_a,pk' = L^m_a sum_b D~_ab y_k,b,  D_pl,pk' = y_l^T D~
+   y_k.  The p-columns of K: vlbe__ale_pcols with the degree weights. */
 
 /* slots (A, B), A <= B, of pair P in the order of vlbe_ale_inv, which is
    also the order of a chain's pairs: node n's three pairs (2n, 2n), (2n,
@@ -1067,9 +1098,10 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
         /* damped ALE: the slot rates depend on r through the y_k, du_c/dr_e
            = sum_k p_k' dp[k][e][c] / L: K_ae += sum_c D_ac du_c/dr_e.  D is
            symmetric, so the column (e, j) of the sum is a combination of
-           rows of D (contiguous: T row by row, then added transposed) */
+           rows of D (contiguous: T row by row, then added transposed; T
+           reuses H, whose products are spent) */
         if (damp && pm) {
-            vlbe_real cp[16], T[64];
+            vlbe_real cp[16], *T = H;
             for (i = 0; i < 16; ++i)
                 cp[i] = Li * (((pm & 1) ? pd[0] * iv->dp[0][i] : VLBE_R(0.0)) +
                               ((pm & 2) ? pd[1] * iv->dp[1][i] : VLBE_R(0.0)));
@@ -1758,7 +1790,8 @@ VLBE_API vlbe_status vlbe_ale_inv_init(vlbe_ale_inv *inv)
 /* vlbe_ale_force of the fixed-length element (FIX_P1 | FIX_P2 implied:
    p-rows and -columns zero, p' ignored) with the axial force and the load
    from the invariants; bending (unless NO_BEND) on Gauss points.  Errors
-   and outputs as vlbe_ale_force. */
+   and outputs as vlbe_ale_force.  (ALE elements: vlbe_ale_force with
+   VLBE_ALE_INV_AXIAL in mode or flags.) */
 VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
                                         const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
                                         vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
