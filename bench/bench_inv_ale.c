@@ -25,13 +25,13 @@
    so that a disturbance of the shared machine spreads over all rows), each
    batch >= 0.2 ms.  Reported: median (min) ns per call over the batches
    and the ratio Gauss / invariants of the medians (> 1: invariants
-   faster); a row whose median exceeds 1.15 times its min is marked '*'. */
+   faster); a row whose median exceeds 1.15 times its min is marked '*'.
+   That both routes give the same numbers is tests/test_ale_inv.c's part. */
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
 #include "svgplot.h"
 #include "bench_util.h"
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -158,18 +158,6 @@ static void run_all(cfg *cs, int nc, long *bad)
     }
 }
 
-/* largest relative difference max|a - b| / max|b| */
-static double rel_gap(int n, const vlbe_real *a, const vlbe_real *b)
-{
-    double d = 0.0, m = 0.0;
-    int i;
-    for (i = 0; i < n; ++i) {
-        d = fmax(d, fabs((double)a[i] - (double)b[i]));
-        m = fmax(m, fabs((double)b[i]));
-    }
-    return m > 0.0 ? d / m : d;
-}
-
 int main(int argc, char **argv)
 {
     static cfg cs[NPM * NBEND * NDAMP * NJAC * NROUTE];
@@ -177,7 +165,7 @@ int main(int argc, char **argv)
     const int nc = NPM * NBEND * NDAMP * NJAC * NROUTE;
     vlbe_ale_mat mat;
     char model[128], csv[256];
-    double mhz, gap = 0.0;
+    double mhz;
     long bad = 0;
     int pm, bend, damp, jac, route, nnoisy = 0;
     FILE *f;
@@ -210,15 +198,6 @@ int main(int argc, char **argv)
                                   (route ? VLBE_ALE_INV_AXIAL : 0u);
                         c->jac = jac;
                     }
-    /* both routes give the same numbers (to rounding; tests/test_ale_inv.c) */
-    for (pm = 0; pm < nc; pm += 2) {
-        vlbe_real Q[2][10], K[2][100], D[2][100];
-        for (route = 0; route < 2; ++route)
-            bad += vlbe_ale_force(&el, cs[pm + route].mode, qs[0], qds[0], Q[route], K[route],
-                                  D[route]) != VLBE_OK;
-        gap = fmax(gap, fmax(rel_gap(10, Q[1], Q[0]),
-                             fmax(rel_gap(100, K[1], K[0]), rel_gap(100, D[1], D[0]))));
-    }
     run_all(cs, nc, &bad);
 
     printf("%-13s %-6s %-9s %22s %22s %8s\n", "element", "model", "damping", "Gauss", "invariants",
@@ -237,7 +216,6 @@ int main(int argc, char **argv)
                     nnoisy += noisy;
                 }
     }
-    printf("\nlargest gap of the two routes' Q, K, D (relative to max entry): %.2g\n", gap);
     if (nnoisy)
         printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", NOISY);
 

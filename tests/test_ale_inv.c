@@ -120,6 +120,48 @@ static void elem_make(vlbe_ale_elem *el, const vlbe_ale_mat *m)
     assert_int_equal(vlbe_ale_elem_init(el, m, 0, 0, 0, 0), VLBE_OK);
 }
 
+/* The invariant route's Q (with K, D), Q1 (Q alone), K, D against the
+   Gauss route's Qg, Kg, Dg: max |difference| / max |Gauss entry| of each
+   matrix into the running maxima w[0..2] (Q, K, D); fails above tol,
+   naming L, state s and mode. */
+static void check_vs_gauss(const vlbe_real *Q, const vlbe_real *Q1, const vlbe_real *K,
+                           const vlbe_real *D, const vlbe_real *Qg, const vlbe_real *Kg,
+                           const vlbe_real *Dg, double tol, double L, int s, unsigned mode,
+                           double *w)
+{
+    const double e[3] = {fmax(rel_diff(10, Q, Qg), rel_diff(10, Q1, Qg)), rel_diff(100, K, Kg),
+                         rel_diff(100, D, Dg)};
+    static const char name[3] = {'Q', 'K', 'D'};
+    int i;
+    for (i = 0; i < 3; ++i) {
+        w[i] = fmax(w[i], e[i]);
+        if (!(e[i] <= tol))
+            fail_msg("%c: L %g state %d mode %u: %.3g EPS", name[i], L, s, mode, e[i] / EPS);
+    }
+}
+
+/* the maxima of check_vs_gauss in EPS beside the 64 EPS tolerance */
+static void report_vs_gauss(const char *what, const double *w)
+{
+    static const char *const name[3] = {"Q, in EPS of max|Q|", "K, in EPS of max|K|",
+                                        "D, in EPS of max|D|"};
+    char buf[80];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        snprintf(buf, sizeof buf, "%s vs Gauss %s", what, name[i]);
+        tu_report(buf, w[i] / EPS, 64.0);
+    }
+}
+
+/* Q, K, D of one call bit for bit those of another */
+static void assert_qkd_same(const vlbe_real *Q, const vlbe_real *K, const vlbe_real *D,
+                            const vlbe_real *Q2, const vlbe_real *K2, const vlbe_real *D2)
+{
+    assert_memory_equal(Q2, Q, 10 * sizeof Q[0]);
+    assert_memory_equal(K2, K, 100 * sizeof K[0]);
+    assert_memory_equal(D2, D, 100 * sizeof D[0]);
+}
+
 /* ======================================================================= */
 
 /* The unit tables are exact integrals computed by a 5-point Gauss rule:
@@ -209,7 +251,7 @@ static void test_inv_equals_gauss(void **state)
     const double tol = 64.0 * EPS;
     vlbe_ale_elem el;
     tu_rng g = tu_rng_seed(701);
-    double wq = 0.0, wk = 0.0, wd = 0.0;
+    double w[3] = {0.0, 0.0, 0.0};
     int il, s, k;
     (void)state;
     elem_make(&el, &m);
@@ -220,7 +262,6 @@ static void test_inv_equals_gauss(void **state)
             for (k = 0; k < ARRAY_LEN(modes); ++k) {
                 const unsigned mode = modes[k] | FIX;
                 vlbe_real Q[10], K[100], D[100], Qg[10], Kg[100], Dg[100], Q1[10];
-                double e;
                 assert_int_equal(vlbe_ale_force(&el, mode, q, qd, Qg, Kg, Dg), VLBE_OK);
                 assert_int_equal(vlbe_ale_inv_force(&el, modes[k], q, qd, Q, K, D), VLBE_OK);
                 assert_int_equal(vlbe_ale_inv_force(&el, modes[k], q, qd, Q1, NULL, NULL), VLBE_OK);
@@ -229,27 +270,12 @@ static void test_inv_equals_gauss(void **state)
                     vlbe_real Q2[10], K2[100], D2[100];
                     assert_int_equal(vlbe_ale_force(&el, mode | VLBE_ALE_INV_AXIAL, q, qd, Q2, K2, D2),
                                      VLBE_OK);
-                    assert_memory_equal(Q2, Q, sizeof Q);
-                    assert_memory_equal(K2, K, sizeof K);
-                    assert_memory_equal(D2, D, sizeof D);
+                    assert_qkd_same(Q, K, D, Q2, K2, D2);
                 }
-                e = fmax(rel_diff(10, Q, Qg), rel_diff(10, Q1, Qg));
-                wq = fmax(wq, e);
-                if (!(e <= tol))
-                    fail_msg("Q: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
-                e = rel_diff(100, K, Kg);
-                wk = fmax(wk, e);
-                if (!(e <= tol))
-                    fail_msg("K: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
-                e = rel_diff(100, D, Dg);
-                wd = fmax(wd, e);
-                if (!(e <= tol))
-                    fail_msg("D: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
+                check_vs_gauss(Q, Q1, K, D, Qg, Kg, Dg, tol, Ls[il], s, mode, w);
             }
         }
-    tu_report("inv vs Gauss Q, in EPS of max|Q|", wq / EPS, 64.0);
-    tu_report("inv vs Gauss K, in EPS of max|K|", wk / EPS, 64.0);
-    tu_report("inv vs Gauss D, in EPS of max|D|", wd / EPS, 64.0);
+    report_vs_gauss("inv", w);
 }
 
 /* central differences of the invariant route's Q (vlbe_ale_force with
@@ -280,6 +306,47 @@ static double fd_fn(void *vc, double x, double *out)
     return (double)xr;
 }
 
+/* K and D of the invariant route at c's state against central differences
+   of its Q (fd_fn) in every coordinate and rate, the step EPS^(1/3) max(1,
+   |x|); rows and columns of a fixed p (c->mode) exactly zero and not
+   differenced (a fixed p still sets L but is no coordinate).  The error of
+   an entry is measured against the largest entry of its matrix (analytic
+   or differenced, so that a wrongly zero matrix cannot pass), at most tol;
+   worst[0] (K), worst[1] (D): running maxima. */
+static void check_fd(fd_ctx *c, const vlbe_real *K, const vlbe_real *D, double tol,
+                     double *worst)
+{
+    int r, i, j;
+    for (r = 0; r < 2; ++r) {
+        const vlbe_real *J = r ? D : K;
+        double Jfd[100], d[10], work[10], scale;
+        int fixed[10];
+        for (i = 0; i < 100; ++i) Jfd[i] = 0.0;
+        for (j = 0; j < 10; ++j)
+            fixed[j] = (j == 4 && (c->mode & VLBE_ALE_FIX_P1)) ||
+                       (j == 9 && (c->mode & VLBE_ALE_FIX_P2));
+        c->rate = r;
+        for (j = 0; j < 10; ++j) {
+            const double x = r ? (double)c->qd[j] : (double)c->q[j];
+            if (fixed[j]) continue;
+            c->j = j;
+            tu_central_diff(fd_fn, c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
+            for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = d[i];
+        }
+        scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
+        if (scale == 0.0) continue; /* D of the undamped cable: both zero */
+        for (i = 0; i < 100; ++i) {
+            if (fixed[i / 10] || fixed[i % 10]) {
+                ASSERT_CLOSE_CTX(J[i], 0.0, 0, 0, "fixed p entry %d, mode %u", i, c->mode);
+                continue;
+            }
+            worst[r] = fmax(worst[r], fabs(Jfd[i] - (double)J[i]) / scale);
+            ASSERT_CLOSE_CTX(Jfd[i], J[i], 0, tol * scale, "%s (%d, %d), mode %u", r ? "D" : "K",
+                             i / 10, i % 10, c->mode);
+        }
+    }
+}
+
 /* K and D of the invariant route against central differences of its Q over
    the e-coordinates (the p rows and columns are exactly zero).  Tolerance
    64 FD relative to the largest entry, as in test_ancf_ale.c (truncation
@@ -291,8 +358,8 @@ static void test_inv_jacobians(void **state)
     const double tol = 64.0 * FD_ERR;
     vlbe_ale_elem el;
     tu_rng g = tu_rng_seed(702);
-    double worst = 0.0;
-    int s, k, r, i, j;
+    double worst[2] = {0.0, 0.0};
+    int s, k;
     (void)state;
     elem_make(&el, &m);
     for (s = 0; s < 3; ++s)
@@ -303,30 +370,9 @@ static void test_inv_jacobians(void **state)
             c.mode = modes[k] | FIX;
             make_state(&g, 0.8 + 0.3 * s, 0.15, c.q, c.qd);
             assert_int_equal(vlbe_ale_inv_force(&el, c.mode, c.q, c.qd, Q, K, D), VLBE_OK);
-            for (r = 0; r < 2; ++r) {
-                const vlbe_real *J = r ? D : K;
-                double Jfd[100], d[10], work[10], scale;
-                for (i = 0; i < 100; ++i) Jfd[i] = 0.0;
-                c.rate = r;
-                for (j = 0; j < 10; ++j) {
-                    const double x = r ? (double)c.qd[j] : (double)c.q[j];
-                    if (j == 4 || j == 9) continue;
-                    c.j = j;
-                    tu_central_diff(fd_fn, &c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
-                    for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = d[i];
-                }
-                scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
-                if (scale == 0.0) continue; /* D of the undamped cable: both zero */
-                for (i = 0; i < 100; ++i) {
-                    const int pi = i / 10 == 4 || i / 10 == 9 || i % 10 == 4 || i % 10 == 9;
-                    if (pi) ASSERT_CLOSE_CTX(J[i], 0.0, 0, 0, "p entry %d", i);
-                    worst = fmax(worst, fabs(Jfd[i] - (double)J[i]) / scale);
-                    ASSERT_CLOSE_CTX(Jfd[i], J[i], 0, tol * scale, "%s (%d, %d), mode %u",
-                                     r ? "D" : "K", i / 10, i % 10, c.mode);
-                }
-            }
+            check_fd(&c, K, D, tol, worst);
         }
-    tu_report("inv K, D vs differences, / max entry", worst, tol);
+    tu_report("inv K, D vs differences, / max entry", fmax(worst[0], worst[1]), tol);
 }
 
 /* A random ALE element state: make_state's (length L, stretch, curved,
@@ -431,7 +477,7 @@ static void test_ale_inv_equals_gauss(void **state)
     const double tol = 64.0 * EPS;
     vlbe_ale_elem el, eli, elf;
     tu_rng g = tu_rng_seed(705);
-    double wq = 0.0, wk = 0.0, wd = 0.0, wrule = 0.0;
+    double w[3] = {0.0, 0.0, 0.0}, wrule = 0.0;
     int il, s, ip, k;
     (void)state;
     elem_make(&el, &m);
@@ -446,7 +492,6 @@ static void test_ale_inv_equals_gauss(void **state)
                     const unsigned mode = ale_modes[k] | ale_pmodes[ip];
                     vlbe_real Q[10], K[100], D[100], Qg[10], Kg[100], Dg[100], Q1[10];
                     vlbe_real Q2[10], K2[100], D2[100];
-                    double e;
                     assert_int_equal(vlbe_ale_force(&el, mode, q, qd, Qg, Kg, Dg), VLBE_OK);
                     assert_int_equal(vlbe_ale_force(&eli, mode, q, qd, Q, K, D), VLBE_OK);
                     wrule = fmax(wrule, rel_diff(10, Q, Qg));
@@ -456,26 +501,11 @@ static void test_ale_inv_equals_gauss(void **state)
                         vlbe_ale_force(&eli, mode | VLBE_ALE_INV_AXIAL, q, qd, Q1, NULL, NULL),
                         VLBE_OK);
                     assert_int_equal(vlbe_ale_force(&elf, mode, q, qd, Q2, K2, D2), VLBE_OK);
-                    assert_memory_equal(Q2, Q, sizeof Q);
-                    assert_memory_equal(K2, K, sizeof K);
-                    assert_memory_equal(D2, D, sizeof D);
-                    e = fmax(rel_diff(10, Q, Qg), rel_diff(10, Q1, Qg));
-                    wq = fmax(wq, e);
-                    if (!(e <= tol))
-                        fail_msg("Q: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
-                    e = rel_diff(100, K, Kg);
-                    wk = fmax(wk, e);
-                    if (!(e <= tol))
-                        fail_msg("K: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
-                    e = rel_diff(100, D, Dg);
-                    wd = fmax(wd, e);
-                    if (!(e <= tol))
-                        fail_msg("D: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
+                    assert_qkd_same(Q, K, D, Q2, K2, D2);
+                    check_vs_gauss(Q, Q1, K, D, Qg, Kg, Dg, tol, Ls[il], s, mode, w);
                 }
         }
-    tu_report("ALE inv vs Gauss Q, in EPS of max|Q|", wq / EPS, 64.0);
-    tu_report("ALE inv vs Gauss K, in EPS of max|K|", wk / EPS, 64.0);
-    tu_report("ALE inv vs Gauss D, in EPS of max|D|", wd / EPS, 64.0);
+    report_vs_gauss("ALE inv", w);
     if (!(wrule > 1e3 * tol)) fail_msg("Gauss nl = 2 vs nl = 5: only %.3g EPS", wrule / EPS);
     tu_report("ALE: 1e3 tol / (Gauss nl = 2 vs nl = 5)", 1e3 * tol / wrule, 1.0);
 }
@@ -497,7 +527,7 @@ static void test_ale_inv_jacobians(void **state)
     vlbe_ale_elem el;
     tu_rng g = tu_rng_seed(706);
     double worst[2] = {0.0, 0.0};
-    int s, ip, k, r, i, j;
+    int s, ip, k;
     (void)state;
     assert_int_equal(vlbe_ale_elem_init(&el, &m, 0, 0, 2, 0), VLBE_OK);
     for (s = 0; s < 3; ++s)
@@ -510,33 +540,7 @@ static void test_ale_inv_jacobians(void **state)
                 make_ale_state(&g, 0.8 + 0.3 * s, 0.15, c.q, c.qd);
                 assert_int_equal(
                     vlbe_ale_force(&el, c.mode | VLBE_ALE_INV_AXIAL, c.q, c.qd, Q, K, D), VLBE_OK);
-                for (r = 0; r < 2; ++r) {
-                    const vlbe_real *J = r ? D : K;
-                    double Jfd[100], d[10], work[10], scale;
-                    for (i = 0; i < 100; ++i) Jfd[i] = 0.0;
-                    c.rate = r;
-                    for (j = 0; j < 10; ++j) {
-                        const double x = r ? (double)c.qd[j] : (double)c.q[j];
-                        c.j = j;
-                        tu_central_diff(fd_fn, &c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
-                        for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = d[i];
-                    }
-                    scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
-                    if (scale == 0.0) continue; /* D of the undamped cable: both zero */
-                    for (i = 0; i < 100; ++i) {
-                        const int ri = i / 10, cj = i % 10;
-                        const int fixed = ((ri == 4 || cj == 4) && (c.mode & VLBE_ALE_FIX_P1)) ||
-                                          ((ri == 9 || cj == 9) && (c.mode & VLBE_ALE_FIX_P2));
-                        /* a fixed p still sets L but is no coordinate */
-                        if (fixed) {
-                            ASSERT_CLOSE_CTX(J[i], 0.0, 0, 0, "fixed p entry %d", i);
-                            continue;
-                        }
-                        worst[r] = fmax(worst[r], fabs(Jfd[i] - (double)J[i]) / scale);
-                        ASSERT_CLOSE_CTX(Jfd[i], J[i], 0, tol * scale, "%s (%d, %d), mode %u",
-                                         r ? "D" : "K", ri, cj, c.mode);
-                    }
-                }
+                check_fd(&c, K, D, tol, worst);
             }
     tu_report("ALE inv K vs differences, / max entry", worst[0], tol);
     tu_report("ALE inv D vs differences, / max entry", worst[1], tol);
