@@ -70,8 +70,9 @@ CONVENTIONS
    -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
    e-columns and the point scratch), the other eval calls at most 3 kB.
    vlbe_ale_elem is about 16 kB: make one per material, not per element.
-   The invariant routes need about 2.5 kB of stack more than vlbe_ale_force
-   (VLBE_ALE_INV_AXIAL with K, D: about 8.5 kB at -O2).
+   The invariant routes need about 2.5 kB of stack more than the Gauss
+   route (vlbe_ale_force with VLBE_ALE_INV_AXIAL, K and D: about 8.5 kB at
+   gcc -O2).
 
 NOTES (how the Jacobians are formed)
    At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
@@ -1055,17 +1056,19 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
     r[0] = r[1] = VLBE_R(0.0);
     /* ALE: dr'/dp_k = (1/L) sum_b h_b' y_k,b with y_k,b = (1/L) sum_a
        dp[k][a][b] r_a, and the material rate of r' is that of the slots u +
-       p1' y_1 + p2' y_2 */
+       p1' y_1 + p2' y_2.  dp has no slot-0 coefficients, so y_k,0 = 0 and
+       the sums over the entries m of a y below start at m = 2 (slot 1) */
     for (k = 0; k < 2; ++k) {
         if (!(pm & (1 << k))) continue;
-        for (b = 0; b < 4; ++b)
+        y[k][0] = y[k][1] = VLBE_R(0.0);
+        for (b = 1; b < 4; ++b)
             for (i = 0; i < 2; ++i) {
                 vlbe_real t = VLBE_R(0.0);
                 for (a = 1; a < 4; ++a) t += iv->dp[k][4 * a + b] * r[2 * a + i];
                 y[k][2 * b + i] = Li * t;
             }
         if (damp)
-            for (m = 0; m < 8; ++m) u[m] += pd[k] * y[k][m];
+            for (m = 2; m < 8; ++m) u[m] += pd[k] * y[k][m];
     }
     for (i = 0; i < 8; ++i) Qs[i] = VLBE_R(0.0);
     for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
@@ -1096,25 +1099,21 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
                               Ds + 2 * b * 8 + 2 * a, 8);
         }
         /* damped ALE: the slot rates depend on r through the y_k, du_c/dr_e
-           = sum_k p_k' dp[k][e][c] / L: K_ae += sum_c D_ac du_c/dr_e.  D is
-           symmetric, so the column (e, j) of the sum is a combination of
-           rows of D (contiguous: T row by row, then added transposed; T
-           reuses H, whose products are spent) */
+           = sum_k p_k' dp[k][e][c] / L: K_ae += sum_c D_ac du_c/dr_e (in
+           this plain order: faster in place than rows of the symmetric D
+           added transposed, bench_inv_ale.c) */
         if (damp && pm) {
-            vlbe_real cp[16], *T = H;
+            vlbe_real cp[16];
             for (i = 0; i < 16; ++i)
                 cp[i] = Li * (((pm & 1) ? pd[0] * iv->dp[0][i] : VLBE_R(0.0)) +
                               ((pm & 2) ? pd[1] * iv->dp[1][i] : VLBE_R(0.0)));
-            for (i = 0; i < 64; ++i) T[i] = VLBE_R(0.0);
-            for (a = 0; a < 4; ++a)
-                for (b = 1; b < 4; ++b)
-                    for (j = 0; j < 2; ++j) {
-                        const vlbe_real cf = cp[4 * a + b], *Db = Ds + (2 * b + j) * 8;
-                        vlbe_real *Ta = T + (2 * a + j) * 8;
-                        for (m = 0; m < 8; ++m) Ta[m] += cf * Db[m];
-                    }
             for (m = 0; m < 8; ++m)
-                for (i = 0; i < 8; ++i) Ks[m * 8 + i] += T[i * 8 + m];
+                for (a = 0; a < 4; ++a)
+                    for (j = 0; j < 2; ++j) {
+                        vlbe_real t = VLBE_R(0.0);
+                        for (b = 1; b < 4; ++b) t += cp[4 * a + b] * Ds[m * 8 + 2 * b + j];
+                        Ks[m * 8 + 2 * a + j] += t;
+                    }
         }
     }
     for (a = 0; a < 4; ++a)
@@ -1139,10 +1138,10 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
         const vlbe_real *yk = y[k];
         vlbe_real kr[8], dy[8];
         if (!(pm & (1 << k))) continue;
-        for (m = 0; m < 8; ++m) Q[rp] += yk[m] * Qs[m];
+        for (m = 2; m < 8; ++m) Q[rp] += yk[m] * Qs[m];
         if (!jac) continue;
         for (i = 0; i < 8; ++i) kr[i] = dy[i] = VLBE_R(0.0);
-        for (m = 0; m < 8; ++m) {
+        for (m = 2; m < 8; ++m) {
             const vlbe_real ym = yk[m], *Km = Ks + m * 8, *Dm = Ds + m * 8;
             for (i = 0; i < 8; ++i) {
                 kr[i] += ym * Km[i];
@@ -1165,7 +1164,7 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
             }
         for (l = 0; l < 2; ++l)
             if (pm & (1 << l))
-                for (m = 0; m < 8; ++m) D[VLBE__ALE_P(l) * 10 + rp] += y[l][m] * dy[m];
+                for (m = 2; m < 8; ++m) D[VLBE__ALE_P(l) * 10 + rp] += y[l][m] * dy[m];
     }
     /* degree weights: the quartic part of the force (all but the -1/2 of
        eps) is 4 below the standard row degrees, the quadratic part Q0 (from
@@ -1186,7 +1185,7 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
             for (i = 0; i < 2; ++i) dQ[VLBE__ALE_E(a) + i] += sc[a] * Z[2 * a + i];
         for (k = 0; k < 2; ++k)
             if (pm & (1 << k))
-                for (m = 0; m < 8; ++m) dQ[VLBE__ALE_P(k)] += y[k][m] * Z[m];
+                for (m = 2; m < 8; ++m) dQ[VLBE__ALE_P(k)] += y[k][m] * Z[m];
     }
 }
 

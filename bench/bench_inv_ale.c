@@ -113,7 +113,7 @@ static vlbe_ale_elem el;
 /* one timed batch of k calls; seconds per call */
 static double run_batch(const cfg *c, long k, long *bad)
 {
-    vlbe_real Q[10], K[100], D[100];
+    static vlbe_real Q[10], K[100], D[100];
     const unsigned mode = mode_src;
     const int jac = c->jac;
     double t0, acc = 0.0;
