@@ -54,8 +54,9 @@ CONVENTIONS
                         (INVARIANTS), fixed-length and ALE elements; with
                         both p fixed the load too.  The same numbers to
                         rounding.  Off by default: per element it is slower
-                        for Q alone, and for ALE elements not faster with
-                        K and D either (see README, bench_inv_ale.c).
+                        for Q alone and for the beam; with K and D the
+                        cable gains 5-20 % at most (see README,
+                        bench_inv.c, bench_inv_ale.c).
    Gauss orders per term (init; 0 = default): nm for mass, transport inertia
    and loads (default 4, exact: the integrands are polynomials of degree 6
    in xi), nl for the axial force (default 5, exact: degree 8), nt for the
@@ -138,10 +139,12 @@ INVARIANTS (issue 7: invariant-matrix force evaluation)
    the bending force and CONSERVATIVE's end fluxes stay on Gauss points /
    the end points.  Same numbers as the Gauss route to rounding (tests:
    64 EPS of the largest entry; at small strain eps both routes' rounding
-   relative to Q is ~EPS/eps, the Green strain's cancellation).  Not faster
-   per element call (bench/bench_inv_ale.c): invariants are slower for Q
-   alone, about even for the ALE cable's Q+K+D and slower for the beam,
-   whose Gauss route evaluates bending at the axial points.
+   relative to Q is ~EPS/eps, the Green strain's cancellation).  Per
+   element call (bench/bench_inv_ale.c, -O3 -march=native): invariants are
+   slower for Q alone (0.65-0.85 x the Gauss route's speed), slightly
+   faster for the damped ALE cable's Q+K+D (1.05 x), even for the undamped
+   one, and slower for the beam (0.8 x), whose Gauss route evaluates the
+   bending at the axial points.
    Chains of fixed-length cable elements: coordinates node by node x = [x,
    y, x', y'] (vlbe_ale_chain's layout with every p fixed and no sliding
    node), n = 4 (ne + 1); K, D in band storage, row i holding columns i-7
