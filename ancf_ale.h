@@ -127,15 +127,14 @@ INVARIANTS (issue 7: invariant-matrix force evaluation)
    sum_b dp_k[a][b] h_b' with small integer maps dp_k (vlbe_ale_inv.dp).
    Hence dr'/dp_k is the r' of virtual slot vectors y_k (with the slots
    scaled, r~_a = L^m_a r_a: y~_k,b = sum_a dp_k[a][b] r~_a / L), and:
-   eps_pk = r' . dr'/dp_k =
-   sum_b y_k,b . eps_{r_b}, so the p-rows are Q_pk = sum_b y_k,b . Q_b; the
-   material rate of r' is that of the slot rates r_b' + p1' y_1,b + p2'
-   y_2,b, which enter the fixed-length Kelvin-Voigt formula in place of
-   r_b'; K and D follow by the product rule (p-rows y^T K + Q . dy/dr and
-   y^T D, p'-columns D y, and in K the rates' own dependence on r through
-   y), and the p-columns of K from the scaling identity of NOTES with the
-   degree weights -4 Q + 2 Q0 of the axial force (Q0: its B part), as on
-   the Gauss route.  The transport inertia, the load of a free-p element,
+   eps_pk = r' . dr'/dp_k = sum_b y_k,b . eps_{r_b}, so the p-rows are
+   Q_pk = sum_b y_k,b . Q_b; the material rate of r' is that of the slot
+   rates r_b' + p1' y_1,b + p2' y_2,b, which enter the fixed-length
+   Kelvin-Voigt formula in place of r_b'; K and D follow by the product
+   rule (p-rows y^T K + Q . dy/dr and y^T D, p'-columns D y, and in K the
+   rates' own dependence on r through y), and the p-columns of K from the
+   scaling identity of NOTES with the degree weights -4 Q + 2 Q0 of the
+   axial force (Q0: its B part), as on the Gauss route.  The transport inertia, the load of a free-p element,
    the bending force and CONSERVATIVE's end fluxes stay on Gauss points /
    the end points.  Same numbers as the Gauss route to rounding (tests:
    64 EPS of the largest entry; at small strain eps both routes' rounding
