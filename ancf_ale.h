@@ -49,11 +49,14 @@ CONVENTIONS
      VLBE_ALE_CONSERVATIVE   add to the p-rows the flux of strain energy
                         through the element ends (see NOTES): the elastic
                         p-forces become the gradient of the strain energy.
-     VLBE_ALE_INV_AXIAL with both p fixed: the axial force (with its
-                        Kelvin-Voigt part) and the load from the invariant
-                        tables instead of Gauss points (INVARIANTS); the
-                        same numbers to rounding.  Off by default: per
-                        element it is slower for Q alone (see README).
+     VLBE_ALE_INV_AXIAL the axial force (with its Kelvin-Voigt part) from
+                        the invariant tables instead of Gauss points
+                        (INVARIANTS), fixed-length and ALE elements; with
+                        both p fixed the load too.  The same numbers to
+                        rounding.  Off by default: per element it is slower
+                        for Q alone and for the beam; with K and D the
+                        cable gains 5-20 % at most (see README,
+                        bench_inv.c, bench_inv_ale.c).
    Gauss orders per term (init; 0 = default): nm for mass, transport inertia
    and loads (default 4, exact: the integrands are polynomials of degree 6
    in xi), nl for the axial force (default 5, exact: degree 8), nt for the
@@ -68,7 +71,9 @@ CONVENTIONS
    -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
    e-columns and the point scratch), the other eval calls at most 3 kB.
    vlbe_ale_elem is about 16 kB: make one per material, not per element.
-   The invariant routes need about 2 kB of stack more than vlbe_ale_force.
+   The invariant routes need about 2.5 kB of stack more than the Gauss
+   route (vlbe_ale_force with VLBE_ALE_INV_AXIAL, K and D: about 8.5 kB at
+   gcc -O2).
 
 NOTES (how the Jacobians are formed)
    At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
@@ -110,12 +115,35 @@ INVARIANTS (issue 7: invariant-matrix force evaluation)
    tabulates B, I (35 unique numbers, stored as a 10 x 10 matrix over the
    symmetric slot pairs) and int N at L = 1 (vlbe_ale_inv, el->inv); a
    slope carries one power of L, so one table serves every L: I scales
-   with L^-3, B with L^-1 once the slopes are multiplied by L.  The same
-   gives an ALE element's e-rows and e-columns at its current L (undamped);
-   its p-rows and p-columns are not offered here.  Bending (exact
-   curvature, rational) stays on Gauss points: vlbe_ale_inv_force gives the
-   cable (NO_BEND) force wholly from invariants and the beam's as invariant
-   axial force + Gauss bending.
+   with L^-3, B with L^-1 once the slopes are multiplied by L.  Bending
+   (exact curvature, rational) stays on Gauss points: vlbe_ale_inv_force
+   gives the cable (NO_BEND) force wholly from invariants and the beam's as
+   invariant axial force + Gauss bending.
+   ALE elements (p1 and/or p2 free; vlbe_ale_force with VLBE_ALE_INV_AXIAL)
+   need no further integrals.  At fixed p the partial of a slope function,
+   d s_a'/dp_k = L^(m_a - 2) ((m_a - 1) h_a' - xi h_a'') for p2 (p1: -(m_a
+   - 1) h_a' + (xi - 1) h_a''), is a quadratic in xi, and the slopes h_b'
+   of the cubic basis span the quadratics, so d s_a'/dp_k = L^(m_a - 2)
+   sum_b dp_k[a][b] h_b' with small integer maps dp_k (vlbe_ale_inv.dp).
+   Hence dr'/dp_k is the r' of virtual slot vectors y_k (with the slots
+   scaled, r~_a = L^m_a r_a: y~_k,b = sum_a dp_k[a][b] r~_a / L), and:
+   eps_pk = r' . dr'/dp_k = sum_b y_k,b . eps_{r_b}, so the p-rows are
+   Q_pk = sum_b y_k,b . Q_b; the material rate of r' is that of the slot
+   rates r_b' + p1' y_1,b + p2' y_2,b, which enter the fixed-length
+   Kelvin-Voigt formula in place of r_b'; K and D follow by the product
+   rule (p-rows y^T K + Q . dy/dr and y^T D, p'-columns D y, and in K the
+   rates' own dependence on r through y), and the p-columns of K from the
+   scaling identity of NOTES with the degree weights -4 Q + 2 Q0 of the
+   axial force (Q0: its B part), as on the Gauss route.  The transport inertia, the load of a free-p element,
+   the bending force and CONSERVATIVE's end fluxes stay on Gauss points /
+   the end points.  Same numbers as the Gauss route to rounding (tests:
+   64 EPS of the largest entry; at small strain eps both routes' rounding
+   relative to Q is ~EPS/eps, the Green strain's cancellation).  Per
+   element call (bench/bench_inv_ale.c, -O3 -march=native): invariants are
+   slower for Q alone (0.65-0.85 x the Gauss route's speed), slightly
+   faster for the damped ALE cable's Q+K+D (1.05 x), even for the undamped
+   one, and slower for the beam (0.8 x), whose Gauss route evaluates the
+   bending at the axial points.
    Chains of fixed-length cable elements: coordinates node by node x = [x,
    y, x', y'] (vlbe_ale_chain's layout with every p fixed and no sliding
    node), n = 4 (ne + 1); K, D in band storage, row i holding columns i-7
@@ -143,8 +171,9 @@ API
    vlbe_status vlbe_ale_point(q, p, r, rp)                  r(p), r'(p)
    vlbe_status vlbe_ale_strain(q, p, &eps, &kap)            strain, curvature at p
    vlbe_status vlbe_ale_split(q, qd, ph, qh, qhd)           exact segmentation at ph
-   invariants (fixed-length elements and chains, see INVARIANTS):
-   vlbe_status vlbe_ale_inv_init(inv)                       unit tables B, I, int N
+   invariants (fixed-length elements and chains, see INVARIANTS; ALE
+   elements: vlbe_ale_force with VLBE_ALE_INV_AXIAL):
+   vlbe_status vlbe_ale_inv_init(inv)                       unit tables B, I, int N, dp
    vlbe_status vlbe_ale_inv_force(el, mode, q, qd, Q, K, D) vlbe_ale_force, p fixed, axial
                                                             force and load from invariants
    vlbe_status vlbe_ale_inv_chain_force(el, mode, ne, L, x, v, Q, K, D)  cable chain by an
@@ -198,8 +227,8 @@ REFERENCES
 #define VLBE_ALE_FIX_P1 4u
 #define VLBE_ALE_FIX_P2 8u
 #define VLBE_ALE_CONSERVATIVE 16u
-#define VLBE_ALE_INV_AXIAL 32u /* both p fixed: axial force and load from the
-                                  invariants (vlbe_ale_inv_*), not Gauss  */
+#define VLBE_ALE_INV_AXIAL 32u /* axial force (both p fixed: and load) from
+                                  the invariants (vlbe_ale_inv_*), not Gauss */
 
 #define VLBE_ALE_INV_NP 10 /* symmetric slot pairs of one element         */
 #define VLBE_ALE_INV_KD 7  /* half bandwidth of a chain's K, D (band form) */
@@ -236,11 +265,15 @@ typedef struct vlbe_ale_rule {
      (0,0) (0,1) (1,1) | (0,2) (0,3) (1,2) (1,3) | (2,2) (2,3) (3,3)
    (node 1, link, node 2): t[P*10 + R] = int h_a' h_b' h_c' h_d' dxi times
    2 for c != d (so that a contraction over R sums each unordered pair
-   (c, d) once), R = (c, d); b[P] = int h_a' h_b' dxi; n[a] = int h_a dxi. */
+   (c, d) once), R = (c, d); b[P] = int h_a' h_b' dxi; n[a] = int h_a dxi;
+   dp[k][a*4 + c]: the partial in p_{k+1} (at fixed p, L = 1) of the slope
+   h_a' as a combination of the slopes, sum_c dp[k][a*4 + c] h_c' (ALE
+   elements, see INVARIANTS; small integers, slot 0's coefficient 0). */
 typedef struct vlbe_ale_inv {
     vlbe_real t[VLBE_ALE_INV_NP * VLBE_ALE_INV_NP];
     vlbe_real b[VLBE_ALE_INV_NP];
     vlbe_real n[4];
+    vlbe_real dp[2][16];
 } vlbe_ale_inv;
 
 /* An element type: material, default mode flags, a rule per term, the
@@ -882,10 +915,15 @@ static inline vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe
    i_abcd: with the slopes multiplied by L (r~_a = L^m_a r_a) the unit
    tables serve every L with the overall factors L^-3 (quartic part) and
    L^-1 (quadratic part), and Q_a = L^m_a Q~_a, K_ae = L^(m_a+m_e) K~_ae.
-   An ALE element at its current L = p2 - p1 gets the e-rows and e-columns
-   of its axial force from the same tables the same way (undamped; with
-   damping eps' also has the p1', p2' terms of the material rate); the
-   p-rows and p-columns are not done here (vlbe_ale_force's Gauss route). */
+   An ALE element at its current L = p2 - p1 (INVARIANTS): with y_k,b =
+   (1/L) sum_a dp_k[a][b] r~_a (scaled, like r~) dr'/dp_k = (1/L) sum_b
+   h_b' y_k,b, so the scaled material slot rates are w = v~ + p1' y_1 +
+   p2' y_2 (H built with w), Q_pk = sum_b y_k,b . Q~_b (the scalings
+   cancel: y_b = L^-m_b y~_b), and with W_eb = sum_k p_k' dp_k[e][b] / L
+   (w = v~ + W^T r~):  K~_ae += sum_b D~_ab W_eb,  K_pk,e = L^m_e (sum_b
+   y_k,b^T K~_be + (1/L) sum_b dp_k[e][b] Q~_b),  D_pk,e = L^m_e sum_b
+   y_k,b^T D~_be,  D_a,pk' = L^m_a sum_b D~_ab y_k,b,  D_pl,pk' = y_l^T D~
+   y_k.  The p-columns of K: vlbe__ale_pcols with the degree weights. */
 
 /* slots (A, B), A <= B, of pair P in the order of vlbe_ale_inv, which is
    also the order of a chain's pairs: node n's three pairs (2n, 2n), (2n,
@@ -986,21 +1024,27 @@ static inline void vlbe__ale_inv_out(vlbe_real S, const vlbe_real *y, int jac, v
     }
 }
 
-/* Axial force of a fixed-length element from the unit tables (see above):
-   Q += (e-rows), K += (e-block), D += (e-block, damped only), 10-coordinate
-   layout; K, D may be NULL (with K given, D must be too).  c: Kelvin-Voigt
-   time (0: undamped, qd not read).  Q alone contracts column by column
-   (ten independent sums), with K row by row over eight products. */
+/* Axial force of an element of length L from the unit tables (see above):
+   Q += (all rows), K += (the e-columns of all rows), D += (all columns,
+   damped only), 10-coordinate layout; with K and pm != 0, dQ += the
+   axial force's degree weights beyond the standard row degrees (the
+   p-columns of K then follow from the scaling identity, as on the Gauss
+   route: vlbe__ale_forces).  pm: the free p's (vlbe__ale_pmask; 0 = fixed
+   length), pd = (p1', p2') (0 for a fixed p).  K, D, dQ may be NULL (with
+   K given, D must be too).  c: Kelvin-Voigt time (0: undamped, qd not
+   read).  Q alone contracts column by column (ten independent sums), with
+   K row by row over eight products. */
 static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlbe_real c,
-                                       vlbe_real L, const vlbe_real *q, const vlbe_real *qd,
-                                       vlbe_real *Q, vlbe_real *K, vlbe_real *D)
+                                       vlbe_real L, int pm, const vlbe_real *pd,
+                                       const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
+                                       vlbe_real *K, vlbe_real *D, vlbe_real *dQ)
 {
     const vlbe_real Li = VLBE_R(1.0) / L, L3 = Li * Li * Li;
     const signed char *pa = vlbe__ale_inv_pa();
     const int damp = c != VLBE_R(0.0), jac = K != NULL;
-    vlbe_real sc[4], r[8], u[8], H[VLBE_ALE_INV_NP * 8], S[VLBE_ALE_INV_NP], Qs[8], Ks[64], Ds[64];
-    vlbe_real y[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-    int a, b, i, j, P, R;
+    vlbe_real sc[4], r[8], u[8], y[2][8], H[VLBE_ALE_INV_NP * 8], S[VLBE_ALE_INV_NP], Qs[8];
+    vlbe_real Ks[64], Ds[64], yv[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    int a, b, i, j, k, l, m, P, R;
     /* positions relative to node 1: the force is invariant to translation
        (s_1' + s_3' = 0), and so the Gram entries stay of size L^2 instead of
        |r|^2 (their rounding would grow like (|r|/L)^2) */
@@ -1012,6 +1056,22 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
         }
     }
     r[0] = r[1] = VLBE_R(0.0);
+    /* ALE: dr'/dp_k = (1/L) sum_b h_b' y_k,b with y_k,b = (1/L) sum_a
+       dp[k][a][b] r_a, and the material rate of r' is that of the slots u +
+       p1' y_1 + p2' y_2.  dp has no slot-0 coefficients, so y_k,0 = 0 and
+       the sums over the entries m of a y below start at m = 2 (slot 1) */
+    for (k = 0; k < 2; ++k) {
+        if (!(pm & (1 << k))) continue;
+        y[k][0] = y[k][1] = VLBE_R(0.0);
+        for (b = 1; b < 4; ++b)
+            for (i = 0; i < 2; ++i) {
+                vlbe_real t = VLBE_R(0.0);
+                for (a = 1; a < 4; ++a) t += iv->dp[k][4 * a + b] * r[2 * a + i];
+                y[k][2 * b + i] = Li * t;
+            }
+        if (damp)
+            for (m = 2; m < 8; ++m) u[m] += pd[k] * y[k][m];
+    }
     for (i = 0; i < 8; ++i) Qs[i] = VLBE_R(0.0);
     for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
         a = pa[P];
@@ -1026,7 +1086,7 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
         for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
             a = pa[P];
             b = pa[10 + P];
-            vlbe__ale_inv_out(VLBE_R(0.5) * S[P], y, 0, EA, EA * c, r + 2 * a, r + 2 * b, a == b,
+            vlbe__ale_inv_out(VLBE_R(0.5) * S[P], yv, 0, EA, EA * c, r + 2 * a, r + 2 * b, a == b,
                               Qs + 2 * a, Qs + 2 * b, NULL, NULL, NULL, NULL, 8);
         }
     } else {
@@ -1034,11 +1094,28 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
         for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
             a = pa[P];
             b = pa[10 + P];
-            vlbe__ale_inv_row(iv->t + P * VLBE_ALE_INV_NP, VLBE_ALE_INV_NP, H, y);
-            vlbe__ale_inv_out(VLBE_R(0.5) * (y[0] - Li * iv->b[P]), y, 1, EA, EA * c, r + 2 * a,
+            vlbe__ale_inv_row(iv->t + P * VLBE_ALE_INV_NP, VLBE_ALE_INV_NP, H, yv);
+            vlbe__ale_inv_out(VLBE_R(0.5) * (yv[0] - Li * iv->b[P]), yv, 1, EA, EA * c, r + 2 * a,
                               r + 2 * b, a == b, Qs + 2 * a, Qs + 2 * b, Ks + 2 * a * 8 + 2 * b,
                               Ks + 2 * b * 8 + 2 * a, Ds + 2 * a * 8 + 2 * b,
                               Ds + 2 * b * 8 + 2 * a, 8);
+        }
+        /* damped ALE: the slot rates depend on r through the y_k, du_c/dr_e
+           = sum_k p_k' dp[k][e][c] / L: K_ae += sum_c D_ac du_c/dr_e (in
+           this plain order: faster in place than rows of the symmetric D
+           added transposed, bench_inv_ale.c) */
+        if (damp && pm) {
+            vlbe_real cp[16];
+            for (i = 0; i < 16; ++i)
+                cp[i] = Li * (((pm & 1) ? pd[0] * iv->dp[0][i] : VLBE_R(0.0)) +
+                              ((pm & 2) ? pd[1] * iv->dp[1][i] : VLBE_R(0.0)));
+            for (m = 0; m < 8; ++m)
+                for (a = 0; a < 4; ++a)
+                    for (j = 0; j < 2; ++j) {
+                        vlbe_real t = VLBE_R(0.0);
+                        for (b = 1; b < 4; ++b) t += cp[4 * a + b] * Ds[m * 8 + 2 * b + j];
+                        Ks[m * 8 + 2 * a + j] += t;
+                    }
         }
     }
     for (a = 0; a < 4; ++a)
@@ -1048,11 +1125,70 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
             if (!jac) continue;
             for (b = 0; b < 4; ++b)
                 for (j = 0; j < 2; ++j) {
-                    const int cb = VLBE__ALE_E(b) + j, k = (2 * a + i) * 8 + 2 * b + j;
-                    K[ra * 10 + cb] += sc[a] * sc[b] * Ks[k];
-                    if (damp) D[ra * 10 + cb] += sc[a] * sc[b] * Ds[k];
+                    const int cb = VLBE__ALE_E(b) + j, kk = (2 * a + i) * 8 + 2 * b + j;
+                    K[ra * 10 + cb] += sc[a] * sc[b] * Ks[kk];
+                    if (damp) D[ra * 10 + cb] += sc[a] * sc[b] * Ds[kk];
                 }
         }
+    if (!pm) return;
+    /* p-rows: eps_pk = r'.dr'/dp_k = sum_b y_k,b . eps_{r_b} (scaled slots),
+       so Q_pk = sum_b y_k,b . Q_b; K, D by the product rule: the rows y_k^T
+       K + Q . dy_k/dr, y_k^T D; the p'-columns D y_k (= (y_k^T D)^T: D is
+       symmetric), the corner y_l^T D y_k */
+    for (k = 0; k < 2; ++k) {
+        const int rp = VLBE__ALE_P(k);
+        const vlbe_real *yk = y[k];
+        vlbe_real kr[8], dy[8];
+        if (!(pm & (1 << k))) continue;
+        for (m = 2; m < 8; ++m) Q[rp] += yk[m] * Qs[m];
+        if (!jac) continue;
+        for (i = 0; i < 8; ++i) kr[i] = dy[i] = VLBE_R(0.0);
+        for (m = 2; m < 8; ++m) {
+            const vlbe_real ym = yk[m], *Km = Ks + m * 8, *Dm = Ds + m * 8;
+            for (i = 0; i < 8; ++i) {
+                kr[i] += ym * Km[i];
+                dy[i] += ym * Dm[i];
+            }
+        }
+        for (b = 0; b < 4; ++b)
+            for (j = 0; j < 2; ++j) {
+                vlbe_real kv = VLBE_R(0.0);
+                for (a = 1; a < 4; ++a) kv += iv->dp[k][4 * b + a] * Qs[2 * a + j];
+                K[rp * 10 + VLBE__ALE_E(b) + j] += sc[b] * (kr[2 * b + j] + Li * kv);
+            }
+        if (!damp) continue;
+        for (a = 0; a < 4; ++a)
+            for (i = 0; i < 2; ++i) {
+                const int ra = VLBE__ALE_E(a) + i;
+                const vlbe_real d = sc[a] * dy[2 * a + i];
+                D[rp * 10 + ra] += d;
+                D[ra * 10 + rp] += d;
+            }
+        for (l = 0; l < 2; ++l)
+            if (pm & (1 << l))
+                for (m = 2; m < 8; ++m) D[VLBE__ALE_P(l) * 10 + rp] += y[l][m] * dy[m];
+    }
+    /* degree weights: the quartic part of the force (all but the -1/2 of
+       eps) is 4 below the standard row degrees, the quadratic part Q0 (from
+       -B/2 in S) 2 below: dQ += -4 Q + 2 Q0 */
+    if (jac && dQ) {
+        vlbe_real Z[8];
+        for (i = 0; i < 8; ++i) Z[i] = VLBE_R(-4.0) * Qs[i];
+        for (P = 0; P < VLBE_ALE_INV_NP; ++P) {
+            const vlbe_real f = EA * Li * iv->b[P];
+            a = pa[P];
+            b = pa[10 + P];
+            for (i = 0; i < 2; ++i) {
+                Z[2 * a + i] += f * r[2 * b + i];
+                if (a != b) Z[2 * b + i] += f * r[2 * a + i];
+            }
+        }
+        for (a = 0; a < 4; ++a)
+            for (i = 0; i < 2; ++i) dQ[VLBE__ALE_E(a) + i] += sc[a] * Z[2 * a + i];
+        for (k = 0; k < 2; ++k)
+            if (pm & (1 << k))
+                for (m = 2; m < 8; ++m) dQ[VLBE__ALE_P(k)] += y[k][m] * Z[m];
+    }
 }
 
 /* Distributed load of a fixed-length element: Q_a += L^(m_a+1) n_a f. */
@@ -1096,9 +1232,9 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
                 Lp[2] * (el->b3[1] * e1[b] + el->b3[3] * e3[b]);
 
     /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19);
-       fixed length (inv): the load alone, from the tables */
-    if (inv) vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
-    for (g = 0; !inv && g < el->rm.n; ++g) {
+       fixed length with invariants: the load alone, from the tables */
+    if (inv && !pm) vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
+    for (g = 0; !(inv && !pm) && g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         const vlbe_real *b0 = gp->b[0][0], *b1 = gp->b[1][0], *b2 = gp->b[2][0];
         const vlbe_real w = gp->w * L, xi = gp->xi, s = a + xi * dl;
@@ -1134,8 +1270,8 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
     /* axial (with bending when the rules share the points), then bending;
        inv: the axial part from the invariants */
     if (inv && mt->EA != VLBE_R(0.0))
-        vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, q, qd, Q, NULL,
-                            NULL);
+        vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, pm, pd, q, qd, Q,
+                            NULL, NULL, NULL);
     for (pass = 0; pass < 2; ++pass) {
         const int ax = pass == 0 && mt->EA != VLBE_R(0.0) && !inv;
         const int bd = pass == 0 ? shared : (bend && !shared);
@@ -1220,7 +1356,7 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     const int damp = !(mode & VLBE_ALE_NO_DAMP);
     const int bend = !(mode & VLBE_ALE_NO_BEND) && mt->EI != VLBE_R(0.0);
     const vlbe_real L = q[9] - q[4];
-    const int inv = pm == 0 && (mode & VLBE_ALE_INV_AXIAL);
+    const int inv = (mode & VLBE_ALE_INV_AXIAL) != 0, tload = inv && pm == 0;
     const int shared = bend && mt->EA != VLBE_R(0.0) && el->rl.n == el->rt.n && !inv;
     vlbe_real pd[2], Lp[6], dQ[10], dQx[10], Ke[80], De[80];
     vlbe__ale_pt pt;
@@ -1240,15 +1376,15 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
         for (i = 0; i < 80; ++i) Ke[i] = De[i] = VLBE_R(0.0);
     }
 
-    /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19);
-       fixed length (inv): the load alone (constant), and the axial force,
-       from the tables */
-    if (inv) {
-        vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
-        if (mt->EA != VLBE_R(0.0))
-            vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, q, qd, Q, K, D);
-    }
-    for (g = 0; !inv && g < el->rm.n; ++g) {
+    /* the axial force from the tables (inv; its p-columns of K come with
+       the others' below); transport inertia and distributed load: z = f -
+       rhoA r_v (eqs. 15, 19), fixed length with invariants (tload): the load
+       alone (constant), from the tables */
+    if (inv && mt->EA != VLBE_R(0.0))
+        vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, pm, pd, q, qd, Q,
+                            K, D, dQx);
+    if (tload) vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
+    for (g = 0; !tload && g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         const vlbe_real w = gp->w * L;
         vlbe_real z[2], c[4], dd[4];
@@ -1596,7 +1732,13 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
 /* ===== invariant-matrix forces of fixed-length elements and chains ====== */
 /* Unit tables (L = 1) by the 5-point Gauss rule on [0, 1], exact for the
    integrands of degree <= 9 here (h_a' quadratic: degree 8; h_a: 3) up to
-   the rounding of the rule's nodes and weights. */
+   the rounding of the rule's nodes and weights.  The slope maps dp by
+   interpolation: a partial f = d h_a'/dp_k is a quadratic in xi, and so is
+   its expansion c1 h_2' + c2 h_3' + c3 h_4' (h_1' = -h_3', c0 = 0); at xi
+   = 0, 1/2, 1 the slopes are (1, 0, 0), (-1/4, 3/2, -1/4), (0, 0, 1), so
+   c1 = f(0), c3 = f(1), c2 = (f(1/2) + (c1 + c3)/4) / (3/2).  Exact in
+   floating point: f is sampled at dyadic points from integer polynomial
+   coefficients, and the c are integers (tests). */
 VLBE_API vlbe_status vlbe_ale_inv_init(vlbe_ale_inv *inv)
 {
     const vlbe_real *x, *w;
@@ -1629,13 +1771,28 @@ VLBE_API vlbe_status vlbe_ale_inv_init(vlbe_ale_inv *inv)
             inv->t[P * VLBE_ALE_INV_NP + R] = c == e ? t : VLBE_R(2.0) * t;
         }
     }
+    {
+        vlbe_herm_ale hf[3];
+        int k;
+        for (g = 0; g < 3; ++g)
+            vlbe_herm_ale_eval(VLBE_R(0.5) * (vlbe_real)g, VLBE_R(0.0), VLBE_R(1.0), 1, 1, &hf[g]);
+        for (k = 0; k < 2; ++k)
+            for (a = 0; a < 4; ++a) {
+                vlbe_real *cf = inv->dp[k] + 4 * a;
+                cf[0] = VLBE_R(0.0);
+                cf[1] = hf[0].h[1][1 + k][a];
+                cf[3] = hf[2].h[1][1 + k][a];
+                cf[2] = (hf[1].h[1][1 + k][a] + VLBE_R(0.25) * (cf[1] + cf[3])) / VLBE_R(1.5);
+            }
+    }
     return VLBE_OK;
 }
 
 /* vlbe_ale_force of the fixed-length element (FIX_P1 | FIX_P2 implied:
    p-rows and -columns zero, p' ignored) with the axial force and the load
    from the invariants; bending (unless NO_BEND) on Gauss points.  Errors
-   and outputs as vlbe_ale_force. */
+   and outputs as vlbe_ale_force.  (ALE elements: vlbe_ale_force with
+   VLBE_ALE_INV_AXIAL in mode or flags.) */
 VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
                                         const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
                                         vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)

@@ -12,13 +12,29 @@
    Tests
      tables_exact           unit tables against closed forms: b = classic cable
                             stiffness integrals, n = Hermite integrals,
-                            int h1'^4 = 72/35, int h1'^2 h2'^2 = 3/35
+                            int h1'^4 = 72/35, int h1'^2 h2'^2 = 3/35; the
+                            slope maps dp = their integer closed forms and
+                            sum_c dp[k][a][c] h_c' = d h_a'/dp_k at random xi
      inv_equals_gauss       vlbe_ale_inv_force = vlbe_ale_force (Gauss points,
                             both p fixed): cable undamped / damped and beam,
                             Q, K, D, random stretched curved moving states,
                             L from 0.05 to 40
      inv_jacobians          K = dQ/dq, D = dQ/dq' of the invariant route vs
                             central differences (cable, damped)
+     ale_inv_equals_gauss   ALE elements (p1 free, p2 free, both; p' != 0):
+                            vlbe_ale_force with VLBE_ALE_INV_AXIAL = without
+                            (Gauss points), all 10 rows of Q (Q alone and
+                            with K, D), K and D including the p- and
+                            p'-columns; cable / beam, damped / undamped,
+                            CONSERVATIVE or not, L from 0.05 to 40; the flag
+                            given to init = the same bit as a mode argument
+     ale_small_strain       the same at eps = 0.002 (a stretched arc): the
+                            Green strain's cancellation, EPS/eps relative
+     ale_inv_jacobians      the same invariant route's K, D vs central
+                            differences of its Q over all 10 coordinates
+     ale_inv_errors         ALE elements with the flag: ELENGTH, ENONFINITE,
+                            ESINGULAR (bending points, CONSERVATIVE end flux)
+                            as the Gauss route, outputs untouched
      chain_routes           element invariants assembled = Gauss elements
                             assembled by hand (dense); system invariants =
                             element invariants (rounding model (1+R/L)^2),
@@ -104,6 +120,48 @@ static void elem_make(vlbe_ale_elem *el, const vlbe_ale_mat *m)
     assert_int_equal(vlbe_ale_elem_init(el, m, 0, 0, 0, 0), VLBE_OK);
 }
 
+/* The invariant route's Q (with K, D), Q1 (Q alone), K, D against the
+   Gauss route's Qg, Kg, Dg: max |difference| / max |Gauss entry| of each
+   matrix into the running maxima w[0..2] (Q, K, D); fails above tol,
+   naming L, state s and mode. */
+static void check_vs_gauss(const vlbe_real *Q, const vlbe_real *Q1, const vlbe_real *K,
+                           const vlbe_real *D, const vlbe_real *Qg, const vlbe_real *Kg,
+                           const vlbe_real *Dg, double tol, double L, int s, unsigned mode,
+                           double *w)
+{
+    const double e[3] = {fmax(rel_diff(10, Q, Qg), rel_diff(10, Q1, Qg)), rel_diff(100, K, Kg),
+                         rel_diff(100, D, Dg)};
+    static const char name[3] = {'Q', 'K', 'D'};
+    int i;
+    for (i = 0; i < 3; ++i) {
+        w[i] = fmax(w[i], e[i]);
+        if (!(e[i] <= tol))
+            fail_msg("%c: L %g state %d mode %u: %.3g EPS", name[i], L, s, mode, e[i] / EPS);
+    }
+}
+
+/* the maxima of check_vs_gauss in EPS beside the 64 EPS tolerance */
+static void report_vs_gauss(const char *what, const double *w)
+{
+    static const char *const name[3] = {"Q, in EPS of max|Q|", "K, in EPS of max|K|",
+                                        "D, in EPS of max|D|"};
+    char buf[80];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        snprintf(buf, sizeof buf, "%s vs Gauss %s", what, name[i]);
+        tu_report(buf, w[i] / EPS, 64.0);
+    }
+}
+
+/* Q, K, D of one call bit for bit those of another */
+static void assert_qkd_same(const vlbe_real *Q, const vlbe_real *K, const vlbe_real *D,
+                            const vlbe_real *Q2, const vlbe_real *K2, const vlbe_real *D2)
+{
+    assert_memory_equal(Q2, Q, 10 * sizeof Q[0]);
+    assert_memory_equal(K2, K, 100 * sizeof K[0]);
+    assert_memory_equal(D2, D, 100 * sizeof D[0]);
+}
+
 /* ======================================================================= */
 
 /* The unit tables are exact integrals computed by a 5-point Gauss rule:
@@ -136,6 +194,36 @@ static void test_tables_exact(void **state)
             ASSERT_CLOSE_CTX((double)iv.t[P * 10 + a] / mr, (double)iv.t[a * 10 + P] / mp, 0,
                              16.0 * EPS * 2.1, "t[%d][%d]", P, a);
         }
+    /* slope maps: at L = 1, d h_a'/dp2 = (m_a - 1) h_a' - xi h_a'' and
+       d h_a'/dp1 = -(m_a - 1) h_a' + (xi - 1) h_a'' (xi = (p - p1)/L moves
+       with p1, p2); expanded in h_2', h_3', h_4' (h_1' = -h_3'), e.g. -h_1'
+       - xi h_1'' = 12 xi - 18 xi^2 = -6 h_4'.  Integers: exact.  And the
+       expansion reproduces the basis' own partials at random xi: tolerance
+       64 EPS absolute (both sides are sums of terms up to ~20 in size: the
+       coefficients times slopes here, the polynomial terms of
+       vlbe_herm_ale_eval there). */
+    {
+        static const double dpex[2][16] = {{0, 6, 0, 0, 0, 4, 1, 0, 0, -6, 0, 0, 0, 2, 0, 0},
+                                           {0, 0, 0, -6, 0, 0, 0, -2, 0, 0, 0, 6, 0, 0, -1, -4}};
+        tu_rng g = tu_rng_seed(700);
+        int k, s, c;
+        for (k = 0; k < 2; ++k)
+            for (a = 0; a < 16; ++a)
+                ASSERT_CLOSE_CTX(iv.dp[k][a], dpex[k][a], 0, 0, "dp[%d][%d]", k, a);
+        for (s = 0; s < 20; ++s) {
+            const vlbe_real xi = (vlbe_real)(0.5 + 0.5 * tu_rng_uniform(&g));
+            vlbe_herm_ale hb;
+            vlbe_herm_ale_eval(xi, VLBE_R(0.0), VLBE_R(1.0), 1, 1, &hb);
+            for (k = 0; k < 2; ++k)
+                for (a = 0; a < 4; ++a) {
+                    double sum = 0.0;
+                    for (c = 0; c < 4; ++c)
+                        sum += (double)iv.dp[k][4 * a + c] * (double)hb.h[1][0][c];
+                    ASSERT_CLOSE_CTX(sum, hb.h[1][1 + k][a], 0, 64.0 * EPS, "xi %g, k %d, a %d",
+                                     (double)xi, k, a);
+                }
+        }
+    }
     /* the element carries the same tables */
     {
         const vlbe_ale_mat m = mat_std();
@@ -163,7 +251,7 @@ static void test_inv_equals_gauss(void **state)
     const double tol = 64.0 * EPS;
     vlbe_ale_elem el;
     tu_rng g = tu_rng_seed(701);
-    double wq = 0.0, wk = 0.0, wd = 0.0;
+    double w[3] = {0.0, 0.0, 0.0};
     int il, s, k;
     (void)state;
     elem_make(&el, &m);
@@ -174,7 +262,6 @@ static void test_inv_equals_gauss(void **state)
             for (k = 0; k < ARRAY_LEN(modes); ++k) {
                 const unsigned mode = modes[k] | FIX;
                 vlbe_real Q[10], K[100], D[100], Qg[10], Kg[100], Dg[100], Q1[10];
-                double e;
                 assert_int_equal(vlbe_ale_force(&el, mode, q, qd, Qg, Kg, Dg), VLBE_OK);
                 assert_int_equal(vlbe_ale_inv_force(&el, modes[k], q, qd, Q, K, D), VLBE_OK);
                 assert_int_equal(vlbe_ale_inv_force(&el, modes[k], q, qd, Q1, NULL, NULL), VLBE_OK);
@@ -183,30 +270,17 @@ static void test_inv_equals_gauss(void **state)
                     vlbe_real Q2[10], K2[100], D2[100];
                     assert_int_equal(vlbe_ale_force(&el, mode | VLBE_ALE_INV_AXIAL, q, qd, Q2, K2, D2),
                                      VLBE_OK);
-                    assert_memory_equal(Q2, Q, sizeof Q);
-                    assert_memory_equal(K2, K, sizeof K);
-                    assert_memory_equal(D2, D, sizeof D);
+                    assert_qkd_same(Q, K, D, Q2, K2, D2);
                 }
-                e = fmax(rel_diff(10, Q, Qg), rel_diff(10, Q1, Qg));
-                wq = fmax(wq, e);
-                if (!(e <= tol))
-                    fail_msg("Q: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
-                e = rel_diff(100, K, Kg);
-                wk = fmax(wk, e);
-                if (!(e <= tol))
-                    fail_msg("K: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
-                e = rel_diff(100, D, Dg);
-                wd = fmax(wd, e);
-                if (!(e <= tol))
-                    fail_msg("D: L %g state %d mode %u: %.3g EPS", Ls[il], s, mode, e / EPS);
+                check_vs_gauss(Q, Q1, K, D, Qg, Kg, Dg, tol, Ls[il], s, mode, w);
             }
         }
-    tu_report("inv vs Gauss Q, in EPS of max|Q|", wq / EPS, 64.0);
-    tu_report("inv vs Gauss K, in EPS of max|K|", wk / EPS, 64.0);
-    tu_report("inv vs Gauss D, in EPS of max|D|", wd / EPS, 64.0);
+    report_vs_gauss("inv", w);
 }
 
-/* central differences of the invariant route's Q in q[j] (or qd[j]) */
+/* central differences of the invariant route's Q (vlbe_ale_force with
+   VLBE_ALE_INV_AXIAL and mode; FIX_P1 | FIX_P2 in mode: vlbe_ale_inv_force's
+   route) in q[j] (or qd[j]) */
 typedef struct fd_ctx {
     const vlbe_ale_elem *el;
     unsigned mode;
@@ -226,9 +300,51 @@ static double fd_fn(void *vc, double x, double *out)
         qd[c->j] = xr;
     else
         q[c->j] = xr;
-    assert_int_equal(vlbe_ale_inv_force(c->el, c->mode, q, qd, Q, NULL, NULL), VLBE_OK);
+    assert_int_equal(vlbe_ale_force(c->el, c->mode | VLBE_ALE_INV_AXIAL, q, qd, Q, NULL, NULL),
+                     VLBE_OK);
     for (i = 0; i < 10; ++i) out[i] = (double)Q[i];
     return (double)xr;
+}
+
+/* K and D of the invariant route at c's state against central differences
+   of its Q (fd_fn) in every coordinate and rate, the step EPS^(1/3) max(1,
+   |x|); rows and columns of a fixed p (c->mode) exactly zero and not
+   differenced (a fixed p still sets L but is no coordinate).  The error of
+   an entry is measured against the largest entry of its matrix (analytic
+   or differenced, so that a wrongly zero matrix cannot pass), at most tol;
+   worst[0] (K), worst[1] (D): running maxima. */
+static void check_fd(fd_ctx *c, const vlbe_real *K, const vlbe_real *D, double tol,
+                     double *worst)
+{
+    int r, i, j;
+    for (r = 0; r < 2; ++r) {
+        const vlbe_real *J = r ? D : K;
+        double Jfd[100], d[10], work[10], scale;
+        int fixed[10];
+        for (i = 0; i < 100; ++i) Jfd[i] = 0.0;
+        for (j = 0; j < 10; ++j)
+            fixed[j] = (j == 4 && (c->mode & VLBE_ALE_FIX_P1)) ||
+                       (j == 9 && (c->mode & VLBE_ALE_FIX_P2));
+        c->rate = r;
+        for (j = 0; j < 10; ++j) {
+            const double x = r ? (double)c->qd[j] : (double)c->q[j];
+            if (fixed[j]) continue;
+            c->j = j;
+            tu_central_diff(fd_fn, c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
+            for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = d[i];
+        }
+        scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
+        if (scale == 0.0) continue; /* D of the undamped cable: both zero */
+        for (i = 0; i < 100; ++i) {
+            if (fixed[i / 10] || fixed[i % 10]) {
+                ASSERT_CLOSE_CTX(J[i], 0.0, 0, 0, "fixed p entry %d, mode %u", i, c->mode);
+                continue;
+            }
+            worst[r] = fmax(worst[r], fabs(Jfd[i] - (double)J[i]) / scale);
+            ASSERT_CLOSE_CTX(Jfd[i], J[i], 0, tol * scale, "%s (%d, %d), mode %u", r ? "D" : "K",
+                             i / 10, i % 10, c->mode);
+        }
+    }
 }
 
 /* K and D of the invariant route against central differences of its Q over
@@ -242,8 +358,8 @@ static void test_inv_jacobians(void **state)
     const double tol = 64.0 * FD_ERR;
     vlbe_ale_elem el;
     tu_rng g = tu_rng_seed(702);
-    double worst = 0.0;
-    int s, k, r, i, j;
+    double worst[2] = {0.0, 0.0};
+    int s, k;
     (void)state;
     elem_make(&el, &m);
     for (s = 0; s < 3; ++s)
@@ -251,33 +367,254 @@ static void test_inv_jacobians(void **state)
             fd_ctx c;
             vlbe_real Q[10], K[100], D[100];
             c.el = &el;
-            c.mode = modes[k];
+            c.mode = modes[k] | FIX;
             make_state(&g, 0.8 + 0.3 * s, 0.15, c.q, c.qd);
             assert_int_equal(vlbe_ale_inv_force(&el, c.mode, c.q, c.qd, Q, K, D), VLBE_OK);
-            for (r = 0; r < 2; ++r) {
-                const vlbe_real *J = r ? D : K;
-                double Jfd[100], d[10], work[10], scale;
-                for (i = 0; i < 100; ++i) Jfd[i] = 0.0;
-                c.rate = r;
-                for (j = 0; j < 10; ++j) {
-                    const double x = r ? (double)c.qd[j] : (double)c.q[j];
-                    if (j == 4 || j == 9) continue;
-                    c.j = j;
-                    tu_central_diff(fd_fn, &c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
-                    for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = d[i];
+            check_fd(&c, K, D, tol, worst);
+        }
+    tu_report("inv K, D vs differences, / max entry", fmax(worst[0], worst[1]), tol);
+}
+
+/* A random ALE element state: make_state's (length L, stretch, curved,
+   moving) with material rates p1', p2' in +-0.5 L. */
+static void make_ale_state(tu_rng *g, double L, double stretch, vlbe_real *q, vlbe_real *qd)
+{
+    make_state(g, L, stretch, q, qd);
+    qd[4] = (vlbe_real)(0.5 * L * tu_rng_uniform(g));
+    qd[9] = (vlbe_real)(0.5 * L * tu_rng_uniform(g));
+}
+
+/* which p's are free: p1 alone, p2 alone, both */
+static const unsigned ale_pmodes[] = {VLBE_ALE_FIX_P2, VLBE_ALE_FIX_P1, 0u};
+/* cable / beam, undamped / damped, with and without the end fluxes */
+static const unsigned ale_modes[] = {VLBE_ALE_NO_BEND | VLBE_ALE_NO_DAMP,
+                                     VLBE_ALE_NO_BEND,
+                                     VLBE_ALE_NO_DAMP,
+                                     0u,
+                                     VLBE_ALE_NO_BEND | VLBE_ALE_CONSERVATIVE,
+                                     VLBE_ALE_NO_BEND | VLBE_ALE_NO_DAMP | VLBE_ALE_CONSERVATIVE,
+                                     VLBE_ALE_CONSERVATIVE,
+                                     VLBE_ALE_NO_DAMP | VLBE_ALE_CONSERVATIVE};
+
+/* The states above strain by ~10 %.  At engineering strains the axial force
+   EA eps r' is a small difference (eps = (|r'|^2 - 1)/2) on both routes,
+   whose rounding ~EPS relative to 1 becomes EPS/eps relative to max|Q|:
+   the routes then differ by that much, in Q and in whatever follows from
+   it (the p-columns of K by the scaling identity).  A uniformly stretched
+   circular arc, eps = 0.002 (bench_inv_ale.c's wire: EA = 4.1e6, arc of
+   radius 2 L), material flow p' = 1.2 L, 1.0 L, damped, cable and beam,
+   every free-p combination and mode; the invariant route on an nl = 2
+   element as above.  Tolerance 64 EPS (0.1 / eps) = 3200 EPS (7.1e-13 in
+   double: still inside the 1e-12 asked for). */
+static void test_ale_small_strain(void **state)
+{
+    const double lam = 1.002, eps = 0.5 * (lam * lam - 1.0), tol = 64.0 * EPS * 0.1 / eps;
+    vlbe_ale_mat m = mat_std();
+    vlbe_ale_elem eg, ei;
+    double w = 0.0;
+    int ip, k, n, i;
+    m.EA = VLBE_R(4.1e6);
+    m.EI = VLBE_R(6.4);
+    m.c_eps = m.c_kap = VLBE_R(1e-3);
+    (void)state;
+    assert_int_equal(vlbe_ale_elem_init(&eg, &m, 0, 0, 0, 0), VLBE_OK);
+    assert_int_equal(vlbe_ale_elem_init(&ei, &m, 0, 0, 2, 0), VLBE_OK);
+    for (ip = 0; ip < ARRAY_LEN(ale_pmodes); ++ip)
+        for (k = 0; k < ARRAY_LEN(ale_modes); ++k) {
+            const unsigned mode = ale_modes[k] | ale_pmodes[ip];
+            const double L = 0.25, R = 2.0 * L, om = 0.8;
+            vlbe_real q[10], qd[10], Q[10], K[100], D[100], Qg[10], Kg[100], Dg[100];
+            double e;
+            for (n = 0; n < 2; ++n) {
+                const double th = 0.3 + n * L / R;
+                const double x = lam * R * sin(th), y = lam * R * (1.0 - cos(th));
+                q[5 * n + 0] = (vlbe_real)x;
+                q[5 * n + 1] = (vlbe_real)y;
+                q[5 * n + 2] = (vlbe_real)(lam * cos(th));
+                q[5 * n + 3] = (vlbe_real)(lam * sin(th));
+                q[5 * n + 4] = (vlbe_real)(1.0 + n * L);
+                qd[5 * n + 0] = (vlbe_real)(0.4 - om * y);
+                qd[5 * n + 1] = (vlbe_real)(-0.2 + om * x);
+                qd[5 * n + 2] = (vlbe_real)(-om * lam * sin(th));
+                qd[5 * n + 3] = (vlbe_real)(om * lam * cos(th));
+                qd[5 * n + 4] = (vlbe_real)((n ? 1.0 : 1.2) * L);
+            }
+            assert_int_equal(vlbe_ale_force(&eg, mode, q, qd, Qg, Kg, Dg), VLBE_OK);
+            assert_int_equal(vlbe_ale_force(&ei, mode | VLBE_ALE_INV_AXIAL, q, qd, Q, K, D),
+                             VLBE_OK);
+            e = fmax(rel_diff(10, Q, Qg), fmax(rel_diff(100, K, Kg), rel_diff(100, D, Dg)));
+            assert_int_equal(vlbe_ale_force(&ei, mode | VLBE_ALE_INV_AXIAL, q, qd, Q, NULL, NULL),
+                             VLBE_OK);
+            e = fmax(e, rel_diff(10, Q, Qg));
+            w = fmax(w, e);
+            if (!(e <= tol)) fail_msg("small strain, mode %u: %.3g EPS", mode, e / EPS);
+            for (i = 0; i < 10; ++i) assert_true(isfinite((double)Q[i]));
+        }
+    tu_report("ALE inv vs Gauss at eps = 0.002, in EPS of max", w / EPS, tol / EPS);
+}
+
+/* ALE elements: vlbe_ale_force with VLBE_ALE_INV_AXIAL against the same
+   call without it (Gauss points, nl = 5 exact).  The invariant route gives
+   the p-rows as y_k . Q_e and the p-columns of K by the same scaling
+   identity as the Gauss route; both evaluate the same exact integrals in
+   another order, so the difference is rounding, of the same kind as for
+   fixed length (test_inv_equals_gauss): each entry a sum of ~100 products
+   reaching a few times the largest entry, the p-columns one division by L
+   of a sum of ~10 such entries.  Tolerance 64 EPS of max |entry| of each of
+   Q, K, D (1.4e-14 in double: within the 1e-12 asked for), L = 0.05 .. 40,
+   4 random states each with p1', p2' != 0, every free-p combination and
+   mode of ale_modes.  Q twice: alone (its own contraction order) and with
+   K, D.  The invariant route runs on an element with the axial rule nl = 2,
+   too few points for the degree-8 integrand: it must not use that rule
+   (the Gauss route with it is off by far more than the tolerance: checked,
+   so that a route falling back to Gauss points cannot pass).  The element
+   with VLBE_ALE_INV_AXIAL among its flags gives the mode's numbers bit for
+   bit. */
+static void test_ale_inv_equals_gauss(void **state)
+{
+    static const double Ls[] = {0.05, 0.4, 1.3, 6.0, 40.0};
+    const vlbe_ale_mat m = mat_std();
+    const double tol = 64.0 * EPS;
+    vlbe_ale_elem el, eli, elf;
+    tu_rng g = tu_rng_seed(705);
+    double w[3] = {0.0, 0.0, 0.0}, wrule = 0.0;
+    int il, s, ip, k;
+    (void)state;
+    elem_make(&el, &m);
+    assert_int_equal(vlbe_ale_elem_init(&eli, &m, 0, 0, 2, 0), VLBE_OK);
+    assert_int_equal(vlbe_ale_elem_init(&elf, &m, VLBE_ALE_INV_AXIAL, 0, 2, 0), VLBE_OK);
+    for (il = 0; il < ARRAY_LEN(Ls); ++il)
+        for (s = 0; s < 4; ++s) {
+            vlbe_real q[10], qd[10];
+            make_ale_state(&g, Ls[il], 0.15, q, qd);
+            for (ip = 0; ip < ARRAY_LEN(ale_pmodes); ++ip)
+                for (k = 0; k < ARRAY_LEN(ale_modes); ++k) {
+                    const unsigned mode = ale_modes[k] | ale_pmodes[ip];
+                    vlbe_real Q[10], K[100], D[100], Qg[10], Kg[100], Dg[100], Q1[10];
+                    vlbe_real Q2[10], K2[100], D2[100];
+                    assert_int_equal(vlbe_ale_force(&el, mode, q, qd, Qg, Kg, Dg), VLBE_OK);
+                    assert_int_equal(vlbe_ale_force(&eli, mode, q, qd, Q, K, D), VLBE_OK);
+                    wrule = fmax(wrule, rel_diff(10, Q, Qg));
+                    assert_int_equal(
+                        vlbe_ale_force(&eli, mode | VLBE_ALE_INV_AXIAL, q, qd, Q, K, D), VLBE_OK);
+                    assert_int_equal(
+                        vlbe_ale_force(&eli, mode | VLBE_ALE_INV_AXIAL, q, qd, Q1, NULL, NULL),
+                        VLBE_OK);
+                    assert_int_equal(vlbe_ale_force(&elf, mode, q, qd, Q2, K2, D2), VLBE_OK);
+                    assert_qkd_same(Q, K, D, Q2, K2, D2);
+                    check_vs_gauss(Q, Q1, K, D, Qg, Kg, Dg, tol, Ls[il], s, mode, w);
                 }
-                scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
-                if (scale == 0.0) continue; /* D of the undamped cable: both zero */
-                for (i = 0; i < 100; ++i) {
-                    const int pi = i / 10 == 4 || i / 10 == 9 || i % 10 == 4 || i % 10 == 9;
-                    if (pi) ASSERT_CLOSE_CTX(J[i], 0.0, 0, 0, "p entry %d", i);
-                    worst = fmax(worst, fabs(Jfd[i] - (double)J[i]) / scale);
-                    ASSERT_CLOSE_CTX(Jfd[i], J[i], 0, tol * scale, "%s (%d, %d), mode %u",
-                                     r ? "D" : "K", i / 10, i % 10, c.mode);
+        }
+    report_vs_gauss("ALE inv", w);
+    if (!(wrule > 1e3 * tol)) fail_msg("Gauss nl = 2 vs nl = 5: only %.3g EPS", wrule / EPS);
+    tu_report("ALE: 1e3 tol / (Gauss nl = 2 vs nl = 5)", 1e3 * tol / wrule, 1.0);
+}
+
+/* K and D of the invariant route on ALE elements against central
+   differences of its own Q (Q alone) over all 10 coordinates and rates,
+   every free-p combination and mode of ale_modes, 3 random states with L
+   in [0.8, 1.4]; the element's axial rule nl = 2 (inexact: a Q or K that
+   fell back to Gauss points would not match).  Tolerance 64 FD of the
+   largest entry, as in
+   test_ancf_ale.c's force_jacobians (the same element: entries up to L^-5
+   and, with bending, |r'|^-5, whose third derivatives set the truncation
+   error h^2 f'''/6 at tens of times the entries).  Rows and columns of a
+   fixed p: exactly zero. */
+static void test_ale_inv_jacobians(void **state)
+{
+    const vlbe_ale_mat m = mat_std();
+    const double tol = 64.0 * FD_ERR;
+    vlbe_ale_elem el;
+    tu_rng g = tu_rng_seed(706);
+    double worst[2] = {0.0, 0.0};
+    int s, ip, k;
+    (void)state;
+    assert_int_equal(vlbe_ale_elem_init(&el, &m, 0, 0, 2, 0), VLBE_OK);
+    for (s = 0; s < 3; ++s)
+        for (ip = 0; ip < ARRAY_LEN(ale_pmodes); ++ip)
+            for (k = 0; k < ARRAY_LEN(ale_modes); ++k) {
+                fd_ctx c;
+                vlbe_real Q[10], K[100], D[100];
+                c.el = &el;
+                c.mode = ale_modes[k] | ale_pmodes[ip];
+                make_ale_state(&g, 0.8 + 0.3 * s, 0.15, c.q, c.qd);
+                assert_int_equal(
+                    vlbe_ale_force(&el, c.mode | VLBE_ALE_INV_AXIAL, c.q, c.qd, Q, K, D), VLBE_OK);
+                check_fd(&c, K, D, tol, worst);
+            }
+    tu_report("ALE inv K vs differences, / max entry", worst[0], tol);
+    tu_report("ALE inv D vs differences, / max entry", worst[1], tol);
+}
+
+/* Bad input on ALE elements with the flag: the status of the Gauss route
+   (vlbe_ale_force without the flag), and the outputs untouched (Q alone and
+   with K, D).  L <= 0 (ELENGTH), NaN/Inf in any entry of q or q' including
+   p and p' (ENONFINITE), zero slope everywhere (ESINGULAR at the bending
+   points; the cable succeeds), zero slope at node 1 with CONSERVATIVE and
+   p1 free (ESINGULAR from the end flux only). */
+static void test_ale_inv_errors(void **state)
+{
+    const vlbe_ale_mat m = mat_std();
+    const vlbe_real bad[3] = {(vlbe_real)NAN, (vlbe_real)INFINITY, (vlbe_real)-INFINITY};
+    vlbe_ale_elem el;
+    tu_rng g = tu_rng_seed(707);
+    vlbe_real q[10], qd[10];
+    int ip, k, i, b, t;
+    (void)state;
+    elem_make(&el, &m);
+    make_ale_state(&g, 1.1, 0.1, q, qd);
+    for (ip = 0; ip < ARRAY_LEN(ale_pmodes); ++ip)
+        for (k = 0; k < ARRAY_LEN(ale_modes); ++k) {
+            const unsigned mode = ale_modes[k] | ale_pmodes[ip];
+            /* cases: 0, 1 length; 2 .. 61 non-finite q, q'; 62, 63 slopes */
+            for (t = 0; t < 64; ++t) {
+                vlbe_real qb[10], qdb[10], Q[10], K[100], D[100];
+                vlbe_status want, got;
+                int jac;
+                memcpy(qb, q, sizeof q);
+                memcpy(qdb, qd, sizeof qd);
+                if (t < 2)
+                    qb[9] = qb[4] - (t ? VLBE_R(0.5) : VLBE_R(0.0));
+                else if (t < 62) {
+                    i = (t - 2) % 10;
+                    b = (t - 2) / 10 % 3;
+                    if (t - 2 < 30)
+                        qb[i] = bad[b];
+                    else
+                        qdb[i] = bad[b];
+                } else if (t == 62) {
+                    qb[5] = qb[0];
+                    qb[6] = qb[1];
+                    qb[2] = qb[3] = qb[7] = qb[8] = VLBE_R(0.0);
+                } else
+                    qb[2] = qb[3] = VLBE_R(0.0);
+                for (jac = 0; jac < 2; ++jac) {
+                    want = vlbe_ale_force(&el, mode, qb, qdb, Q, jac ? K : NULL, jac ? D : NULL);
+                    fill(10, SENTINEL, Q);
+                    fill(100, SENTINEL, K);
+                    fill(100, SENTINEL, D);
+                    got = vlbe_ale_force(&el, mode | VLBE_ALE_INV_AXIAL, qb, qdb, Q,
+                                         jac ? K : NULL, jac ? D : NULL);
+                    if (got != want)
+                        fail_msg("mode %u case %d jac %d: status %d, Gauss route %d", mode, t, jac,
+                                 (int)got, (int)want);
+                    if (t < 62) assert_int_not_equal(got, VLBE_OK);
+                    if (t == 62)
+                        assert_int_equal(got, (mode & VLBE_ALE_NO_BEND) ? VLBE_OK : VLBE_ESINGULAR);
+                    if (t == 63)
+                        assert_int_equal(got, (ale_modes[k] & VLBE_ALE_CONSERVATIVE) &&
+                                                      !(mode & VLBE_ALE_NO_BEND) &&
+                                                      !(mode & VLBE_ALE_FIX_P1)
+                                                  ? VLBE_ESINGULAR
+                                                  : VLBE_OK);
+                    if (got != VLBE_OK) {
+                        assert_all_equal(10, Q, SENTINEL);
+                        assert_all_equal(100, K, SENTINEL);
+                        assert_all_equal(100, D, SENTINEL);
+                    }
                 }
             }
         }
-    tu_report("inv K, D vs differences, / max entry", worst, tol);
 }
 
 /* dense n x n of a band matrix (VLBE_ALE_INV_BW per row) */
@@ -585,7 +922,10 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_tables_exact),  cmocka_unit_test(test_inv_equals_gauss),
-        cmocka_unit_test(test_inv_jacobians), cmocka_unit_test(test_chain_routes),
+        cmocka_unit_test(test_inv_jacobians), cmocka_unit_test(test_ale_inv_equals_gauss),
+        cmocka_unit_test(test_ale_small_strain), cmocka_unit_test(test_ale_inv_jacobians),
+        cmocka_unit_test(test_ale_inv_errors),
+        cmocka_unit_test(test_chain_routes),
         cmocka_unit_test(test_rigid_motion),  cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests_name("ale_inv", tests, NULL, NULL);
