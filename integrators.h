@@ -252,7 +252,7 @@ typedef struct vlbe_bdf {
     vlbe_real hold_;    /* step size of the last accepted step             */
     vlbe_real cj_;      /* leading coefficient alpha_s/h of the last attempt */
     vlbe_real cj_lu_;   /* cj of the stored iteration matrix               */
-    vlbe_real rate_;    /* Newton convergence factor estimate s            */
+    vlbe_real rate_;    /* last Newton rate estimate s (diagnostic only)   */
     int kold_, ns_, phase_, jcalc_; /* jcalc_: -1 matrix needed, 0 fresh, 1 old */
 } vlbe_bdf;
 
@@ -1603,15 +1603,27 @@ VLBE_INLINE void vlbe__bdf_restore(vlbe_bdf *st, vlbe_real h, int k, int ns)
    tighter test keeps Newton noise out of the error estimates, which pays
    back in larger steps and higher orders) or the q, v part of d_m is at
    the rounding floor 100 eps |y|;
-   rho > 0.9 or newton_max iterations fail.  With a stale cj the correction is
-   scaled by 2 / (1 + cj / cj_lu).  Returns VLBE_OK with trial y, y' and
+   rho > 0.9 or newton_max iterations fail.  Every attempt starts from
+   s = 100, as DASSL does after a change of cj: a first correction is
+   accepted alone only when it is below 3e-4, otherwise a second one
+   measures the rate.  (DASSL keeps the s of the last step while cj stays
+   the same.  At a constant step with a stored matrix that s is never
+   measured again -- every step converges "in one iteration" on a rate
+   from a fresh matrix many steps back -- while the matrix goes stale:
+   on a rotating structure with stiff springs the stored matrix turns
+   with the structure, the true rate of the iteration passes 1 in the
+   stiff directions, and the unconverged corrections accepted on the old
+   rate put fixed-step BDF2 (h = 1e-3) on the spin-up scene of
+   examples/ex_spin.h into divergence at t = 2.6 s, and test_bdf.c's
+   spinning spring 3 rad off.)  With a stale cj the correction is scaled
+   by 2 / (1 + cj / cj_lu).  Returns VLBE_OK with trial y, y' and
    e = y - y_pred, or ENOCONV / ENONFINITE / ESINGULAR / ECALLBACK. */
 VLBE_INLINE vlbe_status vlbe__bdf_corrector(vlbe_bdf *st, vlbe_real t1, int k)
 {
     int N2 = vlbe__bdf_n2(st), i, j, it;
     vlbe_real *y = vlbe__bdf_vec(st, 0), *yp = vlbe__bdf_vec(st, 1), *e = vlbe__bdf_vec(st, 2),
               *d = vlbe__bdf_vec(st, 3);
-    vlbe_real cj = st->cj_, s = st->rate_, pnorm, dn, dn0 = VLBE_R(1.0);
+    vlbe_real cj = st->cj_, s = VLBE_R(100.0), pnorm, dn, dn0 = VLBE_R(1.0);
     vlbe_status rc;
     for (;;) {
         /* predictor */
@@ -1723,7 +1735,6 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
         cj = -alphas / h;
         ck = vlbe_fabs(st->alpha_[k + 1] + alphas - alpha0);
         if (ck < st->alpha_[k + 1]) ck = st->alpha_[k + 1];
-        if (cj != st->cj_) st->rate_ = VLBE_R(100.0);
         st->cj_ = cj;
         if (st->jcalc_ != -1) {
             vlbe_real ratio = cj / st->cj_lu_;
