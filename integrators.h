@@ -89,6 +89,12 @@ REFERENCES
    C. W. Gear, B. Leimkuhler, G. K. Gupta, J. Comput. Appl. Math. 12 (1985).
    K. Brenan, S. Campbell, L. Petzold, Numerical Solution of Initial-Value
    Problems in DAEs (DASSL), SIAM 1996.
+   L. Petzold, Differential/algebraic equations are not ODE's, SIAM J. Sci.
+   Stat. Comput. 3 (1982) 367-384 (error estimates after step changes).
+   L. F. Shampine, Implementation of implicit formulas for the solution of
+   ODEs, SIAM J. Sci. Stat. Comput. 1 (1980) 103-118 (the filtered error
+   estimate); E. Hairer, G. Wanner, Solving ODEs II, 2nd ed., Springer
+   1996, sec. IV.8.
 */
 #ifndef VLBE_INTEGRATORS_H
 #define VLBE_INTEGRATORS_H
@@ -222,11 +228,23 @@ typedef struct vlbe_bdf_params {
     vlbe_real h0;         /* first step; 0: estimated from |y'(t0)| (default 0)    */
     vlbe_real h_min;      /* smallest step; 0: 4 eps |t| (default 0)               */
     vlbe_real h_max;      /* largest step; 0: unbounded (default 0)                */
-    int max_order;        /* highest order, 1..5 (default 5; 2 keeps A-stability)  */
+    int max_order;        /* highest order, 1..5 (default 5; 2 keeps A-stability).
+                             Undamped stiff modes (beams with their axial modes,
+                             stiff springs) want 2: BDF3..5 are unstable on a band
+                             of the imaginary axis (test_bdf.c), and an undamped
+                             mode of frequency w in that band grows until the
+                             error test has cut h below the band (BDF5: w h <
+                             0.71), whatever the tolerance: the examples/ex_spin.h
+                             ANCF beam (w up to 3.7e4 rad/s) then steps at 2e-5 s */
     int newton_max;       /* Newton iterations per attempt (default 4, as DASSL)   */
     int fixed_step;       /* 1: every step is h0 (h_min, h_max, rtol/atol for the
                              error test unused), order 1, 2, ... up to max_order;
                              for stability studies (default 0)                     */
+    int stiff_filter;     /* 1: the error estimate is filtered through the
+                             iteration matrix (Shampine's (I - J/cj)^-1), which
+                             discounts stiff modes the step does not resolve
+                             (see vlbe__bdf_enorm); 0: the plain estimate of
+                             DASSL (default 1)                                     */
 } vlbe_bdf_params;
 
 /* BDF integrator state.  q, v, lambda, mu point into the caller's workspace
@@ -252,7 +270,7 @@ typedef struct vlbe_bdf {
     vlbe_real hold_;    /* step size of the last accepted step             */
     vlbe_real cj_;      /* leading coefficient alpha_s/h of the last attempt */
     vlbe_real cj_lu_;   /* cj of the stored iteration matrix               */
-    vlbe_real rate_;    /* Newton convergence factor estimate s            */
+    vlbe_real rate_;    /* last Newton rate estimate s (diagnostic only)   */
     int kold_, ns_, phase_, jcalc_; /* jcalc_: -1 matrix needed, 0 fresh, 1 old */
 } vlbe_bdf;
 
@@ -1291,8 +1309,9 @@ VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
        y' = y'_pred + cj (y - y_pred),   cj = -alpha_s / h,  alpha_s = -sum_{j<=k} 1/j
    (eq. 5.2.8-5.2.13 of the book).  The local error of order k is
    ck |y - y_pred|, and the terms at orders k-2..k+1 (sec. 5.2.2) drive the
-   order and step selection.  The residual of the GGL form (Gear, Gupta,
-   Leimkuhler 1985, eq. 2.6) is
+   order and step selection; by default their vectors pass through the
+   stiff filter of vlbe__bdf_enorm first.  The residual of the GGL form
+   (Gear, Gupta, Leimkuhler 1985, eq. 2.6) is
        G_q = q' - v + C_q^T mu,   G_v = M v' + C_q^T lambda - Q,
        G_l = C_q v + C_t,         G_m = C(t, q);
    lambda and mu are algebraic (index 2): they are predicted and corrected
@@ -1303,7 +1322,7 @@ VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
    selection through the differences. */
 
 /* Defaults: rtol 1e-6, atol 1e-8, h0, h_min, h_max 0 (automatic), order <= 5,
-   4 Newton iterations, variable step. */
+   4 Newton iterations, variable step, filtered error estimate. */
 VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
 {
     VLBE_ASSERT(p != NULL);
@@ -1313,6 +1332,7 @@ VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
     p->max_order = VLBE_BDF_MAXORD;
     p->newton_max = 4;
     p->fixed_step = 0;
+    p->stiff_filter = 1;
 }
 
 /* Scratch shared by the Jacobian helpers (and by vlbe_dae_consistent_acc at
@@ -1392,6 +1412,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
         !(par->h_min >= VLBE_R(0.0)) || !(par->h_max >= VLBE_R(0.0)) ||
         !isfinite(par->h0) || !isfinite(par->h_max) || par->max_order < 1 ||
         par->max_order > VLBE_BDF_MAXORD || par->newton_max < 1 ||
+        par->stiff_filter < 0 || par->stiff_filter > 1 ||
         (par->fixed_step && !(par->h0 > VLBE_R(0.0))) ||
         (par->h_max > VLBE_R(0.0) && par->h_min > par->h_max))
         return VLBE_EARG;
@@ -1559,6 +1580,57 @@ VLBE_INLINE void vlbe__bdf_solve(vlbe_bdf *st, vlbe_real *d)
     for (i = 2 * n; i < 2 * n + 2 * m; ++i) d[i] *= c;
 }
 
+/* Norm of an error-estimate vector x (e, or e plus differences): with
+   par.stiff_filter the weighted norm vlbe__bdf_norm of the q, v parts of
+       F x = A^-1 (c x_q, c M x_v, C_q x_v, C_q x_q),    c = cj_lu,
+   A the stored iteration matrix dG/dy + c dG/dy' (the LU of the corrector),
+   M, C_q from the last residual; without it, of x itself.  The right side
+   is c dG/dy' x in the differential rows and the linearized constraints
+   of x in the algebraic ones, so that F x = x when the Jacobian terms of
+   the differential rows are small against c dG/dy': F is the filter
+   (I - J/c)^-1 of Shampine (1980; Hairer-Wanner IV.8 use it for Radau
+   IIA), J the Jacobian of the first-order form, on the tangent space of
+   the constraints, whose normal components pass unchanged to first order
+   (they keep lambda's accuracy: test_pendulum_period).  A mode of the linearized
+   system with eigenvalue z is scaled by c / (c - z): 1 for the modes the
+   step resolves (|z| << c, c ~ 1.5/h at order 2), ~ c / |z| for stiff
+   ones.  Why: velocities along stiff undamped springs (the axial modes of
+   a beam) behave like index-2 variables (in the limit of infinite
+   stiffness the springs are constraints, their forces index-3
+   multipliers): when h changes their BDF values jump by O(h^k) instead of
+   O(h^(k+1)) (Petzold 1982).  On a curved spring manifold -- a rotating
+   beam, where BDF1's chord velocity has a radial part w_hub^2 R h / 2 --
+   these jumps dominate the plain estimate (examples/ex_spin.h at t = 10 s
+   after fixed steps of 1e-3 s: a doubled h gives 80 times the estimate of
+   the same h at order 1, 220 times at order 2, where h changed by 10 %
+   already gives 9 times).  Step changes then cause the rejections that
+   cause step changes, the order selection, which reads the jumps as
+   noise, falls to order 1, and h shrinks until it resolves the stiff
+   modes, which the jumps keep excited: on the spin-up scene at rtol
+   1e-3, 70 % of the attempts rejected, h ~ 1e-3 s at order 1, 7 times the
+   steps of fixed-step BDF2 at h = 1e-2 for a 40 times larger error.
+   (Schaub and Simeon's remedy for Radau5 scales the error of stiff
+   velocity components by h; here the iteration matrix finds them.)  Costs
+   one solve with the stored LU per norm, two to four per attempt.  f (N2)
+   is scratch. */
+VLBE_INLINE vlbe_real vlbe__bdf_enorm(vlbe_bdf *st, const vlbe_real *x, vlbe_real *f)
+{
+    int n = st->n, m = st->m;
+    const vlbe_real *M = vlbe__bdf_tail(st) + (size_t)vlbe__bdf_n2(st) * (size_t)vlbe__bdf_n2(st),
+                    *Cq = M + (size_t)n * (size_t)n + (size_t)n;
+    if (!st->par.stiff_filter) return vlbe__bdf_norm(st, x);
+    vlbe_vec_copy(n, x, f);
+    vlbe_vec_scale(n, st->cj_lu_, f);
+    vlbe_mat_vec(n, n, M, x + n, f + n);
+    vlbe_vec_scale(n, st->cj_lu_, f + n);
+    if (m > 0) {
+        vlbe_mat_vec(m, n, Cq, x + n, f + 2 * n);
+        vlbe_mat_vec(m, n, Cq, x, f + 2 * n + m);
+    }
+    vlbe__bdf_solve(st, f);
+    return vlbe__bdf_norm(st, f);
+}
+
 /* Step-size dependent coefficients for a step h at order k (book sec. 5.2.1)
    and phi -> phi* (phi_j times beta_j).  ns: steps taken with constant h and k
    (counting this one); while ns > k+1 the coefficients do not change. */
@@ -1603,15 +1675,27 @@ VLBE_INLINE void vlbe__bdf_restore(vlbe_bdf *st, vlbe_real h, int k, int ns)
    tighter test keeps Newton noise out of the error estimates, which pays
    back in larger steps and higher orders) or the q, v part of d_m is at
    the rounding floor 100 eps |y|;
-   rho > 0.9 or newton_max iterations fail.  With a stale cj the correction is
-   scaled by 2 / (1 + cj / cj_lu).  Returns VLBE_OK with trial y, y' and
+   rho > 0.9 or newton_max iterations fail.  Every attempt starts from
+   s = 100, as DASSL does after a change of cj: a first correction is
+   accepted alone only when it is below 3e-4, otherwise a second one
+   measures the rate.  (DASSL keeps the s of the last step while cj stays
+   the same.  At a constant step with a stored matrix that s is never
+   measured again -- every step converges "in one iteration" on a rate
+   from a fresh matrix many steps back -- while the matrix goes stale:
+   on a rotating structure with stiff springs the stored matrix turns
+   with the structure, the true rate of the iteration passes 1 in the
+   stiff directions, and the unconverged corrections accepted on the old
+   rate put fixed-step BDF2 (h = 1e-3) on the spin-up scene of
+   examples/ex_spin.h into divergence at t = 2.6 s, and test_bdf.c's
+   spinning spring 3 rad off.)  With a stale cj the correction is scaled
+   by 2 / (1 + cj / cj_lu).  Returns VLBE_OK with trial y, y' and
    e = y - y_pred, or ENOCONV / ENONFINITE / ESINGULAR / ECALLBACK. */
 VLBE_INLINE vlbe_status vlbe__bdf_corrector(vlbe_bdf *st, vlbe_real t1, int k)
 {
     int N2 = vlbe__bdf_n2(st), i, j, it;
     vlbe_real *y = vlbe__bdf_vec(st, 0), *yp = vlbe__bdf_vec(st, 1), *e = vlbe__bdf_vec(st, 2),
               *d = vlbe__bdf_vec(st, 3);
-    vlbe_real cj = st->cj_, s = st->rate_, pnorm, dn, dn0 = VLBE_R(1.0);
+    vlbe_real cj = st->cj_, s = VLBE_R(100.0), pnorm, dn, dn0 = VLBE_R(1.0);
     vlbe_status rc;
     for (;;) {
         /* predictor */
@@ -1672,11 +1756,12 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
     const vlbe_bdf_params *p;
     int N2, k, kmax, ns, knew, nef = 0, ncf = 0, nsf = 0, to_stop, shortened;
     vlbe_real h, hnat, hmin, t1, est, terk, terkm1 = VLBE_R(0.0), erkm1 = VLBE_R(0.0), dist;
-    vlbe_real *e, *d;
+    vlbe_real *e, *d, *yp;
     vlbe_status rc;
     VLBE_ASSERT(st != NULL && st->sys != NULL);
     p = &st->par;
     N2 = vlbe__bdf_n2(st);
+    yp = vlbe__bdf_vec(st, 1);
     e = vlbe__bdf_vec(st, 2);
     d = vlbe__bdf_vec(st, 3);
     kmax = p->max_order;
@@ -1723,7 +1808,6 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
         cj = -alphas / h;
         ck = vlbe_fabs(st->alpha_[k + 1] + alphas - alpha0);
         if (ck < st->alpha_[k + 1]) ck = st->alpha_[k + 1];
-        if (cj != st->cj_) st->rate_ = VLBE_R(100.0);
         st->cj_ = cj;
         if (st->jcalc_ != -1) {
             vlbe_real ratio = cj / st->cj_lu_;
@@ -1734,18 +1818,21 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
         est = VLBE_R(0.0);
         terk = VLBE_R(0.0);
         if (rc == VLBE_OK) {
-            /* error estimates at orders k, k-1, k-2 (book sec. 5.2.2) */
-            enorm = vlbe__bdf_norm(st, e);
+            if (p->fixed_step) break; /* accepted, no error test */
+            /* error estimates at orders k, k-1, k-2 (book sec. 5.2.2), in the
+               filtered norm; the trial y' is free now (scratch) */
+            enorm = vlbe__bdf_enorm(st, e, yp);
             est = st->sigma_[k + 1] * enorm;
             terk = (vlbe_real)(k + 1) * est;
             if (k > 1) {
                 vlbe_real *pk1 = vlbe__bdf_phi(st, k + 1);
                 for (j = 0; j < N2; ++j) d[j] = pk1[j] + e[j];
-                erkm1 = st->sigma_[k] * vlbe__bdf_norm(st, d);
+                erkm1 = st->sigma_[k] * vlbe__bdf_enorm(st, d, yp);
                 terkm1 = (vlbe_real)k * erkm1;
                 if (k > 2) {
                     vlbe_vec_axpy(N2, VLBE_R(1.0), vlbe__bdf_phi(st, k), d);
-                    vlbe_real terkm2 = (vlbe_real)(k - 1) * st->sigma_[k - 1] * vlbe__bdf_norm(st, d);
+                    vlbe_real terkm2 =
+                        (vlbe_real)(k - 1) * st->sigma_[k - 1] * vlbe__bdf_enorm(st, d, yp);
                     lower = (terkm1 > terkm2 ? terkm1 : terkm2) <= terk;
                 } else {
                     lower = terkm1 <= VLBE_R(0.5) * terk;
@@ -1755,7 +1842,7 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
                     est = erkm1;
                 }
             }
-            if (p->fixed_step || ck * enorm <= VLBE_R(1.0)) break; /* accepted */
+            if (ck * enorm <= VLBE_R(1.0)) break; /* accepted */
         } else {
             if (!vlbe__int_retry(&st->stats, rc)) {
                 vlbe__bdf_restore(st, h, k, ns);
@@ -1826,7 +1913,7 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
                     /* try order k+1: phi_{k+2} holds the previous e */
                     vlbe_real *pk2 = vlbe__bdf_phi(st, k + 2), terkp1;
                     for (j = 0; j < N2; ++j) d[j] = e[j] - pk2[j];
-                    terkp1 = vlbe__bdf_norm(st, d); /* (k+2) * erkp1 */
+                    terkp1 = vlbe__bdf_enorm(st, d, yp); /* (k+2) * erkp1 */
                     if (k == 1) {
                         if (terkp1 < VLBE_R(0.5) * terk) {
                             ++k;
