@@ -29,6 +29,7 @@
    row whose median exceeds 1.15 times its min is marked '*'. */
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
+#include "../examples/ex_spin.h"
 #include "svgplot.h"
 #include "bench_util.h"
 
@@ -213,6 +214,395 @@ static void measure(cfg *cs, int nc, long *bad)
     }
 }
 
+/* -- per step of scene 1 (examples/ex_spin.h) -------------------------------- */
+#define STEP_W 6.0       /* rad/s, scene 1                                  */
+#define STEP_T 2.0       /* s of the scene per run (400 steps of 5 ms)       */
+#define STEP_ROUNDS 11   /* interleaved rounds over all configurations       */
+#define STEP_MIN_S 0.05  /* s: a round's sample repeats the run up to this   */
+#define STEP_NOBS 1024   /* tip records per run (>= STEP_T / h + 1)          */
+#define STEP_NFULL 3     /* the whole-scene check runs: chain_ne[0 .. 2]      */
+
+static const int step_route[NROUTE] = {SP_GAUSS, SP_INV_ELEM, SP_INV_SYS};
+
+/* The model's vlbe_dae with every callback timed (CLOCK_MONOTONIC around
+   each call, ~2 x 20 ns) and passed through. */
+enum { TM_FORCE, TM_JAC, TM_MASS, TM_OTHER, NTM }; /* Q; K, D; M; constraints, mass_jac */
+typedef struct dae_timer {
+    vlbe_dae in;
+    double s[NTM]; /* seconds per kind of callback */
+    long n[NTM];   /* calls                        */
+} dae_timer;
+
+static int tm_done(void *u, int kind, double t0, int rc)
+{
+    dae_timer *w = (dae_timer *)u;
+    w->s[kind] += benchu_now() - t0;
+    ++w->n[kind];
+    return rc;
+}
+
+#define TM_IN ((const dae_timer *)u)->in
+static int tm_mass(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+{
+    const double t0 = benchu_now();
+    return tm_done(u, TM_MASS, t0, TM_IN.mass(TM_IN.user, t, q, v, M));
+}
+
+static int tm_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+{
+    const double t0 = benchu_now();
+    return tm_done(u, TM_FORCE, t0, TM_IN.force(TM_IN.user, t, q, v, Q));
+}
+
+static int tm_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                        vlbe_real *K, vlbe_real *D)
+{
+    const double t0 = benchu_now();
+    return tm_done(u, TM_JAC, t0, TM_IN.force_jac(TM_IN.user, t, q, v, K, D));
+}
+
+static int tm_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+{
+    const double t0 = benchu_now();
+    return tm_done(u, TM_OTHER, t0, TM_IN.constr(TM_IN.user, t, q, C));
+}
+
+static int tm_constr_jac(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
+{
+    const double t0 = benchu_now();
+    return tm_done(u, TM_OTHER, t0, TM_IN.constr_jac(TM_IN.user, t, q, Cq, Ct));
+}
+
+static int tm_constr_acc(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                         vlbe_real *g)
+{
+    const double t0 = benchu_now();
+    return tm_done(u, TM_OTHER, t0, TM_IN.constr_acc(TM_IN.user, t, q, v, g));
+}
+
+static int tm_mass_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                       const vlbe_real *a, vlbe_real *Mq, vlbe_real *Mv)
+{
+    const double t0 = benchu_now();
+    return tm_done(u, TM_OTHER, t0, TM_IN.mass_jac(TM_IN.user, t, q, v, a, Mq, Mv));
+}
+
+static int tm_constr_hess(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *lam,
+                          vlbe_real *H)
+{
+    const double t0 = benchu_now();
+    return tm_done(u, TM_OTHER, t0, TM_IN.constr_hess(TM_IN.user, t, q, lam, H));
+}
+#undef TM_IN
+
+/* sys: the timed copy of w->in (a callback the model leaves out stays out);
+   the timers keep running until the next tm_wire */
+static void tm_wire(dae_timer *w, vlbe_dae *sys)
+{
+    int k;
+    *sys = w->in;
+    sys->user = w;
+    for (k = 0; k < NTM; ++k) {
+        w->s[k] = 0.0;
+        w->n[k] = 0;
+    }
+    sys->mass = w->in.mass ? tm_mass : NULL;
+    sys->force = w->in.force ? tm_force : NULL;
+    sys->force_jac = w->in.force_jac ? tm_force_jac : NULL;
+    sys->constr = w->in.constr ? tm_constr : NULL;
+    sys->constr_jac = w->in.constr_jac ? tm_constr_jac : NULL;
+    sys->constr_acc = w->in.constr_acc ? tm_constr_acc : NULL;
+    sys->mass_jac = w->in.mass_jac ? tm_mass_jac : NULL;
+    sys->constr_hess = w->in.constr_hess ? tm_constr_hess : NULL;
+}
+
+/* tip (hub frame) after every step of a run */
+typedef struct tip_rec {
+    const sp_model *m;
+    int n;
+    double t_last; /* time of the last record [s] */
+    double tip[STEP_NOBS][2];
+} tip_rec;
+
+static vlbe_status tip_obs(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
+                           const vlbe_real *lambda)
+{
+    tip_rec *r = (tip_rec *)ctx;
+    (void)v;
+    (void)lambda;
+    r->t_last = t;
+    if (r->n < STEP_NOBS) sp_tip(r->m, t, q, r->tip[r->n++]);
+    return VLBE_OK;
+}
+
+/* one configuration: chain size index, route; medians over the rounds */
+typedef struct step_cfg {
+    int ch, route, reps;               /* reps: runs per sample          */
+    double s[STEP_ROUNDS][NTM + 1];    /* seconds per run: callbacks, total */
+    double us[NTM + 1], us_min;        /* us per step: medians; min total */
+    long calls[NTM];                   /* calls per run                  */
+    double ns_call[NTM];               /* ns per call: median; failed runs: the warm-up */
+    vlbe_dae_stats st;
+    vlbe_status status;
+    double t_stop, dtip; /* dtip: max |tip - tip of Gauss| / max |tip| over the run */
+} step_cfg;
+
+static sp_model step_m;
+static ex_method step_meth;
+static tip_rec step_tips[NROUTE];
+
+/* Scene 1 with ANCF at chain_ne[ch] elements and route r over [0, STEP_T]
+   (HHT-alpha -0.05, h = 5 ms, as sp_run), reps times; seconds of ex_run
+   per run (-1 on setup failure).  Callback times summed in *tm; the tips of
+   the (last) run into rec if non-NULL. */
+static double step_run(int ch, int r, int reps, dae_timer *tm, tip_rec *rec, ex_run_out *ro)
+{
+    static vlbe_real q0[2 * SP_NMAX];
+    vlbe_hht_params par;
+    vlbe_dae sys;
+    sp_cfg c;
+    double t = 0.0;
+    int k;
+    sp_cfg_default(&c, STEP_W, SP_ANCF);
+    c.ne = chain_ne[ch];
+    c.inv = step_route[r];
+    if (sp_init(&step_m, &c) != VLBE_OK || ex_hht_pick(&par, c.alpha, c.rho_inf) != VLBE_OK ||
+        ex_method_reserve(&step_meth, step_m.n, step_m.sys.m) != 0)
+        return -1.0;
+    par.max_halvings = 10;
+    step_meth.hht = &par;
+    step_meth.h = c.h;
+    sp_rest(&step_m, q0, q0 + step_m.n);
+    tm->in = step_m.sys;
+    tm_wire(tm, &sys);
+    for (k = 0; k < reps; ++k) {
+        double t0;
+        if (rec) {
+            rec->m = &step_m;
+            rec->n = 0;
+        }
+        t0 = benchu_now();
+        ex_run(&sys, &step_meth, q0, q0 + step_m.n, STEP_T, rec ? tip_obs : NULL, rec, NULL,
+               NULL, NULL, ro);
+        t += benchu_now() - t0;
+    }
+    return t / reps;
+}
+
+/* max over the records of |a - b| (both components) / max |b|; NaN when
+   the runs differ in length */
+static double tip_diff(const tip_rec *a, const tip_rec *b)
+{
+    double d = 0.0, s = 0.0;
+    int k, j;
+    if (a->n != b->n) return (double)NAN;
+    for (k = 0; k < a->n; ++k)
+        for (j = 0; j < 2; ++j) {
+            d = fmax(d, fabs(a->tip[k][j] - b->tip[k][j]));
+            s = fmax(s, fabs(b->tip[k][j]));
+        }
+    return d / s;
+}
+
+/* Warm-up with the tip record (status, counters, calls, ns per call), then
+   STEP_ROUNDS interleaved rounds of the configurations that ran through.
+   The Gauss route of a size must come before the others.  -1 on setup
+   failure, else the number of failed runs. */
+static int step_measure(step_cfg *sc, int nsc)
+{
+    ex_run_out ro;
+    dae_timer tm;
+    int i, b, k, fail = 0;
+    for (i = 0; i < nsc; ++i) {
+        step_cfg *p = &sc[i];
+        double t1 = step_run(p->ch, p->route, 1, &tm, &step_tips[p->route], &ro);
+        if (t1 < 0.0) return -1;
+        p->status = ro.status;
+        p->st = ro.stats;
+        p->t_stop = step_tips[p->route].t_last;
+        for (k = 0; k < NTM; ++k) {
+            p->calls[k] = tm.n[k];
+            p->ns_call[k] = tm.n[k] ? 1e9 * tm.s[k] / (double)tm.n[k] : 0.0;
+        }
+        p->dtip = p->route == 0 ? 0.0 : tip_diff(&step_tips[p->route], &step_tips[0]);
+        p->reps = t1 > 0.0 && t1 < STEP_MIN_S ? (int)(STEP_MIN_S / t1) + 1 : 1;
+        fail += ro.status != VLBE_OK;
+    }
+    for (b = 0; b < STEP_ROUNDS; ++b)
+        for (i = 0; i < nsc; ++i) {
+            step_cfg *p = &sc[i];
+            if (p->status != VLBE_OK) continue;
+            p->s[b][NTM] = step_run(p->ch, p->route, p->reps, &tm, NULL, &ro);
+            for (k = 0; k < NTM; ++k) p->s[b][k] = tm.s[k] / p->reps;
+            fail += ro.status != VLBE_OK;
+        }
+    for (i = 0; i < nsc; ++i) {
+        step_cfg *p = &sc[i];
+        const double per = 1e6 / (double)(p->st.steps > 0 ? p->st.steps : 1);
+        double col[STEP_ROUNDS];
+        for (k = 0; k <= NTM; ++k) {
+            p->us[k] = (double)NAN;
+            if (p->status != VLBE_OK) continue;
+            for (b = 0; b < STEP_ROUNDS; ++b) col[b] = p->s[b][k];
+            qsort(col, STEP_ROUNDS, sizeof col[0], benchu_cmp_double);
+            p->us[k] = per * col[STEP_ROUNDS / 2];
+            if (k == NTM) p->us_min = per * col[0];
+            else if (p->calls[k] > 0) p->ns_call[k] = 1e9 * col[STEP_ROUNDS / 2] / (double)p->calls[k];
+        }
+    }
+    return fail;
+}
+
+/* a / b of the median times per step, "failed" if either run failed */
+static void step_ratio(const step_cfg *a, const step_cfg *b)
+{
+    if (a->status != VLBE_OK || b->status != VLBE_OK) printf(" %6s", "failed");
+    else printf(" %6.2f", a->us[NTM] / b->us[NTM]);
+}
+
+/* The per-step table, CSV and chart, and the whole scene with the routes
+   at the smaller sizes.  Returns the number of failed runs other than the
+   system route's (reported), -1 if a setup failed. */
+static int step_bench(const char *tag)
+{
+    static step_cfg sc[NCH * NROUTE];
+    static sp_model fm;
+    char csv[256], svg[256];
+    int c, r, i, nnoisy = 0, fail, fail_other = 0;
+    FILE *f;
+    for (c = 0; c < NCH; ++c)
+        for (r = 0; r < NROUTE; ++r) {
+            sc[c * NROUTE + r].ch = c;
+            sc[c * NROUTE + r].route = r;
+        }
+    fail = step_measure(sc, NCH * NROUTE);
+    if (fail < 0) return -1;
+    printf("\nscene 1 per step: ANCF beam with bending (examples/ex_spin.h, W = %g rad/s), "
+           "HHT-alpha -0.05, h = 5 ms, t in [0, %g] s; us per step: median (min) of %d "
+           "interleaved rounds; callbacks timed inside the runs\n",
+           STEP_W, STEP_T, STEP_ROUNDS);
+    printf("%4s %-19s %15s %8s %8s %8s %8s %8s %6s %6s %6s %8s %8s %8s\n", "ne", "route",
+           "us/step", "Q", "K,D", "M", "constr", "rest", "force", "Nwt/st", "LU/st", "Q ns/el",
+           "QKD ns/el", "max dtip");
+    for (i = 0; i < NCH * NROUTE; ++i) {
+        const step_cfg *p = &sc[i];
+        const double steps = (double)p->st.steps, ne = chain_ne[p->ch];
+        if (p->status != VLBE_OK) {
+            printf("%4d %-19s %s at t = %.3f s (%ld steps, %ld rejected, %ld Newton, %ld LU); "
+                   "%.0f / %.0f ns per element per Q / Q,K,D call\n",
+                   chain_ne[p->ch], route_name[p->route], vlbe_status_str(p->status), p->t_stop,
+                   p->st.steps, p->st.rejected, p->st.newton_iters, p->st.lu_factors,
+                   p->ns_call[TM_FORCE] / ne, p->ns_call[TM_JAC] / ne);
+            if (p->route != R_SYS) ++fail_other;
+            continue;
+        }
+        nnoisy += p->us[NTM] > NOISY * p->us_min;
+        printf("%4d %-19s %7.1f (%5.1f) %8.2f %8.2f %8.2f %8.2f %8.2f %5.1f%% %6.2f %6.3f %8.0f "
+               "%8.0f %8.1e%s\n",
+               chain_ne[p->ch], route_name[p->route], p->us[NTM], p->us_min, p->us[TM_FORCE],
+               p->us[TM_JAC], p->us[TM_MASS], p->us[TM_OTHER],
+               p->us[NTM] - p->us[TM_FORCE] - p->us[TM_JAC] - p->us[TM_MASS] - p->us[TM_OTHER],
+               100.0 * (p->us[TM_FORCE] + p->us[TM_JAC]) / p->us[NTM],
+               (double)p->st.newton_iters / steps, (double)p->st.lu_factors / steps,
+               p->ns_call[TM_FORCE] / ne, p->ns_call[TM_JAC] / ne, p->dtip,
+               p->us[NTM] > NOISY * p->us_min ? " *" : "");
+    }
+    printf("%4s %-19s", "", "per step / Gauss:");
+    for (c = 0; c < NCH; ++c) printf(" %6d", chain_ne[c]);
+    printf("\n");
+    for (r = 1; r < NROUTE; ++r) {
+        printf("%4s %-19s", "", route_name[r]);
+        for (c = 0; c < NCH; ++c) step_ratio(&sc[c * NROUTE + r], &sc[c * NROUTE]);
+        printf("\n");
+    }
+    printf("%4s %-19s", "", "elem / system inv.");
+    for (c = 0; c < NCH; ++c) step_ratio(&sc[c * NROUTE + R_ELEM], &sc[c * NROUTE + R_SYS]);
+    printf("\n");
+    if (nnoisy) printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", NOISY);
+
+    /* the whole scene (20 s) with each route: tips at the 40 samples */
+    printf("whole scene (0..20 s, sp_run, one run each): max |tip - tip of Gauss| / max |tip| "
+           "over the 40 samples; us per step (out.cpu / steps)\n");
+    for (c = 0; c < STEP_NFULL; ++c) {
+        sp_out o[NROUTE];
+        double d = 0.0, s = 0.0;
+        int k, j;
+        for (r = 0; r < NROUTE; ++r) {
+            sp_cfg cf;
+            sp_cfg_default(&cf, STEP_W, SP_ANCF);
+            cf.ne = chain_ne[c];
+            cf.inv = step_route[r];
+            sp_run(&fm, &cf, NULL, NULL, &o[r]);
+        }
+        for (r = 1; r < NROUTE; ++r)
+            for (k = 0; k < SP_NS; ++k)
+                for (j = 0; j < 2; ++j) {
+                    d = fmax(d, fabs(o[r].tip_s[k][j] - o[0].tip_s[k][j]));
+                    s = fmax(s, fabs(o[0].tip_s[k][j]));
+                }
+        printf("  ne = %2d: %.1e;", chain_ne[c], d / s);
+        for (r = 0; r < NROUTE; ++r) {
+            printf(" %s %.1f (%ld steps, %ld rejected%s%s)", route_csv[r],
+                   1e6 * o[r].cpu / (double)o[r].stats.steps, o[r].stats.steps,
+                   o[r].stats.rejected, o[r].status != VLBE_OK ? ", " : "",
+                   o[r].status != VLBE_OK ? vlbe_status_str(o[r].status) : "");
+            if (o[r].status != VLBE_OK && r != R_SYS) ++fail_other;
+        }
+        printf("\n");
+    }
+
+    snprintf(csv, sizeof csv, "out/bench/inv_step%s%s.csv", tag ? "-" : "", tag ? tag : "");
+    snprintf(svg, sizeof svg, "out/bench/inv_step%s%s.svg", tag ? "-" : "", tag ? tag : "");
+    f = svgp_csv_open(csv, "elements,route,status,steps,rejected,newton_iters,lu_factors,rounds,"
+                           "runs_per_sample,median_us_per_step,min_us_per_step,force_us_per_step,"
+                           "force_jac_us_per_step,mass_us_per_step,constraints_us_per_step,"
+                           "ns_per_elem_force_call,ns_per_elem_force_jac_call,max_tip_diff_rel");
+    if (f) {
+        for (i = 0; i < NCH * NROUTE; ++i) {
+            const step_cfg *p = &sc[i];
+            const double ne = chain_ne[p->ch];
+            fprintf(f, "%d,%s,\"%s\",%ld,%ld,%ld,%ld,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,"
+                       "%.3e\n",
+                    chain_ne[p->ch], route_csv[p->route], vlbe_status_str(p->status), p->st.steps,
+                    p->st.rejected, p->st.newton_iters, p->st.lu_factors, STEP_ROUNDS, p->reps,
+                    p->us[NTM], p->status == VLBE_OK ? p->us_min : (double)NAN, p->us[TM_FORCE],
+                    p->us[TM_JAC], p->us[TM_MASS], p->us[TM_OTHER], p->ns_call[TM_FORCE] / ne,
+                    p->ns_call[TM_JAC] / ne, p->dtip);
+        }
+        if (fclose(f) != 0) fprintf(stderr, "bench_inv: cannot write %s\n", csv);
+        else printf("wrote %s\n", csv);
+    } else
+        fprintf(stderr, "bench_inv: cannot write %s\n", csv);
+    {
+        static double xv[NCH], yv[2][NROUTE][NCH];
+        static char name[2][NROUTE][80];
+        svgp_chart ch;
+        int j;
+        svgp_init(&ch, "spin-up W = 6, ANCF beam: time per HHT step (h = 5 ms), Gauss vs invariants",
+                  "elements", "us per step (median)", 1, 1);
+        for (j = 0; j < 2; ++j)
+            for (r = 0; r < NROUTE; ++r) {
+                int nf = 0;
+                for (c = 0; c < NCH; ++c) {
+                    const step_cfg *p = &sc[c * NROUTE + r];
+                    xv[c] = chain_ne[c];
+                    yv[j][r][c] = j ? p->us[TM_FORCE] + p->us[TM_JAC] : p->us[NTM];
+                    nf += p->status != VLBE_OK;
+                }
+                snprintf(name[j][r], sizeof name[j][r], "%s, %s%s", route_name[r],
+                         j ? "force callbacks" : "whole step",
+                         nf ? " (runs fail at the larger sizes)" : "");
+                svgp_series(&ch, name[j][r], NCH, xv, yv[j][r],
+                            j ? SVGP_MARKERS | SVGP_DASH : SVGP_MARKERS);
+            }
+        svgp_fit_legend_log(&ch, 12, 0);
+        if (svgp_write_file(&ch, svg) != 0) fprintf(stderr, "bench_inv: cannot write %s\n", svg);
+        else printf("wrote %s\n", svg);
+    }
+    ex_method_release(&step_meth);
+    return fail_other;
+}
+
 int main(int argc, char **argv)
 {
     static cfg cs[128];
@@ -345,6 +735,10 @@ int main(int argc, char **argv)
     }
     if (bad) {
         fprintf(stderr, "bench_inv: %ld calls did not return VLBE_OK\n", bad);
+        return 1;
+    }
+    if ((i = step_bench(tag)) != 0) {
+        fprintf(stderr, "bench_inv: %s\n", i < 0 ? "scene 1 setup failed" : "a scene 1 run failed");
         return 1;
     }
     return 0;
