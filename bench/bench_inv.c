@@ -7,8 +7,9 @@
    build (from the repository root; `make bench` does this):
        cc -std=c99 -O3 -march=native bench/bench_inv.c -o build/bench/bench_inv -lm
    run from the repository root:  build/bench/bench_inv [tag]
-   writes out/bench/inv[-tag].csv and out/bench/inv[-tag].svg (out/bench
-   must exist).
+   writes out/bench/inv[-tag].csv, inv[-tag].svg (element, chains) and
+   out/bench/inv_step[-tag].csv, inv_step[-tag].svg (per step of scene 1;
+   out/bench must exist).
 
    Element: a steel wire cable (d = 5 mm: rhoA = 0.154 kg/m, EA = 4.1 MN,
    c_eps = 1 ms, gravity as the load), NO_BEND, both p fixed, L = 0.25 m,
@@ -26,7 +27,25 @@
    BATCHES rounds of one batch per configuration (interleaved round robin,
    so that a disturbance of the shared machine spreads over all rows), each
    batch >= 0.2 ms.  Reported: median (min) ns per call over the batches; a
-   row whose median exceeds 1.15 times its min is marked '*'. */
+   row whose median exceeds 1.15 times its min is marked '*'.
+
+   Per step of scene 1 (examples/ex_spin.h: the ANCF beam with bending, L
+   = 10 m, spin-up to W = 6 rad/s; cfg.inv = SP_GAUSS, SP_INV_ELEM,
+   SP_INV_SYS; the invariant routes take the axial force from the tables
+   and keep bending on Gauss points, the system route with a second element
+   type with EA = 0 for it): the first STEP_T = 2 s of the scene, HHT-alpha
+   -0.05 at the scene's h = 5 ms (400 steps), for 4..64 elements; the run
+   loop is sp_run's (ex_run, workspace allocated once, no observer).  Each
+   callback of the vlbe_dae is timed inside the runs (force; force_jac; the
+   mass matrix, which the HHT iteration assembles at every Newton
+   iteration; constraints), the rest is the integrator's own work (dense
+   LU, solves, residual).  A warm-up run per configuration records the tip
+   at every step (the routes must agree: max difference to the Gauss route
+   reported) and calibrates how many runs make one sample (>= 50 ms); then
+   STEP_ROUNDS interleaved rounds; median (min) us per step.  A route whose
+   run fails is reported with its status and not timed.  Then the whole
+   scene (20 s, sp_run) with each route at 4, 8, 16 elements: max tip
+   difference over the 40 samples. */
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
 #include "../examples/ex_spin.h"
@@ -447,7 +466,8 @@ static int step_measure(step_cfg *sc, int nsc)
             qsort(col, STEP_ROUNDS, sizeof col[0], benchu_cmp_double);
             p->us[k] = per * col[STEP_ROUNDS / 2];
             if (k == NTM) p->us_min = per * col[0];
-            else if (p->calls[k] > 0) p->ns_call[k] = 1e9 * col[STEP_ROUNDS / 2] / (double)p->calls[k];
+            else if (p->calls[k] > 0)
+                p->ns_call[k] = 1e9 * col[STEP_ROUNDS / 2] / (double)p->calls[k];
         }
     }
     return fail;
@@ -518,7 +538,8 @@ static int step_bench(const char *tag)
     printf("%4s %-19s", "", "elem / system inv.");
     for (c = 0; c < NCH; ++c) step_ratio(&sc[c * NROUTE + R_ELEM], &sc[c * NROUTE + R_SYS]);
     printf("\n");
-    if (nnoisy) printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", NOISY);
+    if (nnoisy)
+        printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", NOISY);
 
     /* the whole scene (20 s) with each route: tips at the 40 samples */
     printf("whole scene (0..20 s, sp_run, one run each): max |tip - tip of Gauss| / max |tip| "
@@ -578,20 +599,23 @@ static int step_bench(const char *tag)
         static char name[2][NROUTE][80];
         svgp_chart ch;
         int j;
-        svgp_init(&ch, "spin-up W = 6, ANCF beam: time per HHT step (h = 5 ms), Gauss vs invariants",
+        svgp_init(&ch,
+                  "spin-up W = 6, ANCF beam: time per HHT step (h = 5 ms), Gauss vs invariants",
                   "elements", "us per step (median)", 1, 1);
         for (j = 0; j < 2; ++j)
             for (r = 0; r < NROUTE; ++r) {
-                int nf = 0;
+                char failed[40] = "";
+                size_t lf = 0;
                 for (c = 0; c < NCH; ++c) {
                     const step_cfg *p = &sc[c * NROUTE + r];
                     xv[c] = chain_ne[c];
                     yv[j][r][c] = j ? p->us[TM_FORCE] + p->us[TM_JAC] : p->us[NTM];
-                    nf += p->status != VLBE_OK;
+                    if (p->status != VLBE_OK && lf + 8 < sizeof failed)
+                        lf += (size_t)snprintf(failed + lf, sizeof failed - lf, "%s%d",
+                                               lf ? ", " : " (fails at ", chain_ne[c]);
                 }
-                snprintf(name[j][r], sizeof name[j][r], "%s, %s%s", route_name[r],
-                         j ? "force callbacks" : "whole step",
-                         nf ? " (runs fail at the larger sizes)" : "");
+                snprintf(name[j][r], sizeof name[j][r], "%s, %s%s%s", route_name[r],
+                         j ? "Q and K, D callbacks" : "whole step", failed, lf ? " el.)" : "");
                 svgp_series(&ch, name[j][r], NCH, xv, yv[j][r],
                             j ? SVGP_MARKERS | SVGP_DASH : SVGP_MARKERS);
             }

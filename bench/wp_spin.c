@@ -39,31 +39,47 @@
    "full", h = 6.25e-4: ANCF 32 vs 64 elements 1e-7, CR 32 vs 64 2.4e-5);
    its step error, from the grid run at h = 1.25e-3 (second order: diff /
    15), is 1.7e-6.  The co-rotational beam at the same resolution differs
-   from it by 8.1e-5 (largest at t = 10 s, in the spin-up), and by 5.8e-5
-   at 64 elements: the two models' continuum limits differ at the order of
-   the axial strain (rhoA W^2 L^2 / 2EA = 7.7e-5 at the root: engineering
-   vs Green strain, curvature per reference vs deformed length).  That
+   from it by 8.1e-5 (largest at t = 10 s, in the spin-up), and still by
+   5.8e-5 at 64 elements while CR moves by only 2.4e-5 from 32 to 64: the
+   two models seem to converge to limits some 5e-5 apart, the order of the
+   axial strain (rhoA W^2 L^2 / 2EA = 7.7e-5 at the root), where their
+   strain measures differ (Green vs engineering strain, curvature per
+   deformed vs reference length); not resolved further here.  That
    difference, 8.1e-5, is the reference's uncertainty as a solution of the
    physical problem; below it, errors are distances to the ANCF model's
    solution, and the CR runs level off there.
 
    What the runs show (-O2, gcc 12.2.0, AMD EPYC Zen 4 2.6 GHz, 2 cores,
-   one used; see the printed table for the numbers of a run):
-   - HHT-alpha and generalized-alpha are second order in h (differences of
-     4.0 per halving at 32 elements) and give the same error and cost to
-     within 10 %.  At 4 and 8 elements the mesh error dominates and, for
-     the CR beam, has the opposite sign of the step error: the error grows
-     as h falls (CR 4 el.: 5.9e-4 at h = 1e-2, 2.1e-3 at 1.25e-3).  Mesh
-     error at h = 1.25e-3: CR 2.1e-3, 4.5e-4, 7.3e-5, 2.6e-5 for 4..32
-     elements (second order); ANCF 1.7e-3 at 4 elements, then the step
-     error (1e-4 at 1.25e-3) only: the cubic ANCF beam converges faster in
-     the mesh.
+   one used; errors are deterministic, CPU times vary by ~20 % with the
+   load of the other core; the whole benchmark took 72 s CPU, 104 s wall
+   with the other core busy, `full` 167 s CPU):
+   - HHT-alpha is second order in h: at 32 elements (ANCF) the errors at
+     h = 1e-2 .. 1.25e-3 are 1.79e-3, 4.42e-4, 1.09e-4, 2.58e-5 (ratios
+     4.05, 4.06, 4.2).  Generalized-alpha 0.8 gives the same error to
+     within 10 % (mostly slightly smaller) at the same cost.
+   - Mesh error (h = 1.25e-3): ANCF 1.76e-3 at 4 elements, then 2.8e-5,
+     2.4e-5, 2.6e-5 at 8, 16, 32: from 8 elements on only the step error is
+     left (the cubic ANCF beam with exact curvature converges fast in the
+     mesh).  CR 2.16e-3, 5.31e-4, 1.49e-4, 5.52e-5 at 4..32 elements (against
+     the CR 32 run instead: 2.08e-3, 4.5e-4, 7.3e-5: second order, plus the
+     model difference above).  On the coarse CR meshes mesh and step errors
+     have opposite signs: the error grows as h falls (4 el.: 6.6e-4 at h =
+     1e-2, 2.2e-3 at 1.25e-3), so a coarse step can look accurate by luck;
+     the summary below only counts a run whose finer steps stay below the
+     level too.
+   - Cheapest run to a transverse tip error of 1e-3: CR 8 el., h = 5e-3,
+     0.11 s; ANCF 8 el., h = 5e-3, 0.15 s.  To 1e-4: ANCF 8 el., h =
+     2.5e-3, 0.30 s; CR needs 32 el. (h = 2.5e-3, 1.6 s): the ANCF beam is
+     the cheaper model below 1e-3.
    - BDF does badly on this scene: rtol 1e-2 leaves the bound (|tip| > 1 m,
-     VLBE_EBOUND); tighter tolerances run with about as many rejected as
-     accepted steps (order 2) or ten times as many steps (order 5) and
-     still have errors of 2e-2 .. 1 of the deflection, at 10-100 times the
-     CPU of an HHT run with error 1e-3.  Reported as measured (counters in
-     the table); under investigation separately.
+     VLBE_EBOUND at t = 7.8-9.1 s); tighter tolerances run with 0.5-0.9
+     rejected steps per accepted one (order 2) or up to 70 times the steps
+     of HHT at 5 ms (order 5: 275000 steps, ANCF 8 el., rtol 1e-3) and still
+     miss the tip by 2e-2 .. 1.2 of its largest deflection (best by default:
+     2.3e-2, CR 4 el., order 5, rtol 1e-4, 0.9 s; `full`: 1.5e-2, ANCF 8
+     el., order 5, rtol 1e-4, 16 s), where HHT reaches 1e-3 in 0.1 s.
+     Reported as measured (counters in the table); under investigation
+     separately.
 
    CPU time: CLOCK_PROCESS_CPUTIME_ID around sp_run() (model setup,
    allocation, integration, the sampling observer); median of 5 runs when
@@ -136,7 +152,7 @@ typedef struct sweep {
     run r[NRUN_MAX];
     int n;
     run ref, ref_cr;          /* ANCF and CR at REF_NE, REF_H            */
-    run chk[3];               /* `full`: ANCF 32, 64 and CR 64 at CHK_H  */
+    run chk[4];               /* `full`: ANCF 32, 64, CR 32, 64 at CHK_H */
     int nchk;
     double s_tr, s_ax;        /* max |reference| transverse, axial        */
 } sweep;
@@ -253,8 +269,8 @@ static int reference(sweep *sw, int full)
     measure(sw, &sw->ref_cr);
     sw->nchk = 0;
     if (full) {
-        static const int model[3] = {M_ANCF, M_ANCF, M_CR}, ne[3] = {32, 64, 64};
-        for (k = 0; k < 3; ++k) {
+        static const int model[4] = {M_ANCF, M_ANCF, M_CR, M_CR}, ne[4] = {32, 64, 32, 64};
+        for (k = 0; k < 4; ++k) {
             run *r = &sw->chk[sw->nchk++];
             memset(r, 0, sizeof *r);
             r->model = model[k];
@@ -382,8 +398,9 @@ static void chart(const sweep *sw, const char *dir)
     }
     snprintf(d.name[7], sizeof d.name[0], "linear 8 el.: %s at t = %.2f s",
              vlbe_status_str(lin->status), lin->t_stop);
-    snprintf(title, sizeof title, "Spin-up W = %g rad/s: h = %g..%g s, BDF rtol %g..%g", W_SCENE,
-             g_h[0], g_h[NSTEP - 1], g_rtol[0], g_rtol[NRTOL - 1]);
+    snprintf(title, sizeof title,
+             "Spin-up W = %g rad/s: h %g..%g s, BDF rtol %g..%g, ref. ANCF %d el.", W_SCENE,
+             g_h[0], g_h[NSTEP - 1], g_rtol[0], g_rtol[NRTOL - 1], REF_NE);
     svgp_init(&c, title, "CPU time per run [s] (sp_run, 20 s simulated; " VLBE_BENCH_FLAGS ")",
               "transverse tip: max |y - y_ref| / max |y_ref| [-]", 1, 1);
     for (i = 0; i < 15; ++i) {
@@ -398,7 +415,10 @@ static void chart(const sweep *sw, const char *dir)
 }
 
 /* -- CSV and tables ------------------------------------------------------ */
-static const char *model_name(const run *r) { return r->model < 0 ? "linear" : g_model_name[r->model]; }
+static const char *model_name(const run *r)
+{
+    return r->model < 0 ? "linear" : g_model_name[r->model];
+}
 
 static void csv_row(FILE *f, const char *what, const run *r)
 {
@@ -517,10 +537,12 @@ static void report(const sweep *sw)
         printf("  full: %s %d el. at h = %g: %.2e from the reference (%.2f s CPU)\n",
                g_model_name[sw->chk[i].model], sw->chk[i].ne, sw->chk[i].x, sw->chk[i].err_tr,
                sw->chk[i].cpu);
-    if (sw->nchk == 3)
-        printf("  full: ANCF 32 vs 64 el. %.1e, CR 64 el. vs ANCF 64 el. %.1e (h = %g)\n",
+    if (sw->nchk == 4)
+        printf("  full: ANCF 32 vs 64 el. %.1e, CR 32 vs 64 el. %.1e, CR vs ANCF at 64 el. %.1e "
+               "(h = %g)\n",
                rec_err(&sw->chk[0], &sw->chk[1], 1, sw->s_tr),
-               rec_err(&sw->chk[2], &sw->chk[1], 1, sw->s_tr), CHK_H);
+               rec_err(&sw->chk[2], &sw->chk[3], 1, sw->s_tr),
+               rec_err(&sw->chk[3], &sw->chk[1], 1, sw->s_tr), CHK_H);
     printf("\nruns (err: max over the samples of |tip - ref| / max |ref|; cpu: median per run)\n");
     print_head();
     for (i = 0; i < sw->n; ++i) print_run(&sw->r[i]);
