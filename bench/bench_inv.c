@@ -50,7 +50,35 @@
    (min) us per step.  A route whose run fails is reported with its status
    (and ns per call of the calls it made) and not timed.  Then the whole
    scene (20 s, sp_run) with each route at 4, 8, 16 elements: max tip
-   difference over the 40 samples. */
+   difference over the 40 samples.
+
+   Measured (quiet run, -O3 -march=native, gcc 12.2.0, AMD EPYC Zen 4
+   2.6 GHz, 2 cores, one used), us per step in the window, Gauss /
+   element invariants / system invariants:
+       4 el. 14.9 / 16.9 / 18.5,  8 el. 30.5 / 34.7 / 35.5,
+      16 el. 72.7 / 80.7 / 82.5, 32 el. 204 / 220 / -, 64 el. 721 / 753 / -.
+   The element invariants cost 4-14 % more per step than Gauss points, the
+   system invariants 14-24 % more; element vs system invariants 0.91-0.98
+   per step, nowhere near the paper's order of magnitude.  Why: with
+   bending the invariant routes still evaluate r', r'' at the Gauss points
+   for the curvature, which is most of the Gauss route's work (it takes the
+   axial strain from the same points), and add the axial contraction on
+   top: per element and call Q 180 -> 265-340 ns, Q + K + D 850-1030 ->
+   1010-1270 ns.  And the force callbacks are only 16-43 % of a step (the
+   share falls with ne): the rest is the mass matrix, which the HHT
+   iteration assembles at every Newton iteration (2.3 -> 55 us per step),
+   and the integrator's dense LU (one per step in the spin-up) and solves
+   (36 % of the step at 4 el., 76 % at 64).  Over 0..10 s the tips agree
+   with the Gauss route's to 7e-13 (element invariants, all sizes) and 4e-12,
+   6e-11, 2.3e-7 (system invariants, 4, 8, 16 el.); the system route's
+   rounding grows with the chain (its Q differs from Gauss by 1.3e-8,
+   1.5e-7, 1.7e-6, 1e-5 of max |Q| at 8, 16, 32, 64 el. at t = 1 s of the
+   scene, where the tension is small against EA = 2.8e7 N), and HHT's
+   Newton (rtol 1e-9, atol 1e-11) stalls on that noise: 9 rejected steps
+   and a tip 2.2e-7 off over the scene at 16 el., VLBE_ENOCONV at t =
+   1.18 s (32 el.) and 0.03 s (64 el.).  So Gauss points stay the default
+   (vlbe_ale_force, and cfg.inv = SP_GAUSS in ex_spin.h): faster per step
+   at every size here. */
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
 #include "../examples/ex_spin.h"
@@ -592,11 +620,10 @@ static int step_bench(const char *tag)
         printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", NOISY);
 
     /* the whole scene (20 s) with each route: tips at the 40 samples */
-    printf("whole scene (0..20 s, sp_run, one run each): max |tip - tip of Gauss| / max |tip| "
-           "over the 40 samples; us per step (out.cpu / steps)\n");
+    printf("whole scene (0..20 s, sp_run, one run each): per route us per step (out.cpu / "
+           "steps), steps, rejected; max |tip - tip of Gauss| / max |tip| over the 40 samples\n");
     for (c = 0; c < STEP_NFULL; ++c) {
         sp_out o[NROUTE];
-        double d = 0.0, s = 0.0;
         int k, j;
         for (r = 0; r < NROUTE; ++r) {
             sp_cfg cf;
@@ -605,21 +632,22 @@ static int step_bench(const char *tag)
             cf.inv = step_route[r];
             sp_run(&fm, &cf, NULL, NULL, &o[r]);
         }
-        for (r = 1; r < NROUTE; ++r)
+        printf("  ne = %2d:", chain_ne[c]);
+        for (r = 0; r < NROUTE; ++r) {
+            double d = 0.0, s = 0.0;
             for (k = 0; k < SP_NS; ++k)
                 for (j = 0; j < 2; ++j) {
                     d = fmax(d, fabs(o[r].tip_s[k][j] - o[0].tip_s[k][j]));
                     s = fmax(s, fabs(o[0].tip_s[k][j]));
                 }
-        printf("  ne = %2d: %.1e;", chain_ne[c], d / s);
-        for (r = 0; r < NROUTE; ++r) {
-            printf(" %s %.1f (%ld steps, %ld rejected%s%s)", route_csv[r],
+            printf(" %s %.1f, %ld, %ld%s%s", route_csv[r],
                    1e6 * o[r].cpu / (double)o[r].stats.steps, o[r].stats.steps,
                    o[r].stats.rejected, o[r].status != VLBE_OK ? ", " : "",
                    o[r].status != VLBE_OK ? vlbe_status_str(o[r].status) : "");
+            if (r > 0) printf(", %.1e", d / s);
+            printf(r + 1 < NROUTE ? ";" : "\n");
             if (o[r].status != VLBE_OK && r != R_SYS) ++fail_other;
         }
-        printf("\n");
     }
 
     snprintf(csv, sizeof csv, "out/bench/inv_step%s%s.csv", tag ? "-" : "", tag ? tag : "");
