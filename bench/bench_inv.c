@@ -53,22 +53,22 @@
    difference over the 40 samples.
 
    Measured (quiet run, -O3 -march=native, gcc 12.2.0, AMD EPYC Zen 4
-   2.6 GHz, 2 cores, one used), us per step in the window, Gauss /
-   element invariants / system invariants:
-       4 el. 14.9 / 16.9 / 18.5,  8 el. 30.5 / 34.7 / 35.5,
-      16 el. 72.7 / 80.7 / 82.5, 32 el. 204 / 220 / -, 64 el. 721 / 753 / -.
-   The element invariants cost 4-14 % more per step than Gauss points, the
-   system invariants 14-24 % more; element vs system invariants 0.91-0.98
+   2.6 GHz, 2 cores, one used; three runs agreed within 3 %), us per step
+   in the window, Gauss / element invariants / system invariants:
+       4 el. 15.0 / 16.9 / 17.6,  8 el. 31.0 / 34.8 / 35.5,
+      16 el. 74.0 / 81.6 / 83.1, 32 el. 207 / 222 / -, 64 el. 726 / 755 / -.
+   The element invariants cost 4-13 % more per step than Gauss points, the
+   system invariants 12-17 % more; element vs system invariants 0.96-0.98
    per step, nowhere near the paper's order of magnitude.  Why: with
    bending the invariant routes still evaluate r', r'' at the Gauss points
    for the curvature, which is most of the Gauss route's work (it takes the
    axial strain from the same points), and add the axial contraction on
-   top: per element and call Q 180 -> 265-340 ns, Q + K + D 850-1030 ->
-   1010-1270 ns.  And the force callbacks are only 16-43 % of a step (the
+   top: per element and call Q 180 -> 260-280 ns, Q + K + D 960-1130 ->
+   1100-1320 ns.  And the force callbacks are only 16-46 % of a step (the
    share falls with ne): the rest is the mass matrix, which the HHT
-   iteration assembles at every Newton iteration (2.3 -> 55 us per step),
+   iteration assembles at every Newton iteration (2.0 -> 54 us per step),
    and the integrator's dense LU (one per step in the spin-up) and solves
-   (36 % of the step at 4 el., 76 % at 64).  Over 0..10 s the tips agree
+   (36 % of the step at 4 el., 75 % at 64).  Over 0..10 s the tips agree
    with the Gauss route's to 7e-13 (element invariants, all sizes) and 4e-12,
    6e-11, 2.3e-7 (system invariants, 4, 8, 16 el.); the system route's
    rounding grows with the chain (its Q differs from Gauss by 1.3e-8,

@@ -10,8 +10,8 @@
    writes <outdir>/wp_spin.csv and <outdir>/wp_spin.svg; prints every run
    (errors, CPU, counters), the reference and its checks, and the cheapest
    run per model and integrator that reaches 1e-2, 1e-3, 1e-4.  "full"
-   adds the 64-element checks of the reference and the BDF runs at the
-   tighter tolerances left out by default (a few minutes more).
+   adds the 32- and 64-element checks of the reference at h = 6.25e-4
+   (about 35 s more).
 
    The scene is the example's: sp_cfg_default(&c, 6, model), L = 10 m,
    spin-up to W = 6 rad/s in Ts = 15 s, run to 20 s, no damping; every run
@@ -24,8 +24,8 @@
    (each divides the 0.5 s sampling interval and Ts); integrators HHT-alpha
    -0.05 (the scene's) and generalized-alpha rho_inf = 0.8 at every mesh and
    step, BDF (variable step and order, rtol = atol, sp_run's setting) with
-   max_order 2 and 5 at 4 and 8 elements, rtol = 1e-2 .. 1e-4 as far as a
-   run stays under about 3 s (table g_bdf_last below; "full" runs all).
+   max_order 2 at 4, 8, 16 elements, rtol = 1e-2 .. 1e-5, and max_order 5
+   (the default) only where a run stays under ~2 s (table g_bdf_last).
 
    Error of a run: max over the 40 samples t_k = 0.5 k s (k = 1..40; the
    HHT steps land on them, BDF steps are made to) of |transverse tip -
@@ -51,8 +51,8 @@
 
    What the runs show (-O2, gcc 12.2.0, AMD EPYC Zen 4 2.6 GHz, 2 cores,
    one used; errors are deterministic, CPU times vary by ~20 % with the
-   load of the other core; the whole benchmark took 72 s CPU, 104 s wall
-   with the other core busy, `full` 167 s CPU):
+   load of the other core; the whole benchmark took 71 s CPU on a quiet
+   machine):
    - HHT-alpha is second order in h: at 32 elements (ANCF) the errors at
      h = 1e-2 .. 1.25e-3 are 1.79e-3, 4.42e-4, 1.09e-4, 2.58e-5 (ratios
      4.05, 4.06, 4.2).  Generalized-alpha 0.8 gives the same error to
@@ -71,15 +71,17 @@
      0.11 s; ANCF 8 el., h = 5e-3, 0.15 s.  To 1e-4: ANCF 8 el., h =
      2.5e-3, 0.30 s; CR needs 32 el. (h = 2.5e-3, 1.6 s): the ANCF beam is
      the cheaper model below 1e-3.
-   - BDF does badly on this scene: rtol 1e-2 leaves the bound (|tip| > 1 m,
-     VLBE_EBOUND at t = 7.8-9.1 s); tighter tolerances run with 0.5-0.9
-     rejected steps per accepted one (order 2) or up to 70 times the steps
-     of HHT at 5 ms (order 5: 275000 steps, ANCF 8 el., rtol 1e-3) and still
-     miss the tip by 2e-2 .. 1.2 of its largest deflection (best by default:
-     2.3e-2, CR 4 el., order 5, rtol 1e-4, 0.9 s; `full`: 1.5e-2, ANCF 8
-     el., order 5, rtol 1e-4, 16 s), where HHT reaches 1e-3 in 0.1 s.
-     Reported as measured (counters in the table); under investigation
-     separately.
+   - BDF with max_order 2 (with the filtered error estimate of
+     integrators.h): few rejected steps (at most 156 of 924, at rtol 1e-2),
+     error falling with rtol to 2.2e-3 (4 el.), 6.2e-4 / 1.8e-3 (CR / ANCF
+     8 el.), 2.4e-4 / 8.1e-4 (16 el.) at rtol 1e-5 -- no better than the
+     mesh error there, and at 5-15 times the CPU of an HHT run of the same
+     error: 1e-3 costs 0.8 s (CR 8 el., 20037 steps) and 2.3 s (ANCF 16
+     el.) against 0.11-0.15 s with HHT.  With the default max_order 5 the
+     undamped stiff axial modes pin the step (CR 4 el.: 35750 steps at rtol
+     1e-2, 113935 at 1e-3, errors 1.3e-1, 2.4e-2); the ANCF runs at rtol
+     1e-2 leave the bound (VLBE_EBOUND at 9.6 / 8.8 s, 4 / 8 el.), and
+     tighter or finer runs take more than 8 s each, so they are not run.
 
    CPU time: CLOCK_PROCESS_CPUTIME_ID around sp_run() (model setup,
    allocation, integration, the sampling observer); median of 5 runs when
@@ -104,17 +106,17 @@
 #define W_SCENE 6.0
 #define NMESH 4
 #define NSTEP 4
-#define NRTOL 5
-#define NBMESH 2
+#define NRTOL 4
+#define NBMESH 3
 #define REF_NE 32
 #define REF_H 3.125e-4
-#define CHK_H 6.25e-4 /* `full`: the 64-element checks */
+#define CHK_H 6.25e-4 /* `full`: the 32-, 64-element checks */
 #define NLVL 3
 
 static const int g_ne[NMESH] = {4, 8, 16, 32};
 static const double g_h[NSTEP] = {1e-2, 5e-3, 2.5e-3, 1.25e-3};
-static const double g_rtol[NRTOL] = {1e-2, 3e-3, 1e-3, 3e-4, 1e-4};
-static const int g_bne[NBMESH] = {4, 8};
+static const double g_rtol[NRTOL] = {1e-2, 1e-3, 1e-4, 1e-5};
+static const int g_bne[NBMESH] = {4, 8, 16};
 static const double g_lvl[NLVL] = {1e-2, 1e-3, 1e-4};
 
 enum { M_CR = 0, M_ANCF, NMODEL };
@@ -125,18 +127,20 @@ enum { I_HHT = 0, I_GA, I_BDF2, I_BDF5, NINT };
 static const char *const g_int_name[NINT] = {"HHT-alpha -0.05", "gen-alpha rho_inf 0.8",
                                               "BDF max order 2", "BDF max order 5"};
 
-/* BDF: index in g_rtol of the tightest rtol run by default, per model, mesh
-   and order (2, 5).  The next one took more than ~3 s or the series more
-   than ~3 s in all (measured, -O2): CR 8 el. order 2 at 1e-4 2.3 s, order 5
-   at 1e-3 2.6 s; ANCF 4 el. order 2 at 1e-4 3.1 s, order 5 at 3e-4 2.7
-   s; ANCF 8 el. order 2 at 3e-4 3.2 s, order 5 at 1e-3 5.7 s. */
-static const int g_bdf_last[NMODEL][NBMESH][2] = {{{4, 4}, {3, 1}}, {{3, 2}, {2, 1}}};
+/* BDF: index in g_rtol of the tightest rtol run, per model, mesh and order
+   (2, 5); -1: none.  Order 2 runs everywhere (at most 2.5 s, CR and ANCF
+   16 el. at 1e-5).  Order 5 only where a run stays under ~2 s (measured,
+   -O2): CR 4 el. at 1e-4, 1e-5 takes 1.9, 2.3 s; CR 8 and 16 el. take more
+   than 8 s already at 1e-2; the ANCF runs at 1e-2 leave the bound (0.2,
+   0.6 s at 4, 8 el.) and take more than 8 s at 1e-3. */
+static const int g_bdf_last[NMODEL][NBMESH][2] = {{{3, 1}, {3, -1}, {3, -1}},
+                                                  {{3, 0}, {3, 0}, {3, -1}}};
 
 /* one run of the sweep */
 typedef struct run {
     int model, integ, ne; /* model: M_*, or -1 for the linear model   */
     double x;             /* h [s] (HHT family) or rtol (BDF)         */
-    int done;             /* 0: not run (cost; `full` runs it)        */
+    int done;             /* 0: not run (cost, see g_bdf_last)        */
     vlbe_status status;
     double t_stop;        /* last accepted time [s]                   */
     double err_tr, err_ax; /* NaN if failed                           */
@@ -283,7 +287,7 @@ static int reference(sweep *sw, int full)
     return 0;
 }
 
-static void sweep_all(sweep *sw, int full)
+static void sweep_all(sweep *sw)
 {
     int md, i, e, s, o;
     run *r;
@@ -302,7 +306,7 @@ static void sweep_all(sweep *sw, int full)
             for (e = 0; e < NBMESH; ++e)
                 for (s = 0; s < NRTOL; ++s) {
                     r = add(sw, md, o ? I_BDF5 : I_BDF2, g_bne[e], g_rtol[s]);
-                    if (full || s <= g_bdf_last[md][e][o]) measure(sw, r);
+                    if (s <= g_bdf_last[md][e][o]) measure(sw, r);
                 }
 }
 
@@ -319,10 +323,10 @@ static const run *find(const sweep *sw, int model, int integ, int ne, double x)
 static int run_ok(const run *r) { return r->done && r->status == VLBE_OK && r->err_tr >= 0.0; }
 
 /* -- chart --------------------------------------------------------------- */
-/* Series i and i + 8 share colour and marker: CR in 0..7 (solid), ANCF in
-   8..15 (dashed); per model: HHT-alpha one series per mesh (lines over h),
-   gen-alpha markers only, BDF per order with the meshes as separate lines
-   (NaN between them breaks the line). */
+/* Series i and i + 8 share colour and marker: CR in 0..7 (solid; BDF
+   dotted), ANCF in 8..15 (dashed); per model: HHT-alpha one series per mesh
+   (lines over h), gen-alpha markers only, BDF per order with the meshes as
+   separate lines (NaN between them breaks the line). */
 #define NSER 16
 #define NPT (NMESH * (NSTEP + 1))
 typedef struct chart_data {
@@ -340,13 +344,18 @@ static void push(chart_data *d, int s, double x, double y)
     }
 }
 
-/* BDF legend: the meshes, and the failed rtols */
+/* BDF legend: the meshes run, and the failed rtols */
 static void bdf_name(const sweep *sw, int md, int integ, char *buf, size_t len)
 {
-    size_t l = (size_t)snprintf(buf, len, "%s BDF%d, %d and %d el.", g_model_name[md],
-                                integ == I_BDF2 ? 2 : 5, g_bne[0], g_bne[NBMESH - 1]);
+    size_t l = (size_t)snprintf(buf, len, "%s BDF%d, el.", g_model_name[md],
+                                integ == I_BDF2 ? 2 : 5);
     double seen[NRTOL];
-    int i, j, nf = 0;
+    int i, j, e, nf = 0;
+    for (e = 0; e < NBMESH; ++e) {
+        const run *r = find(sw, md, integ, g_bne[e], g_rtol[0]);
+        if (r && r->done && l + 8 < len)
+            l += (size_t)snprintf(buf + l, len - l, "%s %d", e ? "," : "", g_bne[e]);
+    }
     for (i = 0; i < sw->n && l + 24 < len && nf < NRTOL; ++i) {
         const run *r = &sw->r[i];
         if (r->model != md || r->integ != integ || !r->done || r->status == VLBE_OK) continue;
@@ -406,7 +415,7 @@ static void chart(const sweep *sw, const char *dir)
     for (i = 0; i < 15; ++i) {
         int fl = SVGP_MARKERS;
         if (i % 8 == 4 || i == 7) fl = SVGP_MARKERS | SVGP_NOLINE;
-        else if (i % 8 >= 5) fl |= SVGP_DOT;
+        else if (i % 8 >= 5 && i < 8) fl |= SVGP_DOT;
         svgp_series(&c, d.name[i], d.n[i], d.x[i], d.y[i], fl);
     }
     svgp_fit_legend_log(&c, 8, 3);
@@ -423,7 +432,7 @@ static const char *model_name(const run *r)
 static void csv_row(FILE *f, const char *what, const run *r)
 {
     if (!r->done) {
-        fprintf(f, "%s,%s,\"%s\",%d,%s,%g,\"not run (cost; `full` runs it)\",,,,,,,,,,,\n", what,
+        fprintf(f, "%s,%s,\"%s\",%d,%s,%g,\"not run (cost)\",,,,,,,,,,,\n", what,
                 model_name(r), g_int_name[r->integ], r->ne, r->integ >= I_BDF2 ? "rtol" : "h",
                 r->x);
         return;
@@ -465,7 +474,7 @@ static void print_head(void)
 static void print_run(const run *r)
 {
     if (!r->done) {
-        printf("%-6s %-22s %3d %9g  not run (cost; `full` runs it)\n", model_name(r),
+        printf("%-6s %-22s %3d %9g  not run (cost)\n", model_name(r),
                g_int_name[r->integ], r->ne, r->x);
         return;
     }
@@ -583,7 +592,7 @@ int main(int argc, char **argv)
            W_SCENE, VLBE_VERSION_STRING, sizeof(vlbe_real) == sizeof(double) ? "double" : "float",
            __VERSION__, VLBE_BENCH_FLAGS, model, mhz, full ? ", full" : "");
     if (reference(&sw, full) != 0) return 1;
-    sweep_all(&sw, full);
+    sweep_all(&sw);
     chart(&sw, dir);
     write_csv(&sw, dir);
     report(&sw);
