@@ -1062,6 +1062,9 @@ static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
     int i, j;
     VLBE_ASSERT(el != NULL && qd != NULL && Q != NULL);
     mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
+    /* the identity frame (read only with fth; set so that gcc -O3 sees
+       fr defined on every path) */
+    vlbe__cr2d_fr_set(&fr, VLBE_R(1.0), VLBE_R(0.0), 0, VLBE_R(1.0), VLBE_R(0.0), 0);
     if (fth) { /* floating frame: the element sees d, dd (LINEAR only) */
         if (jt || !(mode & VLBE_CR2D_LINEAR)) return VLBE_EARG;
         if ((st = vlbe__cr2d_float(el, fth, q, qd, &fr, d, dd)) != VLBE_OK) return st;
