@@ -884,7 +884,7 @@ static void test_errors(void **state)
     /* system: work_len, init and force */
     assert_true(vlbe_ale_inv_sys_work_len(0) == 0);
     assert_true(vlbe_ale_inv_sys_work_len(-2) == 0);
-    assert_true(vlbe_ale_inv_sys_work_len(3) == 158 * 3 + 40);
+    assert_true(vlbe_ale_inv_sys_work_len(3) == 88 * 3 + 16);
     fill(ARRAY_LEN(work), SENTINEL, work);
     memcpy(wcopy, work, sizeof work);
     memset(&sys, 0x5a, sizeof sys);
