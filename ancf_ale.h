@@ -150,15 +150,26 @@ INVARIANTS (issue 7: invariant-matrix force evaluation)
    .. i+7: entry (i, j) at K[i*VLBE_ALE_INV_BW + j - i + VLBE_ALE_INV_KD].
    vlbe_ale_inv_chain_force loops over the elements (gather, element call,
    scatter); the system invariants (vlbe_ale_inv_sys_*) hold B and I of the
-   whole chain assembled once in the caller's buffer (nonzero structure
-   only: 7 ne + 3 scalar slot pairs, each row a contiguous range of 10 or
-   17 pairs, 91 ne + 9 numbers; the x/y Kronecker factor is never stored)
-   and evaluate Q, K, D without an element loop.  Rounding: the invariant
-   routes form Gram entries of positions; they work relative to an
-   element's node 1 / the chain's middle node (exact: the force is
-   invariant to translation), and the system route's rounding relative to
-   the strain still grows like (R/L)^2, R the chain's half extent
-   (tests/test_ale_inv.c: 64 EPS (1 + R/L)^2).
+   whole chain assembled once in the caller's buffer and evaluate Q, K, D
+   without an element loop.  Their variables are translation-free: as h1'
+   = -h3', element e's r' = h3' d_e + L h2' r_e' + L h4' r_{e+1}' reads
+   only the chord d_e = r_{e+1} - r_e and the two nodal slopes, so the
+   system's slots are the ne chords and ne + 1 slopes (2 ne + 1), B and I
+   are assembled over the 5 ne + 1 slot pairs that share an element (each
+   row a contiguous range of 6 or 11 pairs, 35 ne + 1 numbers; the x/y
+   Kronecker factor is never stored), the Gram entries are of the size of
+   L^2, L, 1 wherever the chain is, and the slot forces and 2x2 blocks go
+   back to the nodal layout by the chain rule of d_e (Q = J^T Q~, K = J^T
+   K~ J, D = J^T D~ J, J = +-1 entries; vlbe__ale_sys_force).  Rounding
+   (tests/test_ale_inv.c): at eps = 1e-4 on 64 elements far from the
+   origin the system route's Q is within ~3 EPS/eps of max|Q| of the
+   Gauss route per element in its own frame and of a long double
+   reference (EPS/eps is the Green strain's own conditioning, the floor of
+   every route), K and D within ~5 EPS; it does not grow with the chain.
+   The Gauss route on the nodal values forms r' from positions of size
+   |r| (~EPS |r|/L / eps); the element invariants work relative to their
+   node 1's position but take the nodal velocities as they are (damped:
+   ~c |v|/L more).
 
 API
    vlbe_status vlbe_ale_elem_init(el, mat, flags, nm, nl, nt)  element type, Gauss tables
@@ -291,11 +302,11 @@ typedef struct vlbe_ale_elem {
 /* The system invariants of a chain of ne fixed-length elements (see
    vlbe_ale_inv_sys_init): pointers into the caller's buffer. */
 typedef struct vlbe_ale_inv_sys {
-    int ne, np;        /* elements, slot pairs 7 ne + 3                     */
+    int ne, np;        /* elements, slot pairs 5 ne + 1                     */
     vlbe_real EA, c;   /* axial stiffness, Kelvin-Voigt time (0: undamped)  */
     const vlbe_real *T; /* assembled quartic invariants, band rows of pairs  */
     const vlbe_real *B; /* assembled quadratic invariants, one per pair      */
-    vlbe_real *H;      /* scratch: 8 pair products per pair                 */
+    vlbe_real *H;      /* scratch: 8 products per pair, then the slots      */
 } vlbe_ale_inv_sys;
 
 /* -- API prototypes ----------------------------------------------------- */

@@ -727,7 +727,8 @@ static void test_chain_routes(void **state)
                                                    vlbe_ale_inv_sys_work_len(ne)),
                              VLBE_OK);
             assert_int_equal(vlbe_ale_inv_sys_force(&sys, x, v, Q, K, D), VLBE_OK);
-            ws = fmax(ws, fmax(rel_diff(n, Q, Qe), fmax(rel_diff(n * BW, K, Ke), rel_diff(n * BW, D, De))));
+            ws = fmax(ws, fmax(rel_diff(n, Q, Qe),
+                               fmax(rel_diff(n * BW, K, Ke), rel_diff(n * BW, D, De))));
             ASSERT_VEC_CLOSE(Q, Qe, n, 0, tol * max_abs(n, Qe));
             ASSERT_VEC_CLOSE(K, Ke, n * BW, 0, tol * max_abs(n * BW, Ke));
             ASSERT_VEC_CLOSE(D, De, n * BW, 0, tol * max_abs(n * BW, De));
@@ -798,8 +799,8 @@ static void ref_chain_q(int ne, const vlbe_real *L, const vlbe_real *x, const vl
                     vp[i] += d[a] * u[2 * a + i];
                 }
             }
-            f = -EA * w *
-                (0.5L * (rp[0] * rp[0] + rp[1] * rp[1] - 1.0L) + c * (rp[0] * vp[0] + rp[1] * vp[1]));
+            f = -EA * w * (0.5L * (rp[0] * rp[0] + rp[1] * rp[1] - 1.0L) +
+                           c * (rp[0] * vp[0] + rp[1] * vp[1]));
             for (a = 0; a < 4; ++a)
                 for (i = 0; i < 2; ++i) Q[4 * e + 2 * a + i] += f * d[a] * rp[i];
         }
