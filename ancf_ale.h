@@ -150,15 +150,26 @@ INVARIANTS (issue 7: invariant-matrix force evaluation)
    .. i+7: entry (i, j) at K[i*VLBE_ALE_INV_BW + j - i + VLBE_ALE_INV_KD].
    vlbe_ale_inv_chain_force loops over the elements (gather, element call,
    scatter); the system invariants (vlbe_ale_inv_sys_*) hold B and I of the
-   whole chain assembled once in the caller's buffer (nonzero structure
-   only: 7 ne + 3 scalar slot pairs, each row a contiguous range of 10 or
-   17 pairs, 91 ne + 9 numbers; the x/y Kronecker factor is never stored)
-   and evaluate Q, K, D without an element loop.  Rounding: the invariant
-   routes form Gram entries of positions; they work relative to an
-   element's node 1 / the chain's middle node (exact: the force is
-   invariant to translation), and the system route's rounding relative to
-   the strain still grows like (R/L)^2, R the chain's half extent
-   (tests/test_ale_inv.c: 64 EPS (1 + R/L)^2).
+   whole chain assembled once in the caller's buffer and evaluate Q, K, D
+   without an element loop.  Their variables are translation-free: as h1'
+   = -h3', element e's r' = h3' d_e + L h2' r_e' + L h4' r_{e+1}' reads
+   only the chord d_e = r_{e+1} - r_e and the two nodal slopes, so the
+   system's slots are the ne chords and ne + 1 slopes (2 ne + 1), B and I
+   are assembled over the 5 ne + 1 slot pairs that share an element (each
+   row a contiguous range of 6 or 11 pairs, 35 ne + 1 numbers; the x/y
+   Kronecker factor is never stored), the Gram entries are of the size of
+   L^2, L, 1 wherever the chain is, and the slot forces and 2x2 blocks go
+   back to the nodal layout by the chain rule of d_e (Q = J^T Q~, K = J^T
+   K~ J, D = J^T D~ J, J = +-1 entries; vlbe__ale_sys_force).  Rounding
+   (tests/test_ale_inv.c): at eps = 1e-4 on 64 elements far from the
+   origin the system route's Q is within ~3 EPS/eps of max|Q| of the
+   Gauss route per element in its own frame and of a long double
+   reference (EPS/eps is the Green strain's own conditioning, the floor of
+   every route), K and D within ~5 EPS; it does not grow with the chain.
+   The Gauss route on the nodal values forms r' from positions of size
+   |r| (~EPS |r|/L / eps); the element invariants work relative to their
+   node 1's position but take the nodal velocities as they are (damped:
+   ~c |v|/L more).
 
 API
    vlbe_status vlbe_ale_elem_init(el, mat, flags, nm, nl, nt)  element type, Gauss tables
@@ -291,11 +302,11 @@ typedef struct vlbe_ale_elem {
 /* The system invariants of a chain of ne fixed-length elements (see
    vlbe_ale_inv_sys_init): pointers into the caller's buffer. */
 typedef struct vlbe_ale_inv_sys {
-    int ne, np;        /* elements, slot pairs 7 ne + 3                     */
+    int ne, np;        /* elements, slot pairs 5 ne + 1                     */
     vlbe_real EA, c;   /* axial stiffness, Kelvin-Voigt time (0: undamped)  */
     const vlbe_real *T; /* assembled quartic invariants, band rows of pairs  */
     const vlbe_real *B; /* assembled quadratic invariants, one per pair      */
-    vlbe_real *H;      /* scratch: 8 pair products per pair                 */
+    vlbe_real *H;      /* scratch: 8 products per pair, then the slots      */
 } vlbe_ale_inv_sys;
 
 /* -- API prototypes ----------------------------------------------------- */
@@ -925,11 +936,10 @@ static inline vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe
    y_k,b^T D~_be,  D_a,pk' = L^m_a sum_b D~_ab y_k,b,  D_pl,pk' = y_l^T D~
    y_k.  The p-columns of K: vlbe__ale_pcols with the degree weights. */
 
-/* slots (A, B), A <= B, of pair P in the order of vlbe_ale_inv, which is
-   also the order of a chain's pairs: node n's three pairs (2n, 2n), (2n,
-   2n+1), (2n+1, 2n+1) at 7n + 0..2, its four links to node n+1 (2n, 2n+2),
-   (2n, 2n+3), (2n+1, 2n+2), (2n+1, 2n+3) at 7n + 3..6.  vlbe__ale_inv_pa:
-   the offsets from 2n, A for t = P - 7n in [0, 10) at [t], B at [10 + t]. */
+/* slots (A, B), A <= B, of pair P in the order of vlbe_ale_inv: node 1's
+   three pairs (0, 0), (0, 1), (1, 1), its four links to node 2 (0, 2), (0,
+   3), (1, 2), (1, 3), node 2's three pairs.  vlbe__ale_inv_pa: A at [P], B
+   at [10 + P]. */
 static inline const signed char *vlbe__ale_inv_pa(void)
 {
     static const signed char pa[20] = {0, 0, 1, 0, 0, 1, 1, 2, 2, 3,
@@ -940,9 +950,8 @@ static inline const signed char *vlbe__ale_inv_pa(void)
 static inline void vlbe__ale_inv_slots(int P, int *A, int *B)
 {
     const signed char *pa = vlbe__ale_inv_pa();
-    const int n = P / 7, t = P % 7;
-    *A = 2 * n + pa[t];
-    *B = 2 * n + pa[10 + t];
+    *A = pa[P];
+    *B = pa[10 + P];
 }
 
 /* Pair products of slots a, b (2-vectors r, v; v may be NULL = 0), times
@@ -1875,62 +1884,124 @@ VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned 
     return VLBE_OK;
 }
 
-/* Rows of the assembled quartic invariants T of a chain of ne elements
-   (pairs in the order of vlbe__ale_inv_slots, np = 7 ne + 3): row P holds
-   the pairs R in [c0, c0 + w) that share an element with P, which is a
-   contiguous range: node n's pairs meet nodes n-1..n+1 (w = 17, 10 at an
-   end node), a link n..n+1 meets nodes n, n+1 (w = 10).  start: offset of
-   the row in the stored T, nnz = 91 ne + 9 in all. */
+/* -- system invariants: translation-free slots ---------------------------
+   The strain of element e reads its nodes only through the chord and the
+   slopes: h1' = -h3' (the cubic Hermite basis), so in the xi-form r' =
+   h3' d_e + L h2' r_e' + L h4' r_{e+1}' with d_e = r_{e+1} - r_e.  The
+   system route's slots are these vectors: slot 2n the slope r_n' of node
+   n, slot 2n + 1 the chord d_n of element n (2 ne + 1 slots); element e
+   reads the slots 2e .. 2e + 2, which are the slots 1..3 (r1', r2, r2')
+   of vlbe_ale_inv with r1 = 0, so its tables serve unchanged.  The Gram
+   entries are then of the size of L^2, L and 1 whatever the chain's extent
+   (positions measured from one point made them ~R^2 and their rounding
+   relative to the strain grow like (R/L)^2).  Slot pairs sharing an
+   element, 5 ne + 1 in all: node n's (2n, 2n) at 5n and element n's (2n,
+   2n+1), (2n, 2n+2), (2n+1, 2n+1), (2n+1, 2n+2) at 5n + 1..4, so element
+   e's six pairs are 5e .. 5e + 5 (the last is node e+1's).
+   vlbe__ale_sys_pa: for local pair t = 0..5 of an element, the slot
+   offsets from 2e at [t] and [6 + t] and the pair of vlbe_ale_inv at
+   [12 + t].  The forces on the slots, Q~ = -EA S r~ (vlbe__ale_inv_out
+   in slot space), map back to the nodal coordinates by the chain rule of
+   d_n = r_{n+1} - r_n: Q = J^T Q~, K = J^T K~ J, D = J^T D~ J, J sparse
+   with the entries +-1 of vlbe__ale_sys_tgt. */
+static inline const signed char *vlbe__ale_sys_pa(void)
+{
+    static const signed char pa[18] = {0, 0, 0, 1, 1, 2, 0, 1, 2, 1, 2, 2, 2, 5, 6, 7, 8, 9};
+    return pa;
+}
+
+/* Rows of the assembled quartic invariants T (pairs P in the order above,
+   np = 5 ne + 1): row P holds the pairs R in [c0, c0 + w) that share an
+   element with P, a contiguous range: node n's pair meets elements n-1, n
+   (w = 11, 6 at an end node), a pair of element n meets its six (w = 6).
+   start: offset of the row in the stored T, nnz = 35 ne + 1 in all. */
 static inline void vlbe__ale_sys_row(int ne, int P, int *start, int *c0, int *w)
 {
-    const int n = P / 7, t = P % 7, wn = (n == 0 || n == ne) ? 10 : 17;
-    const int blk = n == 0 ? 0 : 70 + 91 * (n - 1); /* rows of the nodes before n */
-    if (t < 3) {
-        *start = blk + t * wn;
-        *c0 = n > 0 ? 7 * (n - 1) : 0;
+    const int n = P / 5, t = P % 5, wn = (n == 0 || n == ne) ? 6 : 11;
+    const int blk = n == 0 ? 0 : 30 + 35 * (n - 1); /* rows of the nodes before n */
+    if (t == 0) {
+        *start = blk;
+        *c0 = n > 0 ? 5 * (n - 1) : 0;
         *w = wn;
     } else {
-        *start = blk + 3 * wn + 10 * (t - 3);
-        *c0 = 7 * n;
-        *w = 10;
+        *start = blk + wn + 6 * (t - 1);
+        *c0 = 5 * n;
+        *w = 6;
     }
 }
 
-/* slot A of a chain's x (slope, or position relative to x0) */
-static inline void vlbe__ale_sys_pos(const vlbe_real *x, int A, const vlbe_real *x0, vlbe_real *r)
+/* slot A of the nodal vector x (coordinates or their rates): the slope of
+   node A/2 (A even) or the chord of element (A-1)/2 (A odd) */
+static inline void vlbe__ale_sys_slot(const vlbe_real *x, int A, vlbe_real *r)
 {
-    const int pos = !(A & 1);
-    r[0] = x[2 * A] - (pos ? x0[0] : VLBE_R(0.0));
-    r[1] = x[2 * A + 1] - (pos ? x0[1] : VLBE_R(0.0));
+    const int o = 4 * (A / 2);
+    if (A & 1) {
+        r[0] = x[o + 4] - x[o];
+        r[1] = x[o + 5] - x[o + 1];
+    } else {
+        r[0] = x[o + 2];
+        r[1] = x[o + 3];
+    }
+}
+
+/* The nodal coordinates (index of the x of the 2-vector) slot A acts on,
+   with the sign of its derivative: the slope itself (+1), or for a chord
+   node n (-1) and node n+1 (+1).  Returns their number. */
+static inline int vlbe__ale_sys_tgt(int A, int *ix, vlbe_real *sg)
+{
+    const int o = 4 * (A / 2);
+    if (!(A & 1)) {
+        ix[0] = o + 2;
+        sg[0] = VLBE_R(1.0);
+        return 1;
+    }
+    ix[0] = o;
+    sg[0] = VLBE_R(-1.0);
+    ix[1] = o + 4;
+    sg[1] = VLBE_R(1.0);
+    return 2;
+}
+
+/* M (band) += s b at the 2x2 block of rows i, i+1 and columns j, j+1 (b
+   2x2 row-major) */
+static inline void vlbe__ale_sys_blk(vlbe_real *M, int i, int j, vlbe_real s, const vlbe_real *b)
+{
+    vlbe_real *m = M + VLBE__ALE_BAND(i, j);
+    m[0] += s * b[0];
+    m[1] += s * b[1];
+    m[VLBE_ALE_INV_BW - 1] += s * b[2];
+    m[VLBE_ALE_INV_BW] += s * b[3];
 }
 
 /* Length (in vlbe_real) of the buffer of vlbe_ale_inv_sys_init for ne
-   elements, 158 ne + 40; 0 for ne < 1 or too large for int indexing. */
+   elements, 88 ne + 16; 0 for ne < 1 or too large for int indexing. */
 VLBE_API size_t vlbe_ale_inv_sys_work_len(int ne)
 {
-    /* T (91 ne + 9), B (np), scratch H (8 np), load vector (4 ne + 4) */
-    if (ne < 1 || ne > (INT_MAX - 64) / 158) return 0;
-    return (size_t)158 * (size_t)ne + 40;
+    /* T (35 ne + 1), B (np = 5 ne + 1), load vector (4 ne + 4), scratch:
+       pair products (8 np), slot vectors (4 ne + 2) */
+    if (ne < 1 || ne > (INT_MAX - 64) / 88) return 0;
+    return (size_t)88 * (size_t)ne + 16;
 }
 
 /* System invariants of a chain of ne fixed-length cable elements of
    lengths L[ne] (material, load and the tables from el; damping unless
-   (mode | el->flags) has NO_DAMP): the assembled I and B (each element's
-   table scaled to its L and added into the pair rows it touches) and the
-   load vector, in work (work_len >= vlbe_ale_inv_sys_work_len(ne)), which
-   must live as long as sys and is also the scratch of
-   vlbe_ale_inv_sys_force (one evaluation at a time per buffer).  Errors
-   (sys and work untouched): VLBE_EARG for ne < 1 or too large, VLBE_EWORK
-   for a short buffer, VLBE_ENONFINITE for NaN/Inf in L, VLBE_ELENGTH for
-   L[e] <= 0. */
+   (mode | el->flags) has NO_DAMP): the assembled I and B over the slot
+   pairs (each element's table scaled to its L and added into the pair
+   rows it touches) and the load vector, in work (work_len >=
+   vlbe_ale_inv_sys_work_len(ne)), which must live as long as sys and is
+   also the scratch of vlbe_ale_inv_sys_force (one evaluation at a time per
+   buffer).  Errors (sys and work untouched): VLBE_EARG for ne < 1 or too
+   large, VLBE_EWORK for a short buffer, VLBE_ENONFINITE for NaN/Inf in L,
+   VLBE_ELENGTH for L[e] <= 0. */
 VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale_elem *el,
                                            unsigned mode, int ne, const vlbe_real *L,
                                            vlbe_real *work, size_t work_len)
 {
     const vlbe_ale_inv *iv;
+    const signed char *pa = vlbe__ale_sys_pa();
     const size_t need = vlbe_ale_inv_sys_work_len(ne);
     vlbe_real *T, *B, *F;
-    int np, nnz, e, p, r, i, a, b, c, d;
+    int np, nnz, e, p, r, i;
     VLBE_ASSERT(sys != NULL && el != NULL && L != NULL && work != NULL);
     if (need == 0) return VLBE_EARG;
     if (work_len < need) return VLBE_EWORK;
@@ -1939,31 +2010,29 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
         if (!(L[e] > VLBE_R(0.0))) return VLBE_ELENGTH;
     mode |= el->flags;
     iv = &el->inv;
-    np = 7 * ne + 3;
-    nnz = 91 * ne + 9;
+    np = 5 * ne + 1;
+    nnz = 35 * ne + 1;
     T = work;
     B = T + nnz;
     F = B + np;
     for (i = 0; i < nnz + np + 4 * ne + 4; ++i) work[i] = VLBE_R(0.0);
-    /* sum of the element tables, each scaled to its L:
-       I_abcd = L^(m_a+m_b+m_c+m_d-3) i_abcd, B_ab = L^(m_a+m_b-1) b_ab,
-       load L^(m_a+1) n_a f */
+    /* sum of the element tables over their slots 1..3, each scaled to its
+       L (the slopes are not): with m = 1 for a slope, 0 for the chord,
+       I_abcd = L^(m_a+m_b+m_c+m_d-3) i_abcd, B_ab = L^(m_a+m_b-1) b_ab;
+       load L^(m_a+1) n_a f on the nodal layout */
     for (e = 0; e < ne; ++e) {
         vlbe_real Lp[8];
         Lp[3] = VLBE_R(1.0);
         for (i = 4; i < 8; ++i) Lp[i] = Lp[i - 1] * L[e];
         for (i = 2; i >= 0; --i) Lp[i] = Lp[i + 1] / L[e]; /* Lp[k] = L^(k-3) */
-        for (p = 0; p < VLBE_ALE_INV_NP; ++p) {
+        for (p = 0; p < 6; ++p) {
             int start, c0, w;
-            const int P = 7 * e + p;
-            vlbe__ale_inv_slots(p, &a, &b);
+            const int P = 5 * e + p, mp = !(pa[p] & 1) + !(pa[6 + p] & 1);
             vlbe__ale_sys_row(ne, P, &start, &c0, &w);
-            B[P] += Lp[2 + (a & 1) + (b & 1)] * iv->b[p];
-            for (r = 0; r < VLBE_ALE_INV_NP; ++r) {
-                vlbe__ale_inv_slots(r, &c, &d);
-                T[start + 7 * e + r - c0] +=
-                    Lp[(a & 1) + (b & 1) + (c & 1) + (d & 1)] * iv->t[p * VLBE_ALE_INV_NP + r];
-            }
+            B[P] += Lp[2 + mp] * iv->b[pa[12 + p]];
+            for (r = 0; r < 6; ++r)
+                T[start + 5 * e + r - c0] += Lp[mp + !(pa[r] & 1) + !(pa[6 + r] & 1)] *
+                                             iv->t[pa[12 + p] * VLBE_ALE_INV_NP + pa[12 + r]];
         }
         {
             vlbe_real Fe[10];
@@ -1985,65 +2054,72 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
 /* vlbe_ale_inv_sys_force (the public wrapper below asserts the pointers):
    the chain's cable force Q (n = 4 (ne + 1), overwritten) and, when not
    NULL, K = dQ/dx and D = dQ/dv in band storage, from the system
-   invariants: one pass over the 7 ne + 3 slot pairs for their products,
-   one over the stored rows.  v may be NULL (= 0; D is still c dQ/dv).
-   Same numbers as vlbe_ale_inv_chain_force to rounding.  Errors (nothing
-   written): VLBE_ENONFINITE for NaN/Inf in x, v. */
+   invariants: one pass over the 2 ne + 1 slots, one over the 5 ne + 1
+   slot pairs for their products, one over the stored rows, whose slot
+   forces and blocks go to the nodal rows and columns by the chain rule.
+   v may be NULL (= 0; D is still c dQ/dv).  Same numbers as
+   vlbe_ale_inv_chain_force to rounding.  Errors (nothing written):
+   VLBE_ENONFINITE for NaN/Inf in x, v. */
 static inline vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
                                               const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                               vlbe_real *D)
 {
     const int n = 4 * (sys->ne + 1), damp = sys->c != VLBE_R(0.0) && v != NULL;
-    const int jac = K != NULL || D != NULL, ne = sys->ne;
-    const signed char *pa = vlbe__ale_inv_pa();
-    const vlbe_real *F = sys->B + sys->np, *T = sys->T;
+    const int jac = K != NULL || D != NULL, ne = sys->ne, np = sys->np;
+    const signed char *pa = vlbe__ale_sys_pa();
+    const vlbe_real *F = sys->B + np, *T = sys->T;
     const vlbe_real EA = sys->EA, EAc = sys->EA * sys->c;
-    vlbe_real *H = sys->H, y[8] = {0, 0, 0, 0, 0, 0, 0, 0}, x0[2];
+    vlbe_real *H = sys->H, *rs = sys->H + 8 * np, y[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     vlbe_status st;
-    int nd, t, i;
+    int P, i, j;
     if ((st = vlbe__ale_chain_in(ne, NULL, x, damp ? v : NULL)) != VLBE_OK) return st;
     for (i = 0; i < n; ++i) Q[i] = F[i];
     for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
     for (i = 0; D && i < n * VLBE_ALE_INV_BW; ++i) D[i] = VLBE_R(0.0);
-    /* pair products, node by node (pair 7 nd + t), positions relative to
-       the middle node's (exact: the force is invariant to translation; the
-       Gram entries of positions are then of the size of half the chain's
-       extent squared, not |r|^2: their rounding relative to the strain
-       grows like the square of that size over L) */
-    for (i = 0; i < 2; ++i) x0[i] = x[4 * (ne / 2) + i];
-    for (nd = 0; nd <= ne; ++nd)
-        for (t = 0; t < (nd < ne ? 7 : 3); ++t) {
-            const int A = 2 * nd + pa[t], B = 2 * nd + pa[10 + t];
-            vlbe_real ra[2], rb[2];
-            vlbe__ale_sys_pos(x, A, x0, ra);
-            vlbe__ale_sys_pos(x, B, x0, rb);
-            vlbe__ale_inv_prod(ra, rb, damp ? v + 2 * A : NULL, damp ? v + 2 * B : NULL, sys->c,
-                               VLBE_R(1.0), jac, H + 8 * (7 * nd + t));
+    for (i = 0; i <= 2 * ne; ++i) vlbe__ale_sys_slot(x, i, rs + 2 * i);
+    /* pair products (pair 5 nd + t: slots 2 nd + pa[t], 2 nd + pa[6 + t]) */
+    for (P = 0; P < np; ++P) {
+        const int A = 2 * (P / 5) + pa[P % 5], B = 2 * (P / 5) + pa[6 + P % 5];
+        vlbe_real va[2], vb[2];
+        if (damp) {
+            vlbe__ale_sys_slot(v, A, va);
+            vlbe__ale_sys_slot(v, B, vb);
         }
-    /* the rows of T, stored one after another (vlbe__ale_sys_row) */
-    for (nd = 0; nd <= ne; ++nd) {
-        const int wn = (nd == 0 || nd == ne) ? 10 : 17, c0 = nd > 0 ? 7 * (nd - 1) : 0;
-        for (t = 0; t < (nd < ne ? 7 : 3); ++t) {
-            const int A = 2 * nd + pa[t], B = 2 * nd + pa[10 + t], P = 7 * nd + t;
-            const int w = t < 3 ? wn : 10, c = t < 3 ? c0 : 7 * nd;
-            vlbe_real S, ra[2], rb[2];
-            vlbe__ale_sys_pos(x, A, x0, ra);
-            vlbe__ale_sys_pos(x, B, x0, rb);
-            if (jac) {
-                vlbe__ale_inv_row(T, w, H + 8 * c, y);
-                S = y[0];
-            } else {
-                int j;
-                S = VLBE_R(0.0);
-                for (j = 0; j < w; ++j) S += T[j] * H[8 * (c + j)];
+        vlbe__ale_inv_prod(rs + 2 * A, rs + 2 * B, damp ? va : NULL, damp ? vb : NULL, sys->c,
+                           VLBE_R(1.0), jac, H + 8 * P);
+    }
+    /* the rows of T, stored one after another (vlbe__ale_sys_row); the
+       pair's slot force and blocks (2x2, (A, B) = (B, A)) in Qt, Kt, Dt,
+       then scattered to the nodal layout */
+    for (P = 0; P < np; ++P) {
+        const int A = 2 * (P / 5) + pa[P % 5], B = 2 * (P / 5) + pa[6 + P % 5];
+        vlbe_real S, Qt[4] = {0, 0, 0, 0}, Kt[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+        vlbe_real Dt[8] = {0, 0, 0, 0, 0, 0, 0, 0}, sa[2], sb[2];
+        int start, c0, w, ia[2], ib[2], na, nb, a, b;
+        vlbe__ale_sys_row(ne, P, &start, &c0, &w);
+        if (jac) {
+            vlbe__ale_inv_row(T + start, w, H + 8 * c0, y);
+            S = y[0];
+        } else {
+            S = VLBE_R(0.0);
+            for (j = 0; j < w; ++j) S += T[start + j] * H[8 * (c0 + j)];
+        }
+        vlbe__ale_inv_out(VLBE_R(0.5) * (S - sys->B[P]), y, jac, EA, EAc, rs + 2 * A, rs + 2 * B,
+                          A == B, Qt, Qt + 2, K ? Kt : NULL, K ? Kt + 4 : NULL, D ? Dt : NULL,
+                          D ? Dt + 4 : NULL, 2);
+        na = vlbe__ale_sys_tgt(A, ia, sa);
+        nb = vlbe__ale_sys_tgt(B, ib, sb);
+        for (a = 0; a < na; ++a) vlbe_v2_axpy(sa[a], Qt, Q + ia[a]);
+        for (b = 0; A != B && b < nb; ++b) vlbe_v2_axpy(sb[b], Qt + 2, Q + ib[b]);
+        for (a = 0; jac && a < na; ++a)
+            for (b = 0; b < nb; ++b) {
+                const vlbe_real s = sa[a] * sb[b];
+                if (K) vlbe__ale_sys_blk(K, ia[a], ib[b], s, Kt);
+                if (D) vlbe__ale_sys_blk(D, ia[a], ib[b], s, Dt);
+                if (A == B) continue;
+                if (K) vlbe__ale_sys_blk(K, ib[b], ia[a], s, Kt);
+                if (D) vlbe__ale_sys_blk(D, ib[b], ia[a], s, Dt);
             }
-            T += w;
-            vlbe__ale_inv_out(VLBE_R(0.5) * (S - sys->B[P]), y, jac, EA, EAc, ra, rb, A == B, Q + 2 * A, Q + 2 * B,
-                              K ? K + VLBE__ALE_BAND(2 * A, 2 * B) : NULL,
-                              K ? K + VLBE__ALE_BAND(2 * B, 2 * A) : NULL,
-                              D ? D + VLBE__ALE_BAND(2 * A, 2 * B) : NULL,
-                              D ? D + VLBE__ALE_BAND(2 * B, 2 * A) : NULL, VLBE_ALE_INV_BW - 1);
-        }
     }
     return VLBE_OK;
 }
