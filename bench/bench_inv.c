@@ -52,33 +52,29 @@
    scene (20 s, sp_run) with each route at 4, 8, 16 elements: max tip
    difference over the 40 samples.
 
-   Measured (quiet run, -O3 -march=native, gcc 12.2.0, AMD EPYC Zen 4
-   2.6 GHz, 2 cores, one used; three runs agreed within 3 %), us per step
-   in the window, Gauss / element invariants / system invariants:
-       4 el. 15.0 / 16.9 / 17.6,  8 el. 31.0 / 34.8 / 35.5,
-      16 el. 74.0 / 81.6 / 83.1, 32 el. 207 / 222 / -, 64 el. 726 / 755 / -.
-   The element invariants cost 4-13 % more per step than Gauss points, the
-   system invariants 12-17 % more; element vs system invariants 0.96-0.98
+   Measured (-O3 -march=native, gcc 12.2.0, AMD EPYC Zen 4 2.6 GHz, 2
+   cores, one used; interleaved rounds), us per step in the window, Gauss /
+   element invariants / system invariants:
+       4 el. 14.5 / 16.5 / 16.0,  8 el. 30.3 / 34.4 / 32.8,
+      16 el. 73.1 / 81.2 / 78.0, 32 el. 208.3 / 224.5 / 218.2,
+      64 el. 733.9 / 768.0 / 756.0.
+   The element invariants cost 5-14 % more per step than Gauss points, the
+   system invariants 3-10 % more; system vs element invariants 1.02-1.05
    per step, nowhere near the paper's order of magnitude.  Why: with
    bending the invariant routes still evaluate r', r'' at the Gauss points
    for the curvature, which is most of the Gauss route's work (it takes the
    axial strain from the same points), and add the axial contraction on
-   top: per element and call Q 180 -> 260-280 ns, Q + K + D 960-1130 ->
-   1100-1320 ns.  And the force callbacks are only 16-46 % of a step (the
-   share falls with ne): the rest is the mass matrix, which the HHT
-   iteration assembles at every Newton iteration (2.0 -> 54 us per step),
-   and the integrator's dense LU (one per step in the spin-up) and solves
-   (36 % of the step at 4 el., 75 % at 64).  Over 0..10 s the tips agree
-   with the Gauss route's to 7e-13 (element invariants, all sizes) and 4e-12,
-   6e-11, 2.3e-7 (system invariants, 4, 8, 16 el.); the system route's
-   rounding grows with the chain (its Q differs from Gauss by 1.3e-8,
-   1.5e-7, 1.7e-6, 1e-5 of max |Q| at 8, 16, 32, 64 el. at t = 1 s of the
-   scene, where the tension is small against EA = 2.8e7 N), and HHT's
-   Newton (rtol 1e-9, atol 1e-11) stalls on that noise: 9 rejected steps
-   and a tip 2.2e-7 off over the scene at 16 el., VLBE_ENOCONV at t =
-   1.18 s (32 el.) and 0.03 s (64 el.).  So Gauss points stay the default
-   (vlbe_ale_force, and cfg.inv = SP_GAUSS in ex_spin.h): faster per step
-   at every size here. */
+   top.  And the force callbacks are only 16-46 % of a step (the share
+   falls with ne): the rest is the mass matrix, which the HHT iteration
+   assembles at every Newton iteration (2.0 -> 54 us per step), and the
+   integrator's dense LU (one per step in the spin-up) and solves (36 % of
+   the step at 4 el., 75 % at 64).  Over 0..10 s the tips agree with the
+   Gauss route's to 7e-13 (element invariants) and 3e-13 .. 6e-13 (system
+   invariants) at every size.  (Before the system route moved to
+   translation-free slots, its rounding grew with the chain: 1e-5 of max
+   |Q| at 64 el., and HHT's Newton failed at 32 and 64 el.)  So Gauss
+   points stay the default (vlbe_ale_force, and cfg.inv = SP_GAUSS in
+   ex_spin.h): faster per step at every size here. */
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
 #include "../examples/ex_spin.h"
