@@ -29,7 +29,7 @@
    added to an accumulator stored into a volatile sink, so no output can be
    dropped, and the status codes are checked.  The mode is read at run time
    (not a constant the compiler could specialize the kernel for), as in an
-   assembly loop.  Per configuration: a warm-up batch, then BATCHES = 31
+   assembly loop.  Per configuration: a warm-up batch, then BENCHU_BATCHES = 31
    batches of k calls each (k = 1e4, raised only if a batch would take less
    than 0.2 ms), CLOCK_MONOTONIC around each batch.  Batches are kept short
    (0.2 .. 4 ms) so that few of them straddle a time slice of another
@@ -48,15 +48,7 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "(unknown flags)"
-#endif
-
-#define BATCHES 31
 #define MIN_CALLS 10000L
-#define MAX_CALLS 2000000L
-#define MIN_BATCH_S 2e-4
-#define NOISY 1.15 /* median / min above this: the row is marked as disturbed */
 #define NSTATE 8 /* perturbed copies of the state, cycled through */
 #define DNAN ((double)NAN)
 
@@ -219,13 +211,13 @@ typedef struct result {
 } result;
 
 /* All variants of one operation: warm-up and calibration of k per variant,
-   then BATCHES rounds of one batch per variant (interleaved, so that a
+   then BENCHU_BATCHES rounds of one batch per variant (interleaved, so that a
    disturbance of the machine spreads over the variants instead of hitting
    all batches of one), median and min per variant. */
 static void measure_op(int op, const vlbe_ale_elem *els, const unsigned *modes, result *res,
                        long *bad)
 {
-    static double s[NVAR][BATCHES];
+    static double s[NVAR][BENCHU_BATCHES];
     long k[NVAR];
     int v, i;
     for (v = 0; v < NVAR; ++v) {
@@ -233,18 +225,18 @@ static void measure_op(int op, const vlbe_ale_elem *els, const unsigned *modes, 
         mode_src = modes[v];
         k[v] = MIN_CALLS;
         t = batch(op, &els[v], k[v], bad);
-        if (t * (double)k[v] < MIN_BATCH_S) k[v] = (long)(MIN_BATCH_S / (t > 1e-10 ? t : 1e-10)) + 1;
-        if (k[v] > MAX_CALLS) k[v] = MAX_CALLS;
+        if (t * (double)k[v] < BENCHU_MIN_BATCH_S) k[v] = (long)(BENCHU_MIN_BATCH_S / (t > 1e-10 ? t : 1e-10)) + 1;
+        if (k[v] > BENCHU_MAX_CALLS) k[v] = BENCHU_MAX_CALLS;
         if (k[v] < MIN_CALLS) k[v] = MIN_CALLS;
     }
-    for (i = 0; i < BATCHES; ++i)
+    for (i = 0; i < BENCHU_BATCHES; ++i)
         for (v = 0; v < NVAR; ++v) {
             mode_src = modes[v];
             s[v][i] = batch(op, &els[v], k[v], bad);
         }
     for (v = 0; v < NVAR; ++v) {
-        qsort(s[v], BATCHES, sizeof s[v][0], benchu_cmp_double);
-        res[v].med_ns = 1e9 * s[v][BATCHES / 2];
+        qsort(s[v], BENCHU_BATCHES, sizeof s[v][0], benchu_cmp_double);
+        res[v].med_ns = 1e9 * s[v][BENCHU_BATCHES / 2];
         res[v].min_ns = 1e9 * s[v][0];
         res[v].calls = k[v];
     }
@@ -293,7 +285,7 @@ int main(int argc, char **argv)
            load_avg());
     printf("ns per element call: median (min) of %d batches of >= %ld calls after warm-up, "
            "CLOCK_MONOTONIC\n",
-           BATCHES, MIN_CALLS);
+           BENCHU_BATCHES, MIN_CALLS);
     printf("state: bent (R = 0.5 m), stretched (0.2 %%), rotating wire element, L = 0.25 m, "
            "p1' = 0.30, p2' = 0.25 m/s\n\n");
 
@@ -329,7 +321,7 @@ int main(int argc, char **argv)
             pass = has_tg && res[op][v].med_ns <= tg;
             printf("%-18s %-34s %10.1f %10.1f %8.2f ", v == 0 ? op_name[op] : "", va->name,
                    res[op][v].med_ns, res[op][v].min_ns, rel);
-            noisy = res[op][v].med_ns > NOISY * res[op][v].min_ns;
+            noisy = res[op][v].med_ns > BENCHU_NOISY * res[op][v].min_ns;
             nnoisy += noisy;
             if (has_tg) printf("%8.0f %6s%s\n", tg, pass ? "PASS" : "FAIL", noisy ? " *" : "");
             else printf("%8s %6s%s\n", "-", "", noisy ? " *" : "");
@@ -337,7 +329,7 @@ int main(int argc, char **argv)
             if (f)
                 fprintf(f, "%s,\"%s\",%u,%d,%d,%d,%ld,%d,%.6g,%.6g,%.4g,%.6g,%s\n", op_csv[op],
                         va->name, va->mode, va->nm ? va->nm : 4, va->nl ? va->nl : 5,
-                        va->nt ? va->nt : 5, res[op][v].calls, BATCHES, res[op][v].med_ns,
+                        va->nt ? va->nt : 5, res[op][v].calls, BENCHU_BATCHES, res[op][v].med_ns,
                         res[op][v].min_ns, rel, tg, has_tg ? (pass ? "yes" : "no") : "");
         }
         printf("\n");
@@ -346,7 +338,7 @@ int main(int argc, char **argv)
     if (nnoisy)
         printf("* median > %.2f x min: the machine was busy during this row (load average now "
                "%.2f); rerun on a quiet machine\n",
-               NOISY, load_avg());
+               BENCHU_NOISY, load_avg());
     if (order_var >= 0) {
         order_error(&els[0], &els[order_var], &eq, &ek);
         printf("%s against 4/5/5: max |dQ| / max |Q| = %.2e, max |dK| / max |K| = %.2e\n",
@@ -358,13 +350,5 @@ int main(int argc, char **argv)
            res[OP_QKD][0].med_ns, op_target[OP_QKD],
            res[OP_QKD][0].med_ns <= op_target[OP_QKD] ? "PASS" : "MISS", res[OP_M][0].med_ns,
            op_target[OP_M], res[OP_M][0].med_ns <= op_target[OP_M] ? "PASS" : "MISS");
-    if (f) {
-        if (fclose(f) != 0) fprintf(stderr, "bench_ale: cannot write %s\n", csv);
-        else printf("\nwrote %s\n", csv);
-    }
-    if (bad) {
-        fprintf(stderr, "bench_ale: %ld calls did not return VLBE_OK\n", bad);
-        return 1;
-    }
-    return 0;
+    return benchu_finish("bench_ale", f, csv, bad);
 }

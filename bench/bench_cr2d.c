@@ -27,14 +27,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "(unknown flags)"
-#endif
-
-#define BATCHES 31
 #define MIN_CALLS 10000L
-#define MIN_BATCH_S 2e-4
-#define NOISY 1.15
 #define NSTATE 8
 #define REPS 5
 #define TARGET_ELEM_NS 500.0
@@ -80,7 +73,7 @@ static double batch(int v, const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt, 
 int main(int argc, char **argv)
 {
     const char *tag = argc > 1 ? argv[1] : NULL;
-    static double s[NV][BATCHES];
+    static double s[NV][BENCHU_BATCHES];
     vlbe_cr2d_mat mat;
     vlbe_cr2d_elem el, elt;
     vlbe_cr2d_joint jt;
@@ -124,16 +117,16 @@ int main(int argc, char **argv)
     for (v = 0; v < NV; ++v) { /* calibration */
         double t = batch(v, v == V_TRANS ? &elt : &el, &jt, MIN_CALLS);
         kc[v] = MIN_CALLS;
-        if (t * (double)kc[v] < MIN_BATCH_S) kc[v] = (long)(MIN_BATCH_S / t) + 1;
+        if (t * (double)kc[v] < BENCHU_MIN_BATCH_S) kc[v] = (long)(BENCHU_MIN_BATCH_S / t) + 1;
     }
-    for (b = 0; b < BATCHES; ++b)
+    for (b = 0; b < BENCHU_BATCHES; ++b)
         for (v = 0; v < NV; ++v) s[v][b] = batch(v, v == V_TRANS ? &elt : &el, &jt, kc[v]);
     printf("%-46s %10s %10s\n", "element call", "median ns", "min ns");
     for (v = 0; v < NV; ++v) {
-        qsort(s[v], BATCHES, sizeof s[v][0], benchu_cmp_double);
-        med[v] = 1e9 * s[v][BATCHES / 2];
+        qsort(s[v], BENCHU_BATCHES, sizeof s[v][0], benchu_cmp_double);
+        med[v] = 1e9 * s[v][BENCHU_BATCHES / 2];
         printf("%-46s %10.1f %10.1f%s\n", vname[v], med[v], 1e9 * s[v][0],
-               med[v] > NOISY * 1e9 * s[v][0] ? " *" : "");
+               med[v] > BENCHU_NOISY * 1e9 * s[v][0] ? " *" : "");
         if (f) fprintf(f, "%s,%.2f,%.2f,ns,,,,,\n", vname[v], med[v], 1e9 * s[v][0]);
     }
     full_ns = med[V_FULL];

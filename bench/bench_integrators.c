@@ -43,10 +43,6 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "(unknown flags)"
-#endif
-
 #define TARGET_NS_PER_STEP 2000.0 /* HHT-alpha, pendulum, h = 1e-3 */
 #define PEND_T_BENCH 3.0          /* s */
 #define MAX_SAMPLES 401

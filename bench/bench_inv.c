@@ -24,7 +24,7 @@
    Method as in bench_ale.c: NSTATE perturbed copies of each state cycled
    through, one output entry per call summed into a volatile sink, the mode
    read at run time; per configuration a warm-up and calibration, then
-   BATCHES rounds of one batch per configuration (interleaved round robin,
+   BENCHU_BATCHES rounds of one batch per configuration (interleaved round robin,
    so that a disturbance of the shared machine spreads over all rows), each
    batch >= 0.2 ms.  Reported: median (min) ns per call over the batches; a
    row whose median exceeds 1.15 times its min is marked '*'.
@@ -85,15 +85,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "(unknown flags)"
-#endif
-
-#define BATCHES 31
 #define MIN_CALLS 2000L
-#define MAX_CALLS 2000000L
-#define MIN_BATCH_S 2e-4
-#define NOISY 1.15
 #define NSTATE 8
 #define NE_MAX 64
 #define N_MAX (4 * (NE_MAX + 1))
@@ -235,29 +227,29 @@ static unsigned cfg_mode(const cfg *c)
     return c->mode | VLBE_ALE_NO_BEND | VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2;
 }
 
-/* calibration, then BATCHES interleaved rounds over all configurations */
+/* calibration, then BENCHU_BATCHES interleaved rounds over all configurations */
 static void measure(cfg *cs, int nc, long *bad)
 {
-    static double t[128][BATCHES];
+    static double t[128][BENCHU_BATCHES];
     int i, b;
     for (i = 0; i < nc; ++i) {
         double s;
         mode_src = cfg_mode(&cs[i]);
         cs[i].calls = MIN_CALLS;
         s = batch(&cs[i], cs[i].calls, bad);
-        if (s * (double)cs[i].calls < MIN_BATCH_S)
-            cs[i].calls = (long)(MIN_BATCH_S / (s > 1e-10 ? s : 1e-10)) + 1;
-        if (cs[i].calls > MAX_CALLS) cs[i].calls = MAX_CALLS;
+        if (s * (double)cs[i].calls < BENCHU_MIN_BATCH_S)
+            cs[i].calls = (long)(BENCHU_MIN_BATCH_S / (s > 1e-10 ? s : 1e-10)) + 1;
+        if (cs[i].calls > BENCHU_MAX_CALLS) cs[i].calls = BENCHU_MAX_CALLS;
         if (cs[i].calls < MIN_CALLS) cs[i].calls = MIN_CALLS;
     }
-    for (b = 0; b < BATCHES; ++b)
+    for (b = 0; b < BENCHU_BATCHES; ++b)
         for (i = 0; i < nc; ++i) {
             mode_src = cfg_mode(&cs[i]);
             t[i][b] = batch(&cs[i], cs[i].calls, bad);
         }
     for (i = 0; i < nc; ++i) {
-        qsort(t[i], BATCHES, sizeof t[i][0], benchu_cmp_double);
-        cs[i].med = 1e9 * t[i][BATCHES / 2];
+        qsort(t[i], BENCHU_BATCHES, sizeof t[i][0], benchu_cmp_double);
+        cs[i].med = 1e9 * t[i][BENCHU_BATCHES / 2];
         cs[i].min = 1e9 * t[i][0];
     }
 }
@@ -590,7 +582,7 @@ static int step_bench(const char *tag)
             if (p->route != R_SYS) ++fail_other;
             continue;
         }
-        nnoisy += p->us[NTM] > NOISY * p->us_min;
+        nnoisy += p->us[NTM] > BENCHU_NOISY * p->us_min;
         printf("%4d %-19s %7.1f (%5.1f) %8.2f %8.2f %8.2f %8.2f %8.2f %5.1f%% %6.2f %6.3f %8.0f "
                "%8.0f %8.1e%s\n",
                chain_ne[p->ch], route_name[p->route], p->us[NTM], p->us_min, p->us[TM_FORCE],
@@ -599,7 +591,7 @@ static int step_bench(const char *tag)
                100.0 * (p->us[TM_FORCE] + p->us[TM_JAC]) / p->us[NTM],
                (double)p->st.newton_iters / steps, (double)p->st.lu_factors / steps,
                p->ns_call[TM_FORCE] / ne, p->ns_call[TM_JAC] / ne, p->dtip,
-               p->us[NTM] > NOISY * p->us_min ? " *" : "");
+               p->us[NTM] > BENCHU_NOISY * p->us_min ? " *" : "");
     }
     printf("%4s %-19s", "", "per step / Gauss:");
     for (c = 0; c < NCH; ++c) printf(" %6d", chain_ne[c]);
@@ -613,7 +605,7 @@ static int step_bench(const char *tag)
     for (c = 0; c < NCH; ++c) step_ratio(&sc[c * NROUTE + R_ELEM], &sc[c * NROUTE + R_SYS]);
     printf("\n");
     if (nnoisy)
-        printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", NOISY);
+        printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", BENCHU_NOISY);
 
     /* the whole scene (20 s) with each route: tips at the 40 samples */
     printf("whole scene (0..20 s, sp_run, one run each): per route us per step (out.cpu / "
@@ -722,7 +714,7 @@ int main(int argc, char **argv)
            VLBE_VERSION_STRING, sizeof(vlbe_real) == sizeof(double) ? "double" : "float");
     printf("compiler: %s, flags: %s\n", __VERSION__, VLBE_BENCH_FLAGS);
     printf("cpu: %s, %.0f MHz (/proc/cpuinfo)\n", model, mhz);
-    printf("ns per call: median (min) of %d interleaved batches; K, D in band storage\n\n", BATCHES);
+    printf("ns per call: median (min) of %d interleaved batches; K, D in band storage\n\n", BENCHU_BATCHES);
     if (vlbe_ale_elem_init(&el, &mat, 0u, 0, 0, 0) != VLBE_OK) return 1;
     make_states();
     for (c = 0; c < NCH; ++c)
@@ -768,8 +760,8 @@ int main(int argc, char **argv)
             const cfg *a = &cs[j * 6 + r], *u = &cs[j * 6 + 3 + r];
             printf("%-24s %-20s %7.1f (%5.1f) %7.1f (%5.1f)%s\n", r == 0 ? (j ? "force Q+K+D" : "force Q") : "",
                    route_name[r], a->med, a->min, u->med, u->min,
-                   (a->med > NOISY * a->min || u->med > NOISY * u->min) ? " *" : "");
-            nnoisy += a->med > NOISY * a->min || u->med > NOISY * u->min;
+                   (a->med > BENCHU_NOISY * a->min || u->med > BENCHU_NOISY * u->min) ? " *" : "");
+            nnoisy += a->med > BENCHU_NOISY * a->min || u->med > BENCHU_NOISY * u->min;
         }
     printf("\nchains of ne elements, damped (ns per evaluation; per element in [])\n");
     for (j = 0; j < 2; ++j) {
@@ -782,7 +774,7 @@ int main(int argc, char **argv)
             for (c = 0; c < NCH; ++c) {
                 const cfg *p = &cs[12 + j * NCH * NROUTE + c * NROUTE + r];
                 printf(" %8.0f [%5.1f]", p->med, p->med / chain_ne[c]);
-                noisy |= p->med > NOISY * p->min;
+                noisy |= p->med > BENCHU_NOISY * p->min;
             }
             nnoisy += noisy;
             printf("%s\n", noisy ? " *" : "");
@@ -797,7 +789,7 @@ int main(int argc, char **argv)
                                   cs[12 + j * NCH * NROUTE + c * NROUTE + R_SYS].med);
         printf("\n");
     }
-    if (nnoisy) printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", NOISY);
+    if (nnoisy) printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", BENCHU_NOISY);
 
     if (f) {
         for (i = 0; i < nc; ++i) {
@@ -805,7 +797,7 @@ int main(int argc, char **argv)
             const int ne = p->ch < 0 ? 1 : chain_ne[p->ch];
             fprintf(f, "%s,%s,%d,%d,%ld,%d,%.6g,%.6g,%.6g\n", p->jac ? "force_qkd" : "force_q",
                     route_csv[p->route], !(p->mode & VLBE_ALE_NO_DAMP), p->ch < 0 ? 0 : ne,
-                    p->calls, BATCHES, p->med, p->min, p->med / ne);
+                    p->calls, BENCHU_BATCHES, p->med, p->min, p->med / ne);
         }
         if (fclose(f) != 0) fprintf(stderr, "bench_inv: cannot write %s\n", csv);
         else printf("\nwrote %s\n", csv);
@@ -831,10 +823,7 @@ int main(int argc, char **argv)
         if (svgp_write_file(&ch, svg) != 0) fprintf(stderr, "bench_inv: cannot write %s\n", svg);
         else printf("wrote %s\n", svg);
     }
-    if (bad) {
-        fprintf(stderr, "bench_inv: %ld calls did not return VLBE_OK\n", bad);
-        return 1;
-    }
+    if (benchu_finish("bench_inv", NULL, NULL, bad)) return 1;
     if ((i = step_bench(tag)) != 0) {
         fprintf(stderr, "bench_inv: %s\n", i < 0 ? "scene 1 setup failed" : "a scene 1 run failed");
         return 1;

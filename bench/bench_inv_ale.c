@@ -21,7 +21,7 @@
    Method as in bench_inv.c: NSTATE perturbed copies of the state cycled
    through, one output entry per call summed into a volatile sink, the mode
    read at run time; per configuration a warm-up and calibration, then
-   BATCHES rounds of one batch per configuration (interleaved round robin,
+   BENCHU_BATCHES rounds of one batch per configuration (interleaved round robin,
    so that a disturbance of the shared machine spreads over all rows), each
    batch >= 0.2 ms.  Reported: median (min) ns per call over the batches
    and the ratio Gauss / invariants of the medians (> 1: invariants
@@ -36,15 +36,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "(unknown flags)"
-#endif
-
-#define BATCHES 31
 #define MIN_CALLS 2000L
-#define MAX_CALLS 2000000L
-#define MIN_BATCH_S 2e-4
-#define NOISY 1.15
 #define NSTATE 8
 
 static volatile double sink;
@@ -131,11 +123,11 @@ static double run_batch(const cfg *c, long k, long *bad)
     return t0 / (double)k;
 }
 
-/* calibrate each configuration's batch size, then BATCHES interleaved
+/* calibrate each configuration's batch size, then BENCHU_BATCHES interleaved
    rounds; median and min in ns */
 static void run_all(cfg *cs, int nc, long *bad)
 {
-    static double t[NPM * NBEND * NDAMP * NJAC * NROUTE][BATCHES];
+    static double t[NPM * NBEND * NDAMP * NJAC * NROUTE][BENCHU_BATCHES];
     int i, b;
     for (i = 0; i < nc; ++i) {
         double s;
@@ -143,17 +135,17 @@ static void run_all(cfg *cs, int nc, long *bad)
         mode_src = cs[i].mode;
         (void)run_batch(&cs[i], MIN_CALLS, bad); /* warm-up */
         s = run_batch(&cs[i], MIN_CALLS, bad);
-        n = (long)(MIN_BATCH_S / (s > 1e-10 ? s : 1e-10)) + 1;
-        cs[i].calls = n < MIN_CALLS ? MIN_CALLS : (n > MAX_CALLS ? MAX_CALLS : n);
+        n = (long)(BENCHU_MIN_BATCH_S / (s > 1e-10 ? s : 1e-10)) + 1;
+        cs[i].calls = n < MIN_CALLS ? MIN_CALLS : (n > BENCHU_MAX_CALLS ? BENCHU_MAX_CALLS : n);
     }
-    for (b = 0; b < BATCHES; ++b)
+    for (b = 0; b < BENCHU_BATCHES; ++b)
         for (i = 0; i < nc; ++i) {
             mode_src = cs[i].mode;
             t[i][b] = run_batch(&cs[i], cs[i].calls, bad);
         }
     for (i = 0; i < nc; ++i) {
-        qsort(t[i], BATCHES, sizeof t[i][0], benchu_cmp_double);
-        cs[i].med = 1e9 * t[i][BATCHES / 2];
+        qsort(t[i], BENCHU_BATCHES, sizeof t[i][0], benchu_cmp_double);
+        cs[i].med = 1e9 * t[i][BENCHU_BATCHES / 2];
         cs[i].min = 1e9 * t[i][0];
     }
 }
@@ -185,7 +177,7 @@ int main(int argc, char **argv)
            VLBE_VERSION_STRING, sizeof(vlbe_real) == sizeof(double) ? "double" : "float");
     printf("compiler: %s, flags: %s\n", __VERSION__, VLBE_BENCH_FLAGS);
     printf("cpu: %s, %.0f MHz (/proc/cpuinfo)\n", model, mhz);
-    printf("ns per element call: median (min) of %d interleaved batches\n\n", BATCHES);
+    printf("ns per element call: median (min) of %d interleaved batches\n\n", BENCHU_BATCHES);
 
     for (pm = 0; pm < NPM; ++pm)
         for (bend = 0; bend < NBEND; ++bend)
@@ -209,7 +201,7 @@ int main(int argc, char **argv)
                 for (damp = NDAMP - 1; damp >= 0; --damp) {
                     const cfg *g = &cs[cfg_index(pm, bend, damp, jac, 0)];
                     const cfg *v = &cs[cfg_index(pm, bend, damp, jac, 1)];
-                    const int noisy = g->med > NOISY * g->min || v->med > NOISY * v->min;
+                    const int noisy = g->med > BENCHU_NOISY * g->min || v->med > BENCHU_NOISY * v->min;
                     printf("  %-11s %-6s %-9s %12.1f (%7.1f) %12.1f (%7.1f) %8.2f%s\n", pm_name[pm],
                            bend ? "beam" : "cable", damp ? "damped" : "undamped", g->med, g->min,
                            v->med, v->min, g->med / v->med, noisy ? " *" : "");
@@ -217,7 +209,7 @@ int main(int argc, char **argv)
                 }
     }
     if (nnoisy)
-        printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", NOISY);
+        printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", BENCHU_NOISY);
 
     snprintf(csv, sizeof csv, "out/bench/inv_ale%s%s.csv", tag ? "-" : "", tag ? tag : "");
     f = svgp_csv_open(csv, "what,element,model,damped,route,calls_per_batch,batches,median_ns,"
@@ -233,14 +225,8 @@ int main(int argc, char **argv)
                             fprintf(f, "%s,%s,%s,%d,%s,%ld,%d,%.6g,%.6g\n",
                                     jac ? "force_qkd" : "force_q", pm_csv[pm],
                                     bend ? "beam" : "cable", damp, route ? "inv" : "gauss",
-                                    c->calls, BATCHES, c->med, c->min);
+                                    c->calls, BENCHU_BATCHES, c->med, c->min);
                         }
-        if (fclose(f) != 0) fprintf(stderr, "bench_inv_ale: cannot write %s\n", csv);
-        else printf("\nwrote %s\n", csv);
     }
-    if (bad) {
-        fprintf(stderr, "bench_inv_ale: %ld calls did not return VLBE_OK\n", bad);
-        return 1;
-    }
-    return 0;
+    return benchu_finish("bench_inv_ale", f, csv, bad);
 }

@@ -23,10 +23,6 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "(unknown flags)"
-#endif
-
 #define NSIZES 7
 #define FLOPS_PER_CYCLE 16.0
 

@@ -26,10 +26,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "(unknown flags)"
-#endif
-
 #define REPS 5
 #define TARGET_40_S 2.0
 

@@ -8,10 +8,26 @@
 #ifndef VLBE_BENCH_UTIL_H
 #define VLBE_BENCH_UTIL_H
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
+
+/* the compiler flags for the report header (the Makefile passes them) */
+#ifndef VLBE_BENCH_FLAGS
+#define VLBE_BENCH_FLAGS "(unknown flags)"
+#endif
+
+/* The timing method of the per-call benchmarks: BENCHU_BATCHES batches,
+   each of enough calls (within [min, BENCHU_MAX_CALLS]) to last
+   BENCHU_MIN_BATCH_S; a row whose median / min exceeds BENCHU_NOISY is
+   marked as disturbed (another process on the core). */
+#define BENCHU_BATCHES 31
+#define BENCHU_MAX_CALLS 2000000L
+#define BENCHU_MIN_BATCH_S 2e-4
+#define BENCHU_NOISY 1.15
 
 /* seconds of CLOCK_MONOTONIC */
 static inline double benchu_now(void)
@@ -67,6 +83,33 @@ static inline void benchu_cpu_info(char *model, size_t len, double *mhz)
         }
     }
     fclose(f);
+}
+
+/* Creates the output directory dir (an existing one is fine); 0, or -1
+   after a message on stderr naming prog. */
+static inline int benchu_mkdir(const char *dir, const char *prog)
+{
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "%s: cannot create %s\n", prog, dir);
+        return -1;
+    }
+    return 0;
+}
+
+/* The end of a per-call benchmark: closes the CSV f (may be NULL) at path
+   csv and reports it, and the calls that did not return VLBE_OK (bad).
+   The exit status: 0, or 1 when bad > 0. */
+static inline int benchu_finish(const char *prog, FILE *f, const char *csv, long bad)
+{
+    if (f) {
+        if (fclose(f) != 0) fprintf(stderr, "%s: cannot write %s\n", prog, csv);
+        else printf("\nwrote %s\n", csv);
+    }
+    if (bad) {
+        fprintf(stderr, "%s: %ld calls did not return VLBE_OK\n", prog, bad);
+        return 1;
+    }
+    return 0;
 }
 
 #endif /* VLBE_BENCH_UTIL_H */

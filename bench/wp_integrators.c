@@ -41,16 +41,10 @@
 #include "svgplot.h"
 #include "bench_util.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
-
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "flags unknown"
-#endif
 
 #define DNAN ((double)NAN)
 #define MAXPTS 12
@@ -449,10 +443,7 @@ int main(int argc, char **argv)
     double c0 = benchu_cpu_now();
     int k, i;
 
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "wp_integrators: cannot create %s\n", dir);
-        return 1;
-    }
+    if (benchu_mkdir(dir, "wp_integrators")) return 1;
     printf("wp_integrators: work-precision of integrators.h, vlbe %s, %s, compiler %s, %s\n",
            VLBE_VERSION_STRING, sizeof(vlbe_real) == sizeof(double) ? "double" : "float",
            __VERSION__, VLBE_BENCH_FLAGS);

@@ -56,16 +56,10 @@
 #include "svgplot.h"
 #include "bench_util.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
-
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "flags unknown"
-#endif
 
 #define DNAN ((double)NAN)
 #define T_END 0.5          /* s of response per frequency, as the example */
@@ -403,10 +397,7 @@ int main(int argc, char **argv)
     vlbe_hht_params par;
     int ok;
 
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "wp_moving: cannot create %s\n", dir);
-        return 1;
-    }
+    if (benchu_mkdir(dir, "wp_moving")) return 1;
     printf("wp_moving: work-precision of the moving string/beam (vlbse 4.1, "
            "examples/moving_string.c), vlbe %s, %s, compiler %s, %s\n",
            VLBE_VERSION_STRING, sizeof(vlbe_real) == sizeof(double) ? "double" : "float",

@@ -89,16 +89,10 @@
 #include "svgplot.h"
 #include "bench_util.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
-
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "flags unknown"
-#endif
 
 #define DNAN ((double)NAN)
 #define GRID 4e-3        /* s, the comparison grid                          */
@@ -482,10 +476,7 @@ int main(int argc, char **argv)
     char model[128];
     int s;
 
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "wp_sliding: cannot create %s\n", dir);
-        return 1;
-    }
+    if (benchu_mkdir(dir, "wp_sliding")) return 1;
     benchu_cpu_info(model, sizeof model, &mhz);
     printf("wp_sliding: work-precision of the sliding beam (Hsiao et al. section 3, "
            "examples/ex_sbeam.h), vlbe %s, %s, compiler %s, %s, %s, %.0f MHz%s\n",

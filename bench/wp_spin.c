@@ -92,15 +92,9 @@
 #include "svgplot.h"
 #include "bench_util.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-
-#ifndef VLBE_BENCH_FLAGS
-#define VLBE_BENCH_FLAGS "flags unknown"
-#endif
 
 #define DNAN ((double)NAN)
 #define W_SCENE 6.0
@@ -582,10 +576,7 @@ int main(int argc, char **argv)
     double c0 = benchu_cpu_now(), w0 = benchu_now(), mhz;
     char model[128];
 
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "wp_spin: cannot create %s\n", dir);
-        return 1;
-    }
+    if (benchu_mkdir(dir, "wp_spin")) return 1;
     benchu_cpu_info(model, sizeof model, &mhz);
     printf("wp_spin: work-precision of the spin-up, W = %g rad/s (examples/ex_spin.h), vlbe %s, "
            "%s, compiler %s, %s, %s, %.0f MHz%s\n",
