@@ -98,6 +98,9 @@ static void test_setup(void **state)
 }
 
 #ifndef VLBE_USE_FLOAT
+/* the scene's final hub speeds [rad/s] */
+static const double g_Ws[4] = {2.0, 4.0, 6.0, 10.0};
+
 static void coarse(sp_cfg *c, double W, int model)
 {
     sp_cfg_default(c, W, model);
@@ -111,7 +114,6 @@ static void coarse(sp_cfg *c, double W, int model)
    linear model's (unbounded above omega_1). */
 static void test_stability_limit(void **state)
 {
-    static const double Ws[4] = {2.0, 4.0, 6.0, 10.0};
     sp_cfg c;
     sp_out o;
     int i;
@@ -119,7 +121,7 @@ static void test_stability_limit(void **state)
     for (i = 0; i < 4; ++i) {
         int nl;
         for (nl = 0; nl < 2; ++nl) { /* CR, ANCF */
-            coarse(&c, Ws[i], nl ? SP_ANCF : SP_CR);
+            coarse(&c, g_Ws[i], nl ? SP_ANCF : SP_CR);
             sp_run(&g_m, &c, NULL, NULL, &o);
             tu_report(nl ? "ANCF max |transverse tip| / bound" : "CR max |transverse tip| / bound",
                       o.tip_max[1], 1.0);
@@ -127,9 +129,9 @@ static void test_stability_limit(void **state)
             ASSERT_CLOSE(o.t_stop, c.t_end, 1e-12, 0);
             assert_true(o.tip_max[1] < c.bound && isfinite(o.tip_end[1]));
         }
-        coarse(&c, Ws[i], SP_LINEAR);
+        coarse(&c, g_Ws[i], SP_LINEAR);
         sp_run(&g_m, &c, NULL, NULL, &o);
-        if (Ws[i] < sp_omega1(&c)) {
+        if (g_Ws[i] < sp_omega1(&c)) {
             assert_int_equal(o.status, VLBE_OK);
             assert_true(o.tip_max[1] < c.bound);
         } else {
@@ -150,17 +152,16 @@ static void test_stability_limit(void **state)
    no tolerance. */
 static void test_exponential_growth(void **state)
 {
-    static const double Ws[4] = {2.0, 4.0, 6.0, 10.0};
     sp_cfg c;
     sp_out o;
     int i;
     (void)state;
     for (i = 0; i < 4; ++i) {
         double g[3];
-        coarse(&c, Ws[i], SP_LINEAR);
+        coarse(&c, g_Ws[i], SP_LINEAR);
         c.bound = c.L;
         sp_run(&g_m, &c, NULL, NULL, &o);
-        if (Ws[i] < sp_omega1(&c)) {
+        if (g_Ws[i] < sp_omega1(&c)) {
             assert_int_equal(o.status, VLBE_OK);
             continue;
         }
