@@ -280,7 +280,7 @@ VLBE_API vlbe_status vlbe_cr2d_elem_init(vlbe_cr2d_elem *el, const vlbe_cr2d_mat
     d[1] = X2[1] - X1[1];
     L = vlbe_v2_norm(d);
     if (!(L > VLBE_R(0.0))) return VLBE_ELENGTH;
-    if (!vlbe_all_finite(&L, 1)) return VLBE_ENONFINITE; /* |X2 - X1|^2 overflowed */
+    if (!isfinite(L)) return VLBE_ENONFINITE; /* |X2 - X1|^2 overflowed */
     el->mat = *mat;
     el->X[0] = X1[0];
     el->X[1] = X1[1];
