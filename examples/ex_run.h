@@ -68,6 +68,29 @@ static inline vlbe_status ex_hht_pick(vlbe_hht_params *par, double alpha, double
     return vlbe_hht_params_hht(par, (vlbe_real)alpha);
 }
 
+/* y' = f(t, y) for ex_rk4_step: dy (n) from (t, y), ctx the caller's */
+typedef void (*ex_rhs)(const void *ctx, double t, const double *y, double *dy);
+
+#define EX_RK4_NMAX 16 /* unknowns of ex_rk4_step, at most */
+
+/* One classical Runge-Kutta step (order 4) of length h from (t, y): y (n
+   <= EX_RK4_NMAX) is overwritten with y(t + h).  The reference solutions
+   of the examples (assumed modes, a shooting method) use it. */
+static inline void ex_rk4_step(int n, ex_rhs f, const void *ctx, double t, double h, double *y)
+{
+    double k1[EX_RK4_NMAX], k2[EX_RK4_NMAX], k3[EX_RK4_NMAX], k4[EX_RK4_NMAX];
+    double z[EX_RK4_NMAX] = {0};
+    int i;
+    f(ctx, t, y, k1);
+    for (i = 0; i < n; ++i) z[i] = y[i] + 0.5 * h * k1[i];
+    f(ctx, t + 0.5 * h, z, k2);
+    for (i = 0; i < n; ++i) z[i] = y[i] + 0.5 * h * k2[i];
+    f(ctx, t + 0.5 * h, z, k3);
+    for (i = 0; i < n; ++i) z[i] = y[i] + h * k3[i];
+    f(ctx, t + h, z, k4);
+    for (i = 0; i < n; ++i) y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+}
+
 /* Makes the caller workspace of m large enough for either integrator on a
    problem of n coordinates and nm constraints, growing the buffers m
    already has.  0 on success, -1 when out of memory (m then has none). */

@@ -803,20 +803,16 @@ static inline double xc_am_tip(const xc_am *m, const double *s)
     return y;
 }
 
-/* One classical RK4 step of length h from t. */
+/* xc_am_rhs as an ex_rhs (ctx = the xc_am) */
+static inline void xc_am_rhs_cb(const void *ctx, double t, const double *s, double *ds)
+{
+    xc_am_rhs((const xc_am *)ctx, t, s, ds);
+}
+
+/* One classical RK4 step of length h from t (ex_rk4_step). */
 static inline void xc_am_rk4(const xc_am *m, double t, double h, double *s)
 {
-    double k1[2 * XC_MMAX], k2[2 * XC_MMAX], k3[2 * XC_MMAX], k4[2 * XC_MMAX], y[2 * XC_MMAX] = {0};
-    const int n2 = 2 * m->nm;
-    int i;
-    xc_am_rhs(m, t, s, k1);
-    for (i = 0; i < n2; ++i) y[i] = s[i] + 0.5 * h * k1[i];
-    xc_am_rhs(m, t + 0.5 * h, y, k2);
-    for (i = 0; i < n2; ++i) y[i] = s[i] + 0.5 * h * k2[i];
-    xc_am_rhs(m, t + 0.5 * h, y, k3);
-    for (i = 0; i < n2; ++i) y[i] = s[i] + h * k3[i];
-    xc_am_rhs(m, t + h, y, k4);
-    for (i = 0; i < n2; ++i) s[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    ex_rk4_step(2 * m->nm, xc_am_rhs_cb, m, t, h, s);
 }
 
 /* The whole run: nm modes, RK4 step h, the tip recorded every `every`

@@ -182,10 +182,13 @@ static inline void sd_ref_set(sd_ref *b, const sp_cfg *c, double W, double abs_a
     b->dr = abs_a * c->rhoA * W;
 }
 
-static inline void sd_ref_rhs(const sd_ref *b, const double *y, double *dy)
+/* the elastica's y' = f(s, y) as an ex_rhs (ctx = the sd_ref; autonomous) */
+static inline void sd_ref_rhs(const void *ctx, double s, const double *y, double *dy)
 {
+    const sd_ref *b = (const sd_ref *)ctx;
     const double cp = cos(y[2]), sp = sin(y[2]);
     const double str = 1.0 + (y[3] * cp + y[4] * sp) / b->EA;
+    (void)s;
     dy[0] = str * cp;
     dy[1] = str * sp;
     dy[2] = y[5] / b->EI;
@@ -194,26 +197,20 @@ static inline void sd_ref_rhs(const sd_ref *b, const double *y, double *dy)
     dy[5] = -(dy[0] * y[4] - dy[1] * y[3]);
 }
 
-/* y at s = L from the root force (u[0], u[1]) and moment u[2] */
+/* y at s = L from the root force (u[0], u[1]) and moment u[2], ns RK4 steps */
 static inline void sd_ref_shoot(const sd_ref *b, const double *u, int ns, double *y)
 {
     const double h = b->L / ns;
-    double k[4][6], yt[6];
-    int i, j, s;
+    int s;
     y[0] = y[1] = y[2] = 0.0;
     y[3] = u[0];
     y[4] = u[1];
     y[5] = u[2];
-    for (s = 0; s < ns; ++s) {
-        for (i = 0; i < 4; ++i) {
-            const double a = i == 0 ? 0.0 : (i == 3 ? h : 0.5 * h);
-            for (j = 0; j < 6; ++j) yt[j] = y[j] + (i ? a * k[i - 1][j] : 0.0);
-            sd_ref_rhs(b, yt, k[i]);
-        }
-        for (j = 0; j < 6; ++j) y[j] += h / 6.0 * (k[0][j] + 2.0 * (k[1][j] + k[2][j]) + k[3][j]);
-    }
+    for (s = 0; s < ns; ++s) ex_rk4_step(6, sd_ref_rhs, b, s * h, h, y);
 }
 
+/* 3 x 3 determinant (Cramer's rule below: the reference stays in double
+   whatever vlbe_real is, so the library's vlbe_real LU is not used) */
 static inline double sd_det3(const double *A)
 {
     return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
