@@ -193,6 +193,19 @@ API
    size_t vlbe_ale_inv_sys_work_len(ne)                     buffer for the system invariants
    vlbe_status vlbe_ale_inv_sys_init(sys, el, mode, ne, L, work, len)  assemble B, I, load once
    vlbe_status vlbe_ale_inv_sys_force(sys, x, v, Q, K, D)   cable chain Q, band K, D from them
+   3D beam-shaft with spin (VLBSE, see the 3D section; 16 coordinates, 14
+   with VLBE_ALE3_NO_SPIN):
+   vlbe_status vlbe_ale3_mat_circle(mat, rho, E, G, radius)  solid circular section
+   vlbe_status vlbe_ale3_elem_init(el, mat, flags, nm, ns)  element type, Gauss tables
+   int vlbe_ale3_nq(mode)                                   coordinates per element
+   vlbe_status vlbe_ale3_mass(el, mode, q, M)               M(q), eq. 28
+   vlbe_status vlbe_ale3_mass_jac(el, mode, q, a, Mq)       d(M a)/dq
+   vlbe_status vlbe_ale3_force(el, mode, q, qd, Q, K, D)    Q and (optional) K, D
+   vlbe_status vlbe_ale3_energy(el, mode, q, qd, E)         E = {T, U, V}
+   vlbe_status vlbe_ale3_point(mode, q, p, r, rp, th)       r, r', theta at p
+   vlbe_status vlbe_ale3_strain(mode, q, p, eps, kap, phi)  strains at p
+   vlbe_status vlbe_ale3_point_force(mode, q, pf, F, Q, K)  eq. 45, K += d/dq
+   vlbe_status vlbe_ale3_point_torque(mode, q, pf, T, Q, K) eq. 46
    chains (node p modes fixed / prescribed / free, sliding nodes, point masses):
    vlbe_status vlbe_ale_chain_init(ch, el, nodes, nn, cap, cons, ccap)
    vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint
@@ -2139,6 +2152,1071 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
     return vlbe__ale_sys_force(sys, x, v, Q, K, D);
 }
 
+/* ===== 3D beam-shaft element with spin (VLBSE of [V]) ===================
+   Node coordinates [r(3), r'(3), theta, p], 16 per element:
+        q = [r1, r1', th1, p1,  r2, r2', th2, p2]      (eq. 16 of [V])
+   with VLBE_ALE3_NO_SPIN the spin angle is not a coordinate (the 3D ALE
+   cable/beam, 14 per element: [r1, r1', p1, r2, r2', p2]).  r(p) is the
+   cubic Hermite interpolation of the positions and slopes (eqs. 4-5),
+   theta(p) the linear one of the spin angles (eqs. 6-7), both in the ALE
+   form of vlbe.h (p1, p2 free or fixed per node, FIX_P1/FIX_P2 as for the
+   planar element).  Equations of motion, sign convention of integrators.h:
+        M(q) q'' = Q(q, q'),  Q = Q_f + Q_F + Q_T - Q_p - Q_s   (eq. 48)
+   M (eq. 28): int S^T diag(rhoA I3, rhoI) S dp, S = [S_e | dS_e/dp_k q_e]
+   (eq. 15); Q_p the transport inertia int S^T diag(.) eta_p dp (eqs. 17,
+   29); Q_s = Q_se + Q_sk + Q_sphi (eqs. 31-40) with
+        eps = (r'.r' - 1)/2                  axial (Green) strain, eq. 21
+        k   = r' x r'' / |r'|^3              curvature vector, |k| = kappa of eq. 22
+        phi = theta'                         twist, eq. 23
+   stresses EA (eps + c_eps eps'), EJ (k + c_kap k'), GI (phi + c_phi
+   phi') (rates at fixed material p: the Kelvin-Voigt parts), Q_f = int S_t^T
+   f dp for a constant load f per unit material length (eq. 44), point
+   force and torque at a material point (eqs. 45-46,
+   vlbe_ale3_point_force / _point_torque).
+   Curvature.  The paper's kappa = |r' x r''| / |r'|^3 has no derivative at
+   kappa = 0 (a straight beam, the common case) and its Kelvin-Voigt rate is
+   undefined there.  vlbe uses the curvature VECTOR k: its energy EJ |k|^2/2
+   is the paper's EJ kappa^2/2 (so the elastic force is the same), it is a
+   polynomial in r', r'' times |r'|^-3 (smooth wherever the slope does not
+   vanish), its rate k' is defined everywhere, and for motion in a plane it
+   is the planar element's signed curvature times the plane's normal: in
+   plane, with theta = 0 and no twist, the element is vlbe_ale_force's.
+   Switches (VLBE_ALE_* as for the planar element, OR-ed like there):
+     VLBE_ALE3_NO_SPIN   no spin angle: 14 coordinates, no rhoI, GI terms
+     VLBE_ALE_NO_BEND    no Q_sk (string/cable)
+     VLBE_ALE3_NO_TWIST  no Q_sphi (the spin angle keeps its inertia)
+     VLBE_ALE_NO_DAMP    no Kelvin-Voigt terms
+     VLBE_ALE_FIX_P1/2   material coordinate of a node fixed (Lagrangian);
+                         its row and column stay zero
+   K = dQ/dq and D = dQ/dq' as for the planar element: e-columns and the
+   p'-columns directly, the p-columns by the scaling identity of NOTES
+   (every term is homogeneous under p -> s p, slopes -> slopes / s, p' ->
+   s p'; row degrees 1 + m_j for positions and slopes, 1 for theta, 0 for
+   p; the axial part 4 and 2 lower, the twist part 2 lower).
+   Errors: VLBE_ELENGTH (p2 <= p1), VLBE_ENONFINITE, VLBE_ESINGULAR (|r'|^2
+   <= eps at a bending point), VLBE_EBOUND (point load outside [p1, p2]);
+   no output is written on failure.  Stack: about 9 kB with K and D. */
+
+#define VLBE_ALE3_NO_SPIN 64u
+#define VLBE_ALE3_NO_TWIST 128u
+#define VLBE_ALE3_NQ 16 /* coordinates per element (with spin; 14 without) */
+
+/* Section and material per unit material length.  vlbe_ale3_mat_circle
+   fills it for a solid circular section. */
+typedef struct vlbe_ale3_mat {
+    vlbe_real rhoA;  /* mass per length                                    */
+    vlbe_real rhoI;  /* polar mass moment of inertia per length, rho I_p   */
+    vlbe_real EA;    /* axial stiffness                                    */
+    vlbe_real EJ;    /* bending stiffness (J: second moment of area)       */
+    vlbe_real GI;    /* torsional stiffness G I_p                          */
+    vlbe_real c_eps, c_kap, c_phi; /* Kelvin-Voigt times [time]           */
+    vlbe_real f[3];  /* constant distributed load per length               */
+} vlbe_ale3_mat;
+
+typedef struct vlbe_ale3_elem {
+    vlbe_ale3_mat mat;
+    unsigned flags;
+    vlbe_ale_rule rm, rs; /* mass/inertia/loads; strains (axial, bending, twist) */
+} vlbe_ale3_elem;
+
+VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlbe_real E,
+                                          vlbe_real G, vlbe_real radius);
+VLBE_API vlbe_status vlbe_ale3_elem_init(vlbe_ale3_elem *el, const vlbe_ale3_mat *mat,
+                                         unsigned flags, int nm, int ns);
+VLBE_API int vlbe_ale3_nq(unsigned mode);
+VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                    vlbe_real *VLBE_RESTRICT M);
+VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
+                                        const vlbe_real *q, const vlbe_real *a,
+                                        vlbe_real *VLBE_RESTRICT Mq);
+VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D);
+VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E);
+VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_real p,
+                                     vlbe_real *VLBE_RESTRICT r, vlbe_real *VLBE_RESTRICT rp,
+                                     vlbe_real *VLBE_RESTRICT th);
+VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_real p,
+                                      vlbe_real *VLBE_RESTRICT eps, vlbe_real *VLBE_RESTRICT kap,
+                                      vlbe_real *VLBE_RESTRICT phi);
+VLBE_API vlbe_status vlbe_ale3_point_force(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                           const vlbe_real *F, vlbe_real *VLBE_RESTRICT Q,
+                                           vlbe_real *VLBE_RESTRICT K);
+VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                            vlbe_real T, vlbe_real *VLBE_RESTRICT Q,
+                                            vlbe_real *VLBE_RESTRICT K);
+
+/* -- 3D element: definitions ------------------------------------------- */
+
+VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlbe_real E,
+                                          vlbe_real G, vlbe_real radius)
+{
+    const vlbe_real pi = VLBE_R(3.14159265358979323846);
+    vlbe_real A, J;
+    VLBE_ASSERT(mat != NULL);
+    if (!isfinite(rho) || !isfinite(E) || !isfinite(G) || !isfinite(radius))
+        return VLBE_ENONFINITE;
+    if (!(rho > VLBE_R(0.0)) || !(radius > VLBE_R(0.0)) || E < VLBE_R(0.0) || G < VLBE_R(0.0))
+        return VLBE_EARG;
+    A = pi * radius * radius;
+    J = VLBE_R(0.25) * A * radius * radius;
+    mat->rhoA = rho * A;
+    mat->rhoI = rho * VLBE_R(2.0) * J; /* polar I_p = 2 J */
+    mat->EA = E * A;
+    mat->EJ = E * J;
+    mat->GI = G * VLBE_R(2.0) * J;
+    mat->c_eps = mat->c_kap = mat->c_phi = VLBE_R(0.0);
+    mat->f[0] = mat->f[1] = mat->f[2] = VLBE_R(0.0);
+    return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_ale3_elem_init(vlbe_ale3_elem *el, const vlbe_ale3_mat *mat,
+                                         unsigned flags, int nm, int ns)
+{
+    vlbe_status st;
+    VLBE_ASSERT(el != NULL && mat != NULL);
+    {
+        const vlbe_real m[8] = {mat->rhoA, mat->rhoI, mat->EA,    mat->EJ,
+                                mat->GI,   mat->c_eps, mat->c_kap, mat->c_phi};
+        if (!vlbe_all_finite(m, 8) || !vlbe_all_finite(mat->f, 3)) return VLBE_ENONFINITE;
+    }
+    if (!(mat->rhoA > VLBE_R(0.0)) || mat->rhoI < VLBE_R(0.0) || mat->EA < VLBE_R(0.0) ||
+        mat->EJ < VLBE_R(0.0) || mat->GI < VLBE_R(0.0) || mat->c_eps < VLBE_R(0.0) ||
+        mat->c_kap < VLBE_R(0.0) || mat->c_phi < VLBE_R(0.0))
+        return VLBE_EARG;
+    if (!(flags & VLBE_ALE3_NO_SPIN) && !(mat->rhoI > VLBE_R(0.0)))
+        return VLBE_EARG; /* a spin angle without inertia: M singular */
+    if (nm < 0 || nm > VLBE_ALE_NGP_MAX || ns < 0 || ns > VLBE_ALE_NGP_MAX) return VLBE_EARG;
+    if ((st = vlbe__ale_rule(&el->rm, nm, 4)) != VLBE_OK) return st;
+    if ((st = vlbe__ale_rule(&el->rs, ns, 5)) != VLBE_OK) return st;
+    el->mat = *mat;
+    el->flags = flags;
+    return VLBE_OK;
+}
+
+VLBE_API int vlbe_ale3_nq(unsigned mode)
+{
+    return (mode & VLBE_ALE3_NO_SPIN) ? VLBE_ALE3_NQ - 2 : VLBE_ALE3_NQ;
+}
+
+/* Where the coordinates of one element sit: n per element, e[j] the first
+   of basis j's 3-vector (r1, r1', r2, r2'), th[i] node i's spin angle (-1
+   without spin), p[i] its material coordinate. */
+typedef struct vlbe__a3_lay {
+    int n, spin, e[4], th[2], p[2];
+} vlbe__a3_lay;
+
+static inline void vlbe__a3_layout(unsigned mode, vlbe__a3_lay *ly)
+{
+    const int spin = !(mode & VLBE_ALE3_NO_SPIN), ns = spin ? 8 : 7;
+    ly->spin = spin;
+    ly->n = 2 * ns;
+    ly->e[0] = 0;
+    ly->e[1] = 3;
+    ly->e[2] = ns;
+    ly->e[3] = ns + 3;
+    ly->th[0] = spin ? 6 : -1;
+    ly->th[1] = spin ? ns + 6 : -1;
+    ly->p[0] = ns - 1;
+    ly->p[1] = 2 * ns - 1;
+}
+
+static inline vlbe_status vlbe__a3_check(const vlbe__a3_lay *ly, const vlbe_real *q,
+                                         const vlbe_real *qd)
+{
+    if (!vlbe_all_finite(q, ly->n)) return VLBE_ENONFINITE;
+    if (qd && !vlbe_all_finite(qd, ly->n)) return VLBE_ENONFINITE;
+    if (!(q[ly->p[1]] - q[ly->p[0]] > VLBE_R(0.0))) return VLBE_ELENGTH;
+    return VLBE_OK;
+}
+
+/* The basis at one point scaled to the current L: N[k][a][j] = L^(m_j - k
+   - |a|) b[k][a][j] (Hermite), H[k][a][j] = L^(-k - |a|) l[k][a][j]
+   (linear); rows k0..kmax, partials a < na at k = 0, a < min(na, 3)
+   above. */
+typedef struct vlbe__a3_pt {
+    vlbe_real N[3][VLBE_DA_N][4];
+    vlbe_real H[2][VLBE_DA_N][2];
+} vlbe__a3_pt;
+
+static inline void vlbe__a3_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
+                                    int na, vlbe__a3_pt *VLBE_RESTRICT pt)
+{
+    int k, a, j;
+    for (k = k0; k <= kmax; ++k) {
+        const int nak = (k == 0 || na < 3) ? na : 3;
+        for (a = 0; a < nak; ++a) {
+            const int d = 4 - k - (a == 0 ? 0 : (a < 3 ? 1 : 2));
+            for (j = 0; j < 4; ++j) pt->N[k][a][j] = gp->b[k][a][j] * Lp[d + (j & 1)];
+            if (k < 2)
+                for (j = 0; j < 2; ++j) pt->H[k][a][j] = gp->l[k][a][j] * Lp[d];
+        }
+    }
+}
+
+/* out = sum_j n[j] x_j over the four 3-vectors of x (r1, r1', r2, r2') */
+static inline void vlbe__a3_sum(const vlbe__a3_lay *ly, const vlbe_real *n, const vlbe_real *x,
+                                vlbe_real *out)
+{
+    int j, c;
+    for (c = 0; c < 3; ++c) out[c] = VLBE_R(0.0);
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < 3; ++c) out[c] += n[j] * x[ly->e[j] + c];
+}
+
+/* sum_j h[j] x_th_j over the two spin angles (0 without spin) */
+static inline vlbe_real vlbe__a3_tsum(const vlbe__a3_lay *ly, const vlbe_real *h,
+                                      const vlbe_real *x)
+{
+    return ly->spin ? h[0] * x[ly->th[0]] + h[1] * x[ly->th[1]] : VLBE_R(0.0);
+}
+
+/* The degree-weighted force (standard row degrees: 1 for r and theta, 2 for
+   slopes, 0 for p) */
+static inline void vlbe__a3_degree(const vlbe__a3_lay *ly, const vlbe_real *F, vlbe_real *dF)
+{
+    int j, c;
+    for (j = 0; j < ly->n; ++j) dF[j] = F[j];
+    for (j = 1; j < 4; j += 2)
+        for (c = 0; c < 3; ++c) dF[ly->e[j] + c] *= VLBE_R(2.0);
+    dF[ly->p[0]] = dF[ly->p[1]] = VLBE_R(0.0);
+}
+
+/* p-columns of K by the scaling identity (vlbe__ale_pcols for this layout) */
+static inline void vlbe__a3_pcols(const vlbe__a3_lay *ly, vlbe_real L, int pm,
+                                  const vlbe_real *dF, const vlbe_real *pd, const vlbe_real *q,
+                                  const vlbe_real *u, vlbe_real *K, const vlbe_real *D)
+{
+    const int n = ly->n;
+    int i, j, c;
+    for (i = 0; i < n; ++i) {
+        const vlbe_real *Ki = K + i * n, *Di = D + i * n;
+        vlbe_real s = dF[i] - pd[0] * Di[ly->p[0]] - pd[1] * Di[ly->p[1]];
+        for (j = 1; j < 4; j += 2)
+            for (c = 0; c < 3; ++c) {
+                const int cj = ly->e[j] + c;
+                s += Ki[cj] * q[cj] + Di[cj] * u[cj];
+            }
+        s /= L;
+        K[i * n + ly->p[0]] = (pm & 1) ? -s : VLBE_R(0.0);
+        K[i * n + ly->p[1]] = (pm & 2) ? s : VLBE_R(0.0);
+    }
+}
+
+/* [v]x applied: out = v x u, and the matrix rows of [v]x */
+static inline void vlbe__a3_skew(const vlbe_real *v, vlbe_real *S)
+{
+    S[0] = VLBE_R(0.0), S[1] = -v[2], S[2] = v[1];
+    S[3] = v[2], S[4] = VLBE_R(0.0), S[5] = -v[0];
+    S[6] = -v[1], S[7] = v[0], S[8] = VLBE_R(0.0);
+}
+
+/* Curvature-vector stress at one point.  a = r', b = r'', ad, bd their
+   material rates (NULL: undamped), S = EJ, cS = c_kap EJ: sigma = S k +
+   cS k'.  Adds to G (7: r', r'', phi) the gradient k_y^T sigma and, with
+   A, Ad (7 x 7, row-major), d(k_y^T sigma)/dy at fixed rates and
+   d/dy' = cS k_y^T k_y.  *kk = |k|^2.  VLBE_ESINGULAR for |r'|^2 <= eps. */
+static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
+                                        const vlbe_real *ad, const vlbe_real *bd, vlbe_real S,
+                                        vlbe_real cS, vlbe_real *G, vlbe_real *A, vlbe_real *Ad,
+                                        vlbe_real *kk)
+{
+    const vlbe_real g = vlbe_v3_dot(a, a);
+    vlbe_real h, h5, s[3], k[3], sig[3], tau, bs[3], sa[3], ky[18];
+    int i, j, c;
+    if (!(g > VLBE_EPS)) return VLBE_ESINGULAR;
+    h5 = VLBE_R(1.0) / g;
+    h = h5 * vlbe_sqrt(h5); /* g^-3/2 */
+    h5 = h * h5;            /* g^-5/2 */
+    vlbe_v3_cross(a, b, s);
+    for (c = 0; c < 3; ++c) sig[c] = k[c] = s[c] * h;
+    if (kk) *kk = vlbe_v3_dot(k, k);
+    for (c = 0; c < 3; ++c) sig[c] *= S;
+    {
+        vlbe_real sd[3] = {0, 0, 0}, t[3], ga = VLBE_R(0.0), hd = VLBE_R(0.0);
+        if (ad && cS != VLBE_R(0.0)) {
+            vlbe_v3_cross(ad, b, sd);
+            vlbe_v3_cross(a, bd, t);
+            for (c = 0; c < 3; ++c) sd[c] += t[c];
+            ga = vlbe_v3_dot(a, ad);
+            hd = -VLBE_R(3.0) * h5 * ga;
+            for (c = 0; c < 3; ++c) sig[c] += cS * (sd[c] * h + s[c] * hd);
+        }
+        tau = vlbe_v3_dot(sig, s);
+        vlbe_v3_cross(b, sig, bs);
+        vlbe_v3_cross(sig, a, sa);
+        for (c = 0; c < 3; ++c) {
+            G[c] += h * bs[c] - VLBE_R(3.0) * h5 * tau * a[c];
+            G[3 + c] += h * sa[c];
+        }
+        if (!A) return VLBE_OK;
+        /* k_y = [k_a | k_b], k_a = -h [b]x - 3 h5 s a^T, k_b = h [a]x */
+        {
+            vlbe_real Sb[9], Sa[9];
+            vlbe__a3_skew(b, Sb);
+            vlbe__a3_skew(a, Sa);
+            for (i = 0; i < 3; ++i)
+                for (j = 0; j < 3; ++j) {
+                    ky[i * 6 + j] = -h * Sb[i * 3 + j] - VLBE_R(3.0) * h5 * s[i] * a[j];
+                    ky[i * 6 + 3 + j] = h * Sa[i * 3 + j];
+                }
+        }
+        /* Hessian of sigma . k at fixed sigma:
+           f_aa = -3 h5 (bs a^T + a bs^T) + 15 h5/g tau a a^T - 3 h5 tau I,
+           f_ab = -h [sigma]x - 3 h5 a sa^T,  f_ba = f_ab^T,  f_bb = 0 */
+        {
+            vlbe_real Ss[9];
+            const vlbe_real h7 = VLBE_R(15.0) * h5 / g * tau;
+            vlbe__a3_skew(sig, Ss);
+            for (i = 0; i < 3; ++i)
+                for (j = 0; j < 3; ++j) {
+                    vlbe_real faa = -VLBE_R(3.0) * h5 * (bs[i] * a[j] + a[i] * bs[j]) +
+                                    h7 * a[i] * a[j];
+                    const vlbe_real fab = -h * Ss[i * 3 + j] - VLBE_R(3.0) * h5 * a[i] * sa[j];
+                    if (i == j) faa -= VLBE_R(3.0) * h5 * tau;
+                    A[i * 7 + j] += faa;
+                    A[i * 7 + 3 + j] += fab;
+                    A[(3 + j) * 7 + i] += fab;
+                }
+        }
+        /* + k_y^T (S k_y + cS dk'/dy): dk'/da = -h [bd]x - 3 h5 sd a^T - hd [b]x
+           + s (15 h5/g ga a^T - 3 h5 ad^T), dk'/db = h [ad]x + hd [a]x */
+        {
+            vlbe_real W[18];
+            for (i = 0; i < 18; ++i) W[i] = S * ky[i];
+            if (ad && cS != VLBE_R(0.0)) {
+                vlbe_real Sbd[9], Sad[9], Sb[9], Sa[9];
+                const vlbe_real h7 = VLBE_R(15.0) * h5 / g * ga;
+                vlbe__a3_skew(bd, Sbd);
+                vlbe__a3_skew(ad, Sad);
+                vlbe__a3_skew(b, Sb);
+                vlbe__a3_skew(a, Sa);
+                for (i = 0; i < 3; ++i)
+                    for (j = 0; j < 3; ++j) {
+                        W[i * 6 + j] += cS * (-h * Sbd[i * 3 + j] -
+                                              VLBE_R(3.0) * h5 * sd[i] * a[j] -
+                                              hd * Sb[i * 3 + j] + s[i] * (h7 * a[j] -
+                                              VLBE_R(3.0) * h5 * ad[j]));
+                        W[i * 6 + 3 + j] += cS * (h * Sad[i * 3 + j] + hd * Sa[i * 3 + j]);
+                    }
+            }
+            for (i = 0; i < 6; ++i)
+                for (j = 0; j < 6; ++j) {
+                    vlbe_real t1 = VLBE_R(0.0), t2 = VLBE_R(0.0);
+                    for (c = 0; c < 3; ++c) {
+                        t1 += ky[c * 6 + i] * W[c * 6 + j];
+                        t2 += ky[c * 6 + i] * ky[c * 6 + j];
+                    }
+                    A[i * 7 + j] += t1;
+                    if (Ad) Ad[i * 7 + j] += cS * t2;
+                }
+        }
+    }
+    return VLBE_OK;
+}
+
+/* Axial, bending and twist terms at one strain point: Q -= w Z^T G with
+   Z = dz/dq, z = (r', r'', phi); with K: the e- and theta-columns of
+   -w d(Z^T G)/dq into K, -w Z^T Ad Z into D (all columns) and the degree
+   extras into dQ (see vlbe_ale3 notes). */
+static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlbe__a3_lay *ly,
+                                             const vlbe_ale_gp *gp, const vlbe_real *Lp, int pm,
+                                             const vlbe_real *pd, int bend, int twist, int damp,
+                                             const vlbe_real *q, const vlbe_real *qd,
+                                             vlbe_real *Q, vlbe_real *K, vlbe_real *D,
+                                             vlbe_real *dQ)
+{
+    const vlbe_ale3_mat *mt = &el->mat;
+    const int n = ly->n, jac = K != NULL, nz = bend ? 6 : 3;
+    const vlbe_real w = gp->w * Lp[5];
+    vlbe__a3_pt pt;
+    vlbe_real y[7], Y[2][7], yd[7], G[7] = {0, 0, 0, 0, 0, 0, 0}, Gx[7] = {0, 0, 0, 0, 0, 0, 0};
+    vlbe_real A[49], Ad[49], T[7][VLBE_ALE3_NQ], Nd[3][4], Hd[2];
+    int i, j, k, c, rows[7], nr = 0;
+    vlbe_status st;
+    vlbe__a3_pt_eval(gp, Lp, 1, bend ? 2 : 1, pm ? 3 : 1, &pt);
+    for (c = 0; c < 7; ++c) y[c] = yd[c] = Y[0][c] = Y[1][c] = VLBE_R(0.0);
+    vlbe__a3_sum(ly, pt.N[1][0], q, y);
+    if (bend) vlbe__a3_sum(ly, pt.N[2][0], q, y + 3);
+    if (twist) y[6] = vlbe__a3_tsum(ly, pt.H[1][0], q);
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            vlbe__a3_sum(ly, pt.N[1][1 + k], q, Y[k]);
+            if (bend) vlbe__a3_sum(ly, pt.N[2][1 + k], q, Y[k] + 3);
+            if (twist) Y[k][6] = vlbe__a3_tsum(ly, pt.H[1][1 + k], q);
+        }
+    if (damp) {
+        vlbe__a3_sum(ly, pt.N[1][0], qd, yd);
+        if (bend) vlbe__a3_sum(ly, pt.N[2][0], qd, yd + 3);
+        if (twist) yd[6] = vlbe__a3_tsum(ly, pt.H[1][0], qd);
+        for (k = 0; k < 2; ++k)
+            for (c = 0; c < 7; ++c) yd[c] += pd[k] * Y[k][c];
+    }
+    if (jac)
+        for (i = 0; i < 49; ++i) A[i] = Ad[i] = VLBE_R(0.0);
+    if (mt->EA != VLBE_R(0.0)) {
+        const vlbe_real eps = VLBE_R(0.5) * (vlbe_v3_dot(y, y) - VLBE_R(1.0));
+        const vlbe_real cE = damp ? mt->c_eps * mt->EA : VLBE_R(0.0);
+        const vlbe_real sig = mt->EA * eps + cE * vlbe_v3_dot(y, yd);
+        for (c = 0; c < 3; ++c) G[c] += sig * y[c];
+        if (jac) {
+            for (i = 0; i < 3; ++i) {
+                for (j = 0; j < 3; ++j) {
+                    A[i * 7 + j] += y[i] * (mt->EA * y[j] + cE * yd[j]);
+                    Ad[i * 7 + j] += cE * y[i] * y[j];
+                }
+                A[i * 7 + i] += sig;
+                Gx[i] += (VLBE_R(4.0) * sig + mt->EA) * y[i];
+            }
+        }
+    }
+    if (bend) {
+        const vlbe_real cB = damp ? mt->c_kap * mt->EJ : VLBE_R(0.0);
+        if ((st = vlbe__a3_bend(y, y + 3, damp ? yd : NULL, damp ? yd + 3 : NULL, mt->EJ, cB, G,
+                                jac ? A : NULL, jac ? Ad : NULL, NULL)) != VLBE_OK)
+            return st;
+    }
+    if (twist) {
+        const vlbe_real cT = damp ? mt->c_phi * mt->GI : VLBE_R(0.0);
+        const vlbe_real sig = mt->GI * y[6] + cT * yd[6];
+        G[6] += sig;
+        if (jac) {
+            A[48] += mt->GI;
+            Ad[48] += cT;
+            Gx[6] += VLBE_R(2.0) * sig;
+        }
+    }
+    /* Q -= w Z^T G */
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < 3; ++c) {
+            vlbe_real v = pt.N[1][0][j] * G[c];
+            if (bend) v += pt.N[2][0][j] * G[3 + c];
+            Q[ly->e[j] + c] -= w * v;
+        }
+    if (twist)
+        for (j = 0; j < 2; ++j) Q[ly->th[j]] -= w * pt.H[1][0][j] * G[6];
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            vlbe_real v = VLBE_R(0.0);
+            for (c = 0; c < nz; ++c) v += Y[k][c] * G[c];
+            if (twist) v += Y[k][6] * G[6];
+            Q[ly->p[k]] -= w * v;
+        }
+    if (!jac) return VLBE_OK;
+
+    /* degree extras: dQ += w Z^T Gx */
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < 3; ++c) dQ[ly->e[j] + c] += w * pt.N[1][0][j] * Gx[c];
+    if (twist)
+        for (j = 0; j < 2; ++j) dQ[ly->th[j]] += w * pt.H[1][0][j] * Gx[6];
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) dQ[ly->p[k]] += w * (vlbe_v3_dot(Y[k], Gx) + Y[k][6] * Gx[6]);
+
+    /* the rows of z in use */
+    for (c = 0; c < nz; ++c) rows[nr++] = c;
+    if (twist) rows[nr++] = 6;
+    /* rate basis: d(material rate of z)/de_j at fixed e' = sum_k p_k' dZ/dp_k */
+    for (j = 0; j < 4; ++j) {
+        Nd[1][j] = Nd[2][j] = VLBE_R(0.0);
+        for (k = 0; k < 2; ++k)
+            if (damp && (pm & (1 << k))) {
+                Nd[1][j] += pd[k] * pt.N[1][1 + k][j];
+                if (bend) Nd[2][j] += pd[k] * pt.N[2][1 + k][j];
+            }
+    }
+    for (j = 0; j < 2; ++j) {
+        Hd[j] = VLBE_R(0.0);
+        for (k = 0; k < 2; ++k)
+            if (damp && twist && (pm & (1 << k))) Hd[j] += pd[k] * pt.H[1][1 + k][j];
+    }
+    /* K: T = A Z_e + Ad Zd_e on the e- and theta-columns */
+    for (i = 0; i < nr; ++i) {
+        const vlbe_real *Ai = A + rows[i] * 7, *Adi = Ad + rows[i] * 7;
+        vlbe_real *Ti = T[i];
+        for (j = 0; j < 4; ++j)
+            for (c = 0; c < 3; ++c) {
+                vlbe_real v = Ai[c] * pt.N[1][0][j] + Adi[c] * Nd[1][j];
+                if (bend) v += Ai[3 + c] * pt.N[2][0][j] + Adi[3 + c] * Nd[2][j];
+                Ti[ly->e[j] + c] = v;
+            }
+        if (ly->spin)
+            for (j = 0; j < 2; ++j)
+                Ti[ly->th[j]] = twist ? Ai[6] * pt.H[1][0][j] + Adi[6] * Hd[j] : VLBE_R(0.0);
+        Ti[ly->p[0]] = Ti[ly->p[1]] = VLBE_R(0.0);
+    }
+    /* K rows -= w Z^T T (the p-columns of T are zero: filled later) */
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < 3; ++c) {
+            vlbe_real *Kr = K + (ly->e[j] + c) * n;
+            const vlbe_real m1 = w * pt.N[1][0][j], m2 = bend ? w * pt.N[2][0][j] : VLBE_R(0.0);
+            const vlbe_real *T1 = T[c], *T2 = T[bend ? 3 + c : c];
+            for (i = 0; i < n; ++i) Kr[i] -= m1 * T1[i] + m2 * T2[i];
+        }
+    if (twist)
+        for (j = 0; j < 2; ++j) {
+            vlbe_real *Kr = K + ly->th[j] * n;
+            const vlbe_real m = w * pt.H[1][0][j], *T6 = T[nr - 1];
+            for (i = 0; i < n; ++i) Kr[i] -= m * T6[i];
+        }
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            vlbe_real *Kr = K + ly->p[k] * n;
+            for (c = 0; c < nr; ++c) {
+                const vlbe_real m = w * Y[k][rows[c]], *Tc = T[c];
+                for (i = 0; i < n; ++i) Kr[i] -= m * Tc[i];
+            }
+            /* mix: d(Y_k . G)/de at fixed G */
+            for (j = 0; j < 4; ++j)
+                for (c = 0; c < 3; ++c) {
+                    vlbe_real v = pt.N[1][1 + k][j] * G[c];
+                    if (bend) v += pt.N[2][1 + k][j] * G[3 + c];
+                    Kr[ly->e[j] + c] -= w * v;
+                }
+            if (twist)
+                for (j = 0; j < 2; ++j) Kr[ly->th[j]] -= w * pt.H[1][1 + k][j] * G[6];
+        }
+    if (!damp) return VLBE_OK;
+    /* D -= w Z^T Ad Z: T = Ad Z on every column */
+    for (i = 0; i < nr; ++i) {
+        const vlbe_real *Adi = Ad + rows[i] * 7;
+        vlbe_real *Ti = T[i];
+        for (j = 0; j < 4; ++j)
+            for (c = 0; c < 3; ++c) {
+                vlbe_real v = Adi[c] * pt.N[1][0][j];
+                if (bend) v += Adi[3 + c] * pt.N[2][0][j];
+                Ti[ly->e[j] + c] = v;
+            }
+        if (ly->spin)
+            for (j = 0; j < 2; ++j) Ti[ly->th[j]] = twist ? Adi[6] * pt.H[1][0][j] : VLBE_R(0.0);
+        for (k = 0; k < 2; ++k) {
+            vlbe_real v = VLBE_R(0.0);
+            if (pm & (1 << k)) {
+                for (c = 0; c < nz; ++c) v += Adi[c] * Y[k][c];
+                if (twist) v += Adi[6] * Y[k][6];
+            }
+            Ti[ly->p[k]] = v;
+        }
+    }
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < 3; ++c) {
+            vlbe_real *Dr = D + (ly->e[j] + c) * n;
+            const vlbe_real m1 = w * pt.N[1][0][j], m2 = bend ? w * pt.N[2][0][j] : VLBE_R(0.0);
+            const vlbe_real *T1 = T[c], *T2 = T[bend ? 3 + c : c];
+            for (i = 0; i < n; ++i) Dr[i] -= m1 * T1[i] + m2 * T2[i];
+        }
+    if (twist)
+        for (j = 0; j < 2; ++j) {
+            vlbe_real *Dr = D + ly->th[j] * n;
+            const vlbe_real m = w * pt.H[1][0][j], *T6 = T[nr - 1];
+            for (i = 0; i < n; ++i) Dr[i] -= m * T6[i];
+        }
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            vlbe_real *Dr = D + ly->p[k] * n;
+            for (c = 0; c < nr; ++c) {
+                const vlbe_real m = w * Y[k][rows[c]], *Tc = T[c];
+                for (i = 0; i < n; ++i) Dr[i] -= m * Tc[i];
+            }
+        }
+    return VLBE_OK;
+}
+
+/* Inertia-type field term at one mass point: Q += w G^T z for the position
+   field (z = f - rhoA eta_p, eqs. 17, 29, 44) and the spin field (z =
+   -rhoI eta_p); with K: e/theta-columns of K, and D (e', theta' and p'
+   columns).  pt holds k = 0 with all partials when pm != 0. */
+static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe__a3_lay *ly,
+                                       const vlbe__a3_pt *pt, int pm, const vlbe_real *pd,
+                                       vlbe_real w, const vlbe_real *q, const vlbe_real *qd,
+                                       vlbe_real *Q, vlbe_real *K, vlbe_real *D)
+{
+    static const int a2[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
+    const int n = ly->n;
+    vlbe_real X[2][3], V[2][3], Xkl[3][3], z[3], c4[4], d4[4];
+    vlbe_real Xt[2] = {0, 0}, Vt[2] = {0, 0}, Xtl[3] = {0, 0, 0}, zt = VLBE_R(0.0), c2[2], d2[2];
+    int i, j, k, l, c;
+    const int spin = ly->spin && mt->rhoI != VLBE_R(0.0) && pm;
+    for (c = 0; c < 3; ++c) z[c] = mt->f[c];
+    if (pm) {
+        for (k = 0; k < 2; ++k) {
+            vlbe__a3_sum(ly, pt->N[0][1 + k], q, X[k]);
+            vlbe__a3_sum(ly, pt->N[0][1 + k], qd, V[k]);
+            if (spin) {
+                Xt[k] = vlbe__a3_tsum(ly, pt->H[0][1 + k], q);
+                Vt[k] = vlbe__a3_tsum(ly, pt->H[0][1 + k], qd);
+            }
+        }
+        for (k = 0; k < 3; ++k) {
+            vlbe__a3_sum(ly, pt->N[0][VLBE_DA_11 + k], q, Xkl[k]);
+            if (spin) Xtl[k] = vlbe__a3_tsum(ly, pt->H[0][VLBE_DA_11 + k], q);
+        }
+        for (c = 0; c < 3; ++c)
+            z[c] -= mt->rhoA * (VLBE_R(2.0) * (pd[0] * V[0][c] + pd[1] * V[1][c]) +
+                                pd[0] * pd[0] * Xkl[0][c] +
+                                VLBE_R(2.0) * pd[0] * pd[1] * Xkl[1][c] +
+                                pd[1] * pd[1] * Xkl[2][c]);
+        if (spin)
+            zt = -mt->rhoI * (VLBE_R(2.0) * (pd[0] * Vt[0] + pd[1] * Vt[1]) +
+                              pd[0] * pd[0] * Xtl[0] + VLBE_R(2.0) * pd[0] * pd[1] * Xtl[1] +
+                              pd[1] * pd[1] * Xtl[2]);
+    }
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < 3; ++c) Q[ly->e[j] + c] += w * pt->N[0][0][j] * z[c];
+    if (spin)
+        for (j = 0; j < 2; ++j) Q[ly->th[j]] += w * pt->H[0][0][j] * zt;
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) Q[ly->p[k]] += w * (vlbe_v3_dot(X[k], z) + Xt[k] * zt);
+    if (!K || !pm) return;
+    /* dz/de_j = c_j I, dz/de'_j = d_j I (the same for theta with rhoI) */
+    for (j = 0; j < 4; ++j) {
+        c4[j] = -mt->rhoA * (pd[0] * pd[0] * pt->N[0][VLBE_DA_11][j] +
+                             VLBE_R(2.0) * pd[0] * pd[1] * pt->N[0][VLBE_DA_12][j] +
+                             pd[1] * pd[1] * pt->N[0][VLBE_DA_22][j]);
+        d4[j] = -mt->rhoA * VLBE_R(2.0) * (pd[0] * pt->N[0][1][j] + pd[1] * pt->N[0][2][j]);
+    }
+    for (j = 0; j < 2; ++j) {
+        c2[j] = d2[j] = VLBE_R(0.0);
+        if (spin) {
+            c2[j] = -mt->rhoI * (pd[0] * pd[0] * pt->H[0][VLBE_DA_11][j] +
+                                 VLBE_R(2.0) * pd[0] * pd[1] * pt->H[0][VLBE_DA_12][j] +
+                                 pd[1] * pd[1] * pt->H[0][VLBE_DA_22][j]);
+            d2[j] = -mt->rhoI * VLBE_R(2.0) * (pd[0] * pt->H[0][1][j] + pd[1] * pt->H[0][2][j]);
+        }
+    }
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < 3; ++c) {
+            const int cj = ly->e[j] + c;
+            for (i = 0; i < 4; ++i) {
+                const int r = ly->e[i] + c;
+                K[r * n + cj] += w * pt->N[0][0][i] * c4[j];
+                D[r * n + cj] += w * pt->N[0][0][i] * d4[j];
+            }
+            for (k = 0; k < 2; ++k)
+                if (pm & (1 << k)) {
+                    K[ly->p[k] * n + cj] += w * (pt->N[0][1 + k][j] * z[c] + c4[j] * X[k][c]);
+                    D[ly->p[k] * n + cj] += w * d4[j] * X[k][c];
+                }
+        }
+    if (spin)
+        for (j = 0; j < 2; ++j) {
+            const int cj = ly->th[j];
+            for (i = 0; i < 2; ++i) {
+                K[ly->th[i] * n + cj] += w * pt->H[0][0][i] * c2[j];
+                D[ly->th[i] * n + cj] += w * pt->H[0][0][i] * d2[j];
+            }
+            for (k = 0; k < 2; ++k)
+                if (pm & (1 << k)) {
+                    K[ly->p[k] * n + cj] += w * (pt->H[0][1 + k][j] * zt + c2[j] * Xt[k]);
+                    D[ly->p[k] * n + cj] += w * d2[j] * Xt[k];
+                }
+        }
+    /* p'-columns: dz/dp_k' = -2 rho (V_k + sum_l p_l' X_kl) */
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            const int pk = ly->p[k];
+            vlbe_real dz[3], dzt = VLBE_R(0.0);
+            for (c = 0; c < 3; ++c)
+                dz[c] = -VLBE_R(2.0) * mt->rhoA *
+                        (V[k][c] + pd[0] * Xkl[a2[k][0] - VLBE_DA_11][c] +
+                         pd[1] * Xkl[a2[k][1] - VLBE_DA_11][c]);
+            if (spin)
+                dzt = -VLBE_R(2.0) * mt->rhoI *
+                      (Vt[k] + pd[0] * Xtl[a2[k][0] - VLBE_DA_11] +
+                       pd[1] * Xtl[a2[k][1] - VLBE_DA_11]);
+            for (j = 0; j < 4; ++j)
+                for (c = 0; c < 3; ++c) D[(ly->e[j] + c) * n + pk] += w * pt->N[0][0][j] * dz[c];
+            if (spin)
+                for (j = 0; j < 2; ++j) D[ly->th[j] * n + pk] += w * pt->H[0][0][j] * dzt;
+            for (l = 0; l < 2; ++l)
+                if (pm & (1 << l)) D[ly->p[l] * n + pk] += w * (vlbe_v3_dot(X[l], dz) + Xt[l] * dzt);
+        }
+}
+
+static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__a3_lay *ly,
+                                          unsigned mode, const vlbe_real *q, const vlbe_real *qd,
+                                          vlbe_real *Q, vlbe_real *K, vlbe_real *D)
+{
+    const vlbe_ale3_mat *mt = &el->mat;
+    const int pm = vlbe__ale_pmask(mode), n = ly->n;
+    const int damp = !(mode & VLBE_ALE_NO_DAMP);
+    const int bend = !(mode & VLBE_ALE_NO_BEND) && mt->EJ != VLBE_R(0.0);
+    const int twist = ly->spin && !(mode & VLBE_ALE3_NO_TWIST) && mt->GI != VLBE_R(0.0);
+    const vlbe_real L = q[ly->p[1]] - q[ly->p[0]];
+    vlbe_real pd[2], Lp[6], dQ[VLBE_ALE3_NQ], dQx[VLBE_ALE3_NQ];
+    vlbe__a3_pt pt;
+    vlbe_status st;
+    int g, i;
+    const int f0 = mt->f[0] != VLBE_R(0.0) || mt->f[1] != VLBE_R(0.0) || mt->f[2] != VLBE_R(0.0);
+    vlbe__ale_lpow(L, Lp);
+    pd[0] = (pm & 1) ? qd[ly->p[0]] : VLBE_R(0.0);
+    pd[1] = (pm & 2) ? qd[ly->p[1]] : VLBE_R(0.0);
+    for (i = 0; i < n; ++i) dQx[i] = VLBE_R(0.0);
+    if (pm || f0)
+        for (g = 0; g < el->rm.n; ++g) {
+            const vlbe_ale_gp *gp = &el->rm.g[g];
+            vlbe__a3_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
+            vlbe__a3_inertia_pt(mt, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
+        }
+    if (mt->EA != VLBE_R(0.0) || bend || twist)
+        for (g = 0; g < el->rs.n; ++g)
+            if ((st = vlbe__a3_strain_gp(el, ly, &el->rs.g[g], Lp, pm, pd, bend, twist, damp, q, qd,
+                                         Q, K, D, dQx)) != VLBE_OK)
+                return st;
+    if (K && pm) {
+        vlbe__a3_degree(ly, Q, dQ);
+        for (i = 0; i < n; ++i) dQ[i] += dQx[i];
+        vlbe__a3_pcols(ly, L, pm, dQ, pd, q, qd, K, D);
+    }
+    return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
+{
+    vlbe_real Qt[VLBE_ALE3_NQ], Kt[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Dt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    vlbe__a3_lay ly;
+    const int jac = K != NULL || D != NULL;
+    vlbe_status st;
+    int i, nn;
+    VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
+    mode |= el->flags;
+    vlbe__a3_layout(mode, &ly);
+    if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
+    nn = ly.n * ly.n;
+    for (i = 0; i < ly.n; ++i) Qt[i] = VLBE_R(0.0);
+    if (jac)
+        for (i = 0; i < nn; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
+    if ((st = vlbe__a3_forces(el, &ly, mode, q, qd, Qt, jac ? Kt : NULL, jac ? Dt : NULL)) !=
+        VLBE_OK)
+        return st;
+    for (i = 0; i < ly.n; ++i) Q[i] = Qt[i];
+    if (K)
+        for (i = 0; i < nn; ++i) K[i] = Kt[i];
+    if (D)
+        for (i = 0; i < nn; ++i) D[i] = Dt[i];
+    return VLBE_OK;
+}
+
+/* M(q) (eq. 28): w rhoA G_r^T G_r + w rhoI G_th^T G_th summed over the
+   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k]. */
+VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                    vlbe_real *VLBE_RESTRICT M)
+{
+    const vlbe_ale3_mat *mt = &el->mat;
+    vlbe__a3_lay ly;
+    vlbe__a3_pt pt;
+    vlbe_real Lp[6], L, X[2][3], Xt[2];
+    vlbe_status st;
+    int g, i, j, k, l, c, n, pm;
+    VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
+    mode |= el->flags;
+    vlbe__a3_layout(mode, &ly);
+    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
+    n = ly.n;
+    pm = vlbe__ale_pmask(mode);
+    L = q[ly.p[1]] - q[ly.p[0]];
+    vlbe__ale_lpow(L, Lp);
+    for (i = 0; i < n * n; ++i) M[i] = VLBE_R(0.0);
+    for (g = 0; g < el->rm.n; ++g) {
+        const vlbe_real w = el->rm.g[g].w * L, wa = w * mt->rhoA, wi = w * mt->rhoI;
+        vlbe__a3_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, &pt);
+        for (k = 0; k < 2; ++k) {
+            Xt[k] = VLBE_R(0.0);
+            if (pm & (1 << k)) {
+                vlbe__a3_sum(&ly, pt.N[0][1 + k], q, X[k]);
+                Xt[k] = vlbe__a3_tsum(&ly, pt.H[0][1 + k], q);
+            }
+        }
+        for (i = 0; i < 4; ++i) {
+            const vlbe_real ni = wa * pt.N[0][0][i];
+            for (j = 0; j < 4; ++j)
+                for (c = 0; c < 3; ++c) M[(ly.e[i] + c) * n + ly.e[j] + c] += ni * pt.N[0][0][j];
+            for (k = 0; k < 2; ++k)
+                if (pm & (1 << k))
+                    for (c = 0; c < 3; ++c) {
+                        M[(ly.e[i] + c) * n + ly.p[k]] += ni * X[k][c];
+                        M[ly.p[k] * n + ly.e[i] + c] += ni * X[k][c];
+                    }
+        }
+        if (ly.spin)
+            for (i = 0; i < 2; ++i) {
+                const vlbe_real hi = wi * pt.H[0][0][i];
+                for (j = 0; j < 2; ++j) M[ly.th[i] * n + ly.th[j]] += hi * pt.H[0][0][j];
+                for (k = 0; k < 2; ++k)
+                    if (pm & (1 << k)) {
+                        M[ly.th[i] * n + ly.p[k]] += hi * Xt[k];
+                        M[ly.p[k] * n + ly.th[i]] += hi * Xt[k];
+                    }
+            }
+        for (k = 0; k < 2; ++k)
+            for (l = 0; l < 2; ++l)
+                if ((pm & (1 << k)) && (pm & (1 << l)))
+                    M[ly.p[k] * n + ly.p[l]] += wa * vlbe_v3_dot(X[k], X[l]) + wi * Xt[k] * Xt[l];
+    }
+    return VLBE_OK;
+}
+
+/* Mq = d(M a)/dq (zero with both p fixed: M is constant).  With z = rho G a
+   per field, d(G^T z)/de_j = G^T dz/de_j + (dG/de_j)^T z, dz/de_j = rho
+   sum_k a_pk dN_j/dp_k (the p-columns of G are linear in e), and the
+   p-columns by the scaling identity with D = M and the rates a. */
+VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
+                                        const vlbe_real *q, const vlbe_real *a,
+                                        vlbe_real *VLBE_RESTRICT Mq)
+{
+    const vlbe_ale3_mat *mt = &el->mat;
+    vlbe_real J[VLBE_ALE3_NQ * VLBE_ALE3_NQ], M[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    vlbe_real Ma[VLBE_ALE3_NQ], dF[VLBE_ALE3_NQ], ap[2], Lp[6], L;
+    vlbe__a3_lay ly;
+    vlbe__a3_pt pt;
+    vlbe_status st;
+    int g, i, j, k, c, n, nn, pm;
+    VLBE_ASSERT(el != NULL && q != NULL && a != NULL && Mq != NULL);
+    mode |= el->flags;
+    vlbe__a3_layout(mode, &ly);
+    if ((st = vlbe__a3_check(&ly, q, a)) != VLBE_OK) return st;
+    n = ly.n;
+    nn = n * n;
+    pm = vlbe__ale_pmask(mode);
+    for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
+    if (pm) {
+        if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
+        L = q[ly.p[1]] - q[ly.p[0]];
+        ap[0] = (pm & 1) ? a[ly.p[0]] : VLBE_R(0.0);
+        ap[1] = (pm & 2) ? a[ly.p[1]] : VLBE_R(0.0);
+        vlbe__ale_lpow(L, Lp);
+        for (i = 0; i < n; ++i) Ma[i] = VLBE_R(0.0);
+        for (g = 0; g < el->rm.n; ++g) {
+            const vlbe_real w = el->rm.g[g].w * L;
+            vlbe_real X[2][3], Xt[2] = {0, 0}, z[3], zt = VLBE_R(0.0), c4[4], c2[2];
+            vlbe__a3_pt_eval(&el->rm.g[g], Lp, 0, 0, 3, &pt);
+            vlbe__a3_sum(&ly, pt.N[0][0], a, z);
+            if (ly.spin) zt = vlbe__a3_tsum(&ly, pt.H[0][0], a);
+            for (k = 0; k < 2; ++k) {
+                vlbe__a3_sum(&ly, pt.N[0][1 + k], q, X[k]);
+                if (ly.spin) Xt[k] = vlbe__a3_tsum(&ly, pt.H[0][1 + k], q);
+                for (c = 0; c < 3; ++c) z[c] += ap[k] * X[k][c];
+                zt += ap[k] * Xt[k];
+            }
+            for (c = 0; c < 3; ++c) z[c] *= mt->rhoA;
+            zt *= mt->rhoI;
+            for (j = 0; j < 4; ++j) {
+                c4[j] = mt->rhoA * (ap[0] * pt.N[0][1][j] + ap[1] * pt.N[0][2][j]);
+                for (c = 0; c < 3; ++c) Ma[ly.e[j] + c] += w * pt.N[0][0][j] * z[c];
+            }
+            for (j = 0; j < 2; ++j) {
+                c2[j] = mt->rhoI * (ap[0] * pt.H[0][1][j] + ap[1] * pt.H[0][2][j]);
+                if (ly.spin) Ma[ly.th[j]] += w * pt.H[0][0][j] * zt;
+            }
+            for (k = 0; k < 2; ++k)
+                if (pm & (1 << k)) Ma[ly.p[k]] += w * (vlbe_v3_dot(X[k], z) + Xt[k] * zt);
+            for (j = 0; j < 4; ++j)
+                for (c = 0; c < 3; ++c) {
+                    const int cj = ly.e[j] + c;
+                    for (i = 0; i < 4; ++i) J[(ly.e[i] + c) * n + cj] += w * pt.N[0][0][i] * c4[j];
+                    for (k = 0; k < 2; ++k)
+                        if (pm & (1 << k))
+                            J[ly.p[k] * n + cj] += w * (pt.N[0][1 + k][j] * z[c] + X[k][c] * c4[j]);
+                }
+            if (ly.spin)
+                for (j = 0; j < 2; ++j) {
+                    const int cj = ly.th[j];
+                    for (i = 0; i < 2; ++i) J[ly.th[i] * n + cj] += w * pt.H[0][0][i] * c2[j];
+                    for (k = 0; k < 2; ++k)
+                        if (pm & (1 << k))
+                            J[ly.p[k] * n + cj] += w * (pt.H[0][1 + k][j] * zt + Xt[k] * c2[j]);
+                }
+        }
+        vlbe__a3_degree(&ly, Ma, dF);
+        vlbe__a3_pcols(&ly, L, pm, dF, ap, q, a, J, M);
+    }
+    for (i = 0; i < nn; ++i) Mq[i] = J[i];
+    return VLBE_OK;
+}
+
+/* E = {T, U, V}: kinetic energy q'^T M q' / 2, strain energy int (EA eps^2
+   + EJ |k|^2 + GI phi^2)/2 dp, load potential -int f . r dp. */
+VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
+{
+    const vlbe_ale3_mat *mt = &el->mat;
+    vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Lp[6], L, T = VLBE_R(0.0), U = VLBE_R(0.0);
+    vlbe_real V = VLBE_R(0.0);
+    vlbe__a3_lay ly;
+    vlbe__a3_pt pt;
+    vlbe_status st;
+    int g, i, j, n, bend, twist;
+    VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
+    mode |= el->flags;
+    vlbe__a3_layout(mode, &ly);
+    if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
+    if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
+    n = ly.n;
+    for (i = 0; i < n; ++i)
+        for (j = 0; j < n; ++j) T += VLBE_R(0.5) * qd[i] * M[i * n + j] * qd[j];
+    bend = !(mode & VLBE_ALE_NO_BEND) && mt->EJ != VLBE_R(0.0);
+    twist = ly.spin && !(mode & VLBE_ALE3_NO_TWIST) && mt->GI != VLBE_R(0.0);
+    L = q[ly.p[1]] - q[ly.p[0]];
+    vlbe__ale_lpow(L, Lp);
+    for (g = 0; g < el->rm.n; ++g) {
+        vlbe_real r[3];
+        vlbe__a3_pt_eval(&el->rm.g[g], Lp, 0, 0, 1, &pt);
+        vlbe__a3_sum(&ly, pt.N[0][0], q, r);
+        V -= el->rm.g[g].w * L * vlbe_v3_dot(mt->f, r);
+    }
+    for (g = 0; g < el->rs.n; ++g) {
+        const vlbe_real w = el->rs.g[g].w * L;
+        vlbe_real a[3], b[3], G[7], kk = VLBE_R(0.0), eps, phi;
+        vlbe__a3_pt_eval(&el->rs.g[g], Lp, 1, bend ? 2 : 1, 1, &pt);
+        vlbe__a3_sum(&ly, pt.N[1][0], q, a);
+        eps = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
+        U += w * VLBE_R(0.5) * mt->EA * eps * eps;
+        if (bend) {
+            vlbe__a3_sum(&ly, pt.N[2][0], q, b);
+            if ((st = vlbe__a3_bend(a, b, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL,
+                                    &kk)) != VLBE_OK)
+                return st;
+            U += w * VLBE_R(0.5) * mt->EJ * kk;
+        }
+        if (twist) {
+            phi = vlbe__a3_tsum(&ly, pt.H[1][0], q);
+            U += w * VLBE_R(0.5) * mt->GI * phi * phi;
+        }
+    }
+    E[0] = T;
+    E[1] = U;
+    E[2] = V;
+    return VLBE_OK;
+}
+
+/* r(p), r'(p) and theta(p) of one element (each may be NULL; theta is 0
+   without spin); p may lie outside [p1, p2] (extrapolated). */
+VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_real p,
+                                     vlbe_real *VLBE_RESTRICT r, vlbe_real *VLBE_RESTRICT rp,
+                                     vlbe_real *VLBE_RESTRICT th)
+{
+    vlbe__a3_lay ly;
+    vlbe_herm_ale b;
+    vlbe_status st;
+    VLBE_ASSERT(q != NULL);
+    vlbe__a3_layout(mode, &ly);
+    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
+    if (!isfinite(p)) return VLBE_ENONFINITE;
+    vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 1, 0, &b);
+    if (r) vlbe__a3_sum(&ly, b.h[0][0], q, r);
+    if (rp) vlbe__a3_sum(&ly, b.h[1][0], q, rp);
+    if (th) *th = vlbe__a3_tsum(&ly, b.l[0][0], q);
+    return VLBE_OK;
+}
+
+/* Axial strain, curvature kappa = |k| (eq. 22) and twist (eq. 23) at p
+   (each output may be NULL; kappa needs |r'|^2 > eps). */
+VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_real p,
+                                      vlbe_real *VLBE_RESTRICT eps, vlbe_real *VLBE_RESTRICT kap,
+                                      vlbe_real *VLBE_RESTRICT phi)
+{
+    vlbe__a3_lay ly;
+    vlbe_herm_ale b;
+    vlbe_real a[3], r2[3], G[7] = {0, 0, 0, 0, 0, 0, 0}, kk = VLBE_R(0.0);
+    vlbe_status st;
+    VLBE_ASSERT(q != NULL);
+    vlbe__a3_layout(mode, &ly);
+    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
+    if (!isfinite(p)) return VLBE_ENONFINITE;
+    vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 2, 0, &b);
+    vlbe__a3_sum(&ly, b.h[1][0], q, a);
+    vlbe__a3_sum(&ly, b.h[2][0], q, r2);
+    if (kap &&
+        (st = vlbe__a3_bend(a, r2, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL, &kk)) !=
+            VLBE_OK)
+        return st;
+    if (eps) *eps = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
+    if (kap) *kap = vlbe_sqrt(kk);
+    if (phi) *phi = vlbe__a3_tsum(&ly, b.l[1][0], q);
+    return VLBE_OK;
+}
+
+/* A point load at material point pf in [p1, p2] on the position field
+   (F, 3 components: eq. 45) or on the spin field (torque T about the
+   axis: eq. 46): Q += S(pf)^T F, K += d/dq (K may be NULL). */
+static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                              const vlbe_real *F, vlbe_real T, int torque,
+                                              vlbe_real *Q, vlbe_real *K)
+{
+    static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
+    vlbe__a3_lay ly;
+    vlbe_herm_ale b;
+    vlbe_real x[3];
+    vlbe_status st;
+    int j, k, l, c, n;
+    vlbe__a3_layout(mode, &ly);
+    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
+    if (!isfinite(pf) || (torque ? !isfinite(T) : !vlbe_all_finite(F, 3))) return VLBE_ENONFINITE;
+    if (torque && !ly.spin) return VLBE_EARG;
+    if (pf < q[ly.p[0]] || pf > q[ly.p[1]]) return VLBE_EBOUND;
+    n = ly.n;
+    vlbe_herm_ale_eval(pf, q[ly.p[0]], q[ly.p[1]], 0, 2, &b);
+    if (torque) {
+        for (j = 0; j < 2; ++j) Q[ly.th[j]] += b.l[0][0][j] * T;
+        for (k = 0; k < 2; ++k) Q[ly.p[k]] += vlbe__a3_tsum(&ly, b.l[0][1 + k], q) * T;
+    } else {
+        for (j = 0; j < 4; ++j)
+            for (c = 0; c < 3; ++c) Q[ly.e[j] + c] += b.h[0][0][j] * F[c];
+        for (k = 0; k < 2; ++k) {
+            vlbe__a3_sum(&ly, b.h[0][1 + k], q, x);
+            Q[ly.p[k]] += vlbe_v3_dot(x, F);
+        }
+    }
+    if (!K) return VLBE_OK;
+    for (k = 0; k < 2; ++k) {
+        const int pk = ly.p[k];
+        if (torque)
+            for (j = 0; j < 2; ++j) {
+                const vlbe_real h = b.l[0][1 + k][j] * T;
+                K[ly.th[j] * n + pk] += h;
+                K[pk * n + ly.th[j]] += h;
+            }
+        else
+            for (j = 0; j < 4; ++j)
+                for (c = 0; c < 3; ++c) {
+                    const vlbe_real h = b.h[0][1 + k][j] * F[c];
+                    K[(ly.e[j] + c) * n + pk] += h;
+                    K[pk * n + ly.e[j] + c] += h;
+                }
+        for (l = 0; l < 2; ++l) {
+            if (torque)
+                K[pk * n + ly.p[l]] += vlbe__a3_tsum(&ly, b.l[0][dd[k][l]], q) * T;
+            else {
+                vlbe__a3_sum(&ly, b.h[0][dd[k][l]], q, x);
+                K[pk * n + ly.p[l]] += vlbe_v3_dot(x, F);
+            }
+        }
+    }
+    return VLBE_OK;
+}
+
+/* A constant global force F (3) at material point pf (eq. 45).  Every row
+   and column of the layout is written, whatever the FIX_P flags. */
+VLBE_API vlbe_status vlbe_ale3_point_force(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                           const vlbe_real *F, vlbe_real *VLBE_RESTRICT Q,
+                                           vlbe_real *VLBE_RESTRICT K)
+{
+    VLBE_ASSERT(q != NULL && F != NULL && Q != NULL);
+    return vlbe__a3_point_load(mode, q, pf, F, VLBE_R(0.0), 0, Q, K);
+}
+
+/* A torque T about the beam axis at material point pf, acting on the spin
+   angle (eq. 46); VLBE_EARG without spin. */
+VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                            vlbe_real T, vlbe_real *VLBE_RESTRICT Q,
+                                            vlbe_real *VLBE_RESTRICT K)
+{
+    VLBE_ASSERT(q != NULL && Q != NULL);
+    return vlbe__a3_point_load(mode, q, pf, NULL, T, 1, Q, K);
+}
+
 /* ===== chains of elements ================================================ */
 /* -- constants, types --------------------------------------------------- */
 /* material-coordinate mode of a node */
@@ -3149,990 +4227,6 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
         }
     }
     return VLBE_OK;
-}
-
-/* ===== 3D beam-shaft element with spin (VLBSE of [V]) ===================
-   Node coordinates [r(3), r'(3), theta, p], 16 per element:
-        q = [r1, r1', th1, p1,  r2, r2', th2, p2]      (eq. 16 of [V])
-   with VLBE_ALE3_NO_SPIN the spin angle is not a coordinate (the 3D ALE
-   cable/beam, 14 per element: [r1, r1', p1, r2, r2', p2]).  r(p) is the
-   cubic Hermite interpolation of the positions and slopes (eqs. 4-5),
-   theta(p) the linear one of the spin angles (eqs. 6-7), both in the ALE
-   form of vlbe.h (p1, p2 free or fixed per node, FIX_P1/FIX_P2 as for the
-   planar element).  Equations of motion, sign convention of integrators.h:
-        M(q) q'' = Q(q, q'),  Q = Q_f + Q_F + Q_T - Q_p - Q_s   (eq. 48)
-   M (eq. 28): int S^T diag(rhoA I3, rhoI) S dp, S = [S_e | dS_e/dp_k q_e]
-   (eq. 15); Q_p the transport inertia int S^T diag(.) eta_p dp (eqs. 17,
-   29); Q_s = Q_se + Q_sk + Q_sphi (eqs. 31-40) with
-        eps = (r'.r' - 1)/2                  axial (Green) strain, eq. 21
-        k   = r' x r'' / |r'|^3              curvature vector, |k| = kappa of eq. 22
-        phi = theta'                         twist, eq. 23
-   stresses EA (eps + c_eps eps'), EJ (k + c_kap k'), GI (phi + c_phi
-   phi') (rates at fixed material p: the Kelvin-Voigt parts), Q_f = int S_t^T
-   f dp for a constant load f per unit material length (eq. 44), point
-   force and torque at a material point (eqs. 45-46,
-   vlbe_ale3_point_force / _point_torque).
-   Curvature.  The paper's kappa = |r' x r''| / |r'|^3 has no derivative at
-   kappa = 0 (a straight beam, the common case) and its Kelvin-Voigt rate is
-   undefined there.  vlbe uses the curvature VECTOR k: its energy EJ |k|^2/2
-   is the paper's EJ kappa^2/2 (so the elastic force is the same), it is a
-   polynomial in r', r'' times |r'|^-3 (smooth wherever the slope does not
-   vanish), its rate k' is defined everywhere, and for motion in a plane it
-   is the planar element's signed curvature times the plane's normal: in
-   plane, with theta = 0 and no twist, the element is vlbe_ale_force's.
-   Switches (VLBE_ALE_* as for the planar element, OR-ed like there):
-     VLBE_ALE3_NO_SPIN   no spin angle: 14 coordinates, no rhoI, GI terms
-     VLBE_ALE_NO_BEND    no Q_sk (string/cable)
-     VLBE_ALE3_NO_TWIST  no Q_sphi (the spin angle keeps its inertia)
-     VLBE_ALE_NO_DAMP    no Kelvin-Voigt terms
-     VLBE_ALE_FIX_P1/2   material coordinate of a node fixed (Lagrangian);
-                         its row and column stay zero
-   K = dQ/dq and D = dQ/dq' as for the planar element: e-columns and the
-   p'-columns directly, the p-columns by the scaling identity of NOTES
-   (every term is homogeneous under p -> s p, slopes -> slopes / s, p' ->
-   s p'; row degrees 1 + m_j for positions and slopes, 1 for theta, 0 for
-   p; the axial part 4 and 2 lower, the twist part 2 lower).
-   Errors: VLBE_ELENGTH (p2 <= p1), VLBE_ENONFINITE, VLBE_ESINGULAR (|r'|^2
-   <= eps at a bending point), VLBE_EBOUND (point load outside [p1, p2]);
-   no output is written on failure.  Stack: about 9 kB with K and D. */
-
-#define VLBE_ALE3_NO_SPIN 64u
-#define VLBE_ALE3_NO_TWIST 128u
-#define VLBE_ALE3_NQ 16 /* coordinates per element (with spin; 14 without) */
-
-/* Section and material per unit material length.  vlbe_ale3_mat_circle
-   fills it for a solid circular section. */
-typedef struct vlbe_ale3_mat {
-    vlbe_real rhoA;  /* mass per length                                    */
-    vlbe_real rhoI;  /* polar mass moment of inertia per length, rho I_p   */
-    vlbe_real EA;    /* axial stiffness                                    */
-    vlbe_real EJ;    /* bending stiffness (J: second moment of area)       */
-    vlbe_real GI;    /* torsional stiffness G I_p                          */
-    vlbe_real c_eps, c_kap, c_phi; /* Kelvin-Voigt times [time]           */
-    vlbe_real f[3];  /* constant distributed load per length               */
-} vlbe_ale3_mat;
-
-typedef struct vlbe_ale3_elem {
-    vlbe_ale3_mat mat;
-    unsigned flags;
-    vlbe_ale_rule rm, rs; /* mass/inertia/loads; strains (axial, bending, twist) */
-} vlbe_ale3_elem;
-
-VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlbe_real E,
-                                          vlbe_real G, vlbe_real radius);
-VLBE_API vlbe_status vlbe_ale3_elem_init(vlbe_ale3_elem *el, const vlbe_ale3_mat *mat,
-                                         unsigned flags, int nm, int ns);
-VLBE_API int vlbe_ale3_nq(unsigned mode);
-VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                    vlbe_real *VLBE_RESTRICT M);
-VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
-                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D);
-VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E);
-VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_real p,
-                                     vlbe_real *VLBE_RESTRICT r, vlbe_real *VLBE_RESTRICT rp,
-                                     vlbe_real *VLBE_RESTRICT th);
-VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_real p,
-                                      vlbe_real *VLBE_RESTRICT eps, vlbe_real *VLBE_RESTRICT kap,
-                                      vlbe_real *VLBE_RESTRICT phi);
-VLBE_API vlbe_status vlbe_ale3_point_force(unsigned mode, const vlbe_real *q, vlbe_real pf,
-                                           const vlbe_real *F, vlbe_real *VLBE_RESTRICT Q,
-                                           vlbe_real *VLBE_RESTRICT K);
-VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, vlbe_real pf,
-                                            vlbe_real T, vlbe_real *VLBE_RESTRICT Q,
-                                            vlbe_real *VLBE_RESTRICT K);
-
-/* -- 3D element: definitions ------------------------------------------- */
-
-VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlbe_real E,
-                                          vlbe_real G, vlbe_real radius)
-{
-    const vlbe_real pi = VLBE_R(3.14159265358979323846);
-    vlbe_real A, J;
-    VLBE_ASSERT(mat != NULL);
-    if (!isfinite(rho) || !isfinite(E) || !isfinite(G) || !isfinite(radius))
-        return VLBE_ENONFINITE;
-    if (!(rho > VLBE_R(0.0)) || !(radius > VLBE_R(0.0)) || E < VLBE_R(0.0) || G < VLBE_R(0.0))
-        return VLBE_EARG;
-    A = pi * radius * radius;
-    J = VLBE_R(0.25) * A * radius * radius;
-    mat->rhoA = rho * A;
-    mat->rhoI = rho * VLBE_R(2.0) * J; /* polar I_p = 2 J */
-    mat->EA = E * A;
-    mat->EJ = E * J;
-    mat->GI = G * VLBE_R(2.0) * J;
-    mat->c_eps = mat->c_kap = mat->c_phi = VLBE_R(0.0);
-    mat->f[0] = mat->f[1] = mat->f[2] = VLBE_R(0.0);
-    return VLBE_OK;
-}
-
-VLBE_API vlbe_status vlbe_ale3_elem_init(vlbe_ale3_elem *el, const vlbe_ale3_mat *mat,
-                                         unsigned flags, int nm, int ns)
-{
-    vlbe_status st;
-    VLBE_ASSERT(el != NULL && mat != NULL);
-    {
-        const vlbe_real m[8] = {mat->rhoA, mat->rhoI, mat->EA,    mat->EJ,
-                                mat->GI,   mat->c_eps, mat->c_kap, mat->c_phi};
-        if (!vlbe_all_finite(m, 8) || !vlbe_all_finite(mat->f, 3)) return VLBE_ENONFINITE;
-    }
-    if (!(mat->rhoA > VLBE_R(0.0)) || mat->rhoI < VLBE_R(0.0) || mat->EA < VLBE_R(0.0) ||
-        mat->EJ < VLBE_R(0.0) || mat->GI < VLBE_R(0.0) || mat->c_eps < VLBE_R(0.0) ||
-        mat->c_kap < VLBE_R(0.0) || mat->c_phi < VLBE_R(0.0))
-        return VLBE_EARG;
-    if (!(flags & VLBE_ALE3_NO_SPIN) && !(mat->rhoI > VLBE_R(0.0)))
-        return VLBE_EARG; /* a spin angle without inertia: M singular */
-    if (nm < 0 || nm > VLBE_ALE_NGP_MAX || ns < 0 || ns > VLBE_ALE_NGP_MAX) return VLBE_EARG;
-    if ((st = vlbe__ale_rule(&el->rm, nm, 4)) != VLBE_OK) return st;
-    if ((st = vlbe__ale_rule(&el->rs, ns, 5)) != VLBE_OK) return st;
-    el->mat = *mat;
-    el->flags = flags;
-    return VLBE_OK;
-}
-
-VLBE_API int vlbe_ale3_nq(unsigned mode)
-{
-    return (mode & VLBE_ALE3_NO_SPIN) ? VLBE_ALE3_NQ - 2 : VLBE_ALE3_NQ;
-}
-
-/* Where the coordinates of one element sit: n per element, e[j] the first
-   of basis j's 3-vector (r1, r1', r2, r2'), th[i] node i's spin angle (-1
-   without spin), p[i] its material coordinate. */
-typedef struct vlbe__a3_lay {
-    int n, spin, e[4], th[2], p[2];
-} vlbe__a3_lay;
-
-static inline void vlbe__a3_layout(unsigned mode, vlbe__a3_lay *ly)
-{
-    const int spin = !(mode & VLBE_ALE3_NO_SPIN), ns = spin ? 8 : 7;
-    ly->spin = spin;
-    ly->n = 2 * ns;
-    ly->e[0] = 0;
-    ly->e[1] = 3;
-    ly->e[2] = ns;
-    ly->e[3] = ns + 3;
-    ly->th[0] = spin ? 6 : -1;
-    ly->th[1] = spin ? ns + 6 : -1;
-    ly->p[0] = ns - 1;
-    ly->p[1] = 2 * ns - 1;
-}
-
-static inline vlbe_status vlbe__a3_check(const vlbe__a3_lay *ly, const vlbe_real *q,
-                                         const vlbe_real *qd)
-{
-    if (!vlbe_all_finite(q, ly->n)) return VLBE_ENONFINITE;
-    if (qd && !vlbe_all_finite(qd, ly->n)) return VLBE_ENONFINITE;
-    if (!(q[ly->p[1]] - q[ly->p[0]] > VLBE_R(0.0))) return VLBE_ELENGTH;
-    return VLBE_OK;
-}
-
-/* The basis at one point scaled to the current L: N[k][a][j] = L^(m_j - k
-   - |a|) b[k][a][j] (Hermite), H[k][a][j] = L^(-k - |a|) l[k][a][j]
-   (linear); rows k0..kmax, partials a < na at k = 0, a < min(na, 3)
-   above. */
-typedef struct vlbe__a3_pt {
-    vlbe_real N[3][VLBE_DA_N][4];
-    vlbe_real H[2][VLBE_DA_N][2];
-} vlbe__a3_pt;
-
-static inline void vlbe__a3_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
-                                    int na, vlbe__a3_pt *VLBE_RESTRICT pt)
-{
-    int k, a, j;
-    for (k = k0; k <= kmax; ++k) {
-        const int nak = (k == 0 || na < 3) ? na : 3;
-        for (a = 0; a < nak; ++a) {
-            const int d = 4 - k - (a == 0 ? 0 : (a < 3 ? 1 : 2));
-            for (j = 0; j < 4; ++j) pt->N[k][a][j] = gp->b[k][a][j] * Lp[d + (j & 1)];
-            if (k < 2)
-                for (j = 0; j < 2; ++j) pt->H[k][a][j] = gp->l[k][a][j] * Lp[d];
-        }
-    }
-}
-
-/* out = sum_j n[j] x_j over the four 3-vectors of x (r1, r1', r2, r2') */
-static inline void vlbe__a3_sum(const vlbe__a3_lay *ly, const vlbe_real *n, const vlbe_real *x,
-                                vlbe_real *out)
-{
-    int j, c;
-    for (c = 0; c < 3; ++c) out[c] = VLBE_R(0.0);
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < 3; ++c) out[c] += n[j] * x[ly->e[j] + c];
-}
-
-/* sum_j h[j] x_th_j over the two spin angles (0 without spin) */
-static inline vlbe_real vlbe__a3_tsum(const vlbe__a3_lay *ly, const vlbe_real *h,
-                                      const vlbe_real *x)
-{
-    return ly->spin ? h[0] * x[ly->th[0]] + h[1] * x[ly->th[1]] : VLBE_R(0.0);
-}
-
-/* The degree-weighted force (standard row degrees: 1 for r and theta, 2 for
-   slopes, 0 for p) */
-static inline void vlbe__a3_degree(const vlbe__a3_lay *ly, const vlbe_real *F, vlbe_real *dF)
-{
-    int j, c;
-    for (j = 0; j < ly->n; ++j) dF[j] = F[j];
-    for (j = 1; j < 4; j += 2)
-        for (c = 0; c < 3; ++c) dF[ly->e[j] + c] *= VLBE_R(2.0);
-    dF[ly->p[0]] = dF[ly->p[1]] = VLBE_R(0.0);
-}
-
-/* p-columns of K by the scaling identity (vlbe__ale_pcols for this layout) */
-static inline void vlbe__a3_pcols(const vlbe__a3_lay *ly, vlbe_real L, int pm,
-                                  const vlbe_real *dF, const vlbe_real *pd, const vlbe_real *q,
-                                  const vlbe_real *u, vlbe_real *K, const vlbe_real *D)
-{
-    const int n = ly->n;
-    int i, j, c;
-    for (i = 0; i < n; ++i) {
-        const vlbe_real *Ki = K + i * n, *Di = D + i * n;
-        vlbe_real s = dF[i] - pd[0] * Di[ly->p[0]] - pd[1] * Di[ly->p[1]];
-        for (j = 1; j < 4; j += 2)
-            for (c = 0; c < 3; ++c) {
-                const int cj = ly->e[j] + c;
-                s += Ki[cj] * q[cj] + Di[cj] * u[cj];
-            }
-        s /= L;
-        K[i * n + ly->p[0]] = (pm & 1) ? -s : VLBE_R(0.0);
-        K[i * n + ly->p[1]] = (pm & 2) ? s : VLBE_R(0.0);
-    }
-}
-
-/* [v]x applied: out = v x u, and the matrix rows of [v]x */
-static inline void vlbe__a3_skew(const vlbe_real *v, vlbe_real *S)
-{
-    S[0] = VLBE_R(0.0), S[1] = -v[2], S[2] = v[1];
-    S[3] = v[2], S[4] = VLBE_R(0.0), S[5] = -v[0];
-    S[6] = -v[1], S[7] = v[0], S[8] = VLBE_R(0.0);
-}
-
-/* Curvature-vector stress at one point.  a = r', b = r'', ad, bd their
-   material rates (NULL: undamped), S = EJ, cS = c_kap EJ: sigma = S k +
-   cS k'.  Adds to G (7: r', r'', phi) the gradient k_y^T sigma and, with
-   A, Ad (7 x 7, row-major), d(k_y^T sigma)/dy at fixed rates and
-   d/dy' = cS k_y^T k_y.  *kk = |k|^2.  VLBE_ESINGULAR for |r'|^2 <= eps. */
-static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
-                                        const vlbe_real *ad, const vlbe_real *bd, vlbe_real S,
-                                        vlbe_real cS, vlbe_real *G, vlbe_real *A, vlbe_real *Ad,
-                                        vlbe_real *kk)
-{
-    const vlbe_real g = vlbe_v3_dot(a, a);
-    vlbe_real h, h5, s[3], k[3], sig[3], tau, bs[3], sa[3], ky[18];
-    int i, j, c;
-    if (!(g > VLBE_EPS)) return VLBE_ESINGULAR;
-    h5 = VLBE_R(1.0) / g;
-    h = h5 * vlbe_sqrt(h5); /* g^-3/2 */
-    h5 = h * h5;            /* g^-5/2 */
-    vlbe_v3_cross(a, b, s);
-    for (c = 0; c < 3; ++c) sig[c] = k[c] = s[c] * h;
-    if (kk) *kk = vlbe_v3_dot(k, k);
-    for (c = 0; c < 3; ++c) sig[c] *= S;
-    {
-        vlbe_real sd[3] = {0, 0, 0}, t[3], ga = VLBE_R(0.0), hd = VLBE_R(0.0);
-        if (ad && cS != VLBE_R(0.0)) {
-            vlbe_v3_cross(ad, b, sd);
-            vlbe_v3_cross(a, bd, t);
-            for (c = 0; c < 3; ++c) sd[c] += t[c];
-            ga = vlbe_v3_dot(a, ad);
-            hd = -VLBE_R(3.0) * h5 * ga;
-            for (c = 0; c < 3; ++c) sig[c] += cS * (sd[c] * h + s[c] * hd);
-        }
-        tau = vlbe_v3_dot(sig, s);
-        vlbe_v3_cross(b, sig, bs);
-        vlbe_v3_cross(sig, a, sa);
-        for (c = 0; c < 3; ++c) {
-            G[c] += h * bs[c] - VLBE_R(3.0) * h5 * tau * a[c];
-            G[3 + c] += h * sa[c];
-        }
-        if (!A) return VLBE_OK;
-        /* k_y = [k_a | k_b], k_a = -h [b]x - 3 h5 s a^T, k_b = h [a]x */
-        {
-            vlbe_real Sb[9], Sa[9];
-            vlbe__a3_skew(b, Sb);
-            vlbe__a3_skew(a, Sa);
-            for (i = 0; i < 3; ++i)
-                for (j = 0; j < 3; ++j) {
-                    ky[i * 6 + j] = -h * Sb[i * 3 + j] - VLBE_R(3.0) * h5 * s[i] * a[j];
-                    ky[i * 6 + 3 + j] = h * Sa[i * 3 + j];
-                }
-        }
-        /* Hessian of sigma . k at fixed sigma:
-           f_aa = -3 h5 (bs a^T + a bs^T) + 15 h5/g tau a a^T - 3 h5 tau I,
-           f_ab = -h [sigma]x - 3 h5 a sa^T,  f_ba = f_ab^T,  f_bb = 0 */
-        {
-            vlbe_real Ss[9];
-            const vlbe_real h7 = VLBE_R(15.0) * h5 / g * tau;
-            vlbe__a3_skew(sig, Ss);
-            for (i = 0; i < 3; ++i)
-                for (j = 0; j < 3; ++j) {
-                    vlbe_real faa = -VLBE_R(3.0) * h5 * (bs[i] * a[j] + a[i] * bs[j]) +
-                                    h7 * a[i] * a[j];
-                    const vlbe_real fab = -h * Ss[i * 3 + j] - VLBE_R(3.0) * h5 * a[i] * sa[j];
-                    if (i == j) faa -= VLBE_R(3.0) * h5 * tau;
-                    A[i * 7 + j] += faa;
-                    A[i * 7 + 3 + j] += fab;
-                    A[(3 + j) * 7 + i] += fab;
-                }
-        }
-        /* + k_y^T (S k_y + cS dk'/dy): dk'/da = -h [bd]x - 3 h5 sd a^T - hd [b]x
-           + s (15 h5/g ga a^T - 3 h5 ad^T), dk'/db = h [ad]x + hd [a]x */
-        {
-            vlbe_real W[18];
-            for (i = 0; i < 18; ++i) W[i] = S * ky[i];
-            if (ad && cS != VLBE_R(0.0)) {
-                vlbe_real Sbd[9], Sad[9], Sb[9], Sa[9];
-                const vlbe_real h7 = VLBE_R(15.0) * h5 / g * ga;
-                vlbe__a3_skew(bd, Sbd);
-                vlbe__a3_skew(ad, Sad);
-                vlbe__a3_skew(b, Sb);
-                vlbe__a3_skew(a, Sa);
-                for (i = 0; i < 3; ++i)
-                    for (j = 0; j < 3; ++j) {
-                        W[i * 6 + j] += cS * (-h * Sbd[i * 3 + j] -
-                                              VLBE_R(3.0) * h5 * sd[i] * a[j] -
-                                              hd * Sb[i * 3 + j] + s[i] * (h7 * a[j] -
-                                              VLBE_R(3.0) * h5 * ad[j]));
-                        W[i * 6 + 3 + j] += cS * (h * Sad[i * 3 + j] + hd * Sa[i * 3 + j]);
-                    }
-            }
-            for (i = 0; i < 6; ++i)
-                for (j = 0; j < 6; ++j) {
-                    vlbe_real t1 = VLBE_R(0.0), t2 = VLBE_R(0.0);
-                    for (c = 0; c < 3; ++c) {
-                        t1 += ky[c * 6 + i] * W[c * 6 + j];
-                        t2 += ky[c * 6 + i] * ky[c * 6 + j];
-                    }
-                    A[i * 7 + j] += t1;
-                    if (Ad) Ad[i * 7 + j] += cS * t2;
-                }
-        }
-    }
-    return VLBE_OK;
-}
-
-/* Axial, bending and twist terms at one strain point: Q -= w Z^T G with
-   Z = dz/dq, z = (r', r'', phi); with K: the e- and theta-columns of
-   -w d(Z^T G)/dq into K, -w Z^T Ad Z into D (all columns) and the degree
-   extras into dQ (see vlbe_ale3 notes). */
-static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlbe__a3_lay *ly,
-                                             const vlbe_ale_gp *gp, const vlbe_real *Lp, int pm,
-                                             const vlbe_real *pd, int bend, int twist, int damp,
-                                             const vlbe_real *q, const vlbe_real *qd,
-                                             vlbe_real *Q, vlbe_real *K, vlbe_real *D,
-                                             vlbe_real *dQ)
-{
-    const vlbe_ale3_mat *mt = &el->mat;
-    const int n = ly->n, jac = K != NULL, nz = bend ? 6 : 3;
-    const vlbe_real w = gp->w * Lp[5];
-    vlbe__a3_pt pt;
-    vlbe_real y[7], Y[2][7], yd[7], G[7] = {0, 0, 0, 0, 0, 0, 0}, Gx[7] = {0, 0, 0, 0, 0, 0, 0};
-    vlbe_real A[49], Ad[49], T[7][VLBE_ALE3_NQ], Nd[3][4], Hd[2];
-    int i, j, k, c, rows[7], nr = 0;
-    vlbe_status st;
-    vlbe__a3_pt_eval(gp, Lp, 1, bend ? 2 : 1, pm ? 3 : 1, &pt);
-    for (c = 0; c < 7; ++c) y[c] = yd[c] = Y[0][c] = Y[1][c] = VLBE_R(0.0);
-    vlbe__a3_sum(ly, pt.N[1][0], q, y);
-    if (bend) vlbe__a3_sum(ly, pt.N[2][0], q, y + 3);
-    if (twist) y[6] = vlbe__a3_tsum(ly, pt.H[1][0], q);
-    for (k = 0; k < 2; ++k)
-        if (pm & (1 << k)) {
-            vlbe__a3_sum(ly, pt.N[1][1 + k], q, Y[k]);
-            if (bend) vlbe__a3_sum(ly, pt.N[2][1 + k], q, Y[k] + 3);
-            if (twist) Y[k][6] = vlbe__a3_tsum(ly, pt.H[1][1 + k], q);
-        }
-    if (damp) {
-        vlbe__a3_sum(ly, pt.N[1][0], qd, yd);
-        if (bend) vlbe__a3_sum(ly, pt.N[2][0], qd, yd + 3);
-        if (twist) yd[6] = vlbe__a3_tsum(ly, pt.H[1][0], qd);
-        for (k = 0; k < 2; ++k)
-            for (c = 0; c < 7; ++c) yd[c] += pd[k] * Y[k][c];
-    }
-    if (jac)
-        for (i = 0; i < 49; ++i) A[i] = Ad[i] = VLBE_R(0.0);
-    if (mt->EA != VLBE_R(0.0)) {
-        const vlbe_real eps = VLBE_R(0.5) * (vlbe_v3_dot(y, y) - VLBE_R(1.0));
-        const vlbe_real cE = damp ? mt->c_eps * mt->EA : VLBE_R(0.0);
-        const vlbe_real sig = mt->EA * eps + cE * vlbe_v3_dot(y, yd);
-        for (c = 0; c < 3; ++c) G[c] += sig * y[c];
-        if (jac) {
-            for (i = 0; i < 3; ++i) {
-                for (j = 0; j < 3; ++j) {
-                    A[i * 7 + j] += y[i] * (mt->EA * y[j] + cE * yd[j]);
-                    Ad[i * 7 + j] += cE * y[i] * y[j];
-                }
-                A[i * 7 + i] += sig;
-                Gx[i] += (VLBE_R(4.0) * sig + mt->EA) * y[i];
-            }
-        }
-    }
-    if (bend) {
-        const vlbe_real cB = damp ? mt->c_kap * mt->EJ : VLBE_R(0.0);
-        if ((st = vlbe__a3_bend(y, y + 3, damp ? yd : NULL, damp ? yd + 3 : NULL, mt->EJ, cB, G,
-                                jac ? A : NULL, jac ? Ad : NULL, NULL)) != VLBE_OK)
-            return st;
-    }
-    if (twist) {
-        const vlbe_real cT = damp ? mt->c_phi * mt->GI : VLBE_R(0.0);
-        const vlbe_real sig = mt->GI * y[6] + cT * yd[6];
-        G[6] += sig;
-        if (jac) {
-            A[48] += mt->GI;
-            Ad[48] += cT;
-            Gx[6] += VLBE_R(2.0) * sig;
-        }
-    }
-    /* Q -= w Z^T G */
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < 3; ++c) {
-            vlbe_real v = pt.N[1][0][j] * G[c];
-            if (bend) v += pt.N[2][0][j] * G[3 + c];
-            Q[ly->e[j] + c] -= w * v;
-        }
-    if (twist)
-        for (j = 0; j < 2; ++j) Q[ly->th[j]] -= w * pt.H[1][0][j] * G[6];
-    for (k = 0; k < 2; ++k)
-        if (pm & (1 << k)) {
-            vlbe_real v = VLBE_R(0.0);
-            for (c = 0; c < nz; ++c) v += Y[k][c] * G[c];
-            if (twist) v += Y[k][6] * G[6];
-            Q[ly->p[k]] -= w * v;
-        }
-    if (!jac) return VLBE_OK;
-
-    /* degree extras: dQ += w Z^T Gx */
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < 3; ++c) dQ[ly->e[j] + c] += w * pt.N[1][0][j] * Gx[c];
-    if (twist)
-        for (j = 0; j < 2; ++j) dQ[ly->th[j]] += w * pt.H[1][0][j] * Gx[6];
-    for (k = 0; k < 2; ++k)
-        if (pm & (1 << k)) dQ[ly->p[k]] += w * (vlbe_v3_dot(Y[k], Gx) + Y[k][6] * Gx[6]);
-
-    /* the rows of z in use */
-    for (c = 0; c < nz; ++c) rows[nr++] = c;
-    if (twist) rows[nr++] = 6;
-    /* rate basis: d(material rate of z)/de_j at fixed e' = sum_k p_k' dZ/dp_k */
-    for (j = 0; j < 4; ++j) {
-        Nd[1][j] = Nd[2][j] = VLBE_R(0.0);
-        for (k = 0; k < 2; ++k)
-            if (damp && (pm & (1 << k))) {
-                Nd[1][j] += pd[k] * pt.N[1][1 + k][j];
-                if (bend) Nd[2][j] += pd[k] * pt.N[2][1 + k][j];
-            }
-    }
-    for (j = 0; j < 2; ++j) {
-        Hd[j] = VLBE_R(0.0);
-        for (k = 0; k < 2; ++k)
-            if (damp && twist && (pm & (1 << k))) Hd[j] += pd[k] * pt.H[1][1 + k][j];
-    }
-    /* K: T = A Z_e + Ad Zd_e on the e- and theta-columns */
-    for (i = 0; i < nr; ++i) {
-        const vlbe_real *Ai = A + rows[i] * 7, *Adi = Ad + rows[i] * 7;
-        vlbe_real *Ti = T[i];
-        for (j = 0; j < 4; ++j)
-            for (c = 0; c < 3; ++c) {
-                vlbe_real v = Ai[c] * pt.N[1][0][j] + Adi[c] * Nd[1][j];
-                if (bend) v += Ai[3 + c] * pt.N[2][0][j] + Adi[3 + c] * Nd[2][j];
-                Ti[ly->e[j] + c] = v;
-            }
-        if (ly->spin)
-            for (j = 0; j < 2; ++j)
-                Ti[ly->th[j]] = twist ? Ai[6] * pt.H[1][0][j] + Adi[6] * Hd[j] : VLBE_R(0.0);
-        Ti[ly->p[0]] = Ti[ly->p[1]] = VLBE_R(0.0);
-    }
-    /* K rows -= w Z^T T (the p-columns of T are zero: filled later) */
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < 3; ++c) {
-            vlbe_real *Kr = K + (ly->e[j] + c) * n;
-            const vlbe_real m1 = w * pt.N[1][0][j], m2 = bend ? w * pt.N[2][0][j] : VLBE_R(0.0);
-            const vlbe_real *T1 = T[c], *T2 = T[bend ? 3 + c : c];
-            for (i = 0; i < n; ++i) Kr[i] -= m1 * T1[i] + m2 * T2[i];
-        }
-    if (twist)
-        for (j = 0; j < 2; ++j) {
-            vlbe_real *Kr = K + ly->th[j] * n;
-            const vlbe_real m = w * pt.H[1][0][j], *T6 = T[nr - 1];
-            for (i = 0; i < n; ++i) Kr[i] -= m * T6[i];
-        }
-    for (k = 0; k < 2; ++k)
-        if (pm & (1 << k)) {
-            vlbe_real *Kr = K + ly->p[k] * n;
-            for (c = 0; c < nr; ++c) {
-                const vlbe_real m = w * Y[k][rows[c]], *Tc = T[c];
-                for (i = 0; i < n; ++i) Kr[i] -= m * Tc[i];
-            }
-            /* mix: d(Y_k . G)/de at fixed G */
-            for (j = 0; j < 4; ++j)
-                for (c = 0; c < 3; ++c) {
-                    vlbe_real v = pt.N[1][1 + k][j] * G[c];
-                    if (bend) v += pt.N[2][1 + k][j] * G[3 + c];
-                    Kr[ly->e[j] + c] -= w * v;
-                }
-            if (twist)
-                for (j = 0; j < 2; ++j) Kr[ly->th[j]] -= w * pt.H[1][1 + k][j] * G[6];
-        }
-    if (!damp) return VLBE_OK;
-    /* D -= w Z^T Ad Z: T = Ad Z on every column */
-    for (i = 0; i < nr; ++i) {
-        const vlbe_real *Adi = Ad + rows[i] * 7;
-        vlbe_real *Ti = T[i];
-        for (j = 0; j < 4; ++j)
-            for (c = 0; c < 3; ++c) {
-                vlbe_real v = Adi[c] * pt.N[1][0][j];
-                if (bend) v += Adi[3 + c] * pt.N[2][0][j];
-                Ti[ly->e[j] + c] = v;
-            }
-        if (ly->spin)
-            for (j = 0; j < 2; ++j) Ti[ly->th[j]] = twist ? Adi[6] * pt.H[1][0][j] : VLBE_R(0.0);
-        for (k = 0; k < 2; ++k) {
-            vlbe_real v = VLBE_R(0.0);
-            if (pm & (1 << k)) {
-                for (c = 0; c < nz; ++c) v += Adi[c] * Y[k][c];
-                if (twist) v += Adi[6] * Y[k][6];
-            }
-            Ti[ly->p[k]] = v;
-        }
-    }
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < 3; ++c) {
-            vlbe_real *Dr = D + (ly->e[j] + c) * n;
-            const vlbe_real m1 = w * pt.N[1][0][j], m2 = bend ? w * pt.N[2][0][j] : VLBE_R(0.0);
-            const vlbe_real *T1 = T[c], *T2 = T[bend ? 3 + c : c];
-            for (i = 0; i < n; ++i) Dr[i] -= m1 * T1[i] + m2 * T2[i];
-        }
-    if (twist)
-        for (j = 0; j < 2; ++j) {
-            vlbe_real *Dr = D + ly->th[j] * n;
-            const vlbe_real m = w * pt.H[1][0][j], *T6 = T[nr - 1];
-            for (i = 0; i < n; ++i) Dr[i] -= m * T6[i];
-        }
-    for (k = 0; k < 2; ++k)
-        if (pm & (1 << k)) {
-            vlbe_real *Dr = D + ly->p[k] * n;
-            for (c = 0; c < nr; ++c) {
-                const vlbe_real m = w * Y[k][rows[c]], *Tc = T[c];
-                for (i = 0; i < n; ++i) Dr[i] -= m * Tc[i];
-            }
-        }
-    return VLBE_OK;
-}
-
-/* Inertia-type field term at one mass point: Q += w G^T z for the position
-   field (z = f - rhoA eta_p, eqs. 17, 29, 44) and the spin field (z =
-   -rhoI eta_p); with K: e/theta-columns of K, and D (e', theta' and p'
-   columns).  pt holds k = 0 with all partials when pm != 0. */
-static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe__a3_lay *ly,
-                                       const vlbe__a3_pt *pt, int pm, const vlbe_real *pd,
-                                       vlbe_real w, const vlbe_real *q, const vlbe_real *qd,
-                                       vlbe_real *Q, vlbe_real *K, vlbe_real *D)
-{
-    static const int a2[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
-    const int n = ly->n;
-    vlbe_real X[2][3], V[2][3], Xkl[3][3], z[3], c4[4], d4[4];
-    vlbe_real Xt[2] = {0, 0}, Vt[2] = {0, 0}, Xtl[3] = {0, 0, 0}, zt = VLBE_R(0.0), c2[2], d2[2];
-    int i, j, k, l, c;
-    const int spin = ly->spin && mt->rhoI != VLBE_R(0.0) && pm;
-    for (c = 0; c < 3; ++c) z[c] = mt->f[c];
-    if (pm) {
-        for (k = 0; k < 2; ++k) {
-            vlbe__a3_sum(ly, pt->N[0][1 + k], q, X[k]);
-            vlbe__a3_sum(ly, pt->N[0][1 + k], qd, V[k]);
-            if (spin) {
-                Xt[k] = vlbe__a3_tsum(ly, pt->H[0][1 + k], q);
-                Vt[k] = vlbe__a3_tsum(ly, pt->H[0][1 + k], qd);
-            }
-        }
-        for (k = 0; k < 3; ++k) {
-            vlbe__a3_sum(ly, pt->N[0][VLBE_DA_11 + k], q, Xkl[k]);
-            if (spin) Xtl[k] = vlbe__a3_tsum(ly, pt->H[0][VLBE_DA_11 + k], q);
-        }
-        for (c = 0; c < 3; ++c)
-            z[c] -= mt->rhoA * (VLBE_R(2.0) * (pd[0] * V[0][c] + pd[1] * V[1][c]) +
-                                pd[0] * pd[0] * Xkl[0][c] +
-                                VLBE_R(2.0) * pd[0] * pd[1] * Xkl[1][c] +
-                                pd[1] * pd[1] * Xkl[2][c]);
-        if (spin)
-            zt = -mt->rhoI * (VLBE_R(2.0) * (pd[0] * Vt[0] + pd[1] * Vt[1]) +
-                              pd[0] * pd[0] * Xtl[0] + VLBE_R(2.0) * pd[0] * pd[1] * Xtl[1] +
-                              pd[1] * pd[1] * Xtl[2]);
-    }
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < 3; ++c) Q[ly->e[j] + c] += w * pt->N[0][0][j] * z[c];
-    if (spin)
-        for (j = 0; j < 2; ++j) Q[ly->th[j]] += w * pt->H[0][0][j] * zt;
-    for (k = 0; k < 2; ++k)
-        if (pm & (1 << k)) Q[ly->p[k]] += w * (vlbe_v3_dot(X[k], z) + Xt[k] * zt);
-    if (!K || !pm) return;
-    /* dz/de_j = c_j I, dz/de'_j = d_j I (the same for theta with rhoI) */
-    for (j = 0; j < 4; ++j) {
-        c4[j] = -mt->rhoA * (pd[0] * pd[0] * pt->N[0][VLBE_DA_11][j] +
-                             VLBE_R(2.0) * pd[0] * pd[1] * pt->N[0][VLBE_DA_12][j] +
-                             pd[1] * pd[1] * pt->N[0][VLBE_DA_22][j]);
-        d4[j] = -mt->rhoA * VLBE_R(2.0) * (pd[0] * pt->N[0][1][j] + pd[1] * pt->N[0][2][j]);
-    }
-    for (j = 0; j < 2; ++j) {
-        c2[j] = d2[j] = VLBE_R(0.0);
-        if (spin) {
-            c2[j] = -mt->rhoI * (pd[0] * pd[0] * pt->H[0][VLBE_DA_11][j] +
-                                 VLBE_R(2.0) * pd[0] * pd[1] * pt->H[0][VLBE_DA_12][j] +
-                                 pd[1] * pd[1] * pt->H[0][VLBE_DA_22][j]);
-            d2[j] = -mt->rhoI * VLBE_R(2.0) * (pd[0] * pt->H[0][1][j] + pd[1] * pt->H[0][2][j]);
-        }
-    }
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < 3; ++c) {
-            const int cj = ly->e[j] + c;
-            for (i = 0; i < 4; ++i) {
-                const int r = ly->e[i] + c;
-                K[r * n + cj] += w * pt->N[0][0][i] * c4[j];
-                D[r * n + cj] += w * pt->N[0][0][i] * d4[j];
-            }
-            for (k = 0; k < 2; ++k)
-                if (pm & (1 << k)) {
-                    K[ly->p[k] * n + cj] += w * (pt->N[0][1 + k][j] * z[c] + c4[j] * X[k][c]);
-                    D[ly->p[k] * n + cj] += w * d4[j] * X[k][c];
-                }
-        }
-    if (spin)
-        for (j = 0; j < 2; ++j) {
-            const int cj = ly->th[j];
-            for (i = 0; i < 2; ++i) {
-                K[ly->th[i] * n + cj] += w * pt->H[0][0][i] * c2[j];
-                D[ly->th[i] * n + cj] += w * pt->H[0][0][i] * d2[j];
-            }
-            for (k = 0; k < 2; ++k)
-                if (pm & (1 << k)) {
-                    K[ly->p[k] * n + cj] += w * (pt->H[0][1 + k][j] * zt + c2[j] * Xt[k]);
-                    D[ly->p[k] * n + cj] += w * d2[j] * Xt[k];
-                }
-        }
-    /* p'-columns: dz/dp_k' = -2 rho (V_k + sum_l p_l' X_kl) */
-    for (k = 0; k < 2; ++k)
-        if (pm & (1 << k)) {
-            const int pk = ly->p[k];
-            vlbe_real dz[3], dzt = VLBE_R(0.0);
-            for (c = 0; c < 3; ++c)
-                dz[c] = -VLBE_R(2.0) * mt->rhoA *
-                        (V[k][c] + pd[0] * Xkl[a2[k][0] - VLBE_DA_11][c] +
-                         pd[1] * Xkl[a2[k][1] - VLBE_DA_11][c]);
-            if (spin)
-                dzt = -VLBE_R(2.0) * mt->rhoI *
-                      (Vt[k] + pd[0] * Xtl[a2[k][0] - VLBE_DA_11] +
-                       pd[1] * Xtl[a2[k][1] - VLBE_DA_11]);
-            for (j = 0; j < 4; ++j)
-                for (c = 0; c < 3; ++c) D[(ly->e[j] + c) * n + pk] += w * pt->N[0][0][j] * dz[c];
-            if (spin)
-                for (j = 0; j < 2; ++j) D[ly->th[j] * n + pk] += w * pt->H[0][0][j] * dzt;
-            for (l = 0; l < 2; ++l)
-                if (pm & (1 << l)) D[ly->p[l] * n + pk] += w * (vlbe_v3_dot(X[l], dz) + Xt[l] * dzt);
-        }
-}
-
-static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__a3_lay *ly,
-                                          unsigned mode, const vlbe_real *q, const vlbe_real *qd,
-                                          vlbe_real *Q, vlbe_real *K, vlbe_real *D)
-{
-    const vlbe_ale3_mat *mt = &el->mat;
-    const int pm = vlbe__ale_pmask(mode), n = ly->n;
-    const int damp = !(mode & VLBE_ALE_NO_DAMP);
-    const int bend = !(mode & VLBE_ALE_NO_BEND) && mt->EJ != VLBE_R(0.0);
-    const int twist = ly->spin && !(mode & VLBE_ALE3_NO_TWIST) && mt->GI != VLBE_R(0.0);
-    const vlbe_real L = q[ly->p[1]] - q[ly->p[0]];
-    vlbe_real pd[2], Lp[6], dQ[VLBE_ALE3_NQ], dQx[VLBE_ALE3_NQ];
-    vlbe__a3_pt pt;
-    vlbe_status st;
-    int g, i;
-    const int f0 = mt->f[0] != VLBE_R(0.0) || mt->f[1] != VLBE_R(0.0) || mt->f[2] != VLBE_R(0.0);
-    vlbe__ale_lpow(L, Lp);
-    pd[0] = (pm & 1) ? qd[ly->p[0]] : VLBE_R(0.0);
-    pd[1] = (pm & 2) ? qd[ly->p[1]] : VLBE_R(0.0);
-    for (i = 0; i < n; ++i) dQx[i] = VLBE_R(0.0);
-    if (pm || f0)
-        for (g = 0; g < el->rm.n; ++g) {
-            const vlbe_ale_gp *gp = &el->rm.g[g];
-            vlbe__a3_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
-            vlbe__a3_inertia_pt(mt, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
-        }
-    if (mt->EA != VLBE_R(0.0) || bend || twist)
-        for (g = 0; g < el->rs.n; ++g)
-            if ((st = vlbe__a3_strain_gp(el, ly, &el->rs.g[g], Lp, pm, pd, bend, twist, damp, q, qd,
-                                         Q, K, D, dQx)) != VLBE_OK)
-                return st;
-    if (K && pm) {
-        vlbe__a3_degree(ly, Q, dQ);
-        for (i = 0; i < n; ++i) dQ[i] += dQx[i];
-        vlbe__a3_pcols(ly, L, pm, dQ, pd, q, qd, K, D);
-    }
-    return VLBE_OK;
-}
-
-VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
-                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
-{
-    vlbe_real Qt[VLBE_ALE3_NQ], Kt[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Dt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
-    vlbe__a3_lay ly;
-    const int jac = K != NULL || D != NULL;
-    vlbe_status st;
-    int i, nn;
-    VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
-    mode |= el->flags;
-    vlbe__a3_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
-    nn = ly.n * ly.n;
-    for (i = 0; i < ly.n; ++i) Qt[i] = VLBE_R(0.0);
-    if (jac)
-        for (i = 0; i < nn; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
-    if ((st = vlbe__a3_forces(el, &ly, mode, q, qd, Qt, jac ? Kt : NULL, jac ? Dt : NULL)) !=
-        VLBE_OK)
-        return st;
-    for (i = 0; i < ly.n; ++i) Q[i] = Qt[i];
-    if (K)
-        for (i = 0; i < nn; ++i) K[i] = Kt[i];
-    if (D)
-        for (i = 0; i < nn; ++i) D[i] = Dt[i];
-    return VLBE_OK;
-}
-
-/* M(q) (eq. 28): w rhoA G_r^T G_r + w rhoI G_th^T G_th summed over the
-   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k]. */
-VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                    vlbe_real *VLBE_RESTRICT M)
-{
-    const vlbe_ale3_mat *mt = &el->mat;
-    vlbe__a3_lay ly;
-    vlbe__a3_pt pt;
-    vlbe_real Lp[6], L, X[2][3], Xt[2];
-    vlbe_status st;
-    int g, i, j, k, l, c, n, pm;
-    VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
-    mode |= el->flags;
-    vlbe__a3_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
-    n = ly.n;
-    pm = vlbe__ale_pmask(mode);
-    L = q[ly.p[1]] - q[ly.p[0]];
-    vlbe__ale_lpow(L, Lp);
-    for (i = 0; i < n * n; ++i) M[i] = VLBE_R(0.0);
-    for (g = 0; g < el->rm.n; ++g) {
-        const vlbe_real w = el->rm.g[g].w * L, wa = w * mt->rhoA, wi = w * mt->rhoI;
-        vlbe__a3_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, &pt);
-        for (k = 0; k < 2; ++k) {
-            Xt[k] = VLBE_R(0.0);
-            if (pm & (1 << k)) {
-                vlbe__a3_sum(&ly, pt.N[0][1 + k], q, X[k]);
-                Xt[k] = vlbe__a3_tsum(&ly, pt.H[0][1 + k], q);
-            }
-        }
-        for (i = 0; i < 4; ++i) {
-            const vlbe_real ni = wa * pt.N[0][0][i];
-            for (j = 0; j < 4; ++j)
-                for (c = 0; c < 3; ++c) M[(ly.e[i] + c) * n + ly.e[j] + c] += ni * pt.N[0][0][j];
-            for (k = 0; k < 2; ++k)
-                if (pm & (1 << k))
-                    for (c = 0; c < 3; ++c) {
-                        M[(ly.e[i] + c) * n + ly.p[k]] += ni * X[k][c];
-                        M[ly.p[k] * n + ly.e[i] + c] += ni * X[k][c];
-                    }
-        }
-        if (ly.spin)
-            for (i = 0; i < 2; ++i) {
-                const vlbe_real hi = wi * pt.H[0][0][i];
-                for (j = 0; j < 2; ++j) M[ly.th[i] * n + ly.th[j]] += hi * pt.H[0][0][j];
-                for (k = 0; k < 2; ++k)
-                    if (pm & (1 << k)) {
-                        M[ly.th[i] * n + ly.p[k]] += hi * Xt[k];
-                        M[ly.p[k] * n + ly.th[i]] += hi * Xt[k];
-                    }
-            }
-        for (k = 0; k < 2; ++k)
-            for (l = 0; l < 2; ++l)
-                if ((pm & (1 << k)) && (pm & (1 << l)))
-                    M[ly.p[k] * n + ly.p[l]] += wa * vlbe_v3_dot(X[k], X[l]) + wi * Xt[k] * Xt[l];
-    }
-    return VLBE_OK;
-}
-
-/* E = {T, U, V}: kinetic energy q'^T M q' / 2, strain energy int (EA eps^2
-   + EJ |k|^2 + GI phi^2)/2 dp, load potential -int f . r dp. */
-VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
-{
-    const vlbe_ale3_mat *mt = &el->mat;
-    vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Lp[6], L, T = VLBE_R(0.0), U = VLBE_R(0.0);
-    vlbe_real V = VLBE_R(0.0);
-    vlbe__a3_lay ly;
-    vlbe__a3_pt pt;
-    vlbe_status st;
-    int g, i, j, n, bend, twist;
-    VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
-    mode |= el->flags;
-    vlbe__a3_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
-    if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
-    n = ly.n;
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) T += VLBE_R(0.5) * qd[i] * M[i * n + j] * qd[j];
-    bend = !(mode & VLBE_ALE_NO_BEND) && mt->EJ != VLBE_R(0.0);
-    twist = ly.spin && !(mode & VLBE_ALE3_NO_TWIST) && mt->GI != VLBE_R(0.0);
-    L = q[ly.p[1]] - q[ly.p[0]];
-    vlbe__ale_lpow(L, Lp);
-    for (g = 0; g < el->rm.n; ++g) {
-        vlbe_real r[3];
-        vlbe__a3_pt_eval(&el->rm.g[g], Lp, 0, 0, 1, &pt);
-        vlbe__a3_sum(&ly, pt.N[0][0], q, r);
-        V -= el->rm.g[g].w * L * vlbe_v3_dot(mt->f, r);
-    }
-    for (g = 0; g < el->rs.n; ++g) {
-        const vlbe_real w = el->rs.g[g].w * L;
-        vlbe_real a[3], b[3], G[7], kk = VLBE_R(0.0), eps, phi;
-        vlbe__a3_pt_eval(&el->rs.g[g], Lp, 1, bend ? 2 : 1, 1, &pt);
-        vlbe__a3_sum(&ly, pt.N[1][0], q, a);
-        eps = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
-        U += w * VLBE_R(0.5) * mt->EA * eps * eps;
-        if (bend) {
-            vlbe__a3_sum(&ly, pt.N[2][0], q, b);
-            if ((st = vlbe__a3_bend(a, b, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL,
-                                    &kk)) != VLBE_OK)
-                return st;
-            U += w * VLBE_R(0.5) * mt->EJ * kk;
-        }
-        if (twist) {
-            phi = vlbe__a3_tsum(&ly, pt.H[1][0], q);
-            U += w * VLBE_R(0.5) * mt->GI * phi * phi;
-        }
-    }
-    E[0] = T;
-    E[1] = U;
-    E[2] = V;
-    return VLBE_OK;
-}
-
-/* r(p), r'(p) and theta(p) of one element (each may be NULL; theta is 0
-   without spin); p may lie outside [p1, p2] (extrapolated). */
-VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_real p,
-                                     vlbe_real *VLBE_RESTRICT r, vlbe_real *VLBE_RESTRICT rp,
-                                     vlbe_real *VLBE_RESTRICT th)
-{
-    vlbe__a3_lay ly;
-    vlbe_herm_ale b;
-    vlbe_status st;
-    VLBE_ASSERT(q != NULL);
-    vlbe__a3_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
-    if (!isfinite(p)) return VLBE_ENONFINITE;
-    vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 1, 0, &b);
-    if (r) vlbe__a3_sum(&ly, b.h[0][0], q, r);
-    if (rp) vlbe__a3_sum(&ly, b.h[1][0], q, rp);
-    if (th) *th = vlbe__a3_tsum(&ly, b.l[0][0], q);
-    return VLBE_OK;
-}
-
-/* Axial strain, curvature kappa = |k| (eq. 22) and twist (eq. 23) at p
-   (each output may be NULL; kappa needs |r'|^2 > eps). */
-VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_real p,
-                                      vlbe_real *VLBE_RESTRICT eps, vlbe_real *VLBE_RESTRICT kap,
-                                      vlbe_real *VLBE_RESTRICT phi)
-{
-    vlbe__a3_lay ly;
-    vlbe_herm_ale b;
-    vlbe_real a[3], r2[3], G[7] = {0, 0, 0, 0, 0, 0, 0}, kk = VLBE_R(0.0);
-    vlbe_status st;
-    VLBE_ASSERT(q != NULL);
-    vlbe__a3_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
-    if (!isfinite(p)) return VLBE_ENONFINITE;
-    vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 2, 0, &b);
-    vlbe__a3_sum(&ly, b.h[1][0], q, a);
-    vlbe__a3_sum(&ly, b.h[2][0], q, r2);
-    if (kap &&
-        (st = vlbe__a3_bend(a, r2, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL, &kk)) !=
-            VLBE_OK)
-        return st;
-    if (eps) *eps = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
-    if (kap) *kap = vlbe_sqrt(kk);
-    if (phi) *phi = vlbe__a3_tsum(&ly, b.l[1][0], q);
-    return VLBE_OK;
-}
-
-/* A point load at material point pf in [p1, p2] on the position field
-   (F, 3 components: eq. 45) or on the spin field (torque T about the
-   axis: eq. 46): Q += S(pf)^T F, K += d/dq (K may be NULL). */
-static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q, vlbe_real pf,
-                                              const vlbe_real *F, vlbe_real T, int torque,
-                                              vlbe_real *Q, vlbe_real *K)
-{
-    static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
-    vlbe__a3_lay ly;
-    vlbe_herm_ale b;
-    vlbe_real x[3];
-    vlbe_status st;
-    int j, k, l, c, n;
-    vlbe__a3_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
-    if (!isfinite(pf) || (torque ? !isfinite(T) : !vlbe_all_finite(F, 3))) return VLBE_ENONFINITE;
-    if (torque && !ly.spin) return VLBE_EARG;
-    if (pf < q[ly.p[0]] || pf > q[ly.p[1]]) return VLBE_EBOUND;
-    n = ly.n;
-    vlbe_herm_ale_eval(pf, q[ly.p[0]], q[ly.p[1]], 0, 2, &b);
-    if (torque) {
-        for (j = 0; j < 2; ++j) Q[ly.th[j]] += b.l[0][0][j] * T;
-        for (k = 0; k < 2; ++k) Q[ly.p[k]] += vlbe__a3_tsum(&ly, b.l[0][1 + k], q) * T;
-    } else {
-        for (j = 0; j < 4; ++j)
-            for (c = 0; c < 3; ++c) Q[ly.e[j] + c] += b.h[0][0][j] * F[c];
-        for (k = 0; k < 2; ++k) {
-            vlbe__a3_sum(&ly, b.h[0][1 + k], q, x);
-            Q[ly.p[k]] += vlbe_v3_dot(x, F);
-        }
-    }
-    if (!K) return VLBE_OK;
-    for (k = 0; k < 2; ++k) {
-        const int pk = ly.p[k];
-        if (torque)
-            for (j = 0; j < 2; ++j) {
-                const vlbe_real h = b.l[0][1 + k][j] * T;
-                K[ly.th[j] * n + pk] += h;
-                K[pk * n + ly.th[j]] += h;
-            }
-        else
-            for (j = 0; j < 4; ++j)
-                for (c = 0; c < 3; ++c) {
-                    const vlbe_real h = b.h[0][1 + k][j] * F[c];
-                    K[(ly.e[j] + c) * n + pk] += h;
-                    K[pk * n + ly.e[j] + c] += h;
-                }
-        for (l = 0; l < 2; ++l) {
-            if (torque)
-                K[pk * n + ly.p[l]] += vlbe__a3_tsum(&ly, b.l[0][dd[k][l]], q) * T;
-            else {
-                vlbe__a3_sum(&ly, b.h[0][dd[k][l]], q, x);
-                K[pk * n + ly.p[l]] += vlbe_v3_dot(x, F);
-            }
-        }
-    }
-    return VLBE_OK;
-}
-
-/* A constant global force F (3) at material point pf (eq. 45).  Every row
-   and column of the layout is written, whatever the FIX_P flags. */
-VLBE_API vlbe_status vlbe_ale3_point_force(unsigned mode, const vlbe_real *q, vlbe_real pf,
-                                           const vlbe_real *F, vlbe_real *VLBE_RESTRICT Q,
-                                           vlbe_real *VLBE_RESTRICT K)
-{
-    VLBE_ASSERT(q != NULL && F != NULL && Q != NULL);
-    return vlbe__a3_point_load(mode, q, pf, F, VLBE_R(0.0), 0, Q, K);
-}
-
-/* A torque T about the beam axis at material point pf, acting on the spin
-   angle (eq. 46); VLBE_EARG without spin. */
-VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, vlbe_real pf,
-                                            vlbe_real T, vlbe_real *VLBE_RESTRICT Q,
-                                            vlbe_real *VLBE_RESTRICT K)
-{
-    VLBE_ASSERT(q != NULL && Q != NULL);
-    return vlbe__a3_point_load(mode, q, pf, NULL, T, 1, Q, K);
 }
 
 #endif /* VLBE_ANCF_ALE_H */
