@@ -3234,6 +3234,11 @@ VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, v
 #define VLBE_ALE_CON_SLIDE_D 7   /* sliding node: |r'(1)| = |r'(2)| (eq. 40)    (1) */
 #define VLBE_ALE_CON_SLOPE_ANGLE 8 /* r'_node x (cos a, sin a) = 0, a(t) = v0 + v1 t +
                                       v2 t^2/2 or the chain's afun (slope `which`) (1) */
+#define VLBE_ALE_CON_SPIN 9      /* 3D with spin: theta_node = v0 + v1 t + v2 t^2/2
+                                    (a prescribed spin angle, or rate v1)       (1) */
+/* In a 3D chain (vlbe_ale_chain_init3) POS and SLOPE have 3 rows (v[0..2]:
+   a spherical joint, eq. 50 of [V]; POS + SLOPE: a clamp), and SLOPE_DIR,
+   SLOPE_ANGLE, SLIDE_C, SLIDE_D and sliding nodes are planar only. */
 
 typedef struct vlbe_ale_node {
     int pmode;     /* VLBE_ALE_PFIXED / PPRESCRIBED / PFREE                          */
@@ -3254,17 +3259,21 @@ typedef struct vlbe_ale_con {
 
 /* A chain: nodes 0..nn-1, element e between nodes e and e+1 with increasing
    material coordinates.  Global coordinates node by node:
-   [x, y, x', y' (, x'(2), y'(2) if sliding) (, p if free)].  The arrays are
-   the caller's; the chain never allocates. */
+   planar  [x, y, x', y' (, x'(2), y'(2) if sliding) (, p if free)],
+   3D      [r(3), r'(3) (, theta with spin) (, p if free)]
+   (vlbe_ale_chain_init3: a chain of vlbe_ale3_elem).  The arrays are the
+   caller's; the chain never allocates. */
 typedef struct vlbe_ale_chain {
-    const vlbe_ale_elem *el;
+    const vlbe_ale_elem *el;    /* planar element type (NULL in a 3D chain)      */
+    const vlbe_ale3_elem *el3;  /* 3D element type (NULL in a planar chain)      */
+    int d, spin;         /* set by layout: dimension 2 or 3, spin angle per node  */
     unsigned mode;       /* OR'ed into every element's mode                        */
     int nn, nn_cap;      /* nodes, capacity of node[]                              */
     vlbe_ale_node *node;
     int ncon, ncon_cap;
     vlbe_ale_con *con;
     int n, m;            /* coordinates, constraint equations (layout)             */
-    vlbe_real g[2];      /* gravity on the point masses                            */
+    vlbe_real g[3];      /* gravity on the point masses (g[2]: 3D only)            */
     vlbe_real Lmin;      /* element length below which callbacks fail (ELENGTH)   */
     /* optional p(t), p'(t), p''(t) of prescribed nodes; returns 0 on success */
     int (*pfun)(void *user, int node, vlbe_real t, vlbe_real *p3);
@@ -3280,6 +3289,9 @@ typedef struct vlbe_ale_chain {
 VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
                                          vlbe_ale_node *nodes, int nn, int nn_cap,
                                          vlbe_ale_con *cons, int ncon_cap);
+VLBE_API vlbe_status vlbe_ale_chain_init3(vlbe_ale_chain *ch, const vlbe_ale3_elem *el3,
+                                          vlbe_ale_node *nodes, int nn, int nn_cap,
+                                          vlbe_ale_con *cons, int ncon_cap);
 VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c);
 VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch);
 VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_real t,
@@ -3317,13 +3329,17 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
                                         const vlbe_real *lambda, vlbe_real *H);
 
 /* -- implementation ----------------------------------------------------- */
-VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
-                                         vlbe_ale_node *nodes, int nn, int nn_cap,
-                                         vlbe_ale_con *cons, int ncon_cap)
+static inline vlbe_status vlbe__ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
+                                               const vlbe_ale3_elem *el3, vlbe_ale_node *nodes,
+                                               int nn, int nn_cap, vlbe_ale_con *cons,
+                                               int ncon_cap)
 {
-    VLBE_ASSERT(ch != NULL && el != NULL && nodes != NULL);
+    VLBE_ASSERT(ch != NULL && (el != NULL) != (el3 != NULL) && nodes != NULL);
     if (nn < 2 || nn_cap < nn || ncon_cap < 0 || (ncon_cap > 0 && cons == NULL)) return VLBE_EARG;
     ch->el = el;
+    ch->el3 = el3;
+    ch->d = el3 ? 3 : 2;
+    ch->spin = el3 && !(el3->flags & VLBE_ALE3_NO_SPIN);
     ch->mode = 0;
     ch->nn = nn;
     ch->nn_cap = nn_cap;
@@ -3332,7 +3348,7 @@ VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem
     ch->ncon_cap = ncon_cap;
     ch->con = cons;
     ch->n = ch->m = 0;
-    ch->g[0] = ch->g[1] = VLBE_R(0.0);
+    ch->g[0] = ch->g[1] = ch->g[2] = VLBE_R(0.0);
     ch->Lmin = VLBE_R(0.0);
     ch->pfun = NULL;
     ch->afun = NULL;
@@ -3342,12 +3358,34 @@ VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem
     return VLBE_OK;
 }
 
-static inline int vlbe__ale_con_rows(const vlbe_ale_con *c)
+VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
+                                         vlbe_ale_node *nodes, int nn, int nn_cap,
+                                         vlbe_ale_con *cons, int ncon_cap)
 {
+    return vlbe__ale_chain_init(ch, el, NULL, nodes, nn, nn_cap, cons, ncon_cap);
+}
+
+/* A chain of 3D beam-shaft elements (the node layout follows the spin
+   switch of the element's flags and ch->mode at vlbe_ale_chain_layout). */
+VLBE_API vlbe_status vlbe_ale_chain_init3(vlbe_ale_chain *ch, const vlbe_ale3_elem *el3,
+                                          vlbe_ale_node *nodes, int nn, int nn_cap,
+                                          vlbe_ale_con *cons, int ncon_cap)
+{
+    return vlbe__ale_chain_init(ch, NULL, el3, nodes, nn, nn_cap, cons, ncon_cap);
+}
+
+/* rows of a constraint in a chain of dimension d (-1: not a type; 0: not
+   available in this dimension) */
+static inline int vlbe__ale_con_rows(const vlbe_ale_chain *ch, const vlbe_ale_con *c)
+{
+    const int d = ch->el3 ? 3 : 2, planar = ch->el3 == NULL;
     switch (c->type) {
-    case VLBE_ALE_CON_POS: case VLBE_ALE_CON_SLOPE: case VLBE_ALE_CON_SLIDE_C: return 2;
-    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_P: case VLBE_ALE_CON_SLIDE_D:
-    case VLBE_ALE_CON_SLOPE_ANGLE: return 1;
+    case VLBE_ALE_CON_POS: case VLBE_ALE_CON_SLOPE: return d;
+    case VLBE_ALE_CON_SLIDE_C: return planar ? 2 : 0;
+    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLIDE_D: case VLBE_ALE_CON_SLOPE_ANGLE:
+        return planar ? 1 : 0;
+    case VLBE_ALE_CON_P: return 1;
+    case VLBE_ALE_CON_SPIN: return planar ? 0 : 1;
     case VLBE_ALE_CON_EQUAL_LEN: return c->node2 - c->node - 1;
     default: return -1;
     }
@@ -3357,7 +3395,7 @@ VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *
 {
     VLBE_ASSERT(ch != NULL && c != NULL);
     if (ch->ncon >= ch->ncon_cap) return VLBE_EWORK;
-    if (vlbe__ale_con_rows(c) < 1 || c->node < 0 || c->node >= ch->nn) return VLBE_EARG;
+    if (vlbe__ale_con_rows(ch, c) < 1 || c->node < 0 || c->node >= ch->nn) return VLBE_EARG;
     if (c->type == VLBE_ALE_CON_EQUAL_LEN && c->node2 >= ch->nn) return VLBE_EARG;
     if (!vlbe_all_finite(c->v, 3)) return VLBE_ENONFINITE;
     ch->con[ch->ncon++] = *c;
@@ -3368,13 +3406,19 @@ VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *
 static inline int vlbe__ale_pidx(const vlbe_ale_chain *ch, int i)
 {
     const vlbe_ale_node *nd = &ch->node[i];
-    return nd->pmode == VLBE_ALE_PFREE ? nd->ofs + 4 + 2 * nd->slide : -1;
+    return nd->pmode == VLBE_ALE_PFREE ? nd->ofs + ch->d * (2 + nd->slide) + ch->spin : -1;
+}
+
+/* index of the spin angle of node i (3D chains with spin) */
+static inline int vlbe__ale_tidx(const vlbe_ale_chain *ch, int i)
+{
+    return ch->spin ? ch->node[i].ofs + 2 * ch->d : -1;
 }
 
 /* index of slope `which` (0 left, 1 right) of node i */
 static inline int vlbe__ale_sidx(const vlbe_ale_chain *ch, int i, int which)
 {
-    return ch->node[i].ofs + 2 + (ch->node[i].slide && which ? 2 : 0);
+    return ch->node[i].ofs + ch->d * (1 + (ch->node[i].slide && which ? 1 : 0));
 }
 
 /* Assign coordinates (node.ofs, n) and count constraint rows (m); checks
@@ -3383,10 +3427,12 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
 {
     int i, k, n = 0, m = 0;
     VLBE_ASSERT(ch != NULL);
+    ch->d = ch->el3 ? 3 : 2;
+    ch->spin = ch->el3 && !((ch->el3->flags | ch->mode) & VLBE_ALE3_NO_SPIN);
     for (i = 0; i < ch->nn; ++i) {
         const vlbe_ale_node *nd = &ch->node[i];
         if (nd->pmode < VLBE_ALE_PFIXED || nd->pmode > VLBE_ALE_PFREE || nd->slide < 0 ||
-            nd->slide > 1 || nd->mass < VLBE_R(0.0))
+            nd->slide > 1 || nd->mass < VLBE_R(0.0) || (ch->el3 && nd->slide))
             return VLBE_EARG;
         if (!vlbe_all_finite(&nd->p, 1) || !vlbe_all_finite(&nd->pd, 1) ||
             !vlbe_all_finite(&nd->pdd, 1) || !vlbe_all_finite(&nd->mass, 1))
@@ -3394,8 +3440,9 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
     }
     for (k = 0; k < ch->ncon; ++k) {
         const vlbe_ale_con *c = &ch->con[k];
-        int r = vlbe__ale_con_rows(c);
+        int r = vlbe__ale_con_rows(ch, c);
         if (r < 1 || c->node < 0 || c->node >= ch->nn) return VLBE_EARG;
+        if (c->type == VLBE_ALE_CON_SPIN && !ch->spin) return VLBE_EARG;
         if (c->type == VLBE_ALE_CON_EQUAL_LEN) {
             if (c->node2 >= ch->nn) return VLBE_EARG;
             for (i = c->node + 1; i < c->node2; ++i)
@@ -3409,7 +3456,7 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
     }
     for (i = 0; i < ch->nn; ++i) {
         ch->node[i].ofs = n;
-        n += 4 + 2 * ch->node[i].slide + (ch->node[i].pmode == VLBE_ALE_PFREE);
+        n += ch->d * (2 + ch->node[i].slide) + ch->spin + (ch->node[i].pmode == VLBE_ALE_PFREE);
     }
     ch->n = n;
     ch->m = m;
@@ -3444,52 +3491,60 @@ VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_
 }
 
 /* Element e's coordinates qe (and rates ve when v != NULL), its index map
-   idx[10] into q (-1 for a p that is not a coordinate) and element mode. */
+   idx into q (-1 for a p that is not a coordinate) and element mode; qe,
+   ve, idx hold the element's coordinates (10 planar, vlbe_ale3_nq(mode)
+   3D: VLBE_ALE3_NQ is always enough). */
 VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v, vlbe_real *qe,
                                            vlbe_real *ve, int *idx, unsigned *mode)
 {
+    const int d = ch->d, nb = 2 * d + ch->spin + 1; /* element block per node */
     int s, k;
     vlbe_status st;
     *mode = ch->mode;
     for (s = 0; s < 2; ++s) {
-        const int i = e + s, b = 5 * s;
+        const int i = e + s, b = nb * s;
         const int o = ch->node[i].ofs, sl = vlbe__ale_sidx(ch, i, s == 0);
         vlbe_real p3[3];
-        idx[b] = o;
-        idx[b + 1] = o + 1;
-        idx[b + 2] = sl;
-        idx[b + 3] = sl + 1;
-        idx[b + 4] = vlbe__ale_pidx(ch, i);
+        for (k = 0; k < d; ++k) {
+            idx[b + k] = o + k;
+            idx[b + d + k] = sl + k;
+        }
+        if (ch->spin) idx[b + 2 * d] = vlbe__ale_tidx(ch, i);
+        idx[b + nb - 1] = vlbe__ale_pidx(ch, i);
         if ((st = vlbe_ale_chain_pnode(ch, i, t, q, v, p3)) != VLBE_OK) return st;
-        for (k = 0; k < 4; ++k) {
+        for (k = 0; k < nb - 1; ++k) {
             qe[b + k] = q[idx[b + k]];
             if (ve) ve[b + k] = v[idx[b + k]];
         }
-        qe[b + 4] = p3[0];
-        if (ve) ve[b + 4] = p3[1];
+        qe[b + nb - 1] = p3[0];
+        if (ve) ve[b + nb - 1] = p3[1];
         if (ch->node[i].pmode == VLBE_ALE_PFIXED) *mode |= s ? VLBE_ALE_FIX_P2 : VLBE_ALE_FIX_P1;
     }
-    if (!vlbe_all_finite(qe, 10) || (ve && !vlbe_all_finite(ve, 10))) return VLBE_ENONFINITE;
-    if (!(qe[9] - qe[4] > ch->Lmin)) return VLBE_ELENGTH;
+    if (!vlbe_all_finite(qe, 2 * nb) || (ve && !vlbe_all_finite(ve, 2 * nb)))
+        return VLBE_ENONFINITE;
+    if (!(qe[2 * nb - 1] - qe[nb - 1] > ch->Lmin)) return VLBE_ELENGTH;
     return VLBE_OK;
 }
 
 /* Nodes on a straight line: r_i = r0 + dir (p_i - p_0), slopes dir (unit for
    an unstretched chain; scale dir for a uniform stretch), free p's at
-   node.p; all other coordinates of q are written too. */
+   node.p, spin angles 0; all other coordinates of q are written too.  r0,
+   dir: d = 2 or 3 components. */
 VLBE_API void vlbe_ale_chain_straight(const vlbe_ale_chain *ch, const vlbe_real *r0,
                                       const vlbe_real *dir, vlbe_real *q)
 {
+    const int d = ch->d;
     int i, k;
     for (i = 0; i < ch->nn; ++i) {
         const vlbe_ale_node *nd = &ch->node[i];
         const int o = nd->ofs;
-        for (k = 0; k < 2; ++k) {
+        for (k = 0; k < d; ++k) {
             q[o + k] = r0[k] + dir[k] * (nd->p - ch->node[0].p);
-            q[o + 2 + k] = dir[k];
-            if (nd->slide) q[o + 4 + k] = dir[k];
+            q[o + d + k] = dir[k];
+            if (nd->slide) q[o + 2 * d + k] = dir[k];
         }
+        if (ch->spin) q[vlbe__ale_tidx(ch, i)] = VLBE_R(0.0);
         if (nd->pmode == VLBE_ALE_PFREE) q[vlbe__ale_pidx(ch, i)] = nd->p;
     }
 }
@@ -3516,12 +3571,22 @@ VLBE_API vlbe_status vlbe_ale_chain_locate(const vlbe_ale_chain *ch, vlbe_real t
 VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
                                           vlbe_real p, vlbe_real *r, vlbe_real *rp)
 {
-    vlbe_real qe[10];
-    int e, idx[10];
+    vlbe_real qe[VLBE_ALE3_NQ];
+    int e, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     if ((st = vlbe_ale_chain_locate(ch, t, q, p, &e)) != VLBE_OK) return st;
     if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK) return st;
+    if (ch->el3) { /* through locals: r, rp have d = 3 entries here */
+        vlbe_real r3[3], rp3[3];
+        int k;
+        if ((st = vlbe_ale3_point(md | ch->el3->flags, qe, p, r3, rp3, NULL)) != VLBE_OK) return st;
+        for (k = 0; k < ch->d; ++k) {
+            if (r) r[k] = r3[k];
+            if (rp) rp[k] = rp3[k];
+        }
+        return VLBE_OK;
+    }
     return vlbe_ale_point(qe, p, r, rp);
 }
 
@@ -3529,20 +3594,24 @@ VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t,
 VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
                                            const vlbe_real *v, vlbe_real *E)
 {
-    vlbe_real qe[10], ve[10], Ee[3];
-    int e, i, idx[10];
+    vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ], Ee[3];
+    int e, i, k, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     E[0] = E[1] = E[2] = VLBE_R(0.0);
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK) return st;
-        if ((st = vlbe_ale_energy(ch->el, md, qe, ve, Ee)) != VLBE_OK) return st;
+        st = ch->el3 ? vlbe_ale3_energy(ch->el3, md, qe, ve, Ee)
+                     : vlbe_ale_energy(ch->el, md, qe, ve, Ee);
+        if (st != VLBE_OK) return st;
         for (i = 0; i < 3; ++i) E[i] += Ee[i];
     }
     for (i = 0; i < ch->nn; ++i) {
         const vlbe_real m = ch->node[i].mass, *r = q + ch->node[i].ofs, *rd = v + ch->node[i].ofs;
-        E[0] += VLBE_R(0.5) * m * vlbe_v2_dot(rd, rd);
-        E[2] -= m * vlbe_v2_dot(ch->g, r);
+        for (k = 0; k < ch->d; ++k) {
+            E[0] += VLBE_R(0.5) * m * rd[k] * rd[k];
+            E[2] -= m * ch->g[k] * r[k];
+        }
     }
     return VLBE_OK;
 }
@@ -3570,6 +3639,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t
     vlbe_status st;
     const int want_rate = v != NULL && rate != NULL;
     VLBE_ASSERT(ch != NULL && q != NULL && len != NULL);
+    if (ch->el3) return VLBE_EARG; /* planar chains only */
     if ((st = vlbe_gl_rule(8, &xi, &w)) != VLBE_OK) return st;
     for (e = 0; e + 1 < ch->nn; ++e) {
         vlbe_real h;
@@ -3608,16 +3678,46 @@ static inline int vlbe__ale_fail(vlbe_ale_chain *ch, vlbe_status st, int where)
     return (st == VLBE_ELENGTH || st == VLBE_ESINGULAR || st == VLBE_ENONFINITE) ? 1 : -1;
 }
 
-/* scatter a 10x10 element matrix */
-static inline void vlbe__ale_scatter(int n, const int *idx, const vlbe_real *Ae, vlbe_real *A)
+/* coordinates of one element of the chain (10 planar, 14 or 16 in 3D) */
+static inline int vlbe__ale_ne(const vlbe_ale_chain *ch)
+{
+    return 2 * (2 * ch->d + ch->spin + 1);
+}
+
+/* the element calls of the chain's element type (md: the gathered mode) */
+static inline vlbe_status vlbe__ale_el_mass(const vlbe_ale_chain *ch, unsigned md,
+                                            const vlbe_real *qe, vlbe_real *Me)
+{
+    return ch->el3 ? vlbe_ale3_mass(ch->el3, md, qe, Me) : vlbe_ale_mass(ch->el, md, qe, Me);
+}
+
+static inline vlbe_status vlbe__ale_el_mass_jac(const vlbe_ale_chain *ch, unsigned md,
+                                                const vlbe_real *qe, const vlbe_real *ae,
+                                                vlbe_real *Je)
+{
+    return ch->el3 ? vlbe_ale3_mass_jac(ch->el3, md, qe, ae, Je)
+                   : vlbe_ale_mass_jac(ch->el, md, qe, ae, Je);
+}
+
+static inline vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, unsigned md,
+                                             const vlbe_real *qe, const vlbe_real *ve,
+                                             vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
+{
+    return ch->el3 ? vlbe_ale3_force(ch->el3, md, qe, ve, Qe, Ke, De)
+                   : vlbe_ale_force(ch->el, md, qe, ve, Qe, Ke, De);
+}
+
+/* scatter an ne x ne element matrix */
+static inline void vlbe__ale_scatter(int n, int ne, const int *idx, const vlbe_real *Ae,
+                                     vlbe_real *A)
 {
     int i, j;
-    for (i = 0; i < 10; ++i) {
+    for (i = 0; i < ne; ++i) {
         vlbe_real *row;
         if (idx[i] < 0) continue;
         row = A + (size_t)idx[i] * (size_t)n;
-        for (j = 0; j < 10; ++j)
-            if (idx[j] >= 0) row[idx[j]] += Ae[i * 10 + j];
+        for (j = 0; j < ne; ++j)
+            if (idx[j] >= 0) row[idx[j]] += Ae[i * ne + j];
     }
 }
 
@@ -3625,13 +3725,14 @@ static inline void vlbe__ale_scatter(int n, const int *idx, const vlbe_real *Ae,
    vector in element coordinates (zero elsewhere); returns 0 if all zero */
 static inline int vlbe__ale_pres_acc(const vlbe_ale_chain *ch, int e, vlbe_real t, vlbe_real *ae)
 {
+    const int ne = vlbe__ale_ne(ch);
     int s, any = 0, k;
-    for (k = 0; k < 10; ++k) ae[k] = VLBE_R(0.0);
+    for (k = 0; k < ne; ++k) ae[k] = VLBE_R(0.0);
     for (s = 0; s < 2; ++s)
         if (ch->node[e + s].pmode == VLBE_ALE_PPRESCRIBED) {
             vlbe_real p3[3];
             if (vlbe_ale_chain_pnode(ch, e + s, t, NULL, NULL, p3) == VLBE_OK && p3[2] != VLBE_R(0.0)) {
-                ae[4 + 5 * s] = p3[2];
+                ae[ne / 2 - 1 + (ne / 2) * s] = p3[2];
                 any = 1;
             }
         }
@@ -3643,20 +3744,21 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
     const size_t n = (size_t)ch->n;
-    vlbe_real qe[10], Me[100];
-    int e, i, k, idx[10];
+    const int ne = vlbe__ale_ne(ch);
+    vlbe_real qe[VLBE_ALE3_NQ], Me[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    int e, i, k, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     (void)v;
     for (i = 0; i < (int)(n * n); ++i) M[i] = VLBE_R(0.0);
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK ||
-            (st = vlbe_ale_mass(ch->el, md, qe, Me)) != VLBE_OK)
+            (st = vlbe__ale_el_mass(ch, md, qe, Me)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
-        vlbe__ale_scatter(ch->n, idx, Me, M);
+        vlbe__ale_scatter(ch->n, ne, idx, Me, M);
     }
     for (i = 0; i < ch->nn; ++i)
-        for (k = 0; k < 2; ++k) {
+        for (k = 0; k < ch->d; ++k) {
             const size_t r = (size_t)(ch->node[i].ofs + k);
             M[r * n + r] += ch->node[i].mass;
         }
@@ -3669,8 +3771,10 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
                                          vlbe_real *D)
 {
     const size_t n = (size_t)ch->n;
-    vlbe_real qe[10], ve[10], Qe[10], Ke[100], De[100], ae[10];
-    int e, i, k, idx[10];
+    const int ne = vlbe__ale_ne(ch);
+    vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ], Qe[VLBE_ALE3_NQ], ae[VLBE_ALE3_NQ];
+    vlbe_real Ke[VLBE_ALE3_NQ * VLBE_ALE3_NQ], De[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    int e, i, k, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     if (Q)
@@ -3679,31 +3783,31 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
         for (i = 0; i < (int)(n * n); ++i) K[i] = D[i] = VLBE_R(0.0);
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK ||
-            (st = vlbe_ale_force(ch->el, md, qe, ve, Qe, K ? Ke : NULL, K ? De : NULL)) != VLBE_OK)
+            (st = vlbe__ale_el_force(ch, md, qe, ve, Qe, K ? Ke : NULL, K ? De : NULL)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         if (vlbe__ale_pres_acc(ch, e, t, ae)) {
             /* inertia of the prescribed p'': Q -= M ae, K -= d(M ae)/dq */
-            vlbe_real Me[100], Mq[100];
-            if ((st = vlbe_ale_mass(ch->el, md, qe, Me)) != VLBE_OK) return vlbe__ale_fail(ch, st, e);
-            for (i = 0; i < 10; ++i)
-                for (k = 0; k < 10; ++k) Qe[i] -= Me[i * 10 + k] * ae[k];
+            vlbe_real Me[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Mq[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+            if ((st = vlbe__ale_el_mass(ch, md, qe, Me)) != VLBE_OK) return vlbe__ale_fail(ch, st, e);
+            for (i = 0; i < ne; ++i)
+                for (k = 0; k < ne; ++k) Qe[i] -= Me[i * ne + k] * ae[k];
             if (K) {
-                if ((st = vlbe_ale_mass_jac(ch->el, md, qe, ae, Mq)) != VLBE_OK)
+                if ((st = vlbe__ale_el_mass_jac(ch, md, qe, ae, Mq)) != VLBE_OK)
                     return vlbe__ale_fail(ch, st, e);
-                for (i = 0; i < 100; ++i) Ke[i] -= Mq[i];
+                for (i = 0; i < ne * ne; ++i) Ke[i] -= Mq[i];
             }
         }
         if (Q)
-            for (i = 0; i < 10; ++i)
+            for (i = 0; i < ne; ++i)
                 if (idx[i] >= 0) Q[idx[i]] += Qe[i];
         if (K) {
-            vlbe__ale_scatter(ch->n, idx, Ke, K);
-            vlbe__ale_scatter(ch->n, idx, De, D);
+            vlbe__ale_scatter(ch->n, ne, idx, Ke, K);
+            vlbe__ale_scatter(ch->n, ne, idx, De, D);
         }
     }
     if (Q)
         for (i = 0; i < ch->nn; ++i)
-            for (k = 0; k < 2; ++k) Q[ch->node[i].ofs + k] += ch->node[i].mass * ch->g[k];
+            for (k = 0; k < ch->d; ++k) Q[ch->node[i].ofs + k] += ch->node[i].mass * ch->g[k];
     return 0;
 }
 
@@ -3725,8 +3829,9 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
     const size_t n = (size_t)ch->n;
-    vlbe_real qe[10], ae[10], Je[100];
-    int e, i, idx[10];
+    const int ne = vlbe__ale_ne(ch);
+    vlbe_real qe[VLBE_ALE3_NQ], ae[VLBE_ALE3_NQ], Je[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    int e, i, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     (void)v;
@@ -3736,10 +3841,10 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
-        for (i = 0; i < 10; ++i) ae[i] = idx[i] >= 0 ? a[idx[i]] : VLBE_R(0.0);
-        if ((st = vlbe_ale_mass_jac(ch->el, md, qe, ae, Je)) != VLBE_OK)
+        for (i = 0; i < ne; ++i) ae[i] = idx[i] >= 0 ? a[idx[i]] : VLBE_R(0.0);
+        if ((st = vlbe__ale_el_mass_jac(ch, md, qe, ae, Je)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
-        vlbe__ale_scatter(ch->n, idx, Je, Mq);
+        vlbe__ale_scatter(ch->n, ne, idx, Je, Mq);
     }
     return 0;
 }
@@ -3792,7 +3897,7 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
         vlbe_real *row = Cq ? Cq + (size_t)r * n : NULL;
         switch (c->type) {
         case VLBE_ALE_CON_POS:
-            for (b = 0; b < 2; ++b) {
+            for (b = 0; b < ch->d; ++b) {
                 if (C) C[r + b] = q[o + b] - c->v[b];
                 if (row) row[(size_t)b * n + (size_t)(o + b)] = VLBE_R(1.0);
                 if (Ct) Ct[r + b] = VLBE_R(0.0);
@@ -3800,7 +3905,7 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
             break;
         case VLBE_ALE_CON_SLOPE: {
             const int s = vlbe__ale_sidx(ch, c->node, c->which);
-            for (b = 0; b < 2; ++b) {
+            for (b = 0; b < ch->d; ++b) {
                 if (C) C[r + b] = q[s + b] - c->v[b];
                 if (row) row[(size_t)b * n + (size_t)(s + b)] = VLBE_R(1.0);
                 if (Ct) Ct[r + b] = VLBE_R(0.0);
@@ -3826,8 +3931,10 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
             }
             if (Ct) Ct[r] = w[0] * (q[s] * cs[0] + q[s + 1] * cs[1]);
         } break;
-        case VLBE_ALE_CON_P: {
-            const int pi = vlbe__ale_pidx(ch, c->node);
+        case VLBE_ALE_CON_P:
+        case VLBE_ALE_CON_SPIN: {
+            const int pi = c->type == VLBE_ALE_CON_P ? vlbe__ale_pidx(ch, c->node)
+                                                     : vlbe__ale_tidx(ch, c->node);
             if (C) C[r] = q[pi] - c->v[0] - (c->v[1] + VLBE_R(0.5) * c->v[2] * t) * t;
             if (row) row[pi] = VLBE_R(1.0);
             if (Ct) Ct[r] = -(c->v[1] + c->v[2] * t);
@@ -3875,7 +3982,7 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
         } break;
         default: return VLBE_EARG;
         }
-        r += vlbe__ale_con_rows(c);
+        r += vlbe__ale_con_rows(ch, c);
     }
     return VLBE_OK;
 }
@@ -3905,9 +4012,9 @@ VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real 
     int k, r = 0, i;
     for (k = 0; k < ch->ncon; ++k) {
         const vlbe_ale_con *c = &ch->con[k];
-        const int rows = vlbe__ale_con_rows(c), o = ch->node[c->node].ofs;
+        const int rows = vlbe__ale_con_rows(ch, c), o = ch->node[c->node].ofs;
         for (i = 0; i < rows; ++i) gamma[r + i] = VLBE_R(0.0);
-        if (c->type == VLBE_ALE_CON_P) {
+        if (c->type == VLBE_ALE_CON_P || c->type == VLBE_ALE_CON_SPIN) {
             gamma[r] = c->v[2];
         } else if (c->type == VLBE_ALE_CON_EQUAL_LEN) {
             vlbe_real pa[3], pz[3];
@@ -3970,7 +4077,7 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
                             f * ((i == j ? VLBE_R(1.0) : VLBE_R(0.0)) - a[i] * a[j] / (na * na));
             }
         }
-        r += vlbe__ale_con_rows(c);
+        r += vlbe__ale_con_rows(ch, c);
     }
     return 0;
 }
@@ -4058,6 +4165,7 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
 {
     vlbe_real qe[10], ve[10] = {0}, qh[5], qhd[5] = {0};
     int idx[10], i, k, on;
+    if (ch->el3) return VLBE_EARG; /* planar chains only */
     unsigned md;
     vlbe_status st;
     VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
@@ -4113,7 +4221,7 @@ VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe
 {
     int k, j, on;
     VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
-    if (i <= 0 || i >= ch->nn - 1 || ch->nn <= 2) return VLBE_EARG;
+    if (ch->el3 || i <= 0 || i >= ch->nn - 1 || ch->nn <= 2) return VLBE_EARG;
     if (ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0) || vlbe__ale_constrained(ch, i))
         return VLBE_EARG;
     on = 0;
