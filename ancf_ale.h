@@ -3225,7 +3225,7 @@ VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, v
 #define VLBE_ALE_PFREE 2       /* p is a coordinate (initial value node.p)         */
 
 /* constraint types (equations each) */
-#define VLBE_ALE_CON_POS 1       /* r_node = v[0..1]                            (2) */
+#define VLBE_ALE_CON_POS 1       /* r_node = v[0..1] (components: `which` mask) (2) */
 #define VLBE_ALE_CON_SLOPE_DIR 2 /* r'_node x v[0..1] = 0 (slope `which`)       (1) */
 #define VLBE_ALE_CON_SLOPE 3     /* r'_node = v[0..1] (slope `which`)           (2) */
 #define VLBE_ALE_CON_P 4         /* p_node = v0 + v1 t + v2 t^2/2 (free node)   (1) */
@@ -3253,7 +3253,9 @@ typedef struct vlbe_ale_node {
 typedef struct vlbe_ale_con {
     int type;
     int node, node2; /* node2: last node of VLBE_ALE_CON_EQUAL_LEN                    */
-    int which;       /* slope constraints on a sliding node: 0 left, 1 right          */
+    int which;       /* slope constraints on a sliding node: 0 left, 1 right;
+                        VLBE_ALE_CON_POS: mask of the components held (bit k:
+                        component k; 0 = all), e.g. 3 = a roller free along z */
     vlbe_real v[3];
 } vlbe_ale_con;
 
@@ -3380,7 +3382,14 @@ static inline int vlbe__ale_con_rows(const vlbe_ale_chain *ch, const vlbe_ale_co
 {
     const int d = ch->el3 ? 3 : 2, planar = ch->el3 == NULL;
     switch (c->type) {
-    case VLBE_ALE_CON_POS: case VLBE_ALE_CON_SLOPE: return d;
+    case VLBE_ALE_CON_POS: {
+        int k, r = 0;
+        if (c->which == 0) return d;
+        if (c->which < 0 || c->which >= (1 << d)) return -1;
+        for (k = 0; k < d; ++k) r += (c->which >> k) & 1;
+        return r;
+    }
+    case VLBE_ALE_CON_SLOPE: return d;
     case VLBE_ALE_CON_SLIDE_C: return planar ? 2 : 0;
     case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLIDE_D: case VLBE_ALE_CON_SLOPE_ANGLE:
         return planar ? 1 : 0;
@@ -3896,13 +3905,16 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
         const int o = ch->node[c->node].ofs;
         vlbe_real *row = Cq ? Cq + (size_t)r * n : NULL;
         switch (c->type) {
-        case VLBE_ALE_CON_POS:
+        case VLBE_ALE_CON_POS: {
+            int j = 0; /* row of the next held component */
             for (b = 0; b < ch->d; ++b) {
-                if (C) C[r + b] = q[o + b] - c->v[b];
-                if (row) row[(size_t)b * n + (size_t)(o + b)] = VLBE_R(1.0);
-                if (Ct) Ct[r + b] = VLBE_R(0.0);
+                if (c->which && !((c->which >> b) & 1)) continue;
+                if (C) C[r + j] = q[o + b] - c->v[b];
+                if (row) row[(size_t)j * n + (size_t)(o + b)] = VLBE_R(1.0);
+                if (Ct) Ct[r + j] = VLBE_R(0.0);
+                ++j;
             }
-            break;
+        } break;
         case VLBE_ALE_CON_SLOPE: {
             const int s = vlbe__ale_sidx(ch, c->node, c->which);
             for (b = 0; b < ch->d; ++b) {
