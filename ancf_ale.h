@@ -2194,8 +2194,11 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
    s p'; row degrees 1 + m_j for positions and slopes, 1 for theta, 0 for
    p; the axial part 4 and 2 lower, the twist part 2 lower).
    Errors: VLBE_ELENGTH (p2 <= p1), VLBE_ENONFINITE, VLBE_ESINGULAR (|r'|^2
-   <= eps at a bending point), VLBE_EBOUND (point load outside [p1, p2]);
-   no output is written on failure.  Stack: about 9 kB with K and D. */
+   <= eps at a bending point), VLBE_EBOUND (point load outside [p1, p2]),
+   VLBE_EARG for the planar element's VLBE_ALE_CONSERVATIVE and
+   VLBE_ALE_INV_AXIAL (not available here: with free p the elastic
+   p-forces are the paper's, without the end energy fluxes); no output is
+   written on failure.  Stack: about 9 kB with K and D. */
 
 #define VLBE_ALE3_NO_SPIN 64u
 #define VLBE_ALE3_NO_TWIST 128u
@@ -2305,12 +2308,14 @@ VLBE_API int vlbe_ale3_nq(unsigned mode)
    without spin), p[i] its material coordinate. */
 typedef struct vlbe__a3_lay {
     int n, spin, e[4], th[2], p[2];
+    int bad; /* a planar-only mode bit (CONSERVATIVE, INV_AXIAL): VLBE_EARG */
 } vlbe__a3_lay;
 
 static inline void vlbe__a3_layout(unsigned mode, vlbe__a3_lay *ly)
 {
     const int spin = !(mode & VLBE_ALE3_NO_SPIN), ns = spin ? 8 : 7;
     ly->spin = spin;
+    ly->bad = (mode & (VLBE_ALE_CONSERVATIVE | VLBE_ALE_INV_AXIAL)) != 0;
     ly->n = 2 * ns;
     ly->e[0] = 0;
     ly->e[1] = 3;
@@ -2325,6 +2330,7 @@ static inline void vlbe__a3_layout(unsigned mode, vlbe__a3_lay *ly)
 static inline vlbe_status vlbe__a3_check(const vlbe__a3_lay *ly, const vlbe_real *q,
                                          const vlbe_real *qd)
 {
+    if (ly->bad) return VLBE_EARG;
     if (!vlbe_all_finite(q, ly->n)) return VLBE_ENONFINITE;
     if (qd && !vlbe_all_finite(qd, ly->n)) return VLBE_ENONFINITE;
     if (!(q[ly->p[1]] - q[ly->p[0]] > VLBE_R(0.0))) return VLBE_ELENGTH;
@@ -2435,7 +2441,7 @@ static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
     for (c = 0; c < 3; ++c) sig[c] *= S;
     {
         vlbe_real sd[3] = {0, 0, 0}, t[3], ga = VLBE_R(0.0), hd = VLBE_R(0.0);
-        if (ad && cS != VLBE_R(0.0)) {
+        if (ad && bd && cS != VLBE_R(0.0)) {
             vlbe_v3_cross(ad, b, sd);
             vlbe_v3_cross(a, bd, t);
             for (c = 0; c < 3; ++c) sd[c] += t[c];
@@ -2485,7 +2491,7 @@ static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
         {
             vlbe_real W[18];
             for (i = 0; i < 18; ++i) W[i] = S * ky[i];
-            if (ad && cS != VLBE_R(0.0)) {
+            if (ad && bd && cS != VLBE_R(0.0)) {
                 vlbe_real Sbd[9], Sad[9], Sb[9], Sa[9];
                 const vlbe_real h7 = VLBE_R(15.0) * h5 / g * ga;
                 vlbe__a3_skew(bd, Sbd);
@@ -4177,10 +4183,10 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
 {
     vlbe_real qe[10], ve[10] = {0}, qh[5], qhd[5] = {0};
     int idx[10], i, k, on;
-    if (ch->el3) return VLBE_EARG; /* planar chains only */
     unsigned md;
     vlbe_status st;
     VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
+    if (ch->el3) return VLBE_EARG; /* planar chains only */
     if (e < 0 || e + 1 >= ch->nn) return VLBE_EARG;
     for (k = 0; k < ch->ncon; ++k) { /* a fixed node inside an equally spaced group: no */
         const vlbe_ale_con *c = &ch->con[k];

@@ -145,7 +145,8 @@
                           p's rate; in p, F, T), ESINGULAR (zero slope: force,
                           energy, strain's kappa; the string and EJ = 0
                           succeed, finite; zero slope at node 1 only: interior
-                          Gauss points, every mode succeeds), EBOUND; both
+                          Gauss points, every mode succeeds), EBOUND, EARG
+                          for the planar-only CONSERVATIVE and INV_AXIAL; both
                           layouts; nothing written on failure (sentinels).
      errors_init          EARG (rhoA <= 0, negative rhoI, stiffness or damping,
                           rhoI = 0 with spin, Gauss orders -1, 9, 100),
@@ -1698,6 +1699,19 @@ static void test_errors_eval(void **state)
     (void)state;
     elem_make(&el, &m, 0, 0, 0);
     make_state(&g, 0.5, 0.15, 0.8, &x, &xd);
+    /* the planar element's CONSERVATIVE and INV_AXIAL do not exist here:
+       VLBE_EARG from every evaluation, nothing written */
+    {
+        const unsigned planar_only[2] = {VLBE_ALE_CONSERVATIVE, VLBE_ALE_INV_AXIAL};
+        for (k = 0; k < 2; ++k) {
+            outs_fill(&o);
+            assert_int_equal(vlbe_ale3_force(&el, planar_only[k], x.q, xd.q, o.Q, o.K, o.D),
+                             VLBE_EARG);
+            assert_int_equal(vlbe_ale3_mass(&el, planar_only[k], x.q, o.M), VLBE_EARG);
+            assert_int_equal(vlbe_ale3_energy(&el, planar_only[k], x.q, xd.q, o.E), VLBE_EARG);
+            outs_check(&o);
+        }
+    }
     for (l = 0; l < 2; ++l) {
         const unsigned lay = layouts[l];
         const int n = nq_of(lay), p1 = idx_p(lay, 0), p2 = idx_p(lay, 1);
