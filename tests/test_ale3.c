@@ -1703,12 +1703,15 @@ static void test_errors_eval(void **state)
        VLBE_EARG from every evaluation, nothing written */
     {
         const unsigned planar_only[2] = {VLBE_ALE_CONSERVATIVE, VLBE_ALE_INV_AXIAL};
+        vlbe_real qq[NQ], qqd[NQ];
+        pack(0, &x, qq);
+        pack(0, &xd, qqd);
         for (k = 0; k < 2; ++k) {
             outs_fill(&o);
-            assert_int_equal(vlbe_ale3_force(&el, planar_only[k], x.q, xd.q, o.Q, o.K, o.D),
+            assert_int_equal(vlbe_ale3_force(&el, planar_only[k], qq, qqd, o.Q, o.K, o.D),
                              VLBE_EARG);
-            assert_int_equal(vlbe_ale3_mass(&el, planar_only[k], x.q, o.M), VLBE_EARG);
-            assert_int_equal(vlbe_ale3_energy(&el, planar_only[k], x.q, xd.q, o.E), VLBE_EARG);
+            assert_int_equal(vlbe_ale3_mass(&el, planar_only[k], qq, o.M), VLBE_EARG);
+            assert_int_equal(vlbe_ale3_energy(&el, planar_only[k], qq, qqd, o.E), VLBE_EARG);
             outs_check(&o);
         }
     }
