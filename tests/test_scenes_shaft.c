@@ -321,7 +321,7 @@ static void straight_spin(void **state)
     int i;
     (void)state;
     if ((double)VLBE_EPS > 1e-10) return; /* double only (see the header) */
-    assert_int_equal(ss_setup(&g_s, 0.5, 1.0, 4, SS_Z0, q0, v0), 0);
+    assert_int_equal(ss_setup(&g_s, 0.5, 1.0, 4, 0, SS_Z0, q0, v0), 0);
     g_s.ch.pfun = ss_pfun_shift;
     g_s.ref.P = 0.0; /* no load, and a straight start */
     for (i = 0; i <= 4; ++i) {
@@ -352,8 +352,8 @@ static void scene_converges(void **state)
     int k;
     (void)state;
     if ((double)VLBE_EPS > 1e-10) return;
-    assert_int_equal(ss_run(&g_s, 0.5, 1.0, 4, SS_Z0_CONV, 1000, -0.05, 30, e4, z4, &out), VLBE_OK);
-    assert_int_equal(ss_run(&g_s, 0.5, 1.0, 8, SS_Z0_CONV, 1000, -0.05, 30, e8, NULL, &out),
+    assert_int_equal(ss_run(&g_s, 0.5, 1.0, 4, 0, SS_Z0_CONV, 1000, -0.05, 30, e4, z4, &out), VLBE_OK);
+    assert_int_equal(ss_run(&g_s, 0.5, 1.0, 8, 0, SS_Z0_CONV, 1000, -0.05, 30, e8, NULL, &out),
                      VLBE_OK);
     for (k = 0; k < 4; ++k) { /* 8 elements at least 2.5 x better (cubic elements: 8 x) */
         tu_report("scene 3, 4 elements, err / U_s", e4[k], 2e-2);
