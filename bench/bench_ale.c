@@ -87,38 +87,12 @@ static vlbe_ale_mat wire(void)
     return m;
 }
 
-/* Arc of radius R through material points p1 < p2, stretch lam, rotating at
-   om about the origin and translating at v0, stretching at lamd, material
-   flow pd1, pd2. */
+/* the arc of benchu_arc_state, with NSTATE small perturbations */
 static void make_states(void)
 {
-    const double R = 0.5, lam = 1.002, lamd = 0.01, om = 0.8, v0[2] = {0.4, -0.2};
-    const double p[2] = {1.0, 1.25}, pd[2] = {0.30, 0.25}, th0 = 0.3;
     double q[10], qd[10], a[10];
-    int n, s, i;
-    for (n = 0; n < 2; ++n) {
-        const int o = 5 * n;
-        const double th = th0 + (p[n] - p[0]) / R;
-        const double r[2] = {lam * R * sin(th), lam * R * (1.0 - cos(th))};
-        const double rp[2] = {lam * cos(th), lam * sin(th)};
-        q[o + 0] = r[0];
-        q[o + 1] = r[1];
-        q[o + 2] = rp[0];
-        q[o + 3] = rp[1];
-        q[o + 4] = p[n];
-        /* rigid rotation + translation + stretching of the arc */
-        qd[o + 0] = v0[0] - om * r[1] + lamd / lam * r[0];
-        qd[o + 1] = v0[1] + om * r[0] + lamd / lam * r[1];
-        qd[o + 2] = -om * rp[1] + lamd / lam * rp[0];
-        qd[o + 3] = om * rp[0] + lamd / lam * rp[1];
-        qd[o + 4] = pd[n];
-        /* centripetal plus some of everything, p-rows included */
-        a[o + 0] = -om * om * r[0] + 0.3;
-        a[o + 1] = -om * om * r[1] - 9.81;
-        a[o + 2] = -om * om * rp[0] + 0.05;
-        a[o + 3] = -om * om * rp[1] - 0.02;
-        a[o + 4] = n ? -0.4 : 0.6;
-    }
+    int s, i;
+    benchu_arc_state(q, qd, a);
     for (s = 0; s < NSTATE; ++s)
         for (i = 0; i < 10; ++i) {
             qs[s][i] = (vlbe_real)(q[i] * (1.0 + 1e-7 * urand()));

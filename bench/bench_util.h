@@ -9,6 +9,7 @@
 #define VLBE_BENCH_UTIL_H
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -110,6 +111,42 @@ static inline int benchu_finish(const char *prog, FILE *f, const char *csv, long
         return 1;
     }
     return 0;
+}
+
+/* The planar ALE element's benchmark state (bench_ale.c, bench_ale3.c):
+   an arc of radius R = 0.5 through the material points p = 1, 1.25,
+   stretched by lam, rotating at om about the origin, translating at v0,
+   stretching at lamd, material flow p' = 0.30, 0.25; q, qd in the planar
+   element's layout [x, y, x', y', p] per node, a an acceleration with some
+   of everything (p-rows included). */
+static inline void benchu_arc_state(double *q, double *qd, double *a)
+{
+    const double R = 0.5, lam = 1.002, lamd = 0.01, om = 0.8, v0[2] = {0.4, -0.2};
+    const double p[2] = {1.0, 1.25}, pd[2] = {0.30, 0.25}, th0 = 0.3;
+    int n;
+    for (n = 0; n < 2; ++n) {
+        const int o = 5 * n;
+        const double th = th0 + (p[n] - p[0]) / R;
+        const double r[2] = {lam * R * sin(th), lam * R * (1.0 - cos(th))};
+        const double rp[2] = {lam * cos(th), lam * sin(th)};
+        q[o + 0] = r[0];
+        q[o + 1] = r[1];
+        q[o + 2] = rp[0];
+        q[o + 3] = rp[1];
+        q[o + 4] = p[n];
+        /* rigid rotation + translation + stretching of the arc */
+        qd[o + 0] = v0[0] - om * r[1] + lamd / lam * r[0];
+        qd[o + 1] = v0[1] + om * r[0] + lamd / lam * r[1];
+        qd[o + 2] = -om * rp[1] + lamd / lam * rp[0];
+        qd[o + 3] = om * rp[0] + lamd / lam * rp[1];
+        qd[o + 4] = pd[n];
+        /* centripetal plus some of everything, p-rows included */
+        a[o + 0] = -om * om * r[0] + 0.3;
+        a[o + 1] = -om * om * r[1] - 9.81;
+        a[o + 2] = -om * om * rp[0] + 0.05;
+        a[o + 3] = -om * om * rp[1] - 0.02;
+        a[o + 4] = n ? -0.4 : 0.6;
+    }
 }
 
 #endif /* VLBE_BENCH_UTIL_H */
