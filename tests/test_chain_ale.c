@@ -99,27 +99,6 @@
 /* ------------------------------------------------------------------------ */
 
 
-/* 1 in the slow builds: -O0, AddressSanitizer (GCC and clang), a binary run
-   under valgrind (its preload library is in LD_PRELOAD), or VLBE_TEST_QUICK
-   set.  Those run the shorter variants of the dynamic tests. */
-static int slow_run(void)
-{
-    const char *q = getenv("VLBE_TEST_QUICK"), *pre = getenv("LD_PRELOAD");
-    int slow = 0;
-#if !defined(__OPTIMIZE__) || defined(__SANITIZE_ADDRESS__)
-    slow = 1;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-    slow = 1;
-#endif
-#endif
-    if (q && q[0] && q[0] != '0') slow = 1;
-    if (pre && strstr(pre, "vgpreload") != NULL) slow = 1;
-    return slow;
-}
-
-
-
 /* A chain with its storage and the vlbe_dae wired to the chain callbacks. */
 typedef struct chn {
     vlbe_ale_mat mat;
@@ -841,7 +820,7 @@ static void en_print(const char *what, const en_result *r)
 static void test_energy_conservation(void **state)
 {
 #ifndef VLBE_USE_FLOAT
-    const int slow = slow_run();
+    const int slow = tu_slow_run();
     const double t_end = slow ? 0.2 : 1.0;
     en_result c9, c7, pa, c5;
     (void)state;
@@ -1074,7 +1053,7 @@ static void test_scene1_moving_string(void **state)
     assert_true(f4 > 0.0);
 #ifndef VLBE_USE_FLOAT
     {
-        const int slow = slow_run();
+        const int slow = tu_slow_run();
         const int ne = slow ? 8 : 16;
         const double tol = slow ? 2e-6 : 1e-7;
         const double fn = ms_freq(ne, 0, 2e-4, 0.5, NULL, NULL);
@@ -1095,7 +1074,6 @@ static void test_scene1_moving_string(void **state)
 #else
     {
         double rhoA, EA, EI, eps, lam;
-        (void)slow_run; /* one run, cheap in every build */
         ms_section(&rhoA, &EA, &EI, &eps, &lam);
         print_message("    moving string f1 (float): exact %.6f, 4 elements %.6f (%.2e)\n", fx, f4,
                       fabs(f4 - fx) / fx);

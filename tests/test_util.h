@@ -20,6 +20,8 @@
    tu_max_abs(n, a)                       max |a_i| of a double array
    tu_report_on(), tu_report(name, err, tol)   with VLBE_TEST_REPORT set, print
                                           each measured error beside its tolerance
+   tu_slow_run()                          1 in slow builds (-O0, sanitizers,
+                                          valgrind, VLBE_TEST_QUICK): shorter runs
 
    NaN never passes a check.  Equal values (infinities included) always
    pass, so rtol = atol = 0 asks for bitwise-equal results (up to the sign
@@ -38,6 +40,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* -- closeness ---------------------------------------------------------- */
 /* |a - b| / (atol + rtol |b|): <= 1 means close.  Equal values give 0 (also
@@ -153,6 +156,25 @@ static inline double tu_max_abs(int n, const double *a)
     int i;
     for (i = 0; i < n; ++i) m = fmax(m, fabs(a[i]));
     return m;
+}
+
+/* 1 in the slow builds: -O0, AddressSanitizer (GCC and clang), a binary run
+   under valgrind (its preload library is in LD_PRELOAD), or VLBE_TEST_QUICK
+   set (and not "0").  Those run the shorter variants of the dynamic tests. */
+static inline int tu_slow_run(void)
+{
+    const char *q = getenv("VLBE_TEST_QUICK"), *pre = getenv("LD_PRELOAD");
+    int slow = 0;
+#if !defined(__OPTIMIZE__) || defined(__SANITIZE_ADDRESS__)
+    slow = 1;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    slow = 1;
+#endif
+#endif
+    if (q && q[0] && q[0] != '0') slow = 1;
+    if (pre && strstr(pre, "vgpreload") != NULL) slow = 1;
+    return slow;
 }
 
 /* 1 when VLBE_TEST_REPORT is set (and not "0") */
