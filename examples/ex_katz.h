@@ -164,6 +164,7 @@
 #define VLBE_EX_KATZ_H
 
 #include <math.h>
+#include <string.h>
 
 #define EX_KATZ_EARG 1    /* bad argument */
 #define EX_KATZ_ENOCONV 2 /* ex_katz_modes_for: nmax modes are not enough */
@@ -188,6 +189,7 @@ static inline int ex_katz_setup(ex_katz *k, double l, double beta1, double E, do
 {
     const double PI = 3.14159265358979323846;
     ex_katz s;
+    memset(&s, 0, sizeof s); /* padding too: *k compares bytewise (tests) */
     if (!k || !ex__katz_finite(l) || !ex__katz_finite(beta1) || !ex__katz_finite(E) ||
         !ex__katz_finite(rho) || !ex__katz_finite(Omega) || !ex__katz_finite(a) ||
         !ex__katz_finite(kw) || !ex__katz_finite(P) || !(l > 0.0) || !(beta1 > 0.0) ||

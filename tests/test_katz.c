@@ -133,7 +133,7 @@ static void test_setup_definitions(void **state)
         }
     /* refused arguments: *k untouched */
     setup_case(&k, 0, 1);
-    k0 = k;
+    memcpy(&k0, &k, sizeof k);
     for (j = 0; j < 8; ++j) {
         /* inputs l, beta1, E, rho, Omega, a, k_omega, P; row j spoils input j */
         double in[8] = {1.0, 0.02, 2e11, 7700.0, 1.0, 0.5, 1.0, 1.0};
