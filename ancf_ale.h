@@ -2882,6 +2882,7 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
                                      vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
 {
     vlbe_real Qt[VLBE_ALE3_NQ], Kt[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Dt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    vlbe_real *Kp = NULL, *Dp = NULL; /* the local K, D when wanted */
     vlbe__a3_lay ly;
     const int jac = K != NULL || D != NULL;
     vlbe_status st;
@@ -2892,11 +2893,12 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
     if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
     nn = ly.n * ly.n;
     for (i = 0; i < ly.n; ++i) Qt[i] = VLBE_R(0.0);
-    if (jac)
+    if (jac) {
         for (i = 0; i < nn; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
-    if ((st = vlbe__a3_forces(el, &ly, mode, q, qd, Qt, jac ? Kt : NULL, jac ? Dt : NULL)) !=
-        VLBE_OK)
-        return st;
+        Kp = Kt;
+        Dp = Dt;
+    }
+    if ((st = vlbe__a3_forces(el, &ly, mode, q, qd, Qt, Kp, Dp)) != VLBE_OK) return st;
     for (i = 0; i < ly.n; ++i) Q[i] = Qt[i];
     if (K)
         for (i = 0; i < nn; ++i) K[i] = Kt[i];

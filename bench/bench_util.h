@@ -127,8 +127,9 @@ static inline void benchu_arc_state(double *q, double *qd, double *a)
     for (n = 0; n < 2; ++n) {
         const int o = 5 * n;
         const double th = th0 + (p[n] - p[0]) / R;
-        const double r[2] = {lam * R * sin(th), lam * R * (1.0 - cos(th))};
-        const double rp[2] = {lam * cos(th), lam * sin(th)};
+        const double c = cos(th), sn = sin(th);
+        const double r[2] = {lam * R * sn, lam * R * (1.0 - c)};
+        const double rp[2] = {lam * c, lam * sn};
         q[o + 0] = r[0];
         q[o + 1] = r[1];
         q[o + 2] = rp[0];
