@@ -67,16 +67,6 @@
 static volatile double sink;
 static volatile unsigned mode_src; /* modes pass through here: not constants */
 
-/* 1-minute load average (/proc/loadavg), -1 when unknown */
-static double load_avg(void)
-{
-    double l = -1.0;
-    FILE *f = fopen("/proc/loadavg", "r");
-    if (!f) return l;
-    if (fscanf(f, "%lf", &l) != 1) l = -1.0;
-    fclose(f);
-    return l;
-}
 
 static unsigned long long rng_state = 0x9E3779B97F4A7C15ULL;
 static double urand(void) { return benchu_urand(&rng_state); }
@@ -420,7 +410,7 @@ int main(int argc, char **argv)
            VLBE_VERSION_STRING, sizeof(vlbe_real) == sizeof(double) ? "double" : "float");
     printf("compiler: %s, flags: %s\n", __VERSION__, VLBE_BENCH_FLAGS);
     printf("cpu: %s, %.0f MHz (/proc/cpuinfo), load average %.2f at start\n", model, mhz,
-           load_avg());
+           benchu_load_avg());
     printf("ns per element call: median (min) of %d batches of >= %ld calls after warm-up, "
            "CLOCK_MONOTONIC\n",
            BENCHU_BATCHES, MIN_CALLS);
@@ -477,7 +467,7 @@ int main(int argc, char **argv)
     if (nnoisy)
         printf("* median > %.2f x min: the machine was busy during this row (load average now "
                "%.2f); rerun on a quiet machine\n",
-               BENCHU_NOISY, load_avg());
+               BENCHU_NOISY, benchu_load_avg());
     printf("3D NO_SPIN on the planar arc (z = 0) against vlbe_ale_force: max |dQ| / max |Q| = "
            "%.2e\n",
            planar_check());

@@ -113,6 +113,17 @@ static inline int benchu_finish(const char *prog, FILE *f, const char *csv, long
     return 0;
 }
 
+/* 1-minute load average (/proc/loadavg), -1 when unknown */
+static inline double benchu_load_avg(void)
+{
+    double l = -1.0;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (!f) return l;
+    if (fscanf(f, "%lf", &l) != 1) l = -1.0;
+    fclose(f);
+    return l;
+}
+
 /* The planar ALE element's benchmark state (bench_ale.c, bench_ale3.c):
    an arc of radius R = 0.5 through the material points p = 1, 1.25,
    stretched by lam, rotating at om about the origin, translating at v0,

@@ -34,4 +34,29 @@ static inline void assert_all_equal(int n, const vlbe_real *a, vlbe_real v)
     for (i = 0; i < n; ++i) ASSERT_CLOSE_CTX(a[i], v, 0, 0, "entry %d", i);
 }
 
+/* Cholesky in double of the n x n (n <= 16) matrix M of leading dimension ld
+   restricted to the index list idx (NULL: 0..n-1); 1 when every pivot is
+   > 0 (positive definite to the precision of the factorisation) */
+static inline int cholesky_ok(const vlbe_real *M, int ld, const int *idx, int n)
+{
+    double A[256];
+    int i, j, k;
+    if (n > 16) return 0;
+    for (i = 0; i < n; ++i)
+        for (j = 0; j < n; ++j)
+            A[i * n + j] = (double)M[(idx ? idx[i] : i) * ld + (idx ? idx[j] : j)];
+    for (k = 0; k < n; ++k) {
+        double d = A[k * n + k];
+        for (j = 0; j < k; ++j) d -= A[k * n + j] * A[k * n + j];
+        if (!(d > 0.0)) return 0;
+        A[k * n + k] = sqrt(d);
+        for (i = k + 1; i < n; ++i) {
+            double sm = A[i * n + k];
+            for (j = 0; j < k; ++j) sm -= A[i * n + j] * A[k * n + j];
+            A[i * n + k] = sm / A[k * n + k];
+        }
+    }
+    return 1;
+}
+
 #endif /* VLBE_TEST_FIXTURES_COMMON_H */

@@ -851,27 +851,6 @@ static void test_energy_gradient(void **state)
 /* 5. kinetic energy and mass matrix                                         */
 /* ======================================================================= */
 
-/* Cholesky in double of the n x n matrix M (leading dimension ld)
-   restricted to the index list idx; 1 when every pivot is > 0. */
-static int cholesky_ok(const vlbe_real *M, int ld, const int *idx, int n)
-{
-    double A[NN] = {0.0};
-    int i, j, k;
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) A[i * n + j] = (double)M[idx[i] * ld + idx[j]];
-    for (k = 0; k < n; ++k) {
-        double d = A[k * n + k];
-        for (j = 0; j < k; ++j) d -= A[k * n + j] * A[k * n + j];
-        if (!(d > 0.0)) return 0;
-        A[k * n + k] = sqrt(d);
-        for (i = k + 1; i < n; ++i) {
-            double sm = A[i * n + k];
-            for (j = 0; j < k; ++j) sm -= A[i * n + j] * A[k * n + j];
-            A[i * n + k] = sm / A[k * n + k];
-        }
-    }
-    return 1;
-}
 
 /* The classic constant ANCF cable mass on the Hermite data (r1, r1', r2,
    r2'), rhoA L C_ij times the L powers of the slopes. */
