@@ -97,27 +97,6 @@ static void make_state(tu_rng *g, double curv, double stretch, vlbe_real *q, vlb
 
 
 
-/* Cholesky in double of the n x n leading principal submatrix of the 10 x 10
-   matrix M restricted to the index list idx; 1 when every pivot is > 0. */
-static int cholesky_ok(const vlbe_real *M, const int *idx, int n)
-{
-    double A[100] = {0.0};
-    int i, j, k;
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) A[i * n + j] = (double)M[idx[i] * 10 + idx[j]];
-    for (k = 0; k < n; ++k) {
-        double d = A[k * n + k];
-        for (j = 0; j < k; ++j) d -= A[k * n + j] * A[k * n + j];
-        if (!(d > 0.0)) return 0;
-        A[k * n + k] = sqrt(d);
-        for (i = k + 1; i < n; ++i) {
-            double s = A[i * n + k];
-            for (j = 0; j < k; ++j) s -= A[i * n + j] * A[k * n + j];
-            A[i * n + k] = s / A[k * n + k];
-        }
-    }
-    return 1;
-}
 
 /* All 32 combinations of the five mode bits. */
 #define N_MODES 32
@@ -855,7 +834,7 @@ static void test_mass_properties(void **state)
             ASSERT_CLOSE(mt, (double)m.rhoA * L, 16 * EPS, 0);
             ASSERT_CLOSE(quad_form(10, M, uy, NULL), (double)m.rhoA * L, 16 * EPS, 0);
             /* the e-block (same in every mode) is positive definite */
-            assert_true(cholesky_ok(M, e_idx, 8));
+            assert_true(cholesky_ok(M, 10, e_idx, 8));
             /* x^T M x > 0 for random x, by more than its rounding (16 EPS
                of sum |terms|) */
             for (i = 0; i < 5; ++i) {
@@ -892,7 +871,7 @@ static void test_mass_properties(void **state)
                 q2[9] = q[9];
                 assert_int_equal(vlbe_ale_mass(&el, mode, q2, M2), VLBE_OK);
                 ASSERT_VEC_CLOSE(M2, M, 100, 0, 0);
-                assert_true(cholesky_ok(M, e_idx, 8));
+                assert_true(cholesky_ok(M, 10, e_idx, 8));
             } else {
                 /* With a free p the element mass is singular: dr/dp_k at
                    fixed p is itself a cubic in p, so it lies in the span of
