@@ -1565,6 +1565,7 @@ static void test_curvature(void **state)
         double t[3] = {0.0, 0.0, 1.0}, x0[3] = {0.0, 0.0, 0.5};
         st3 x, xd;
         int kk;
+        memset(&xd, 0, sizeof xd); /* filled below; cleared for cppcheck (uninitvar) */
         if (a == 1) {
             rand_dir(&g, t);
             rand_vec(&g, x0);
