@@ -791,18 +791,32 @@ static inline vlbe_status vlbe__ale_kap(const vlbe_real *r1, const vlbe_real *r2
     return VLBE_OK;
 }
 
-/* dF = d F for a force of the standard row degrees (1 + m_j on e-rows, 0 on
-   p-rows): inertia, loads, bending. */
-static inline void vlbe__ale_degree(const vlbe_real *F, vlbe_real *dF)
+/* Where the coordinates of one element sit, for the code both elements
+   share (the scaling identity): n per element, d the dimension of the
+   vectors, e[j] the first entry of basis j's d-vector (r1, r1', r2, r2'),
+   th[i] node i's spin angle (-1: none), p[i] its material coordinate.
+   vlbe__ale_lay2: the planar element; vlbe__ale_layout: the 3D one. */
+typedef struct vlbe__ale_lay {
+    int n, d, spin, e[4], th[2], p[2];
+    int bad; /* 3D: a planar-only mode bit (CONSERVATIVE, INV_AXIAL): VLBE_EARG */
+} vlbe__ale_lay;
+
+static inline const vlbe__ale_lay *vlbe__ale_lay2(void)
 {
-    int j;
-    dF[4] = dF[9] = VLBE_R(0.0);
-    for (j = 0; j < 4; ++j) {
-        const int r = VLBE__ALE_E(j);
-        const vlbe_real d = (vlbe_real)(1 + VLBE__ALE_M(j));
-        dF[r] = d * F[r];
-        dF[r + 1] = d * F[r + 1];
-    }
+    static const vlbe__ale_lay ly = {VLBE_ALE_NQ, 2, 0, {0, 2, 5, 7}, {-1, -1}, {4, 9}, 0};
+    return &ly;
+}
+
+/* dF = d F for a force of the standard row degrees (1 + m_j on the
+   position and slope rows, 1 on spin-angle rows, 0 on p-rows): inertia,
+   loads, bending. */
+static inline void vlbe__ale_degree(const vlbe__ale_lay *ly, const vlbe_real *F, vlbe_real *dF)
+{
+    int j, c;
+    for (j = 0; j < ly->n; ++j) dF[j] = F[j];
+    for (j = 1; j < 4; j += 2)
+        for (c = 0; c < ly->d; ++c) dF[ly->e[j] + c] *= VLBE_R(2.0);
+    dF[ly->p[0]] = dF[ly->p[1]] = VLBE_R(0.0);
 }
 
 /* The p-columns of K = dF/dq from the scaling identity (NOTES):
@@ -810,21 +824,23 @@ static inline void vlbe__ale_degree(const vlbe_real *F, vlbe_real *dF)
    dF/dp1 = -dF/dp2, with dF the degree-weighted F, D = dF/du, u the
    rate-like argument (q' for forces; the acceleration a for d(M a)/dq, where
    D = M and pd = (a_p1, a_p2)). */
-static inline void vlbe__ale_pcols(vlbe_real L, int pm, const vlbe_real *dF, const vlbe_real *pd,
-                                   const vlbe_real *q, const vlbe_real *u, vlbe_real *K,
-                                   const vlbe_real *D)
+static inline void vlbe__ale_pcols(const vlbe__ale_lay *ly, vlbe_real L, int pm,
+                                   const vlbe_real *dF, const vlbe_real *pd, const vlbe_real *q,
+                                   const vlbe_real *u, vlbe_real *K, const vlbe_real *D)
 {
-    int i, j;
-    for (i = 0; i < 10; ++i) {
-        const vlbe_real *Ki = K + i * 10, *Di = D + i * 10;
-        vlbe_real s = dF[i] - pd[0] * Di[4] - pd[1] * Di[9];
-        for (j = 1; j < 4; j += 2) {
-            const int cj = VLBE__ALE_E(j);
-            s += Ki[cj] * q[cj] + Ki[cj + 1] * q[cj + 1] + Di[cj] * u[cj] + Di[cj + 1] * u[cj + 1];
-        }
+    const int n = ly->n;
+    int i, j, c;
+    for (i = 0; i < n; ++i) {
+        const vlbe_real *Ki = K + i * n, *Di = D + i * n;
+        vlbe_real s = dF[i] - pd[0] * Di[ly->p[0]] - pd[1] * Di[ly->p[1]];
+        for (j = 1; j < 4; j += 2)
+            for (c = 0; c < ly->d; ++c) {
+                const int cj = ly->e[j] + c;
+                s += Ki[cj] * q[cj] + Di[cj] * u[cj];
+            }
         s /= L;
-        K[i * 10 + 4] = (pm & 1) ? -s : VLBE_R(0.0);
-        K[i * 10 + 9] = (pm & 2) ? s : VLBE_R(0.0);
+        K[i * n + ly->p[0]] = (pm & 1) ? -s : VLBE_R(0.0);
+        K[i * n + ly->p[1]] = (pm & 2) ? s : VLBE_R(0.0);
     }
 }
 
@@ -1488,12 +1504,12 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     /* p-columns of K by the scaling identity: standard row degrees for all
        terms, the axial part's lower degrees in dQx */
     if (jac && pm) {
-        vlbe__ale_degree(Q, dQ);
+        vlbe__ale_degree(vlbe__ale_lay2(), Q, dQ);
         for (i = 0; i < 10; ++i) dQ[i] += dQx[i];
     }
     if (mode & VLBE_ALE_CONSERVATIVE)
         if ((st = vlbe__ale_flux(el, pm, bend, q, L, Q, K, jac ? dQ : NULL)) != VLBE_OK) return st;
-    if (jac && pm) vlbe__ale_pcols(L, pm, dQ, pd, q, qd, K, D);
+    if (jac && pm) vlbe__ale_pcols(vlbe__ale_lay2(), L, pm, dQ, pd, q, qd, K, D);
     return VLBE_OK;
 }
 
@@ -1626,8 +1642,8 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
             vlbe__ale_mass_pt(&pt, pm, w, M);
         }
         vlbe__ale_mass_mirror(M);
-        vlbe__ale_degree(Ma, dF);
-        vlbe__ale_pcols(L, pm, dF, ap, q, a, J, M);
+        vlbe__ale_degree(vlbe__ale_lay2(), Ma, dF);
+        vlbe__ale_pcols(vlbe__ale_lay2(), L, pm, dF, ap, q, a, J, M);
     }
     for (i = 0; i < 100; ++i) Mq[i] = J[i];
     return VLBE_OK;
@@ -2303,17 +2319,10 @@ VLBE_API int vlbe_ale3_nq(unsigned mode)
     return (mode & VLBE_ALE3_NO_SPIN) ? VLBE_ALE3_NQ - 2 : VLBE_ALE3_NQ;
 }
 
-/* Where the coordinates of one element sit: n per element, e[j] the first
-   of basis j's 3-vector (r1, r1', r2, r2'), th[i] node i's spin angle (-1
-   without spin), p[i] its material coordinate. */
-typedef struct vlbe__a3_lay {
-    int n, spin, e[4], th[2], p[2];
-    int bad; /* a planar-only mode bit (CONSERVATIVE, INV_AXIAL): VLBE_EARG */
-} vlbe__a3_lay;
-
-static inline void vlbe__a3_layout(unsigned mode, vlbe__a3_lay *ly)
+static inline void vlbe__ale_layout(unsigned mode, vlbe__ale_lay *ly)
 {
     const int spin = !(mode & VLBE_ALE3_NO_SPIN), ns = spin ? 8 : 7;
+    ly->d = 3;
     ly->spin = spin;
     ly->bad = (mode & (VLBE_ALE_CONSERVATIVE | VLBE_ALE_INV_AXIAL)) != 0;
     ly->n = 2 * ns;
@@ -2327,7 +2336,7 @@ static inline void vlbe__a3_layout(unsigned mode, vlbe__a3_lay *ly)
     ly->p[1] = 2 * ns - 1;
 }
 
-static inline vlbe_status vlbe__a3_check(const vlbe__a3_lay *ly, const vlbe_real *q,
+static inline vlbe_status vlbe__a3_check(const vlbe__ale_lay *ly, const vlbe_real *q,
                                          const vlbe_real *qd)
 {
     if (ly->bad) return VLBE_EARG;
@@ -2362,7 +2371,7 @@ static inline void vlbe__a3_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, 
 }
 
 /* out = sum_j n[j] x_j over the four 3-vectors of x (r1, r1', r2, r2') */
-static inline void vlbe__a3_sum(const vlbe__a3_lay *ly, const vlbe_real *n, const vlbe_real *x,
+static inline void vlbe__a3_sum(const vlbe__ale_lay *ly, const vlbe_real *n, const vlbe_real *x,
                                 vlbe_real *out)
 {
     int j, c;
@@ -2372,42 +2381,10 @@ static inline void vlbe__a3_sum(const vlbe__a3_lay *ly, const vlbe_real *n, cons
 }
 
 /* sum_j h[j] x_th_j over the two spin angles (0 without spin) */
-static inline vlbe_real vlbe__a3_tsum(const vlbe__a3_lay *ly, const vlbe_real *h,
+static inline vlbe_real vlbe__a3_tsum(const vlbe__ale_lay *ly, const vlbe_real *h,
                                       const vlbe_real *x)
 {
     return ly->spin ? h[0] * x[ly->th[0]] + h[1] * x[ly->th[1]] : VLBE_R(0.0);
-}
-
-/* The degree-weighted force (standard row degrees: 1 for r and theta, 2 for
-   slopes, 0 for p) */
-static inline void vlbe__a3_degree(const vlbe__a3_lay *ly, const vlbe_real *F, vlbe_real *dF)
-{
-    int j, c;
-    for (j = 0; j < ly->n; ++j) dF[j] = F[j];
-    for (j = 1; j < 4; j += 2)
-        for (c = 0; c < 3; ++c) dF[ly->e[j] + c] *= VLBE_R(2.0);
-    dF[ly->p[0]] = dF[ly->p[1]] = VLBE_R(0.0);
-}
-
-/* p-columns of K by the scaling identity (vlbe__ale_pcols for this layout) */
-static inline void vlbe__a3_pcols(const vlbe__a3_lay *ly, vlbe_real L, int pm,
-                                  const vlbe_real *dF, const vlbe_real *pd, const vlbe_real *q,
-                                  const vlbe_real *u, vlbe_real *K, const vlbe_real *D)
-{
-    const int n = ly->n;
-    int i, j, c;
-    for (i = 0; i < n; ++i) {
-        const vlbe_real *Ki = K + i * n, *Di = D + i * n;
-        vlbe_real s = dF[i] - pd[0] * Di[ly->p[0]] - pd[1] * Di[ly->p[1]];
-        for (j = 1; j < 4; j += 2)
-            for (c = 0; c < 3; ++c) {
-                const int cj = ly->e[j] + c;
-                s += Ki[cj] * q[cj] + Di[cj] * u[cj];
-            }
-        s /= L;
-        K[i * n + ly->p[0]] = (pm & 1) ? -s : VLBE_R(0.0);
-        K[i * n + ly->p[1]] = (pm & 2) ? s : VLBE_R(0.0);
-    }
 }
 
 /* [v]x applied: out = v x u, and the matrix rows of [v]x */
@@ -2526,7 +2503,7 @@ static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
    Z = dz/dq, z = (r', r'', phi); with K: the e- and theta-columns of
    -w d(Z^T G)/dq into K, -w Z^T Ad Z into D (all columns) and the degree
    extras into dQ (see vlbe_ale3 notes). */
-static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlbe__a3_lay *ly,
+static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
                                              const vlbe_ale_gp *gp, const vlbe_real *Lp, int pm,
                                              const vlbe_real *pd, int bend, int twist, int damp,
                                              const vlbe_real *q, const vlbe_real *qd,
@@ -2732,7 +2709,7 @@ static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlb
    field (z = f - rhoA eta_p, eqs. 17, 29, 44) and the spin field (z =
    -rhoI eta_p); with K: e/theta-columns of K, and D (e', theta' and p'
    columns).  pt holds k = 0 with all partials when pm != 0. */
-static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe__a3_lay *ly,
+static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe__ale_lay *ly,
                                        const vlbe__a3_pt *pt, int pm, const vlbe_real *pd,
                                        vlbe_real w, const vlbe_real *q, const vlbe_real *qd,
                                        vlbe_real *Q, vlbe_real *K, vlbe_real *D)
@@ -2839,7 +2816,7 @@ static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe__a3_l
         }
 }
 
-static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__a3_lay *ly,
+static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
                                           unsigned mode, const vlbe_real *q, const vlbe_real *qd,
                                           vlbe_real *Q, vlbe_real *K, vlbe_real *D)
 {
@@ -2870,9 +2847,9 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
                                          Q, K, D, dQx)) != VLBE_OK)
                 return st;
     if (K && pm) {
-        vlbe__a3_degree(ly, Q, dQ);
+        vlbe__ale_degree(ly, Q, dQ);
         for (i = 0; i < n; ++i) dQ[i] += dQx[i];
-        vlbe__a3_pcols(ly, L, pm, dQ, pd, q, qd, K, D);
+        vlbe__ale_pcols(ly, L, pm, dQ, pd, q, qd, K, D);
     }
     return VLBE_OK;
 }
@@ -2883,13 +2860,13 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
 {
     vlbe_real Qt[VLBE_ALE3_NQ], Kt[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Dt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
     vlbe_real *Kp = NULL, *Dp = NULL; /* the local K, D when wanted */
-    vlbe__a3_lay ly;
+    vlbe__ale_lay ly;
     const int jac = K != NULL || D != NULL;
     vlbe_status st;
     int i, nn;
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
     mode |= el->flags;
-    vlbe__a3_layout(mode, &ly);
+    vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
     nn = ly.n * ly.n;
     for (i = 0; i < ly.n; ++i) Qt[i] = VLBE_R(0.0);
@@ -2913,14 +2890,14 @@ VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, con
                                     vlbe_real *VLBE_RESTRICT M)
 {
     const vlbe_ale3_mat *mt = &el->mat;
-    vlbe__a3_lay ly;
+    vlbe__ale_lay ly;
     vlbe__a3_pt pt;
     vlbe_real Lp[6], L, X[2][3], Xt[2];
     vlbe_status st;
     int g, i, j, k, l, c, n, pm;
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
     mode |= el->flags;
-    vlbe__a3_layout(mode, &ly);
+    vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
     n = ly.n;
     pm = vlbe__ale_pmask(mode);
@@ -2977,13 +2954,13 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
     const vlbe_ale3_mat *mt = &el->mat;
     vlbe_real J[VLBE_ALE3_NQ * VLBE_ALE3_NQ], M[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
     vlbe_real Ma[VLBE_ALE3_NQ], dF[VLBE_ALE3_NQ], ap[2], Lp[6], L;
-    vlbe__a3_lay ly;
+    vlbe__ale_lay ly;
     vlbe__a3_pt pt;
     vlbe_status st;
     int g, i, j, k, c, n, nn, pm;
     VLBE_ASSERT(el != NULL && q != NULL && a != NULL && Mq != NULL);
     mode |= el->flags;
-    vlbe__a3_layout(mode, &ly);
+    vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, a)) != VLBE_OK) return st;
     n = ly.n;
     nn = n * n;
@@ -3037,8 +3014,8 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
                             J[ly.p[k] * n + cj] += w * (pt.H[0][1 + k][j] * zt + Xt[k] * c2[j]);
                 }
         }
-        vlbe__a3_degree(&ly, Ma, dF);
-        vlbe__a3_pcols(&ly, L, pm, dF, ap, q, a, J, M);
+        vlbe__ale_degree(&ly, Ma, dF);
+        vlbe__ale_pcols(&ly, L, pm, dF, ap, q, a, J, M);
     }
     for (i = 0; i < nn; ++i) Mq[i] = J[i];
     return VLBE_OK;
@@ -3052,13 +3029,13 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
     const vlbe_ale3_mat *mt = &el->mat;
     vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Lp[6], L, T = VLBE_R(0.0), U = VLBE_R(0.0);
     vlbe_real V = VLBE_R(0.0);
-    vlbe__a3_lay ly;
+    vlbe__ale_lay ly;
     vlbe__a3_pt pt;
     vlbe_status st;
     int g, i, j, n, bend, twist;
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
     mode |= el->flags;
-    vlbe__a3_layout(mode, &ly);
+    vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
     if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
     n = ly.n;
@@ -3105,11 +3082,11 @@ VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_rea
                                      vlbe_real *VLBE_RESTRICT r, vlbe_real *VLBE_RESTRICT rp,
                                      vlbe_real *VLBE_RESTRICT th)
 {
-    vlbe__a3_lay ly;
+    vlbe__ale_lay ly;
     vlbe_herm_ale b;
     vlbe_status st;
     VLBE_ASSERT(q != NULL);
-    vlbe__a3_layout(mode, &ly);
+    vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 1, 0, &b);
@@ -3125,12 +3102,12 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
                                       vlbe_real *VLBE_RESTRICT eps, vlbe_real *VLBE_RESTRICT kap,
                                       vlbe_real *VLBE_RESTRICT phi)
 {
-    vlbe__a3_lay ly;
+    vlbe__ale_lay ly;
     vlbe_herm_ale b;
     vlbe_real a[3], r2[3], G[7] = {0, 0, 0, 0, 0, 0, 0}, kk = VLBE_R(0.0);
     vlbe_status st;
     VLBE_ASSERT(q != NULL);
-    vlbe__a3_layout(mode, &ly);
+    vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 2, 0, &b);
@@ -3154,12 +3131,12 @@ static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q,
                                               vlbe_real *Q, vlbe_real *K)
 {
     static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
-    vlbe__a3_lay ly;
+    vlbe__ale_lay ly;
     vlbe_herm_ale b;
     vlbe_real x[3];
     vlbe_status st;
     int j, k, l, c, n;
-    vlbe__a3_layout(mode, &ly);
+    vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(pf) || (torque ? !isfinite(T) : !vlbe_all_finite(F, 3))) return VLBE_ENONFINITE;
     if (torque && !ly.spin) return VLBE_EARG;
