@@ -279,6 +279,7 @@ typedef struct vlbe_ale_gp {
     vlbe_real l[2][VLBE_DA_N][2]; /* the same for the linear H1, H2 (k < 2;
                                      all a at k = 0, a < 3 at k = 1): the
                                      spin angle of the 3D element */
+    vlbe_real b3[4];              /* third p-derivatives of N_{j+1}       */
 } vlbe_ale_gp;
 
 typedef struct vlbe_ale_rule {
@@ -311,7 +312,6 @@ typedef struct vlbe_ale_elem {
     unsigned flags;
     vlbe_ale_rule rm, rl, rt; /* mass/inertia/loads, axial, bending */
     vlbe_ale_gp ends[2];
-    vlbe_real b3[4]; /* third xi-derivatives of the Hermite functions (constants) */
     vlbe_ale_inv inv;
 } vlbe_ale_elem;
 
@@ -369,19 +369,29 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
 #define VLBE__ALE_M(j) ((j) & 1)
 #define VLBE__ALE_P(k) (4 + 5 * (k))
 
-static inline void vlbe__ale_gp_fill(vlbe_ale_gp *gp, vlbe_real xi, vlbe_real w)
+/* One rule point from a basis evaluated at p = xi on [0, 1] (k <= 3, all
+   partials): the Hermite one here, the rational one in rancf.h. */
+static inline void vlbe__ale_gp_set(vlbe_ale_gp *gp, vlbe_real xi, vlbe_real w,
+                                    const vlbe_herm_ale *b)
 {
-    vlbe_herm_ale b;
     int k, a, j;
     gp->xi = xi;
     gp->w = w;
-    vlbe_herm_ale_eval(xi, VLBE_R(0.0), VLBE_R(1.0), 2, 2, &b);
+    for (j = 0; j < 4; ++j) gp->b3[j] = b->h[3][0][j];
     for (k = 0; k < 3; ++k)
         for (a = 0; a < VLBE_DA_N; ++a) {
-            for (j = 0; j < 4; ++j) gp->b[k][a][j] = (k == 0 || a < 3) ? b.h[k][a][j] : VLBE_R(0.0);
+            for (j = 0; j < 4; ++j)
+                gp->b[k][a][j] = (k == 0 || a < 3) ? b->h[k][a][j] : VLBE_R(0.0);
             for (j = 0; k < 2 && j < 2; ++j)
-                gp->l[k][a][j] = (k == 0 || a < 3) ? b.l[k][a][j] : VLBE_R(0.0);
+                gp->l[k][a][j] = (k == 0 || a < 3) ? b->l[k][a][j] : VLBE_R(0.0);
         }
+}
+
+static inline void vlbe__ale_gp_fill(vlbe_ale_gp *gp, vlbe_real xi, vlbe_real w)
+{
+    vlbe_herm_ale b;
+    vlbe_herm_ale_eval(xi, VLBE_R(0.0), VLBE_R(1.0), 3, 2, &b);
+    vlbe__ale_gp_set(gp, xi, w, &b);
 }
 
 static inline vlbe_status vlbe__ale_rule(vlbe_ale_rule *r, int n, int ndef)
@@ -418,12 +428,6 @@ VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *m
     if ((st = vlbe__ale_rule(&el->rt, nt, 5)) != VLBE_OK) return st;
     vlbe__ale_gp_fill(&el->ends[0], VLBE_R(0.0), VLBE_R(0.0));
     vlbe__ale_gp_fill(&el->ends[1], VLBE_R(1.0), VLBE_R(0.0));
-    {
-        vlbe_herm_ale b;
-        int j;
-        vlbe_herm_ale_eval(VLBE_R(0.0), VLBE_R(0.0), VLBE_R(1.0), 3, 0, &b);
-        for (j = 0; j < 4; ++j) el->b3[j] = b.h[3][0][j];
-    }
     if ((st = vlbe_ale_inv_init(&el->inv)) != VLBE_OK) return st;
     el->mat = *mat;
     el->flags = flags;
@@ -1251,7 +1255,7 @@ static inline void vlbe__ale_inv_load(const vlbe_ale_inv *iv, vlbe_real L, const
    N^(c)_j - xi N^(c+1)_j, and d/dp1 = -(d/dp2 + d/dp).  Summed over the
    nodes (E^(c), O^(c): the parts of r^(c) from the positions, the slopes):
        Y2_c = dr^(c)/dp2 = (O^(c) - c r^(c))/L - xi r^(c+1),
-       Y1_c = dr^(c)/dp1 = -Y2_c - r^(c+1),        (r''' is constant)
+       Y1_c = dr^(c)/dp1 = -Y2_c - r^(c+1),
    and, with A = p1' d/dp1 + p2' d/dp2 = (p2' - p1') d/dp2 - p1' d/dp and
    s = p1' + xi (p2' - p1'), the transport acceleration (eq. 15)
        r_v = 2 A v + A^2 r = 2 ((p2' - p1') O_v/L - s v') + 2 (p2' - p1') s E'/L + s^2 r''
@@ -1269,11 +1273,8 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
     const vlbe_real L = Lp[5], Li = Lp[3], a = pd[0], dl = pd[1] - pd[0];
     const vlbe_real cE = damp ? mt->c_eps * mt->EA : VLBE_R(0.0);
     const vlbe_real cB = damp ? mt->c_kap * mt->EI : VLBE_R(0.0);
-    vlbe_real r3[2], R1[VLBE_ALE_NGP_MAX][2], gt[VLBE_ALE_NGP_MAX], g3[VLBE_ALE_NGP_MAX];
+    vlbe_real R1[VLBE_ALE_NGP_MAX][2], gt[VLBE_ALE_NGP_MAX], g3[VLBE_ALE_NGP_MAX];
     int g, b, pass;
-    for (b = 0; b < 2; ++b)
-        r3[b] = Lp[1] * (el->b3[0] * e0[b] + el->b3[2] * e2[b]) +
-                Lp[2] * (el->b3[1] * e1[b] + el->b3[3] * e3[b]);
 
     /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19);
        fixed length with invariants: the load alone, from the tables */
@@ -1340,14 +1341,18 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
         }
         for (g = 0; g < ru->n; ++g) {
             const vlbe_ale_gp *gp = &ru->g[g];
-            const vlbe_real *b1 = gp->b[1][0], *b2 = gp->b[2][0];
+            const vlbe_real *b1 = gp->b[1][0], *b2 = gp->b[2][0], *b3 = gp->b3;
             const vlbe_real w = gp->w * L, xi = gp->xi;
             const vlbe_real n10 = b1[0] * Li, n11 = b1[1], n12 = b1[2] * Li, n13 = b1[3];
             const vlbe_real n20 = b2[0] * Lp[2], n21 = b2[1] * Li, n22 = b2[2] * Lp[2],
                             n23 = b2[3] * Li;
             const vlbe_real *r1 = R1[g];
-            vlbe_real r2[2], Y1[4], Y2[4], yd[4] = {0, 0, 0, 0}, G[4] = {0, 0, 0, 0};
+            vlbe_real r2[2], r3[2], Y1[4], Y2[4], yd[4] = {0, 0, 0, 0}, G[4] = {0, 0, 0, 0};
             vlbe_real gy[4], sig, kap;
+            for (b = 0; b < 2; ++b) {
+                r3[b] = Lp[1] * (b3[0] * e0[b] + b3[2] * e2[b]) +
+                        Lp[2] * (b3[1] * e1[b] + b3[3] * e3[b]);
+            }
             for (b = 0; b < 2; ++b) {
                 const vlbe_real E1 = Li * (b1[0] * e0[b] + b1[2] * e2[b]);
                 const vlbe_real E2 = n20 * e0[b] + n22 * e2[b], O2 = n21 * e1[b] + n23 * e3[b];
@@ -1708,57 +1713,61 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
     return VLBE_OK;
 }
 
-/* Green strain and signed curvature at material point p (either output may
-   be NULL; the curvature needs |r'|^2 > eps). */
-VLBE_API vlbe_status vlbe_ale_strain(const vlbe_real *q, vlbe_real p, vlbe_real *VLBE_RESTRICT eps,
-                                     vlbe_real *VLBE_RESTRICT kap)
+/* Strain and curvature from a basis b evaluated with k <= 2 (shared with
+   rancf.h). */
+static inline vlbe_status vlbe__ale_strain_b(const vlbe_herm_ale *b, const vlbe_real *q,
+                                             vlbe_real *eps, vlbe_real *kap)
 {
-    vlbe_herm_ale b;
     vlbe_real r1[2], r2[2], gy[4], k = VLBE_R(0.0);
     vlbe_status st;
-    VLBE_ASSERT(q != NULL);
-    if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    if (!isfinite(p)) return VLBE_ENONFINITE;
-    vlbe_herm_ale_eval(p, q[4], q[9], 2, 0, &b);
-    vlbe__ale_sum(&b, 1, 0, q, r1);
-    vlbe__ale_sum(&b, 2, 0, q, r2);
+    vlbe__ale_sum(b, 1, 0, q, r1);
+    vlbe__ale_sum(b, 2, 0, q, r2);
     if (kap && (st = vlbe__ale_kap(r1, r2, &k, gy, NULL)) != VLBE_OK) return st;
     if (eps) *eps = vlbe__ale_eps(r1, gy, NULL);
     if (kap) *kap = k;
     return VLBE_OK;
 }
 
+/* Green strain and signed curvature at material point p (either output may
+   be NULL; the curvature needs |r'|^2 > eps). */
+VLBE_API vlbe_status vlbe_ale_strain(const vlbe_real *q, vlbe_real p, vlbe_real *VLBE_RESTRICT eps,
+                                     vlbe_real *VLBE_RESTRICT kap)
+{
+    vlbe_herm_ale b;
+    vlbe_status st;
+    VLBE_ASSERT(q != NULL);
+    if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
+    if (!isfinite(p)) return VLBE_ENONFINITE;
+    vlbe_herm_ale_eval(p, q[4], q[9], 2, 0, &b);
+    return vlbe__ale_strain_b(&b, q, eps, kap);
+}
+
 /* A constant global force F at the material point pf in [p1, p2]:
    Q += N(pf)^T F (planar eq. 45 of [V]), K += d/dq (K may be NULL).  All ten
    rows and columns are written, whatever the element's mode. */
-VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, const vlbe_real *F,
-                                          vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K)
+/* Q += N^T F, K += d/dq from a basis b evaluated with k = 0 and all p1/p2
+   partials (shared with rancf.h). */
+static inline void vlbe__ale_point_force_b(const vlbe_herm_ale *b, const vlbe_real *q,
+                                           const vlbe_real *F, vlbe_real *Q, vlbe_real *K)
 {
     static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
-    vlbe_herm_ale b;
     vlbe_real a[2][2], x[2];
-    vlbe_status st;
     int j, k, l;
-    VLBE_ASSERT(q != NULL && F != NULL && Q != NULL);
-    if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
-    if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
-    vlbe_herm_ale_eval(pf, q[4], q[9], 0, 2, &b);
     for (j = 0; j < 4; ++j) {
         const int r = VLBE__ALE_E(j);
-        Q[r] += b.h[0][0][j] * F[0];
-        Q[r + 1] += b.h[0][0][j] * F[1];
+        Q[r] += b->h[0][0][j] * F[0];
+        Q[r + 1] += b->h[0][0][j] * F[1];
     }
     for (k = 0; k < 2; ++k) {
-        vlbe__ale_sum(&b, 0, 1 + k, q, a[k]);
+        vlbe__ale_sum(b, 0, 1 + k, q, a[k]);
         Q[VLBE__ALE_P(k)] += vlbe_v2_dot(a[k], F);
     }
-    if (!K) return VLBE_OK;
+    if (!K) return;
     for (j = 0; j < 4; ++j) {
         const int c = VLBE__ALE_E(j);
         for (k = 0; k < 2; ++k) {
             const int pk = VLBE__ALE_P(k);
-            const vlbe_real h = b.h[0][1 + k][j];
+            const vlbe_real h = b->h[0][1 + k][j];
             K[c * 10 + pk] += h * F[0];
             K[(c + 1) * 10 + pk] += h * F[1];
             K[pk * 10 + c] += h * F[0];
@@ -1767,9 +1776,22 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
     }
     for (k = 0; k < 2; ++k)
         for (l = 0; l < 2; ++l) {
-            vlbe__ale_sum(&b, 0, dd[k][l], q, x);
+            vlbe__ale_sum(b, 0, dd[k][l], q, x);
             K[VLBE__ALE_P(k) * 10 + VLBE__ALE_P(l)] += vlbe_v2_dot(x, F);
         }
+}
+
+VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, const vlbe_real *F,
+                                          vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K)
+{
+    vlbe_herm_ale b;
+    vlbe_status st;
+    VLBE_ASSERT(q != NULL && F != NULL && Q != NULL);
+    if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
+    if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
+    if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
+    vlbe_herm_ale_eval(pf, q[4], q[9], 0, 2, &b);
+    vlbe__ale_point_force_b(&b, q, F, Q, K);
     return VLBE_OK;
 }
 

@@ -40,8 +40,11 @@ CONVENTIONS
    ones (vlbse eq. 7) H1 = (1-s)/2, H2 = (1+s)/2.  vlbe_herm_ale_eval()
    returns them with their k-th derivatives in p (k <= 3) and their partial
    derivatives with respect to p1 and p2 at fixed p, up to second order,
-   mixed included.  Written as polynomials in d = p - p1 and L, those
-   partials are exact operators: d/dp = D_d, d/dp2 = D_L, d/dp1 = -(D_d + D_L).
+   mixed included.  Each function is L^m g(xi), and those partials follow
+   from the xi-derivatives of g alone (d/dp = D_d, d/dp2 = D_L, d/dp1 =
+   -(D_d + D_L) on functions of d = p - p1 and L; formulas above
+   vlbe__ale_from_xi), so one routine serves every basis of that form: the
+   rational ones of rancf.h use it too.
 
 API (one line each)
    const char *vlbe_status_str(vlbe_status s)          name of a status code
@@ -406,57 +409,64 @@ VLBE_API vlbe_status vlbe_gl_rule(int n, const vlbe_real **xi, const vlbe_real *
 }
 
 /* -- ALE basis ---------------------------------------------------------- */
-/* Each basis function is sum c * d^m * L^e with d = p - p1 (m + e = 0 for
-   N1, N3, H1, H2 and 1 for N2, N4).  The partial derivative
-   D_d^a D_L^b (d^m L^e) = ff(m,a) ff(e,b) d^(m-a) L^(e-b) = ff ff xi^(m-a) L^(m+e-a-b),
-   with ff the falling factorial, is exact; d/dp1 = -(D_d + D_L). */
-VLBE_INLINE vlbe_real vlbe__falling(int x, int k)
+/* A basis function of the ALE form is f = L^m g(xi), xi = (p - p1)/L, L =
+   p2 - p1 (m = 0 for positions, 1 for slopes).  At fixed p, with D_d =
+   d/dp and D_L = d/dp2 (f depends on p - p1 and p2 - p1, so d/dp1 = -(D_d +
+   D_L)), and g^(c) the xi-derivatives:
+     D_d^k f       = L^(m-k)   g^(k)
+     D_L D_d^k f   = L^(m-k-1) A1(k),  A1(k) = (m-k) g^(k) - xi g^(k+1)
+     D_L^2 D_d^k f = L^(m-k-2) A2(k),  A2(k) = (m-k)(m-k-1) g^(k)
+                                              - 2 (m-k-1) xi g^(k+1) + xi^2 g^(k+2)
+   (D_L maps L^n xi^e g^(c) to L^(n-1) ((n-e) xi^e g^(c) - xi^(e+1) g^(c+1))),
+   whence d/dp1 = -L^(m-k-1) (g^(k+1) + A1(k)), d2/dp1dp2 = -L^(m-k-2)
+   (A1(k+1) + A2(k)), d2/dp1^2 = L^(m-k-2) (g^(k+2) + 2 A1(k+1) + A2(k)).
+   Any basis given by its xi-derivatives goes through here: the Hermite and
+   linear ones below, the rational ones of rancf.h.  out[k*VLBE_DA_N + a]
+   for k <= kmax, a < na; g[0 .. kmax + amax] must be set; Lp[i] = L^(i-5). */
+VLBE_INLINE void vlbe__ale_from_xi(int m, vlbe_real xi, const vlbe_real *Lp, const vlbe_real *g,
+                                   int kmax, int na, vlbe_real *out)
 {
-    vlbe_real r = VLBE_R(1.0);
-    int i;
-    for (i = 0; i < k; ++i) r *= (vlbe_real)(x - i);
-    return r;
-}
-
-/* Value of D_p^k D_p1^k1 D_p2^k2 of one function given as nt terms c d^m L^e. */
-VLBE_INLINE vlbe_real vlbe__ale_term_deriv(int nt, const signed char *c, const signed char *m,
-                                           const signed char *e, int k, int k1, int k2,
-                                           const vlbe_real *xip, const vlbe_real *Lp)
-{
-    /* D_p^k (-(D_d + D_L))^k1 D_L^k2 = (-1)^k1 sum_j C(k1,j) D_d^(k+j) D_L^(k1-j+k2) */
-    static const signed char binom[3][3] = {{1, 0, 0}, {1, 1, 0}, {1, 2, 1}};
-    vlbe_real sum = VLBE_R(0.0);
-    int t, j;
-    for (t = 0; t < nt; ++t) {
-        for (j = 0; j <= k1; ++j) {
-            int a = k + j, bb = k1 - j + k2;
-            int pe;
-            vlbe_real f;
-            if (a > m[t]) continue;
-            f = (vlbe_real)c[t] * (vlbe_real)binom[k1][j] * vlbe__falling(m[t], a) *
-                vlbe__falling(e[t], bb);
-            if (f == VLBE_R(0.0)) continue;
-            pe = m[t] + e[t] - a - bb; /* power of L, in [-5, 1] */
-            sum += f * xip[m[t] - a] * Lp[pe + 5];
-        }
+    int k;
+    for (k = 0; k <= kmax; ++k) {
+        const int n = m - k;
+        vlbe_real *o = out + k * VLBE_DA_N;
+        vlbe_real a1, a1n, a2;
+        o[VLBE_DA_0] = g[k] * Lp[n + 5];
+        if (na == 1) continue;
+        a1 = (vlbe_real)n * g[k] - xi * g[k + 1];
+        o[VLBE_DA_2] = a1 * Lp[n + 4];
+        o[VLBE_DA_1] = -(g[k + 1] + a1) * Lp[n + 4];
+        if (na == 3) continue;
+        a1n = (vlbe_real)(n - 1) * g[k + 1] - xi * g[k + 2];
+        a2 = (vlbe_real)(n * (n - 1)) * g[k] - (vlbe_real)(2 * (n - 1)) * xi * g[k + 1] +
+             xi * xi * g[k + 2];
+        o[VLBE_DA_22] = a2 * Lp[n + 3];
+        o[VLBE_DA_12] = -(a1n + a2) * Lp[n + 3];
+        o[VLBE_DA_11] = (g[k + 2] + VLBE_R(2.0) * a1n + a2) * Lp[n + 3];
     }
-    return (k1 % 2) ? -sum : sum;
 }
 
-VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int kmax, int amax,
-                                 vlbe_herm_ale *VLBE_RESTRICT b)
+/* xi-derivatives g[c], c = 0..nd-1, of the cubic c[0] + c[1] xi + c[2] xi^2
+   + c[3] xi^3 (zero beyond the third). */
+VLBE_INLINE void vlbe__cubic_derivs(const vlbe_real *c, vlbe_real xi, int nd, vlbe_real *g)
 {
-    /* terms c d^m L^e of N1..N4 (vlbse eq. 5 with s = 2 xi - 1) and H1, H2 (eq. 7) */
-    static const signed char nt[6] = {3, 3, 2, 2, 2, 1};
-    static const signed char c[6][3] = {{1, -3, 2}, {1, -2, 1}, {3, -2, 0},
-                                        {-1, 1, 0}, {1, -1, 0}, {1, 0, 0}};
-    static const signed char m[6][3] = {{0, 2, 3}, {1, 2, 3}, {2, 3, 0},
-                                        {2, 3, 0}, {0, 1, 0}, {1, 0, 0}};
-    static const signed char e[6][3] = {{0, -2, -3}, {0, -1, -2}, {-2, -3, 0},
-                                        {-1, -2, 0}, {0, -1, 0}, {-1, 0, 0}};
-    /* (k1, k2) of each VLBE_DA_* selector */
-    static const signed char da[VLBE_DA_N][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
-    vlbe_real L = p2 - p1, xi, Li, xip[4], Lp[7];
+    int i;
+    for (i = 0; i < nd; ++i) g[i] = VLBE_R(0.0);
+    g[0] = ((c[3] * xi + c[2]) * xi + c[1]) * xi + c[0];
+    if (nd > 1) g[1] = (VLBE_R(3.0) * c[3] * xi + VLBE_R(2.0) * c[2]) * xi + c[1];
+    if (nd > 2) g[2] = VLBE_R(6.0) * c[3] * xi + VLBE_R(2.0) * c[2];
+    if (nd > 3) g[3] = VLBE_R(6.0) * c[3];
+}
+
+/* Fill b from the xi-derivatives g[i][c] (c <= kmax + amax) of the four
+   functions multiplying r1, r1', r2, r2' (powers of L 0, 1, 0, 1) and the
+   linear H1, H2 (k <= 1). */
+VLBE_INLINE void vlbe__ale_basis_fill(const vlbe_real (*g)[6], vlbe_real p, vlbe_real p1,
+                                      vlbe_real p2, int kmax, int amax,
+                                      vlbe_herm_ale *VLBE_RESTRICT b)
+{
+    static const vlbe_real lin[2][4] = {{1, -1, 0, 0}, {0, 1, 0, 0}};
+    vlbe_real L = p2 - p1, xi, Li, Lp[7], out[4 * VLBE_DA_N], gl[6];
     int na, k, a, i;
     VLBE_ASSERT(b != NULL && L > VLBE_R(0.0));
     VLBE_ASSERT(kmax >= 0 && kmax <= 3 && amax >= 0 && amax <= 2);
@@ -464,25 +474,35 @@ VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int km
     xi = (p - p1) * Li;
     b->L = L;
     b->s = VLBE_R(2.0) * xi - VLBE_R(1.0);
-    xip[0] = VLBE_R(1.0);
-    xip[1] = xi;
-    xip[2] = xi * xi;
-    xip[3] = xip[2] * xi;
-    Lp[6] = L;       /* L^1  */
+    Lp[6] = L;           /* L^1  */
     Lp[5] = VLBE_R(1.0); /* L^0 */
     for (i = 4; i >= 0; --i) Lp[i] = Lp[i + 1] * Li; /* L^-1 .. L^-5 */
     na = amax == 0 ? 1 : (amax == 1 ? 3 : VLBE_DA_N);
-    for (k = 0; k <= kmax; ++k) {
-        for (a = 0; a < na; ++a) {
-            for (i = 0; i < 4; ++i)
-                b->h[k][a][i] = vlbe__ale_term_deriv(nt[i], c[i], m[i], e[i], k, da[a][0], da[a][1],
-                                                    xip, Lp);
-            if (k < 2)
-                for (i = 0; i < 2; ++i)
-                    b->l[k][a][i] = vlbe__ale_term_deriv(nt[4 + i], c[4 + i], m[4 + i], e[4 + i], k,
-                                                        da[a][0], da[a][1], xip, Lp);
-        }
+    for (i = 0; i < 4; ++i) {
+        vlbe__ale_from_xi(i & 1, xi, Lp, g[i], kmax, na, out);
+        for (k = 0; k <= kmax; ++k)
+            for (a = 0; a < na; ++a) b->h[k][a][i] = out[k * VLBE_DA_N + a];
     }
+    for (i = 0; i < 2; ++i) {
+        const int kl = kmax < 1 ? kmax : 1;
+        vlbe__cubic_derivs(lin[i], xi, kl + amax + 1, gl);
+        vlbe__ale_from_xi(0, xi, Lp, gl, kl, na, out);
+        for (k = 0; k <= kl; ++k)
+            for (a = 0; a < na; ++a) b->l[k][a][i] = out[k * VLBE_DA_N + a];
+    }
+}
+
+VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int kmax, int amax,
+                                 vlbe_herm_ale *VLBE_RESTRICT b)
+{
+    /* N1..N4 at L = 1 as cubics in xi (vlbse eq. 5 with s = 2 xi - 1) */
+    static const vlbe_real c[4][4] = {{1, 0, -3, 2}, {0, 1, -2, 1}, {0, 0, 3, -2}, {0, 0, -1, 1}};
+    vlbe_real g[4][6];
+    const vlbe_real xi = (p - p1) * (VLBE_R(1.0) / (p2 - p1)); /* as vlbe__ale_basis_fill */
+    int i;
+    VLBE_ASSERT(kmax >= 0 && kmax <= 3 && amax >= 0 && amax <= 2);
+    for (i = 0; i < 4; ++i) vlbe__cubic_derivs(c[i], xi, kmax + amax + 1, g[i]);
+    vlbe__ale_basis_fill((const vlbe_real(*)[6])g, p, p1, p2, kmax, amax, b);
 }
 
 /* -- dense LU ----------------------------------------------------------- */

@@ -1018,7 +1018,7 @@ static void test_planar_reproduction(void **state)
     const vlbe_ale_mat m2 = mat_std();
     vlbe_ale3_mat m3 = mat3_std();
     const double tol = 32.0 * EPS;
-    vlbe_ale_elem e2;
+    vlbe_ale_elem e2 = {0}; /* cmocka asserts are not noreturn: gcc -O2 cannot see init ran */
     vlbe_ale3_elem e3;
     tu_rng g = tu_rng_seed(316);
     double wq = 0.0, wk = 0.0, wd = 0.0, wmm = 0.0, wx = 0.0, wq1 = 0.0;

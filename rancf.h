@@ -1,0 +1,645 @@
+/* rancf.h -- rational ANCF: the planar RANCF (fixed length) and ALE-RANCF
+   (variable length) beam elements of Ding & Ouyang, rational Bezier <->
+   nodal coordinates, exact segmentation by homogeneous de Casteljau,
+   least-squares weights for merging, circular-arc elements
+   -- part of vlbe v0.1.0                          SPDX-License-Identifier: MIT
+
+USAGE
+   #include "rancf.h"       (vlbe.h and ancf_ale.h must sit in the same
+                             directory; rancf.h builds on ancf_ale.h)
+
+     vlbe_ale_mat mat = {0};  mat.rhoA = ...; mat.EA = ...; mat.EI = ...;
+     const vlbe_real w[4] = {1, w1, w2, 1};           (the element's weights)
+     vlbe_rancf_elem el;                              (one per weight set)
+     if (vlbe_rancf_elem_init(&el, &mat, w, 0, 0, 0, 0)) fail;
+     vlbe_real q[10] = {x1,y1,x1',y1',p1, x2,y2,x2',y2',p2}, qd[10] = ...;
+     vlbe_rancf_mass(&el, 0, q, M);
+     vlbe_rancf_force(&el, 0, q, qd, Q, K, D);        (K, D may be NULL)
+
+CONFIG
+   Nothing beyond vlbe.h.
+
+CONVENTIONS
+   Coordinates, mode flags, units, signs, matrix layout and statuses are
+   those of the planar element of ancf_ale.h (10 coordinates per element,
+   q = [r1, r1', p1, r2, r2', p2], slopes ' = d/dp, M q'' = Q, K = dQ/dq,
+   D = dQ/dq').  What differs is the basis: with u = (p - p1)/L, L = p2 -
+   p1 (eq. 13), the rational cubic Bezier curve with weights w0..w3 > 0
+   (eqs. 1-3) written in the nodal coordinates (eq. 9):
+        s1 = (w0 (1-u)^3 + 3 w1 u (1-u)^2) / W,   s2 = L w0 u (1-u)^2 / W,
+        s3 = (w3 u^3 + 3 w2 u^2 (1-u)) / W,       s4 = -L w3 u^2 (1-u) / W,
+        W  = w0 (1-u)^3 + 3 w1 u (1-u)^2 + 3 w2 u^2 (1-u) + w3 u^3.
+   Only the ratios of the weights matter; the element keeps k_i = w_i / w3
+   (eq. 33).  Unit weights give the cubic Hermite basis: RANCF is ANCF.
+   Weights are attributes of the element, not coordinates (section 2), so
+   each function is L^m g(u) with g fixed, exactly as in ancf_ale.h: the
+   element reuses every kernel of the planar ALE-ANCF element (mass,
+   transport inertia Q_a, axial and bending Kelvin-Voigt forces Q_l, Q_t,
+   load Q_g, eqs. 14-19, their analytic Jacobians and the scaling identity
+   of its p-columns), with Gauss tables filled from the rational basis.
+   vlbe_rancf_elem holds a vlbe_ale_elem (about 16 kB): make one per
+   distinct weight set (a chain whose elements carry different weights
+   needs one per element).
+   Quadrature: the integrands are rational, so no Gauss order is exact;
+   the defaults are the planar element's (nm 4, nl 5, nt 5).  For an arc
+   element of central angle pi/2 (w1 = 0.805) the default mass matrix
+   differs from the 8-point one by about 1e-6 relative (tests/test_rancf.c
+   prints it); smaller angles are much closer.  Pass larger orders to init
+   when a scene needs it.
+   Not available: VLBE_ALE_INV_AXIAL (its invariant tables are those of
+   the polynomial basis): every element call with it returns VLBE_EARG.
+   Bezier form (any dimension d = 1..3): control points P0..P3 (4 d reals)
+   and weights; element nodal form x = [rA, rA', rB, rB'] (4 d reals) and
+   reference length l, related by eqs. 5-6.
+   Errors: as ancf_ale.h, plus VLBE_EWEIGHT for a non-positive or
+   non-finite weight.  On failure no output is written.
+
+API
+   vlbe_status vlbe_rancf_basis_eval(w, p, p1, p2, kmax, amax, b)  rational basis in
+                                            ALE form (the struct of vlbe_herm_ale_eval)
+   vlbe_status vlbe_rancf_elem_init(el, mat, w, flags, nm, nl, nt)  element type, tables
+   vlbe_status vlbe_rancf_mass(el, mode, q, M)              M(q), eq. 19
+   vlbe_status vlbe_rancf_mass_jac(el, mode, q, a, Mq)      d(M a)/dq
+   vlbe_status vlbe_rancf_force(el, mode, q, qd, Q, K, D)   Q and (optional) K, D
+   vlbe_status vlbe_rancf_energy(el, mode, q, qd, E)        E = {T, U, V}
+   vlbe_status vlbe_rancf_point(el, q, p, r, rp)            r(p), r'(p)
+   vlbe_status vlbe_rancf_strain(el, q, p, eps, kap)        strain, curvature at p
+   vlbe_status vlbe_rancf_point_force(el, q, pf, F, Q, K)   Q += N(pf)^T F, K += d/dq
+   vlbe_status vlbe_rancf_to_bezier(d, w, l, x, P)          nodal -> control points (eq. 6)
+   vlbe_status vlbe_rancf_from_bezier(d, w, l, P, x)        control points -> nodal (eq. 5)
+   vlbe_status vlbe_rancf_bezier_eval(d, w, P, u, r)        point of the curve (de Casteljau)
+   vlbe_status vlbe_rancf_bezier_split(d, w, P, u, wl, Pl, wr, Pr)  eq. 21
+   vlbe_status vlbe_rancf_split(el, q, qd, ph, qh, qhd, wl, wr)  element segmentation at
+                                            ph: new node, weights of both parts (eqs. 21-28)
+   vlbe_status vlbe_rancf_merge(d, na, nh, nb, k, info)     merged weights (eqs. 29-38)
+   vlbe_status vlbe_rancf_arc(c, R, a0, theta, w, x)        circular-arc element (eq. 43)
+
+REFERENCES
+   [R] Z. Ding, B. Ouyang, A variable-length rational finite element based on
+       the absolute nodal coordinate formulation, Machines 10 (2022) 174,
+       eqs. 1-38, 43.
+   G. G. Sanborn, A. A. Shabana, A rational finite element method based on
+       the absolute nodal coordinate formulation, Nonlinear Dyn. 58 (2009).
+   L. Piegl, W. Tiller, The NURBS Book, 2nd ed., Springer 1997 (de
+       Casteljau in homogeneous coordinates, circular arcs).
+*/
+#ifndef VLBE_RANCF_H
+#define VLBE_RANCF_H
+#include "vlbe.h"
+#include "ancf_ale.h"
+
+#if !defined(VLBE_VERSION_MAJOR) || VLBE_VERSION_MAJOR != 0 || VLBE_VERSION_MINOR < 1
+#error "rancf.h needs vlbe.h 0.1 or newer in the same directory"
+#endif
+
+/* -- constants ---------------------------------------------------------- */
+#define VLBE_RANCF_DMAX 3 /* largest dimension of the Bezier/merge helpers */
+
+/* -- types -------------------------------------------------------------- */
+/* An element type with its weights: the planar ALE-ANCF element type whose
+   Gauss tables hold the rational basis, and k_i = w_i / w3 (k[3] = 1). */
+typedef struct vlbe_rancf_elem {
+    vlbe_ale_elem ale;
+    vlbe_real k[4];
+} vlbe_rancf_elem;
+
+/* -- API prototypes ----------------------------------------------------- */
+VLBE_API vlbe_status vlbe_rancf_basis_eval(const vlbe_real *w, vlbe_real p, vlbe_real p1,
+                                           vlbe_real p2, int kmax, int amax,
+                                           vlbe_herm_ale *VLBE_RESTRICT b);
+VLBE_API vlbe_status vlbe_rancf_elem_init(vlbe_rancf_elem *el, const vlbe_ale_mat *mat,
+                                          const vlbe_real *w, unsigned flags, int nm, int nl,
+                                          int nt);
+VLBE_API vlbe_status vlbe_rancf_mass(const vlbe_rancf_elem *el, unsigned mode,
+                                     const vlbe_real *q, vlbe_real *VLBE_RESTRICT M);
+VLBE_API vlbe_status vlbe_rancf_mass_jac(const vlbe_rancf_elem *el, unsigned mode,
+                                         const vlbe_real *q, const vlbe_real *a,
+                                         vlbe_real *VLBE_RESTRICT Mq);
+VLBE_API vlbe_status vlbe_rancf_force(const vlbe_rancf_elem *el, unsigned mode,
+                                      const vlbe_real *q, const vlbe_real *qd,
+                                      vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K,
+                                      vlbe_real *VLBE_RESTRICT D);
+VLBE_API vlbe_status vlbe_rancf_energy(const vlbe_rancf_elem *el, unsigned mode,
+                                       const vlbe_real *q, const vlbe_real *qd,
+                                       vlbe_real *VLBE_RESTRICT E);
+VLBE_API vlbe_status vlbe_rancf_point(const vlbe_rancf_elem *el, const vlbe_real *q, vlbe_real p,
+                                      vlbe_real *VLBE_RESTRICT r, vlbe_real *VLBE_RESTRICT rp);
+VLBE_API vlbe_status vlbe_rancf_strain(const vlbe_rancf_elem *el, const vlbe_real *q,
+                                       vlbe_real p, vlbe_real *VLBE_RESTRICT eps,
+                                       vlbe_real *VLBE_RESTRICT kap);
+VLBE_API vlbe_status vlbe_rancf_point_force(const vlbe_rancf_elem *el, const vlbe_real *q,
+                                            vlbe_real pf, const vlbe_real *F,
+                                            vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K);
+VLBE_API vlbe_status vlbe_rancf_to_bezier(int d, const vlbe_real *w, vlbe_real l,
+                                          const vlbe_real *x, vlbe_real *VLBE_RESTRICT P);
+VLBE_API vlbe_status vlbe_rancf_from_bezier(int d, const vlbe_real *w, vlbe_real l,
+                                            const vlbe_real *P, vlbe_real *VLBE_RESTRICT x);
+VLBE_API vlbe_status vlbe_rancf_bezier_eval(int d, const vlbe_real *w, const vlbe_real *P,
+                                            vlbe_real u, vlbe_real *VLBE_RESTRICT r);
+VLBE_API vlbe_status vlbe_rancf_bezier_split(int d, const vlbe_real *w, const vlbe_real *P,
+                                             vlbe_real u, vlbe_real *VLBE_RESTRICT wl,
+                                             vlbe_real *VLBE_RESTRICT Pl,
+                                             vlbe_real *VLBE_RESTRICT wr,
+                                             vlbe_real *VLBE_RESTRICT Pr);
+VLBE_API vlbe_status vlbe_rancf_split(const vlbe_rancf_elem *el, const vlbe_real *q,
+                                      const vlbe_real *qd, vlbe_real ph,
+                                      vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd,
+                                      vlbe_real *VLBE_RESTRICT wl, vlbe_real *VLBE_RESTRICT wr);
+VLBE_API vlbe_status vlbe_rancf_merge(int d, const vlbe_real *na, const vlbe_real *nh,
+                                      const vlbe_real *nb, vlbe_real *VLBE_RESTRICT k,
+                                      int *VLBE_RESTRICT info);
+VLBE_API vlbe_status vlbe_rancf_arc(const vlbe_real *c, vlbe_real R, vlbe_real a0,
+                                    vlbe_real theta, vlbe_real *VLBE_RESTRICT w,
+                                    vlbe_real *VLBE_RESTRICT x);
+
+/* ===== implementation =================================================== */
+
+/* Weights: all finite and > 0 (VLBE_EWEIGHT otherwise); k = w / w3. */
+static inline vlbe_status vlbe__rancf_wnorm(const vlbe_real *w, vlbe_real *k)
+{
+    int i;
+    for (i = 0; i < 4; ++i)
+        if (!isfinite(w[i]) || !(w[i] > VLBE_R(0.0))) return VLBE_EWEIGHT;
+    for (i = 0; i < 3; ++i) k[i] = w[i] / w[3];
+    k[3] = VLBE_R(1.0);
+    return VLBE_OK;
+}
+
+/* xi-derivatives g[j][c], c < nd (nd <= 6), of the four functions of eq. 9
+   at L = 1 from the weights k.  Each is a cubic numerator n_j over the
+   cubic W; by Leibniz on n = g W: g^(c) = (n^(c) - sum_{i<c} C(c,i) g^(i)
+   W^(c-i)) / W (the derivatives of n and W vanish beyond the third). */
+static inline void vlbe__rancf_g(const vlbe_real *k, vlbe_real xi, int nd, vlbe_real (*g)[6])
+{
+    static const vlbe_real binom[6][6] = {{1, 0, 0, 0, 0, 0},  {1, 1, 0, 0, 0, 0},
+                                          {1, 2, 1, 0, 0, 0},  {1, 3, 3, 1, 0, 0},
+                                          {1, 4, 6, 4, 1, 0},  {1, 5, 10, 10, 5, 1}};
+    const vlbe_real k0 = k[0], k1 = k[1], k2 = k[2], k3 = k[3];
+    /* monomial coefficients: (1-u)^3, u(1-u)^2, u^2(1-u), u^3 weighted */
+    const vlbe_real c[4][4] = {
+        {k0, VLBE_R(3.0) * (k1 - k0), VLBE_R(3.0) * k0 - VLBE_R(6.0) * k1,
+         VLBE_R(3.0) * k1 - k0},                                     /* n1 */
+        {VLBE_R(0.0), k0, VLBE_R(-2.0) * k0, k0},                     /* n2 */
+        {VLBE_R(0.0), VLBE_R(0.0), VLBE_R(3.0) * k2, k3 - VLBE_R(3.0) * k2}, /* n3 */
+        {VLBE_R(0.0), VLBE_R(0.0), -k3, k3}};                         /* n4 */
+    vlbe_real cw[4], wd[6], iw;
+    int j, i, m;
+    for (i = 0; i < 4; ++i) cw[i] = c[0][i] + c[2][i]; /* W = n1 + n3 */
+    vlbe__cubic_derivs(cw, xi, nd, wd);
+    iw = VLBE_R(1.0) / wd[0];
+    for (j = 0; j < 4; ++j) {
+        vlbe__cubic_derivs(c[j], xi, nd, g[j]);
+        for (m = 0; m < nd; ++m) {
+            vlbe_real s = g[j][m];
+            for (i = 0; i < m; ++i) s -= binom[m][i] * g[j][i] * wd[m - i];
+            g[j][m] = s * iw;
+        }
+    }
+}
+
+VLBE_API vlbe_status vlbe_rancf_basis_eval(const vlbe_real *w, vlbe_real p, vlbe_real p1,
+                                           vlbe_real p2, int kmax, int amax,
+                                           vlbe_herm_ale *VLBE_RESTRICT b)
+{
+    vlbe_real k[4], g[4][6];
+    vlbe_status st;
+    VLBE_ASSERT(w != NULL && b != NULL);
+    VLBE_ASSERT(kmax >= 0 && kmax <= 3 && amax >= 0 && amax <= 2);
+    if ((st = vlbe__rancf_wnorm(w, k)) != VLBE_OK) return st;
+    if (!isfinite(p) || !isfinite(p1) || !isfinite(p2)) return VLBE_ENONFINITE;
+    if (!(p2 - p1 > VLBE_R(0.0))) return VLBE_ELENGTH;
+    vlbe__rancf_g(k, (p - p1) * (VLBE_R(1.0) / (p2 - p1)), kmax + amax + 1, g);
+    vlbe__ale_basis_fill((const vlbe_real(*)[6])g, p, p1, p2, kmax, amax, b);
+    return VLBE_OK;
+}
+
+/* The basis of the element at p (weights already checked). */
+static inline void vlbe__rancf_eval(const vlbe_rancf_elem *el, vlbe_real p, vlbe_real p1,
+                                    vlbe_real p2, int kmax, int amax, vlbe_herm_ale *b)
+{
+    vlbe_real g[4][6];
+    vlbe__rancf_g(el->k, (p - p1) * (VLBE_R(1.0) / (p2 - p1)), kmax + amax + 1, g);
+    vlbe__ale_basis_fill((const vlbe_real(*)[6])g, p, p1, p2, kmax, amax, b);
+}
+
+/* Refill one rule point of the planar tables with the rational basis. */
+static inline void vlbe__rancf_gp(const vlbe_rancf_elem *el, vlbe_ale_gp *gp)
+{
+    vlbe_herm_ale b;
+    vlbe__rancf_eval(el, gp->xi, VLBE_R(0.0), VLBE_R(1.0), 3, 2, &b);
+    vlbe__ale_gp_set(gp, gp->xi, gp->w, &b);
+}
+
+VLBE_API vlbe_status vlbe_rancf_elem_init(vlbe_rancf_elem *el, const vlbe_ale_mat *mat,
+                                          const vlbe_real *w, unsigned flags, int nm, int nl,
+                                          int nt)
+{
+    vlbe_rancf_elem t;
+    vlbe_ale_rule *ru[3];
+    vlbe_status st;
+    int r, g;
+    VLBE_ASSERT(el != NULL && mat != NULL && w != NULL);
+    if ((st = vlbe__rancf_wnorm(w, t.k)) != VLBE_OK) return st;
+    if (flags & VLBE_ALE_INV_AXIAL) return VLBE_EARG;
+    /* the planar element validates the material and the orders and lays
+       out the rules; its Hermite numbers are then replaced */
+    if ((st = vlbe_ale_elem_init(&t.ale, mat, flags, nm, nl, nt)) != VLBE_OK) return st;
+    ru[0] = &t.ale.rm;
+    ru[1] = &t.ale.rl;
+    ru[2] = &t.ale.rt;
+    for (r = 0; r < 3; ++r)
+        for (g = 0; g < ru[r]->n; ++g) vlbe__rancf_gp(&t, &ru[r]->g[g]);
+    vlbe__rancf_gp(&t, &t.ale.ends[0]);
+    vlbe__rancf_gp(&t, &t.ale.ends[1]);
+    *el = t;
+    return VLBE_OK;
+}
+
+/* Element calls: the planar kernels on the rational tables. */
+static inline vlbe_status vlbe__rancf_mode(const vlbe_rancf_elem *el, unsigned mode)
+{
+    return ((mode | el->ale.flags) & VLBE_ALE_INV_AXIAL) ? VLBE_EARG : VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_rancf_mass(const vlbe_rancf_elem *el, unsigned mode,
+                                     const vlbe_real *q, vlbe_real *VLBE_RESTRICT M)
+{
+    VLBE_ASSERT(el != NULL);
+    if (vlbe__rancf_mode(el, mode)) return VLBE_EARG;
+    return vlbe_ale_mass(&el->ale, mode, q, M);
+}
+
+VLBE_API vlbe_status vlbe_rancf_mass_jac(const vlbe_rancf_elem *el, unsigned mode,
+                                         const vlbe_real *q, const vlbe_real *a,
+                                         vlbe_real *VLBE_RESTRICT Mq)
+{
+    VLBE_ASSERT(el != NULL);
+    if (vlbe__rancf_mode(el, mode)) return VLBE_EARG;
+    return vlbe_ale_mass_jac(&el->ale, mode, q, a, Mq);
+}
+
+VLBE_API vlbe_status vlbe_rancf_force(const vlbe_rancf_elem *el, unsigned mode,
+                                      const vlbe_real *q, const vlbe_real *qd,
+                                      vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K,
+                                      vlbe_real *VLBE_RESTRICT D)
+{
+    VLBE_ASSERT(el != NULL);
+    if (vlbe__rancf_mode(el, mode)) return VLBE_EARG;
+    return vlbe_ale_force(&el->ale, mode, q, qd, Q, K, D);
+}
+
+VLBE_API vlbe_status vlbe_rancf_energy(const vlbe_rancf_elem *el, unsigned mode,
+                                       const vlbe_real *q, const vlbe_real *qd,
+                                       vlbe_real *VLBE_RESTRICT E)
+{
+    VLBE_ASSERT(el != NULL);
+    if (vlbe__rancf_mode(el, mode)) return VLBE_EARG;
+    return vlbe_ale_energy(&el->ale, mode, q, qd, E);
+}
+
+/* r(p) and r'(p) (either may be NULL); p may lie outside [p1, p2] as long
+   as W > 0 there (the curve is extrapolated). */
+VLBE_API vlbe_status vlbe_rancf_point(const vlbe_rancf_elem *el, const vlbe_real *q, vlbe_real p,
+                                      vlbe_real *VLBE_RESTRICT r, vlbe_real *VLBE_RESTRICT rp)
+{
+    vlbe_herm_ale b;
+    vlbe_status st;
+    VLBE_ASSERT(el != NULL && q != NULL);
+    if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
+    if (!isfinite(p)) return VLBE_ENONFINITE;
+    vlbe__rancf_eval(el, p, q[4], q[9], 1, 0, &b);
+    if (r) vlbe__ale_sum(&b, 0, 0, q, r);
+    if (rp) vlbe__ale_sum(&b, 1, 0, q, rp);
+    return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_rancf_strain(const vlbe_rancf_elem *el, const vlbe_real *q,
+                                       vlbe_real p, vlbe_real *VLBE_RESTRICT eps,
+                                       vlbe_real *VLBE_RESTRICT kap)
+{
+    vlbe_herm_ale b;
+    vlbe_status st;
+    VLBE_ASSERT(el != NULL && q != NULL);
+    if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
+    if (!isfinite(p)) return VLBE_ENONFINITE;
+    vlbe__rancf_eval(el, p, q[4], q[9], 2, 0, &b);
+    return vlbe__ale_strain_b(&b, q, eps, kap);
+}
+
+VLBE_API vlbe_status vlbe_rancf_point_force(const vlbe_rancf_elem *el, const vlbe_real *q,
+                                            vlbe_real pf, const vlbe_real *F,
+                                            vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K)
+{
+    vlbe_herm_ale b;
+    vlbe_status st;
+    VLBE_ASSERT(el != NULL && q != NULL && F != NULL && Q != NULL);
+    if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
+    if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
+    if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
+    vlbe__rancf_eval(el, pf, q[4], q[9], 0, 2, &b);
+    vlbe__ale_point_force_b(&b, q, F, Q, K);
+    return VLBE_OK;
+}
+
+/* -- Bezier form ---------------------------------------------------------- */
+static inline vlbe_status vlbe__rancf_bz_check(int d, const vlbe_real *w, vlbe_real *k)
+{
+    if (d < 1 || d > VLBE_RANCF_DMAX) return VLBE_EARG;
+    return vlbe__rancf_wnorm(w, k);
+}
+
+/* eq. 6: P0 = rA, P1 = rA + l w0/(3 w1) rA', P2 = rB - l w3/(3 w2) rB', P3 = rB */
+VLBE_API vlbe_status vlbe_rancf_to_bezier(int d, const vlbe_real *w, vlbe_real l,
+                                          const vlbe_real *x, vlbe_real *VLBE_RESTRICT P)
+{
+    vlbe_real k[4];
+    vlbe_status st;
+    int i;
+    VLBE_ASSERT(w != NULL && x != NULL && P != NULL);
+    if ((st = vlbe__rancf_bz_check(d, w, k)) != VLBE_OK) return st;
+    if (!isfinite(l) || !vlbe_all_finite(x, 4 * d)) return VLBE_ENONFINITE;
+    if (!(l > VLBE_R(0.0))) return VLBE_ELENGTH;
+    for (i = 0; i < d; ++i) {
+        P[i] = x[i];
+        P[d + i] = x[i] + l * k[0] / (VLBE_R(3.0) * k[1]) * x[d + i];
+        P[2 * d + i] = x[2 * d + i] - l * k[3] / (VLBE_R(3.0) * k[2]) * x[3 * d + i];
+        P[3 * d + i] = x[2 * d + i];
+    }
+    return VLBE_OK;
+}
+
+/* eq. 5: rA' = 3 w1/(l w0) (P1 - P0), rB' = 3 w2/(l w3) (P3 - P2) */
+VLBE_API vlbe_status vlbe_rancf_from_bezier(int d, const vlbe_real *w, vlbe_real l,
+                                            const vlbe_real *P, vlbe_real *VLBE_RESTRICT x)
+{
+    vlbe_real k[4];
+    vlbe_status st;
+    int i;
+    VLBE_ASSERT(w != NULL && x != NULL && P != NULL);
+    if ((st = vlbe__rancf_bz_check(d, w, k)) != VLBE_OK) return st;
+    if (!isfinite(l) || !vlbe_all_finite(P, 4 * d)) return VLBE_ENONFINITE;
+    if (!(l > VLBE_R(0.0))) return VLBE_ELENGTH;
+    for (i = 0; i < d; ++i) {
+        x[i] = P[i];
+        x[d + i] = VLBE_R(3.0) * k[1] / (l * k[0]) * (P[d + i] - P[i]);
+        x[2 * d + i] = P[3 * d + i];
+        x[3 * d + i] = VLBE_R(3.0) * k[2] / (l * k[3]) * (P[3 * d + i] - P[2 * d + i]);
+    }
+    return VLBE_OK;
+}
+
+/* de Casteljau on the homogeneous points H_i = (w_i P_i, w_i) at u: the
+   triangle t[level][i] (level 0: the H_i), d + 1 numbers each. */
+static inline void vlbe__rancf_casteljau(int d, const vlbe_real *k, const vlbe_real *P,
+                                         vlbe_real u, vlbe_real (*t)[4][VLBE_RANCF_DMAX + 1])
+{
+    int i, j, lv;
+    for (i = 0; i < 4; ++i) {
+        for (j = 0; j < d; ++j) t[0][i][j] = k[i] * P[i * d + j];
+        t[0][i][d] = k[i];
+    }
+    for (lv = 1; lv < 4; ++lv)
+        for (i = 0; i < 4 - lv; ++i)
+            for (j = 0; j <= d; ++j)
+                t[lv][i][j] = (VLBE_R(1.0) - u) * t[lv - 1][i][j] + u * t[lv - 1][i + 1][j];
+}
+
+VLBE_API vlbe_status vlbe_rancf_bezier_eval(int d, const vlbe_real *w, const vlbe_real *P,
+                                            vlbe_real u, vlbe_real *VLBE_RESTRICT r)
+{
+    vlbe_real k[4], t[4][4][VLBE_RANCF_DMAX + 1];
+    vlbe_status st;
+    int j;
+    VLBE_ASSERT(w != NULL && P != NULL && r != NULL);
+    if ((st = vlbe__rancf_bz_check(d, w, k)) != VLBE_OK) return st;
+    if (!isfinite(u) || !vlbe_all_finite(P, 4 * d)) return VLBE_ENONFINITE;
+    vlbe__rancf_casteljau(d, k, P, u, t);
+    if (!(t[3][0][d] > VLBE_R(0.0))) return VLBE_EWEIGHT; /* W <= 0 outside [0, 1] */
+    for (j = 0; j < d; ++j) r[j] = t[3][0][j] / t[3][0][d];
+    return VLBE_OK;
+}
+
+/* eq. 21: the left curve's homogeneous points are the triangle's first
+   column t[0][0], t[1][0], t[2][0], t[3][0], the right one's its diagonal
+   t[3][0], t[2][1], t[1][2], t[0][3]; weights the last component, points
+   the first d divided by it.  Output weights are normalized (w3 = 1). */
+VLBE_API vlbe_status vlbe_rancf_bezier_split(int d, const vlbe_real *w, const vlbe_real *P,
+                                             vlbe_real u, vlbe_real *VLBE_RESTRICT wl,
+                                             vlbe_real *VLBE_RESTRICT Pl,
+                                             vlbe_real *VLBE_RESTRICT wr,
+                                             vlbe_real *VLBE_RESTRICT Pr)
+{
+    vlbe_real k[4], t[4][4][VLBE_RANCF_DMAX + 1];
+    vlbe_status st;
+    int i, j;
+    VLBE_ASSERT(w != NULL && P != NULL);
+    if ((st = vlbe__rancf_bz_check(d, w, k)) != VLBE_OK) return st;
+    if (!isfinite(u) || !vlbe_all_finite(P, 4 * d)) return VLBE_ENONFINITE;
+    if (!(u > VLBE_R(0.0) && u < VLBE_R(1.0))) return VLBE_EBOUND;
+    vlbe__rancf_casteljau(d, k, P, u, t);
+    for (i = 0; i < 4; ++i) {
+        const vlbe_real *hl = t[i][0], *hr = t[3 - i][i];
+        if (wl) wl[i] = hl[d] / t[3][0][d];
+        if (wr) wr[i] = hr[d] / t[0][3][d];
+        for (j = 0; j < d; ++j) {
+            if (Pl) Pl[i * d + j] = hl[j] / hl[d];
+            if (Pr) Pr[i * d + j] = hr[j] / hr[d];
+        }
+    }
+    return VLBE_OK;
+}
+
+/* Segmentation of an element at the material point ph in (p1, p2) (eqs.
+   21-28): the new node qh = [r, r', ph] is the point and slope of the
+   element at ph (eq. 27: both parts share it, and every material point
+   keeps its position), qhd its material rate (p' = 0: the new node is
+   fixed in the material); wl, wr the weights of the parts [p1, ph] and
+   [ph, p2], normalized (w3 = 1).  qd, qhd, wl, wr may be NULL. */
+VLBE_API vlbe_status vlbe_rancf_split(const vlbe_rancf_elem *el, const vlbe_real *q,
+                                      const vlbe_real *qd, vlbe_real ph,
+                                      vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd,
+                                      vlbe_real *VLBE_RESTRICT wl, vlbe_real *VLBE_RESTRICT wr)
+{
+    vlbe_real P[8], x[8], wlo[4], wro[4];
+    vlbe_herm_ale b;
+    vlbe_status st;
+    int k;
+    VLBE_ASSERT(el != NULL && q != NULL && qh != NULL);
+    if ((st = vlbe__ale_check(q, qd)) != VLBE_OK) return st;
+    if (!isfinite(ph)) return VLBE_ENONFINITE;
+    if (!(ph > q[4] && ph < q[9])) return VLBE_EBOUND;
+    for (k = 0; k < 4; ++k) { /* x = [r1, r1', r2, r2'] */
+        x[2 * k] = q[VLBE__ALE_E(k)];
+        x[2 * k + 1] = q[VLBE__ALE_E(k) + 1];
+    }
+    if ((st = vlbe_rancf_to_bezier(2, el->k, q[9] - q[4], x, P)) != VLBE_OK) return st;
+    if ((st = vlbe_rancf_bezier_split(2, el->k, P, (ph - q[4]) / (q[9] - q[4]), wlo, NULL, wro,
+                                      NULL)) != VLBE_OK)
+        return st;
+    vlbe__rancf_eval(el, ph, q[4], q[9], 1, 1, &b);
+    for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
+        vlbe__ale_sum(&b, k, 0, q, qh + 2 * k);
+        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, qhd + 2 * k);
+    }
+    qh[4] = ph;
+    if (qd && qhd) qhd[4] = VLBE_R(0.0);
+    for (k = 0; k < 4; ++k) {
+        if (wl) wl[k] = wlo[k];
+        if (wr) wr[k] = wro[k];
+    }
+    return VLBE_OK;
+}
+
+/* Minimum-norm least-squares solution of A x = B, A d x 3 (d <= 3, row
+   major), by one-sided Jacobi (Hestenes): rotations V make the columns of
+   A V orthogonal, their norms are the singular values s_j, and x = V
+   diag(1/s_j) (A V)^T B over the s_j above 8 EPS max s (smaller ones are
+   rank deficiency: their directions get no component, hence the minimum
+   norm).  VLBE_ESINGULAR when A is zero. */
+static inline vlbe_status vlbe__rancf_minnorm(int d, const vlbe_real *A, const vlbe_real *B,
+                                              vlbe_real *x)
+{
+    vlbe_real U[VLBE_RANCF_DMAX][3], V[3][3], s[3], smax = VLBE_R(0.0);
+    int i, j, a, b, sweep;
+    for (i = 0; i < d; ++i)
+        for (j = 0; j < 3; ++j) U[i][j] = A[i * 3 + j];
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) V[i][j] = i == j ? VLBE_R(1.0) : VLBE_R(0.0);
+    for (sweep = 0; sweep < 30; ++sweep) {
+        int rot = 0;
+        for (a = 0; a < 2; ++a)
+            for (b = a + 1; b < 3; ++b) {
+                vlbe_real al = VLBE_R(0.0), be = VLBE_R(0.0), ga = VLBE_R(0.0), ze, t, cs, sn;
+                for (i = 0; i < d; ++i) {
+                    al += U[i][a] * U[i][a];
+                    be += U[i][b] * U[i][b];
+                    ga += U[i][a] * U[i][b];
+                }
+                if (vlbe_fabs(ga) <= VLBE_EPS * vlbe_sqrt(al * be)) continue;
+                rot = 1;
+                ze = (be - al) / (VLBE_R(2.0) * ga);
+                t = (ze >= VLBE_R(0.0) ? VLBE_R(1.0) : VLBE_R(-1.0)) /
+                    (vlbe_fabs(ze) + vlbe_sqrt(VLBE_R(1.0) + ze * ze));
+                cs = VLBE_R(1.0) / vlbe_sqrt(VLBE_R(1.0) + t * t);
+                sn = cs * t;
+                for (i = 0; i < d; ++i) {
+                    const vlbe_real ua = U[i][a], ub = U[i][b];
+                    U[i][a] = cs * ua - sn * ub;
+                    U[i][b] = sn * ua + cs * ub;
+                }
+                for (i = 0; i < 3; ++i) {
+                    const vlbe_real va = V[i][a], vb = V[i][b];
+                    V[i][a] = cs * va - sn * vb;
+                    V[i][b] = sn * va + cs * vb;
+                }
+            }
+        if (!rot) break;
+    }
+    for (j = 0; j < 3; ++j) {
+        vlbe_real n2 = VLBE_R(0.0);
+        for (i = 0; i < d; ++i) n2 += U[i][j] * U[i][j];
+        s[j] = vlbe_sqrt(n2);
+        if (s[j] > smax) smax = s[j];
+    }
+    if (!(smax > VLBE_R(0.0))) return VLBE_ESINGULAR;
+    for (i = 0; i < 3; ++i) x[i] = VLBE_R(0.0);
+    for (j = 0; j < 3; ++j) {
+        vlbe_real c = VLBE_R(0.0);
+        if (!(s[j] > VLBE_R(8.0) * VLBE_EPS * smax)) continue;
+        for (i = 0; i < d; ++i) c += U[i][j] * B[i];
+        c /= s[j] * s[j];
+        for (i = 0; i < 3; ++i) x[i] += V[i][j] * c;
+    }
+    return VLBE_OK;
+}
+
+/* Weights of the element AB that replaces AH and HB (eqs. 29-38).  na, nh,
+   nb: the nodes [r, r', p] (2 d + 1 reals each, d = 2 or 3) with pA < pH <
+   pB.  The merged element keeps the nodes A and B; its weights k (k[3] =
+   1, eq. 33) are chosen so that it passes through r_H at u_H = (pH -
+   pA)/(pB - pA) (eqs. 31-32).  Times W, eq. 34 is linear in k:
+     k0 [(1-u)^3 (rA - rH) + l u (1-u)^2 rA'] + k1 3u(1-u)^2 (rA - rH)
+     + k2 3u^2(1-u) (rB - rH) + [u^3 (rB - rH) - l u^2 (1-u) rB'] = 0,
+   with k = 1 + x (eq. 35) the minimum-norm least-squares x (eq. 37); if a
+   k_i is not positive, k = 1 (eq. 38).  info (may be NULL): 0 the least
+   squares weights, 1 the fallback of eq. 38.  VLBE_ESINGULAR when the
+   system is degenerate (its matrix is zero: r_H coincides with both ends
+   and the end slopes vanish). */
+VLBE_API vlbe_status vlbe_rancf_merge(int d, const vlbe_real *na, const vlbe_real *nh,
+                                      const vlbe_real *nb, vlbe_real *VLBE_RESTRICT k,
+                                      int *VLBE_RESTRICT info)
+{
+    vlbe_real A[VLBE_RANCF_DMAX * 3], B[VLBE_RANCF_DMAX], x[3], u, l, a3, b3, c1, c2;
+    vlbe_status st;
+    int i, j, fb = 0;
+    VLBE_ASSERT(na != NULL && nh != NULL && nb != NULL && k != NULL);
+    if (d < 2 || d > 3) return VLBE_EARG;
+    if (!vlbe_all_finite(na, 2 * d + 1) || !vlbe_all_finite(nh, 2 * d + 1) ||
+        !vlbe_all_finite(nb, 2 * d + 1))
+        return VLBE_ENONFINITE;
+    if (!(nh[2 * d] > na[2 * d] && nb[2 * d] > nh[2 * d])) return VLBE_ELENGTH;
+    l = nb[2 * d] - na[2 * d];
+    u = (nh[2 * d] - na[2 * d]) / l;
+    a3 = (VLBE_R(1.0) - u) * (VLBE_R(1.0) - u) * (VLBE_R(1.0) - u);
+    b3 = u * u * u;
+    c1 = u * (VLBE_R(1.0) - u) * (VLBE_R(1.0) - u);
+    c2 = u * u * (VLBE_R(1.0) - u);
+    for (i = 0; i < d; ++i) {
+        const vlbe_real dA = na[i] - nh[i], dB = nb[i] - nh[i];
+        A[i * 3 + 0] = a3 * dA + l * c1 * na[d + i];
+        A[i * 3 + 1] = VLBE_R(3.0) * c1 * dA;
+        A[i * 3 + 2] = VLBE_R(3.0) * c2 * dB;
+        /* B = -(A 1 + c): the residual of unit weights, with the sign */
+        B[i] = -(A[i * 3 + 0] + A[i * 3 + 1] + A[i * 3 + 2] + b3 * dB - l * c2 * nb[d + i]);
+    }
+    if ((st = vlbe__rancf_minnorm(d, A, B, x)) != VLBE_OK) return st;
+    for (j = 0; j < 3; ++j)
+        if (!(x[j] + VLBE_R(1.0) > VLBE_R(0.0)) || !isfinite(x[j])) fb = 1;
+    for (j = 0; j < 3; ++j) k[j] = fb ? VLBE_R(1.0) : x[j] + VLBE_R(1.0);
+    k[3] = VLBE_R(1.0);
+    if (info) *info = fb;
+    return VLBE_OK;
+}
+
+/* A circular-arc element (eq. 43): centre c (2), radius R > 0, the arc
+   from polar angle a0 through the central angle theta (0 < |theta| < pi;
+   negative: clockwise).  w = {1, w1, w1, 1}, w1 = (1 + 2 cos(theta/2))/3
+   (the rational quadratic arc of weight cos(theta/2) raised to degree 3),
+   x = [rA, rA', rB, rB'] with the slopes for the reference length l = R
+   |theta| (the arc length): rA' = 2 cos(theta/2)/(|theta| R) (rC - rA),
+   rB' = 2 cos(theta/2)/(|theta| R) (rB - rC), rC the tangents' crossing,
+   so |rA'| = |rB'| = 2 sin(|theta|/2)/|theta|. */
+VLBE_API vlbe_status vlbe_rancf_arc(const vlbe_real *c, vlbe_real R, vlbe_real a0,
+                                    vlbe_real theta, vlbe_real *VLBE_RESTRICT w,
+                                    vlbe_real *VLBE_RESTRICT x)
+{
+    vlbe_real h, ch, sg, f, tA[2], tB[2], a1;
+    VLBE_ASSERT(c != NULL && w != NULL && x != NULL);
+    if (!vlbe_all_finite(c, 2) || !isfinite(R) || !isfinite(a0) || !isfinite(theta))
+        return VLBE_ENONFINITE;
+    if (!(R > VLBE_R(0.0))) return VLBE_ELENGTH;
+    h = VLBE_R(0.5) * vlbe_fabs(theta);
+    if (!(h > VLBE_R(0.0) && VLBE_R(2.0) * h < VLBE_R(3.14159265358979323846))) return VLBE_EARG;
+    ch = vlbe_cos(h);
+    sg = theta > VLBE_R(0.0) ? VLBE_R(1.0) : VLBE_R(-1.0);
+    a1 = a0 + theta;
+    w[0] = w[3] = VLBE_R(1.0);
+    w[1] = w[2] = (VLBE_R(1.0) + VLBE_R(2.0) * ch) / VLBE_R(3.0);
+    x[0] = c[0] + R * vlbe_cos(a0);
+    x[1] = c[1] + R * vlbe_sin(a0);
+    x[4] = c[0] + R * vlbe_cos(a1);
+    x[5] = c[1] + R * vlbe_sin(a1);
+    /* unit tangents in the direction of travel; |rC - rA| = R tan(h) */
+    tA[0] = -sg * vlbe_sin(a0);
+    tA[1] = sg * vlbe_cos(a0);
+    tB[0] = -sg * vlbe_sin(a1);
+    tB[1] = sg * vlbe_cos(a1);
+    f = vlbe_sin(h) / h; /* 2 cos(h)/(2 h R) R tan(h) */
+    x[2] = f * tA[0];
+    x[3] = f * tA[1];
+    x[6] = f * tB[0];
+    x[7] = f * tB[1];
+    return VLBE_OK;
+}
+
+#endif /* VLBE_RANCF_H */
