@@ -73,6 +73,8 @@ API
                                             ph: new node, weights of both parts (eqs. 21-28)
    vlbe_status vlbe_rancf_merge(d, na, nh, nb, k, info)     merged weights (eqs. 29-38)
    vlbe_status vlbe_rancf_arc(c, R, a0, theta, w, x)        circular-arc element (eq. 43)
+   vlbe_status vlbe_rancf_nurbs(d, deg, nc, P, wc, U, len, cap, &ne, w, x, p)  a NURBS
+                                            curve as elements (exact geometry)
 
 REFERENCES
    [R] Z. Ding, B. Ouyang, A variable-length rational finite element based on
@@ -151,6 +153,10 @@ VLBE_API vlbe_status vlbe_rancf_merge(int d, const vlbe_real *na, const vlbe_rea
 VLBE_API vlbe_status vlbe_rancf_arc(const vlbe_real *c, vlbe_real R, vlbe_real a0,
                                     vlbe_real theta, vlbe_real *VLBE_RESTRICT w,
                                     vlbe_real *VLBE_RESTRICT x);
+VLBE_API vlbe_status vlbe_rancf_nurbs(int d, int deg, int nc, const vlbe_real *P,
+                                      const vlbe_real *wc, const vlbe_real *U, vlbe_real len,
+                                      int cap, int *VLBE_RESTRICT ne, vlbe_real *VLBE_RESTRICT w,
+                                      vlbe_real *VLBE_RESTRICT x, vlbe_real *VLBE_RESTRICT p);
 
 /* ===== implementation =================================================== */
 
@@ -639,6 +645,100 @@ VLBE_API vlbe_status vlbe_rancf_arc(const vlbe_real *c, vlbe_real R, vlbe_real a
     x[3] = f * tA[1];
     x[6] = f * tB[0];
     x[7] = f * tB[1];
+    return VLBE_OK;
+}
+
+/* A NURBS curve as a chain of elements (the geometry exactly): degree deg
+   = 1..3 in d = 1..3 dimensions, nc >= deg + 1 control points P (nc d
+   reals) with weights wc > 0, clamped knots U (nc + deg + 1, non-decreasing,
+   the first and the last deg + 1 equal).  Each non-empty knot span
+   [U_i, U_i+1) is one rational Bezier piece: its homogeneous control
+   points are the blossom values f(U_i^(deg-j), U_i+1^j), j = 0..deg (de
+   Boor's algorithm with one argument per level, Piegl & Tiller ch. 5),
+   raised to degree 3 (Q_j of the cubic = the combinations of the
+   degree-elevation formula, in homogeneous coordinates) and converted to
+   nodal form by eq. 5 with the reference length l_e = len (U_i+1 - U_i) /
+   (U_end - U_start): the material coordinate is an affine function of the
+   knot parameter, so the slopes of neighbours agree at every node where the
+   curve is C1 in that parameter (with a knot of multiplicity deg they may
+   not: compare x of the two elements).  len > 0: the material length of
+   the whole curve (for an unstressed reference, its arc length).
+   Output, ne <= cap elements: w (4 per element, w3 = 1), x (4 d per
+   element: [rA, rA', rB, rB']), p (ne + 1 nodal material coordinates from
+   0).  Errors: VLBE_EARG (d, deg, nc, knots), VLBE_EWEIGHT, VLBE_ENONFINITE,
+   VLBE_ELENGTH (len <= 0), VLBE_EWORK (more than cap spans); nothing is
+   written then. */
+VLBE_API vlbe_status vlbe_rancf_nurbs(int d, int deg, int nc, const vlbe_real *P,
+                                      const vlbe_real *wc, const vlbe_real *U, vlbe_real len,
+                                      int cap, int *VLBE_RESTRICT ne, vlbe_real *VLBE_RESTRICT w,
+                                      vlbe_real *VLBE_RESTRICT x, vlbe_real *VLBE_RESTRICT p)
+{
+    /* degree elevation to 3: Q_j = sum_i E[deg-1][j][i] H_i */
+    static const vlbe_real E[3][4][4] = {
+        {{3, 0, 0, 0}, {2, 1, 0, 0}, {1, 2, 0, 0}, {0, 3, 0, 0}},
+        {{3, 0, 0, 0}, {1, 2, 0, 0}, {0, 2, 1, 0}, {0, 0, 3, 0}},
+        {{3, 0, 0, 0}, {0, 3, 0, 0}, {0, 0, 3, 0}, {0, 0, 0, 3}}};
+    const int nk = nc + deg + 1, D = d + 1;
+    vlbe_real S, Pb[4 * VLBE_RANCF_DMAX], wb[4];
+    int i, j, m, r, cnt = 0, e = 0;
+    VLBE_ASSERT(P != NULL && wc != NULL && U != NULL && ne != NULL);
+    if (d < 1 || d > VLBE_RANCF_DMAX || deg < 1 || deg > 3 || nc < deg + 1) return VLBE_EARG;
+    if (!vlbe_all_finite(P, nc * d) || !vlbe_all_finite(U, nk) || !isfinite(len))
+        return VLBE_ENONFINITE;
+    for (i = 0; i < nc; ++i)
+        if (!isfinite(wc[i]) || !(wc[i] > VLBE_R(0.0))) return VLBE_EWEIGHT;
+    for (i = 0; i + 1 < nk; ++i)
+        if (U[i + 1] < U[i]) return VLBE_EARG;
+    for (i = 1; i <= deg; ++i)
+        if (U[i] != U[0] || U[nk - 1 - i] != U[nk - 1]) return VLBE_EARG;
+    if (!(U[nk - 1] > U[0])) return VLBE_EARG;
+    if (!(len > VLBE_R(0.0))) return VLBE_ELENGTH;
+    for (i = deg; i < nc; ++i)
+        if (U[i + 1] > U[i]) ++cnt;
+    if (cnt > cap) return VLBE_EWORK;
+    VLBE_ASSERT(w != NULL && x != NULL && p != NULL);
+    S = len / (U[nk - 1] - U[0]);
+    p[0] = VLBE_R(0.0);
+    for (i = deg; i < nc; ++i) { /* span [U_i, U_i+1) with points deg..i */
+        const vlbe_real a = U[i], b = U[i + 1];
+        vlbe_real H[4][VLBE_RANCF_DMAX + 1], Q[4][VLBE_RANCF_DMAX + 1], l;
+        if (!(b > a)) continue;
+        for (j = 0; j <= deg; ++j) { /* blossom f(a^(deg-j), b^j) */
+            vlbe_real t[4][VLBE_RANCF_DMAX + 1];
+            for (m = 0; m <= deg; ++m) {
+                const int c = i - deg + m;
+                for (r = 0; r < d; ++r) t[m][r] = wc[c] * P[c * d + r];
+                t[m][d] = wc[c];
+            }
+            for (r = 1; r <= deg; ++r) {
+                const vlbe_real arg = r <= deg - j ? a : b;
+                for (m = deg; m >= r; --m) {
+                    const int c = i - deg + m; /* knot index of point c */
+                    const vlbe_real al = (arg - U[c]) / (U[c + deg - r + 1] - U[c]);
+                    int q;
+                    for (q = 0; q < D; ++q)
+                        t[m][q] = (VLBE_R(1.0) - al) * t[m - 1][q] + al * t[m][q];
+                }
+            }
+            for (r = 0; r < D; ++r) H[j][r] = t[deg][r];
+        }
+        for (j = 0; j < 4; ++j)
+            for (r = 0; r < D; ++r) {
+                vlbe_real s = VLBE_R(0.0);
+                for (m = 0; m <= deg; ++m) s += E[deg - 1][j][m] * H[m][r];
+                Q[j][r] = s / VLBE_R(3.0);
+            }
+        for (j = 0; j < 4; ++j) {
+            wb[j] = Q[j][d] / Q[3][d];
+            for (r = 0; r < d; ++r) Pb[j * d + r] = Q[j][r] / Q[j][d];
+        }
+        l = S * (b - a);
+        (void)vlbe_rancf_from_bezier(d, wb, l, Pb, x + 4 * d * e); /* cannot fail here */
+        for (j = 0; j < 4; ++j) w[4 * e + j] = wb[j];
+        p[e + 1] = p[e] + l;
+        ++e;
+    }
+    *ne = e;
     return VLBE_OK;
 }
 
