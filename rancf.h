@@ -501,14 +501,20 @@ VLBE_API vlbe_status vlbe_rancf_split(const vlbe_rancf_elem *el, const vlbe_real
    A V orthogonal, their norms are the singular values s_j, and x = V
    diag(1/s_j) (A V)^T B over the s_j above 8 EPS max s (smaller ones are
    rank deficiency: their directions get no component, hence the minimum
-   norm).  VLBE_ESINGULAR when A is zero. */
+   norm).  A pair with a column of rounding size (squared norm <= EPS^2
+   times that of A) is not rotated: in the planar 2 x 3 case one column of
+   A V is such noise, and rotating against it never meets the stopping
+   test.  VLBE_ESINGULAR when A is zero. */
 static inline vlbe_status vlbe__rancf_minnorm(int d, const vlbe_real *A, const vlbe_real *B,
                                               vlbe_real *x)
 {
-    vlbe_real U[VLBE_RANCF_DMAX][3], V[3][3], s[3], smax = VLBE_R(0.0);
+    vlbe_real U[VLBE_RANCF_DMAX][3], V[3][3], s[3], smax = VLBE_R(0.0), fro = VLBE_R(0.0);
     int i, j, a, b, sweep;
     for (i = 0; i < d; ++i)
-        for (j = 0; j < 3; ++j) U[i][j] = A[i * 3 + j];
+        for (j = 0; j < 3; ++j) {
+            U[i][j] = A[i * 3 + j];
+            fro += U[i][j] * U[i][j];
+        }
     for (i = 0; i < 3; ++i)
         for (j = 0; j < 3; ++j) V[i][j] = i == j ? VLBE_R(1.0) : VLBE_R(0.0);
     for (sweep = 0; sweep < 30; ++sweep) {
@@ -521,7 +527,9 @@ static inline vlbe_status vlbe__rancf_minnorm(int d, const vlbe_real *A, const v
                     be += U[i][b] * U[i][b];
                     ga += U[i][a] * U[i][b];
                 }
-                if (vlbe_fabs(ga) <= VLBE_EPS * vlbe_sqrt(al * be)) continue;
+                if (vlbe_fabs(ga) <= VLBE_EPS * vlbe_sqrt(al * be) ||
+                    al <= VLBE_EPS * VLBE_EPS * fro || be <= VLBE_EPS * VLBE_EPS * fro)
+                    continue;
                 rot = 1;
                 ze = (be - al) / (VLBE_R(2.0) * ga);
                 t = (ze >= VLBE_R(0.0) ? VLBE_R(1.0) : VLBE_R(-1.0)) /
