@@ -354,6 +354,18 @@ static inline vlbe_status vlbe__rancf_bz_check(int d, const vlbe_real *w, vlbe_r
     return vlbe__rancf_wnorm(w, k);
 }
 
+/* the arguments of the conversions: dimension, weights, length, the 4 d
+   input numbers */
+static inline vlbe_status vlbe__rancf_conv_check(int d, const vlbe_real *w, vlbe_real l,
+                                                 const vlbe_real *in, vlbe_real *k)
+{
+    vlbe_status st;
+    if ((st = vlbe__rancf_bz_check(d, w, k)) != VLBE_OK) return st;
+    if (!isfinite(l) || !vlbe_all_finite(in, 4 * d)) return VLBE_ENONFINITE;
+    if (!(l > VLBE_R(0.0))) return VLBE_ELENGTH;
+    return VLBE_OK;
+}
+
 /* eq. 6: P0 = rA, P1 = rA + l w0/(3 w1) rA', P2 = rB - l w3/(3 w2) rB', P3 = rB */
 VLBE_API vlbe_status vlbe_rancf_to_bezier(int d, const vlbe_real *w, vlbe_real l,
                                           const vlbe_real *x, vlbe_real *VLBE_RESTRICT P)
@@ -362,9 +374,7 @@ VLBE_API vlbe_status vlbe_rancf_to_bezier(int d, const vlbe_real *w, vlbe_real l
     vlbe_status st;
     int i;
     VLBE_ASSERT(w != NULL && x != NULL && P != NULL);
-    if ((st = vlbe__rancf_bz_check(d, w, k)) != VLBE_OK) return st;
-    if (!isfinite(l) || !vlbe_all_finite(x, 4 * d)) return VLBE_ENONFINITE;
-    if (!(l > VLBE_R(0.0))) return VLBE_ELENGTH;
+    if ((st = vlbe__rancf_conv_check(d, w, l, x, k)) != VLBE_OK) return st;
     for (i = 0; i < d; ++i) {
         P[i] = x[i];
         P[d + i] = x[i] + l * k[0] / (VLBE_R(3.0) * k[1]) * x[d + i];
@@ -382,9 +392,7 @@ VLBE_API vlbe_status vlbe_rancf_from_bezier(int d, const vlbe_real *w, vlbe_real
     vlbe_status st;
     int i;
     VLBE_ASSERT(w != NULL && x != NULL && P != NULL);
-    if ((st = vlbe__rancf_bz_check(d, w, k)) != VLBE_OK) return st;
-    if (!isfinite(l) || !vlbe_all_finite(P, 4 * d)) return VLBE_ENONFINITE;
-    if (!(l > VLBE_R(0.0))) return VLBE_ELENGTH;
+    if ((st = vlbe__rancf_conv_check(d, w, l, P, k)) != VLBE_OK) return st;
     for (i = 0; i < d; ++i) {
         x[i] = P[i];
         x[d + i] = VLBE_R(3.0) * k[1] / (l * k[0]) * (P[d + i] - P[i]);

@@ -63,20 +63,6 @@ static double urand(void) { return benchu_urand(&rng_state); }
 /* -- the element state ------------------------------------------------------ */
 static vlbe_real qs[NSTATE][VLBE_ALE_NQ], qds[NSTATE][VLBE_ALE_NQ], as[NSTATE][VLBE_ALE_NQ];
 
-static vlbe_ale_mat wire(void)
-{
-    vlbe_ale_mat m;
-    memset(&m, 0, sizeof m);
-    m.rhoA = VLBE_R(0.154);
-    m.EA = VLBE_R(4.1e6);
-    m.EI = VLBE_R(6.4);
-    m.c_eps = VLBE_R(1e-3);
-    m.c_kap = VLBE_R(1e-3);
-    m.f[0] = VLBE_R(0.0);
-    m.f[1] = VLBE_R(-9.81) * m.rhoA;
-    return m;
-}
-
 /* the arc of benchu_arc_state, with NSTATE small perturbations */
 static void make_states(void)
 {
@@ -232,7 +218,7 @@ int main(int argc, char **argv)
 {
     static result res[NOP][NVAR];
     const char *tag = argc > 1 ? argv[1] : NULL;
-    const vlbe_ale_mat mat = wire();
+    const vlbe_ale_mat mat = benchu_wire();
     static vlbe_ale_elem els[NVAR]; /* ~15 kB each */
     unsigned modes[NVAR];
     char model[128], csv[256];

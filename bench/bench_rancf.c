@@ -93,20 +93,6 @@ static vlbe_real m2[3][NSTATE][5], m3[3][NSTATE][7]; /* merge nodes A, H, B     
 static vlbe_real arc_c[NSTATE][2], arc_a0[NSTATE], arc_th[NSTATE];
 static vlbe_ale_mat mat, mats[NSTATE]; /* the wire; perturbed copies (init) */
 
-static vlbe_ale_mat wire(void)
-{
-    vlbe_ale_mat m;
-    memset(&m, 0, sizeof m);
-    m.rhoA = VLBE_R(0.154);
-    m.EA = VLBE_R(4.1e6);
-    m.EI = VLBE_R(6.4);
-    m.c_eps = VLBE_R(1e-3);
-    m.c_kap = VLBE_R(1e-3);
-    m.f[0] = VLBE_R(0.0);
-    m.f[1] = VLBE_R(-9.81) * m.rhoA;
-    return m;
-}
-
 /* Node [r, r', p] of the arc of benchu_arc_state at p, in d = 2 or 3
    (d = 3: lifted to a helix, z = 0.2 (p - 1)). */
 static void arc_node(double p, int d, double *nd)
@@ -153,7 +139,7 @@ static void make_states(void)
         arc_c[s][1] = (vlbe_real)pert(0.5);
         arc_a0[s] = (vlbe_real)pert(-1.2);
         arc_th[s] = (vlbe_real)pert(PI_D / 4.0);
-        mats[s] = wire();
+        mats[s] = benchu_wire();
         mats[s].rhoA = (vlbe_real)pert((double)mats[s].rhoA);
         mats[s].EA = (vlbe_real)pert((double)mats[s].EA);
         mats[s].EI = (vlbe_real)pert((double)mats[s].EI);
@@ -474,7 +460,7 @@ int main(int argc, char **argv)
            wset_base[W_ARC][1], wset_base[W_ARC][2], wset_base[W_GEN][0], wset_base[W_GEN][1],
            wset_base[W_GEN][2], wset_base[W_GEN][3]);
 
-    mat = wire();
+    mat = benchu_wire();
     for (e = 0; e < NET; ++e) {
         const etype *t = &etypes[e];
         vlbe_status st;

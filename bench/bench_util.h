@@ -161,4 +161,24 @@ static inline void benchu_arc_state(double *q, double *qd, double *a)
     }
 }
 
+#ifdef VLBE_ANCF_ALE_H
+/* The material of the planar element benchmarks (bench_ale.c,
+   bench_rancf.c): a steel wire, d = 5 mm (rhoA = 0.154 kg/m, EA = 4.1 MN,
+   EI = 6.4 N m^2), Kelvin-Voigt times 1 ms, gravity as the load.  Defined
+   when ancf_ale.h is included first. */
+static inline vlbe_ale_mat benchu_wire(void)
+{
+    vlbe_ale_mat m;
+    memset(&m, 0, sizeof m);
+    m.rhoA = VLBE_R(0.154);
+    m.EA = VLBE_R(4.1e6);
+    m.EI = VLBE_R(6.4);
+    m.c_eps = VLBE_R(1e-3);
+    m.c_kap = VLBE_R(1e-3);
+    m.f[0] = VLBE_R(0.0);
+    m.f[1] = VLBE_R(-9.81) * m.rhoA;
+    return m;
+}
+#endif
+
 #endif /* VLBE_BENCH_UTIL_H */
