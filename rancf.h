@@ -41,11 +41,23 @@ CONVENTIONS
    distinct weight set (a chain whose elements carry different weights
    needs one per element).
    Quadrature: the integrands are rational, so no Gauss order is exact;
-   the defaults are the planar element's (nm 4, nl 5, nt 5).  For an arc
-   element of central angle pi/2 (w1 = 0.805) the default mass matrix
-   differs from the 8-point one by about 1e-6 relative (tests/test_rancf.c
-   prints it); smaller angles are much closer.  Pass larger orders to init
-   when a scene needs it.
+   the defaults are the planar element's (nm 4, nl 5, nt 5).  The mass
+   matrix of an arc element of central angle pi/2 (w1 = 0.805) differs from
+   the 8-point one by 1.3e-3, 7.9e-5, 4.6e-6, 2.6e-7 of its largest entry
+   at nm = 4, 5, 6, 7 (tests/test_rancf.c, quadrature); a pi/4 arc at the
+   defaults: 6e-5 (forces), 1e-4 (mass), 1e-8 at 6/7/7 (bench_rancf.c).
+   Pass larger orders to init when a scene needs it.
+   VLBE_ALE_CONSERVATIVE: the end fluxes make the p-forces the gradient of
+   the element's strain energy only up to the Gauss error of the rational
+   integrand (with polynomial integrands, exactly): at the default orders
+   1e-5 of the force scale for arc weights, 4e-3 for weights {0.7, 1.3,
+   0.9, 1.1} (test_rancf.c, energy_gradient, predicts it).
+   Segmentation (vlbe_rancf_split) keeps every material point's position
+   and slope; with moving ends (p1' or p2' != 0) the parts' velocity
+   fields differ from the original's, because the restriction of the
+   original to [p1, ph] would have weights that change with (ph - p1) /
+   (p2 - p1), while the parts' weights are constants (7e-3 relative in
+   the test); with p' = 0 at both ends they agree to rounding.
    Not available: VLBE_ALE_INV_AXIAL (its invariant tables are those of
    the polynomial basis): every element call with it returns VLBE_EARG.
    Bezier form (any dimension d = 1..3): control points P0..P3 (4 d reals)

@@ -63,7 +63,13 @@
                             EBOUND of every function (ESINGULAR: merging); no
                             output written on failure (bytewise)
      quadrature             pi/2 arc element: mass matrix with nm = 1 .. 8 vs nm =
-                            8 and vs an independent composite-Gauss reference */
+                            8 and vs an independent composite-Gauss reference
+     nurbs                  vlbe_rancf_nurbs: the quadratic NURBS semicircle (two
+                            spans) = two vlbe_rancf_arc elements; a cubic NURBS with
+                            three interior knots (d = 2) and a quadratic one in d =
+                            3: every element point = the NURBS evaluated here by
+                            Cox-de Boor, slopes continuous at the nodes; errors
+                            (knots, degree, weights, capacity) write nothing */
 #include "test_util.h"
 #include "../rancf.h"
 #include "ale_fixtures.h"
@@ -2468,6 +2474,148 @@ static void test_quadrature(void **state)
     assert_true(err[8] <= fmax(1e-7, 64.0 * EPS));
 }
 
+/* Cox-de Boor B-spline basis N_{i,p}(t) on the knots U (nk of them); t at
+   the last knot belongs to the last non-empty span. */
+static double nurbs_basis(int i, int p, double t, const double *U, int nk)
+{
+    double a = 0.0, b = 0.0;
+    if (p == 0) {
+        if (U[i] <= t && t < U[i + 1]) return 1.0;
+        return (t == U[nk - 1] && U[i] < U[i + 1] && U[i + 1] == U[nk - 1]) ? 1.0 : 0.0;
+    }
+    if (U[i + p] > U[i]) a = (t - U[i]) / (U[i + p] - U[i]) * nurbs_basis(i, p - 1, t, U, nk);
+    if (U[i + p + 1] > U[i + 1])
+        b = (U[i + p + 1] - t) / (U[i + p + 1] - U[i + 1]) * nurbs_basis(i + 1, p - 1, t, U, nk);
+    return a + b;
+}
+
+/* max distance between the elements of vlbe_rancf_nurbs and the curve at
+   1001 material points per element; max jump of the slope at a node */
+static void nurbs_compare(int d, int deg, int nc, const double *Pd, const double *wd,
+                          const double *Ud, double len, double *err, double *jump)
+{
+    vlbe_real P[64], wc[16], U[32], w[64], x[256], p[17];
+    int ne = 0, e, i, j, k;
+    const int nk = nc + deg + 1;
+    *err = *jump = 0.0;
+    for (i = 0; i < nc * d; ++i) P[i] = (vlbe_real)Pd[i];
+    for (i = 0; i < nc; ++i) wc[i] = (vlbe_real)wd[i];
+    for (i = 0; i < nk; ++i) U[i] = (vlbe_real)Ud[i];
+    assert_int_equal(vlbe_rancf_nurbs(d, deg, nc, P, wc, U, (vlbe_real)len, 16, &ne, w, x, p),
+                     VLBE_OK);
+    for (e = 0; e < ne; ++e) {
+        vlbe_real Pb[12];
+        const vlbe_real l = p[e + 1] - p[e];
+        assert_true(l > VLBE_R(0.0));
+        assert_int_equal(vlbe_rancf_to_bezier(d, w + 4 * e, l, x + 4 * d * e, Pb), VLBE_OK);
+        for (k = 0; k <= 1000; ++k) {
+            const double u = k / 1000.0;
+            const double t = Ud[0] + ((double)p[e] + u * (double)l) / len * (Ud[nk - 1] - Ud[0]);
+            double num[3] = {0, 0, 0}, den = 0.0, dist = 0.0;
+            vlbe_real r[3];
+            assert_int_equal(vlbe_rancf_bezier_eval(d, w + 4 * e, Pb, (vlbe_real)u, r), VLBE_OK);
+            for (i = 0; i < nc; ++i) {
+                const double b = nurbs_basis(i, deg, t, Ud, nk) * wd[i];
+                for (j = 0; j < d; ++j) num[j] += b * Pd[i * d + j];
+                den += b;
+            }
+            for (j = 0; j < d; ++j) { const double dj = (double)r[j] - num[j] / den; dist += dj * dj; }
+            if (sqrt(dist) > *err) *err = sqrt(dist);
+        }
+        if (e > 0) {
+            double jmp = 0.0;
+            for (j = 0; j < d; ++j) {
+                const double dj = x[4 * d * e + d + j] - x[4 * d * (e - 1) + 3 * d + j];
+                jmp += dj * dj;
+            }
+            if (sqrt(jmp) > *jump) *jump = sqrt(jmp);
+        }
+    }
+}
+
+static void test_nurbs(void **state)
+{
+    const double s2 = sqrt(0.5), R = 2.0;
+    /* the quadratic NURBS semicircle (Piegl & Tiller ex. 7.1 style) */
+    const double Ps[10] = {R, 0, R, R, 0, R, -R, R, -R, 0}, ws[5] = {1, s2, 1, s2, 1};
+    const double Us[8] = {0, 0, 0, 0.5, 0.5, 1, 1, 1};
+    /* a cubic with three interior knots, uneven weights */
+    const double Pc[14] = {0, 0, 1, 2, 2, -1, 3, 3, 4, 0, 5, 1, 6, 2};
+    const double wcub[7] = {1, 0.7, 1.5, 0.9, 1.2, 0.8, 1};
+    const double Uc[11] = {0, 0, 0, 0, 0.2, 0.5, 0.7, 1, 1, 1, 1};
+    /* a quadratic space curve */
+    const double P3[15] = {0, 0, 0, 1, 0, 1, 1, 1, 2, 0, 2, 1, -1, 1, 0};
+    const double w3[5] = {1, 2, 0.5, 1.5, 1}, U3[8] = {0, 0, 0, 0.3, 0.6, 1, 1, 1};
+    vlbe_real P[10], wc[5], U[8], w[8], x[16], p[3], wa[4], xa[8];
+    const vlbe_real c0[2] = {0, 0};
+    double err, jump, d;
+    int i, e, ne = 0;
+    (void)state;
+    for (i = 0; i < 10; ++i) P[i] = (vlbe_real)Ps[i];
+    for (i = 0; i < 5; ++i) wc[i] = (vlbe_real)ws[i];
+    for (i = 0; i < 8; ++i) U[i] = (vlbe_real)Us[i];
+    assert_int_equal(vlbe_rancf_nurbs(2, 2, 5, P, wc, U, (vlbe_real)(PI * R), 2, &ne, w, x, p),
+                     VLBE_OK);
+    assert_int_equal(ne, 2);
+    /* each span is a quarter arc: the element of eq. 43, to rounding of
+       the blossom and the conversion (a few operations on numbers of size
+       R: 16 EPS R) */
+    d = 0.0;
+    for (e = 0; e < 2; ++e) {
+        assert_int_equal(vlbe_rancf_arc(c0, (vlbe_real)R, (vlbe_real)(e * PI / 2),
+                                        (vlbe_real)(PI / 2), wa, xa),
+                         VLBE_OK);
+        for (i = 0; i < 8; ++i) d = fmax(d, fabs((double)xa[i] - (double)x[8 * e + i]));
+        for (i = 0; i < 4; ++i) d = fmax(d, R * fabs((double)(wa[i] / wa[3] - w[4 * e + i])));
+        ASSERT_CLOSE((double)(p[e + 1] - p[e]), PI * R / 2, 8 * EPS, 0.0);
+    }
+    tu_report("nurbs: semicircle = arc elements", d, 16 * EPS * R);
+    assert_true(d <= 16 * EPS * R);
+    /* against Cox-de Boor: the curve has coordinates of size 6 (planar) and
+       2 (space); the route (blossom, elevation, eq. 5, de Casteljau) and the
+       reference each round a few dozen operations: 64 EPS times the size */
+    nurbs_compare(2, 3, 7, Pc, wcub, Uc, 10.0, &err, &jump);
+    tu_report("nurbs: cubic, elements vs Cox-de Boor", err, 64 * EPS * 6);
+    assert_true(err <= 64 * EPS * 6);
+    tu_report("nurbs: cubic, slope jump at nodes (C2 curve)", jump, 64 * EPS * 6);
+    assert_true(jump <= 64 * EPS * 6);
+    nurbs_compare(3, 2, 5, P3, w3, U3, 5.0, &err, &jump);
+    tu_report("nurbs: quadratic space curve vs Cox-de Boor", err, 64 * EPS * 2);
+    assert_true(err <= 64 * EPS * 2);
+    tu_report("nurbs: space curve, slope jump (C1)", jump, 64 * EPS * 2);
+    assert_true(jump <= 64 * EPS * 2);
+    /* errors: nothing written */
+    for (i = 0; i < 8; ++i) x[i] = SENTINEL;
+    w[0] = p[0] = SENTINEL;
+    ne = -7;
+    assert_int_equal(vlbe_rancf_nurbs(2, 2, 5, P, wc, U, (vlbe_real)1.0, 1, &ne, w, x, p),
+                     VLBE_EWORK);
+    assert_int_equal(vlbe_rancf_nurbs(2, 4, 5, P, wc, U, (vlbe_real)1.0, 2, &ne, w, x, p),
+                     VLBE_EARG);
+    assert_int_equal(vlbe_rancf_nurbs(4, 2, 5, P, wc, U, (vlbe_real)1.0, 2, &ne, w, x, p),
+                     VLBE_EARG);
+    assert_int_equal(vlbe_rancf_nurbs(2, 2, 5, P, wc, U, (vlbe_real)0.0, 2, &ne, w, x, p),
+                     VLBE_ELENGTH);
+    wc[1] = VLBE_R(0.0);
+    assert_int_equal(vlbe_rancf_nurbs(2, 2, 5, P, wc, U, (vlbe_real)1.0, 2, &ne, w, x, p),
+                     VLBE_EWEIGHT);
+    wc[1] = (vlbe_real)s2;
+    U[1] = VLBE_R(0.1); /* not clamped */
+    assert_int_equal(vlbe_rancf_nurbs(2, 2, 5, P, wc, U, (vlbe_real)1.0, 2, &ne, w, x, p),
+                     VLBE_EARG);
+    U[1] = VLBE_R(0.0);
+    U[4] = VLBE_R(0.4); /* decreasing */
+    assert_int_equal(vlbe_rancf_nurbs(2, 2, 5, P, wc, U, (vlbe_real)1.0, 2, &ne, w, x, p),
+                     VLBE_EARG);
+    U[4] = VLBE_R(0.5);
+    P[3] = (vlbe_real)NAN;
+    assert_int_equal(vlbe_rancf_nurbs(2, 2, 5, P, wc, U, (vlbe_real)1.0, 2, &ne, w, x, p),
+                     VLBE_ENONFINITE);
+    assert_int_equal(ne, -7);
+    assert_true(w[0] == SENTINEL && p[0] == SENTINEL);
+    for (i = 0; i < 8; ++i) assert_true(x[i] == SENTINEL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2484,6 +2632,7 @@ int main(void)
         cmocka_unit_test(test_arc),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_quadrature),
+        cmocka_unit_test(test_nurbs),
     };
     return cmocka_run_group_tests_name("rancf", tests, NULL, NULL);
 }
