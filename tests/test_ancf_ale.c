@@ -48,6 +48,7 @@
 #include "test_util.h"
 #include "../ancf_ale.h"
 #include "ale_fixtures.h"
+#include "ale_harness.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -58,7 +59,6 @@
 #define FD_ERR (EPS / FD_STEP)  /* EPS^(2/3): error unit of a central difference */
 #define SENTINEL VLBE_R(12345.0)
 
-static const double PI = 3.14159265358979323846;
 
 /* ------------------------------------------------------------------------ */
 /* helpers                                                                    */
@@ -70,138 +70,33 @@ static void elem_make(vlbe_ale_elem *el, const vlbe_ale_mat *m, unsigned flags, 
     assert_int_equal(vlbe_ale_elem_init(el, m, flags, nm, nl, nt), VLBE_OK);
 }
 
-static int is_p(int i) { return i == 4 || i == 9; }
-
-/* 1 when coordinate i is a fixed material coordinate in mode */
-static int is_fixed(unsigned mode, int i)
+/* the element's calls for the difference harness (ale_harness.h) */
+static vlbe_status op_force(const void *el, unsigned mode, const vlbe_real *q,
+                            const vlbe_real *qd, vlbe_real *Q)
 {
-    return (i == 4 && (mode & VLBE_ALE_FIX_P1)) || (i == 9 && (mode & VLBE_ALE_FIX_P2));
+    return vlbe_ale_force((const vlbe_ale_elem *)el, mode, q, qd, Q, NULL, NULL);
 }
-
-/* A random deformed state: chord of material length L in [1.0, 1.4] at an
-   arbitrary angle, stretched by up to +-stretch, slopes turned by up to
-   +-curv rad from the chord (curv = 0.6: clearly curved, |kap| ~ 1) with
-   magnitudes varying by +-10 %, velocities O(1), p' O(0.5).  qd may be NULL. */
-static void make_state(tu_rng *g, double curv, double stretch, vlbe_real *q, vlbe_real *qd)
+static vlbe_status op_mass(const void *el, unsigned mode, const vlbe_real *q, vlbe_real *M)
 {
-    const double p1 = 0.3 + 0.2 * tu_rng_uniform(g), L = 1.2 + 0.2 * tu_rng_uniform(g);
-    const double th = PI * tu_rng_uniform(g), s = 1.0 + stretch * tu_rng_uniform(g);
-    const double x1 = tu_rng_uniform(g), y1 = tu_rng_uniform(g);
-    const double a1 = th + curv * tu_rng_uniform(g), a2 = th + curv * tu_rng_uniform(g);
-    const double s1 = s * (1.0 + 0.1 * tu_rng_uniform(g)), s2 = s * (1.0 + 0.1 * tu_rng_uniform(g));
-    int i;
-    ale_chord_q(p1, L, x1, y1, th, s, a1, a2, s1, s2, q);
-    if (qd)
-        for (i = 0; i < 10; ++i) qd[i] = (vlbe_real)((is_p(i) ? 0.5 : 1.0) * tu_rng_uniform(g));
+    return vlbe_ale_mass((const vlbe_ale_elem *)el, mode, q, M);
 }
-
-
-
-
-/* All 32 combinations of the five mode bits. */
-#define N_MODES 32
-static unsigned mode_of(int k) { return (unsigned)k; }
-
-/* ------------------------------------------------------------------------ */
-/* central differences of the element functions                               */
-/* ------------------------------------------------------------------------ */
-enum { FD_Q_OF_Q, FD_Q_OF_QD, FD_MA_OF_Q, FD_PF_OF_Q, FD_E_OF_Q };
-
-typedef struct fd_ctx {
-    const vlbe_ale_elem *el;
-    unsigned mode;
-    int which, j;
-    vlbe_real q[10], qd[10], a[10], pf, F[2];
-} fd_ctx;
-
-/* The differenced function: Q, M a, point-force Q or E, as a function of
-   q[j] (or qd[j]); returns the argument rounded to vlbe_real. */
-static double fd_fn(void *vc, double x, double *out)
+static vlbe_status op_point_force(const void *el, const vlbe_real *q, vlbe_real pf,
+                                  const vlbe_real *F, vlbe_real *Q)
 {
-    const fd_ctx *c = (const fd_ctx *)vc;
-    vlbe_real q[10], qd[10], buf[100];
-    const vlbe_real xr = (vlbe_real)x;
-    int i, k;
-    memcpy(q, c->q, sizeof q);
-    memcpy(qd, c->qd, sizeof qd);
-    if (c->which == FD_Q_OF_QD)
-        qd[c->j] = xr;
-    else
-        q[c->j] = xr;
-    switch (c->which) {
-    case FD_Q_OF_Q:
-    case FD_Q_OF_QD:
-        assert_int_equal(vlbe_ale_force(c->el, c->mode, q, qd, buf, NULL, NULL), VLBE_OK);
-        for (i = 0; i < 10; ++i) out[i] = (double)buf[i];
-        break;
-    case FD_MA_OF_Q:
-        assert_int_equal(vlbe_ale_mass(c->el, c->mode, q, buf), VLBE_OK);
-        for (i = 0; i < 10; ++i) {
-            out[i] = 0.0;
-            for (k = 0; k < 10; ++k) out[i] += (double)buf[i * 10 + k] * (double)c->a[k];
-        }
-        break;
-    case FD_PF_OF_Q:
-        fill(10, VLBE_R(0.0), buf);
-        assert_int_equal(vlbe_ale_point_force(q, c->pf, c->F, buf, NULL), VLBE_OK);
-        for (i = 0; i < 10; ++i) out[i] = (double)buf[i];
-        break;
-    default:
-        assert_int_equal(vlbe_ale_energy(c->el, c->mode, q, qd, buf), VLBE_OK);
-        for (i = 0; i < 3; ++i) out[i] = (double)buf[i];
-        break;
-    }
-    return (double)xr;
+    (void)el;
+    return vlbe_ale_point_force(q, pf, F, Q, NULL);
 }
-
-/* J (10 x 10, analytic, d out / d var) against central differences over the
-   columns j that are coordinates (skip: coordinates fixed in mode), rows
-   likewise.  The error of entry (i, j) is measured against the largest entry
-   of the matrix (analytic or differenced, so that a Jacobian that is wrongly
-   zero cannot pass): max |J_fd - J| / max(|J|, |J_fd|) <= tol.  Returns that
-   measured ratio. */
-static double check_jac(fd_ctx *c, int which, const vlbe_real *J, unsigned skip, double tol,
-                        const char *what)
+static vlbe_status op_point(const void *el, const vlbe_real *q, vlbe_real p, vlbe_real *r)
 {
-    double Jfd[100], d[10], work[10], scale, worst = 0.0;
-    int i, j;
-    c->which = which;
-    for (j = 0; j < 10; ++j) {
-        const double x = which == FD_Q_OF_QD ? (double)c->qd[j] : (double)c->q[j];
-        c->j = j;
-        if (is_fixed(skip, j)) {
-            for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = 0.0;
-            continue;
-        }
-        tu_central_diff(fd_fn, c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
-        for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = is_fixed(skip, i) ? 0.0 : d[i];
-    }
-    scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
-    if (scale == 0.0) return 0.0; /* both exactly zero (e.g. D without damping and p') */
-    for (i = 0; i < 10; ++i)
-        for (j = 0; j < 10; ++j) {
-            if (is_fixed(skip, i) || is_fixed(skip, j)) continue;
-            worst = fmax(worst, fabs(Jfd[i * 10 + j] - (double)J[i * 10 + j]) / scale);
-            ASSERT_CLOSE_CTX(Jfd[i * 10 + j], J[i * 10 + j], 0, tol * scale,
-                             "%s: entry (%d, %d), mode %u, max entry %.3g", what, i, j, c->mode,
-                             scale);
-        }
-    return worst;
+    (void)el;
+    return vlbe_ale_point(q, p, r, NULL);
 }
-
-/* Rows and columns of fixed p are exactly zero. */
-static void check_fixed_zero(unsigned mode, const vlbe_real *Q, const vlbe_real *J)
+static vlbe_status op_energy(const void *el, unsigned mode, const vlbe_real *q,
+                             const vlbe_real *qd, vlbe_real *E)
 {
-    int i, k;
-    for (k = 4; k < 10; k += 5) {
-        if (!is_fixed(mode, k)) continue;
-        if (Q) ASSERT_CLOSE_CTX(Q[k], 0.0, 0, 0, "Q[%d], mode %u", k, mode);
-        for (i = 0; i < 10; ++i) {
-            ASSERT_CLOSE_CTX(J[k * 10 + i], 0.0, 0, 0, "row %d col %d, mode %u", k, i, mode);
-            ASSERT_CLOSE_CTX(J[i * 10 + k], 0.0, 0, 0, "row %d col %d, mode %u", i, k, mode);
-        }
-    }
+    return vlbe_ale_energy((const vlbe_ale_elem *)el, mode, q, qd, E);
 }
+static const ale_ops OPS = {op_force, op_mass, op_point_force, op_point, op_energy};
 
 /* ======================================================================= */
 /* 1. Jacobians                                                              */
@@ -226,6 +121,7 @@ static void test_force_jacobians(void **state)
     for (s = 0; s < 4; ++s) {
         fd_ctx c;
         make_state(&g, 0.6, 0.15, c.q, c.qd);
+        c.ops = &OPS;
         c.el = &el;
         for (k = 0; k < N_MODES; ++k) {
             vlbe_real Q[10], K[100], D[100];
@@ -321,6 +217,7 @@ static void test_mass_jacobian(void **state)
         fd_ctx c;
         make_state(&g, 0.6, 0.15, c.q, c.qd);
         for (i = 0; i < 10; ++i) c.a[i] = (vlbe_real)(2.0 * tu_rng_uniform(&g));
+        c.ops = &OPS;
         c.el = &el;
         for (k = 0; k < N_MODES; ++k) {
             vlbe_real Mq[100];
@@ -357,6 +254,7 @@ static void test_point_force_jacobian(void **state)
         make_state(&g, 0.6, 0.15, c.q, c.qd);
         c.F[0] = (vlbe_real)(3.0 * tu_rng_uniform(&g));
         c.F[1] = (vlbe_real)(3.0 * tu_rng_uniform(&g));
+        c.ops = &OPS;
         c.el = NULL;
         c.mode = 0;
         for (ix = 0; ix < ARRAY_LEN(xis); ++ix) {
@@ -412,26 +310,6 @@ static void test_point_force_jacobian(void **state)
 /* 2. forces as gradients of the energies                                    */
 /* ======================================================================= */
 
-/* dE[which]/dq by central differences, all ten columns (d out). */
-static void energy_grad(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
-                        const vlbe_real *qd, int which, double *grad)
-{
-    fd_ctx c;
-    double d[10], work[10];
-    int j;
-    c.el = el;
-    c.mode = mode;
-    c.which = FD_E_OF_Q;
-    memcpy(c.q, q, sizeof c.q);
-    memcpy(c.qd, qd, sizeof c.qd);
-    for (j = 0; j < 10; ++j) {
-        const double x = (double)q[j];
-        c.j = j;
-        tu_central_diff(fd_fn, &c, x, FD_STEP * fmax(1.0, fabs(x)), 3, work, d);
-        grad[j] = d[which];
-    }
-}
-
 /* Strain energy density u = (EA eps^2 + EI kap^2)/2 at material point p. */
 static double energy_density(const vlbe_ale_mat *m, int bend, const vlbe_real *q, vlbe_real p)
 {
@@ -456,7 +334,7 @@ static double energy_residual(const vlbe_ale_elem *el, unsigned mode, const vlbe
     int i;
     fill(10, VLBE_R(0.0), qd);
     assert_int_equal(vlbe_ale_force(el, mode, q, qd, Q, K, NULL), VLBE_OK);
-    energy_grad(el, mode, q, qd, 1, grad);
+    energy_grad(&OPS, el, mode, q, qd, 1, grad);
     for (i = 0; i < 10; ++i) res[i] = grad[i] + (double)Q[i];
     if (!(mode & VLBE_ALE_CONSERVATIVE)) {
         res[4] += energy_density(&el->mat, bend, q, q[4]);
@@ -599,7 +477,7 @@ static void test_load_potential(void **state)
         for (k = 0; k < N_MODES; ++k) {
             const unsigned mode = mode_of(k);
             assert_int_equal(vlbe_ale_force(&el, mode, q, qd, Q, NULL, NULL), VLBE_OK);
-            energy_grad(&el, mode, q, qd, 2, grad);
+            energy_grad(&OPS, &el, mode, q, qd, 2, grad);
             for (i = 0; i < 10; ++i) res[i] = grad[i] + (double)Q[i];
             res[4] = is_fixed(mode, 4) ? 0.0 : res[4] - fr1;
             res[9] = is_fixed(mode, 9) ? 0.0 : res[9] + fr2;
@@ -653,7 +531,7 @@ static void test_transport_inertia_lagrange(void **state)
             double dT[10], mdot[10], B[10] = {0}, v1[2], v2[2], scale;
             assert_int_equal(vlbe_ale_force(&el, mode, q, qd, Q, NULL, NULL), VLBE_OK);
             assert_int_equal(vlbe_ale_mass_jac(&el, mode, q, qd, Mq), VLBE_OK);
-            energy_grad(&el, mode, q, qd, 0, dT);
+            energy_grad(&OPS, &el, mode, q, qd, 0, dT);
             for (i = 0; i < 10; ++i) {
                 mdot[i] = 0.0;
                 for (j = 0; j < 10; ++j) mdot[i] += (double)Mq[i * 10 + j] * (double)qd[j];

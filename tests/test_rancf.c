@@ -73,6 +73,7 @@
 #include "test_util.h"
 #include "../rancf.h"
 #include "ale_fixtures.h"
+#include "ale_harness.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -97,19 +98,6 @@ static void rancf_make(vlbe_rancf_elem *el, const vlbe_ale_mat *m, const vlbe_re
     assert_int_equal(vlbe_rancf_elem_init(el, m, w, flags, nm, nl, nt), VLBE_OK);
 }
 
-static int is_p(int i) { return i == 4 || i == 9; }
-
-/* 1 when coordinate i is a fixed material coordinate in mode */
-static int is_fixed(unsigned mode, int i)
-{
-    return (i == 4 && (mode & VLBE_ALE_FIX_P1)) || (i == 9 && (mode & VLBE_ALE_FIX_P2));
-}
-
-/* All 32 combinations of the five mode bits (NO_BEND, NO_DAMP, FIX_P1,
-   FIX_P2, CONSERVATIVE). */
-#define N_MODES 32
-static unsigned mode_of(int k) { return (unsigned)k; }
-
 /* The weight sets of the random tests: a general set, the pi/2 arc's
    {1, (1 + 2 cos(pi/4))/3, same, 1} (eq. 43) and a strongly uneven set. */
 #define N_WSETS 3
@@ -120,23 +108,6 @@ static void wset(int s, vlbe_real *w)
     int i;
     for (i = 0; i < 4; ++i)
         w[i] = (vlbe_real)(s == 1 ? ((i == 0 || i == 3) ? 1.0 : a) : g[s == 0 ? 0 : 1][i]);
-}
-
-/* A random deformed state (as test_ancf_ale.c): chord of material length
-   L in [1.0, 1.4] at an arbitrary angle, stretched by up to +-stretch,
-   slopes turned by up to +-curv rad from the chord with magnitudes varying
-   by +-10 %, velocities O(1), p' O(0.5).  qd may be NULL. */
-static void make_state(tu_rng *g, double curv, double stretch, vlbe_real *q, vlbe_real *qd)
-{
-    const double p1 = 0.3 + 0.2 * tu_rng_uniform(g), L = 1.2 + 0.2 * tu_rng_uniform(g);
-    const double th = PI * tu_rng_uniform(g), s = 1.0 + stretch * tu_rng_uniform(g);
-    const double x1 = tu_rng_uniform(g), y1 = tu_rng_uniform(g);
-    const double a1 = th + curv * tu_rng_uniform(g), a2 = th + curv * tu_rng_uniform(g);
-    const double s1 = s * (1.0 + 0.1 * tu_rng_uniform(g)), s2 = s * (1.0 + 0.1 * tu_rng_uniform(g));
-    int i;
-    ale_chord_q(p1, L, x1, y1, th, s, a1, a2, s1, s2, q);
-    if (qd)
-        for (i = 0; i < 10; ++i) qd[i] = (vlbe_real)((is_p(i) ? 0.5 : 1.0) * tu_rng_uniform(g));
 }
 
 /* nodal form x = [rA, rA', rB, rB'] of the element coordinates, and back */
@@ -227,111 +198,31 @@ static void basis_direct(const double *w, double l, double u, double *s)
     s[3] = -l * w[3] / (3.0 * w[2]) * w[2] * B[2] / W;
 }
 
-/* -- element function differences ---------------------------------------- */
-enum { FD_Q_OF_Q, FD_Q_OF_QD, FD_MA_OF_Q, FD_PF_OF_Q, FD_R_OF_Q, FD_E_OF_Q };
-
-typedef struct fd_ctx {
-    const vlbe_rancf_elem *el;
-    unsigned mode;
-    int which, j;
-    vlbe_real q[10], qd[10], a[10], pf, F[2];
-} fd_ctx;
-
-/* The differenced function: Q, M a, point-force Q, the point r(pf) or E
-   (T, U, V, U + V) as a function of q[j] (or qd[j]); returns the argument
-   rounded to vlbe_real. */
-static double fd_fn(void *vc, double x, double *out)
+/* -- the element's calls for the difference harness (ale_harness.h) ------ */
+static vlbe_status op_force(const void *el, unsigned mode, const vlbe_real *q,
+                            const vlbe_real *qd, vlbe_real *Q)
 {
-    const fd_ctx *c = (const fd_ctx *)vc;
-    vlbe_real q[10], qd[10], buf[100];
-    const vlbe_real xr = (vlbe_real)x;
-    int i, k;
-    memcpy(q, c->q, sizeof q);
-    memcpy(qd, c->qd, sizeof qd);
-    if (c->which == FD_Q_OF_QD)
-        qd[c->j] = xr;
-    else
-        q[c->j] = xr;
-    switch (c->which) {
-    case FD_Q_OF_Q:
-    case FD_Q_OF_QD:
-        assert_int_equal(vlbe_rancf_force(c->el, c->mode, q, qd, buf, NULL, NULL), VLBE_OK);
-        for (i = 0; i < 10; ++i) out[i] = (double)buf[i];
-        break;
-    case FD_MA_OF_Q:
-        assert_int_equal(vlbe_rancf_mass(c->el, c->mode, q, buf), VLBE_OK);
-        for (i = 0; i < 10; ++i) {
-            out[i] = 0.0;
-            for (k = 0; k < 10; ++k) out[i] += (double)buf[i * 10 + k] * (double)c->a[k];
-        }
-        break;
-    case FD_PF_OF_Q:
-        fill(10, VLBE_R(0.0), buf);
-        assert_int_equal(vlbe_rancf_point_force(c->el, q, c->pf, c->F, buf, NULL), VLBE_OK);
-        for (i = 0; i < 10; ++i) out[i] = (double)buf[i];
-        break;
-    case FD_R_OF_Q:
-        fill(2, VLBE_R(0.0), buf);
-        assert_int_equal(vlbe_rancf_point(c->el, q, c->pf, buf, NULL), VLBE_OK);
-        out[0] = (double)buf[0];
-        out[1] = (double)buf[1];
-        break;
-    default:
-        assert_int_equal(vlbe_rancf_energy(c->el, c->mode, q, qd, buf), VLBE_OK);
-        for (i = 0; i < 3; ++i) out[i] = (double)buf[i];
-        out[3] = (double)buf[1] + (double)buf[2];
-        break;
-    }
-    return (double)xr;
+    return vlbe_rancf_force((const vlbe_rancf_elem *)el, mode, q, qd, Q, NULL, NULL);
 }
-
-/* J (10 x 10, analytic) against central differences over the columns j
-   that are coordinates (skip: coordinates fixed in mode), rows likewise.
-   Error measured against the largest entry of the matrix (analytic or
-   differenced, so that a Jacobian that is wrongly zero cannot pass):
-   max |J_fd - J| / max(|J|, |J_fd|) <= tol.  Returns the measured ratio. */
-static double check_jac(fd_ctx *c, int which, const vlbe_real *J, unsigned skip, double tol,
-                        const char *what)
+static vlbe_status op_mass(const void *el, unsigned mode, const vlbe_real *q, vlbe_real *M)
 {
-    double Jfd[100], d[10], work[10], scale, worst = 0.0;
-    int i, j;
-    c->which = which;
-    for (j = 0; j < 10; ++j) {
-        const double x = which == FD_Q_OF_QD ? (double)c->qd[j] : (double)c->q[j];
-        c->j = j;
-        if (is_fixed(skip, j)) {
-            for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = 0.0;
-            continue;
-        }
-        tu_central_diff(fd_fn, c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
-        for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = is_fixed(skip, i) ? 0.0 : d[i];
-    }
-    scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
-    if (scale == 0.0) return 0.0; /* both exactly zero (D without damping and p') */
-    for (i = 0; i < 10; ++i)
-        for (j = 0; j < 10; ++j) {
-            if (is_fixed(skip, i) || is_fixed(skip, j)) continue;
-            worst = fmax(worst, fabs(Jfd[i * 10 + j] - (double)J[i * 10 + j]) / scale);
-            ASSERT_CLOSE_CTX(Jfd[i * 10 + j], J[i * 10 + j], 0, tol * scale,
-                             "%s: entry (%d, %d), mode %u, max entry %.3g", what, i, j, c->mode,
-                             scale);
-        }
-    return worst;
+    return vlbe_rancf_mass((const vlbe_rancf_elem *)el, mode, q, M);
 }
-
-/* Rows and columns of fixed p are exactly zero. */
-static void check_fixed_zero(unsigned mode, const vlbe_real *Q, const vlbe_real *J)
+static vlbe_status op_point_force(const void *el, const vlbe_real *q, vlbe_real pf,
+                                  const vlbe_real *F, vlbe_real *Q)
 {
-    int i, k;
-    for (k = 4; k < 10; k += 5) {
-        if (!is_fixed(mode, k)) continue;
-        if (Q) ASSERT_CLOSE_CTX(Q[k], 0.0, 0, 0, "Q[%d], mode %u", k, mode);
-        for (i = 0; i < 10; ++i) {
-            ASSERT_CLOSE_CTX(J[k * 10 + i], 0.0, 0, 0, "row %d col %d, mode %u", k, i, mode);
-            ASSERT_CLOSE_CTX(J[i * 10 + k], 0.0, 0, 0, "row %d col %d, mode %u", i, k, mode);
-        }
-    }
+    return vlbe_rancf_point_force((const vlbe_rancf_elem *)el, q, pf, F, Q, NULL);
 }
+static vlbe_status op_point(const void *el, const vlbe_real *q, vlbe_real p, vlbe_real *r)
+{
+    return vlbe_rancf_point((const vlbe_rancf_elem *)el, q, p, r, NULL);
+}
+static vlbe_status op_energy(const void *el, unsigned mode, const vlbe_real *q,
+                             const vlbe_real *qd, vlbe_real *E)
+{
+    return vlbe_rancf_energy((const vlbe_rancf_elem *)el, mode, q, qd, E);
+}
+static const ale_ops OPS = {op_force, op_mass, op_point_force, op_point, op_energy};
 
 /* max_i |a_i - b_i| over n entries of two vlbe_real arrays */
 static double max_diff(int n, const vlbe_real *a, const vlbe_real *b)
@@ -851,6 +742,7 @@ static void test_force_jacobians(void **state)
             fd_ctx c;
             make_state(&g, 0.6, 0.15, c.q, c.qd);
             for (i = 0; i < 10; ++i) c.a[i] = (vlbe_real)(2.0 * tu_rng_uniform(&g));
+            c.ops = &OPS;
             c.el = &el;
             for (k = 0; k < N_MODES; ++k) {
                 vlbe_real Q[10], K[100], D[100], Mq[100];
@@ -915,27 +807,6 @@ static void test_force_jacobians(void **state)
     tu_report("Mq = d(M a)/dq, max err / max|Mq|", wm, tol);
     tu_report("point force K, max err / max|K|", wp, tol);
     tu_report("point force Q vs F.dr(pf)/dq, in |F| max|dr/dq|", wv, 16.0 * FD_ERR);
-}
-
-/* d(E[which])/dq by central differences, all ten columns (which: 0 T, 1 U,
-   2 V, 3 U + V). */
-static void energy_grad(const vlbe_rancf_elem *el, unsigned mode, const vlbe_real *q,
-                        const vlbe_real *qd, int which, double *grad)
-{
-    fd_ctx c;
-    double d[4], work[4];
-    int j;
-    c.el = el;
-    c.mode = mode;
-    c.which = FD_E_OF_Q;
-    memcpy(c.q, q, sizeof c.q);
-    memcpy(c.qd, qd, sizeof c.qd);
-    for (j = 0; j < 10; ++j) {
-        const double x = (double)q[j];
-        c.j = j;
-        tu_central_diff(fd_fn, &c, x, FD_STEP * fmax(1.0, fabs(x)), 4, work, d);
-        grad[j] = d[which];
-    }
 }
 
 /* r, r', r'', r''' at material point p of an element with weights w, from
@@ -1120,7 +991,7 @@ static void test_energy_gradient(void **state)
                     vlbe_real Q[10], K[100];
                     double grad[10], res[10], pred[10] = {0}, scale;
                     assert_int_equal(vlbe_rancf_force(&el, mode, q, qd, Q, K, NULL), VLBE_OK);
-                    energy_grad(&el, mode, q, qd, 3, grad);
+                    energy_grad(&OPS, &el, mode, q, qd, 3, grad);
                     for (i = 0; i < 10; ++i) res[i] = grad[i] + (double)Q[i];
                     pred[4] = g1 - (cons ? 0.0 : u1) - Ev[2];
                     pred[9] = g2 + (cons ? 0.0 : u2) + Ev[3];
