@@ -208,6 +208,7 @@ API
    vlbe_status vlbe_ale3_point_torque(mode, q, pf, T, Q, K) eq. 46
    chains (node p modes fixed / prescribed / free, sliding nodes, point masses):
    vlbe_status vlbe_ale_chain_init(ch, el, nodes, nn, cap, cons, ccap)
+   vlbe_status vlbe_ale_chain_types(ch, et, els)            per-element types (rancf.h)
    vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint
    vlbe_status vlbe_ale_chain_layout(ch)                    coordinates n, equations m
    vlbe_status vlbe_ale_chain_pnode(ch, i, t, q, v, p3)     p, p', p'' of a node
@@ -219,7 +220,7 @@ API
    int vlbe_ale_chain_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc / _constr_hess(user = ch, ...)         vlbe_dae callbacks
    vlbe_status vlbe_ale_chain_insert(ch, e, ph, t, q, v, qn, vn)  split element e
-   vlbe_status vlbe_ale_chain_remove(ch, i, q, v, qn, vn)   merge at node i
+   vlbe_status vlbe_ale_chain_remove(ch, i, t, q, v, qn, vn)  merge at node i
    vlbe_status vlbe_ale_chain_length_control(ch, &s, Lstd, t, q, v, qn, vn, &chg)
 
 REFERENCES
@@ -3266,6 +3267,37 @@ typedef struct vlbe_ale_con {
     vlbe_real v[3];
 } vlbe_ale_con;
 
+/* Per-element types of a planar chain whose elements differ, e.g. rational
+   elements each with its own weights (rancf.h, vlbe_rancf_chain_init).
+   els is the caller's array of element objects (capacity nn_cap - 1),
+   element e of the chain being object e; the chain reaches it only
+   through these calls, and keeps the array in step when length control
+   inserts or removes nodes:
+     elem    the element type of element e (mass, forces, energy);
+     basis   its basis at p (the contract of vlbe_herm_ale_eval);
+     split   segmentation of element e (coordinates q, rates qd or NULL)
+             at ph: the node qh, qhd (the contract of vlbe_ale_split) and,
+             in aux (VLBE_ALE_ETYPE_AUX reals), what commit needs; nothing
+             changes;
+     merge   elements e and e+1 (nodes na, nh, nb, 5 reals each: r, r', p)
+             replaced by one between na and nb: what commit needs in aux;
+             nothing changes;
+     commit  op = +1: element e (of ne) becomes the two elements e, e+1
+             (the later ones shift up); op = -1: elements e, e+1 (of ne)
+             become one (the later ones shift down); aux from split or
+             merge, which validated it: commit cannot fail. */
+#define VLBE_ALE_ETYPE_AUX 10
+typedef struct vlbe_ale_etype {
+    const vlbe_ale_elem *(*elem)(const void *els, int e);
+    void (*basis)(const void *els, int e, vlbe_real p, vlbe_real p1, vlbe_real p2, int kmax,
+                  int amax, vlbe_herm_ale *b);
+    vlbe_status (*split)(const void *els, int e, const vlbe_real *q, const vlbe_real *qd,
+                         vlbe_real ph, vlbe_real *qh, vlbe_real *qhd, vlbe_real *aux);
+    vlbe_status (*merge)(const void *els, int e, const vlbe_real *na, const vlbe_real *nh,
+                         const vlbe_real *nb, vlbe_real *aux);
+    void (*commit)(void *els, int ne, int e, int op, const vlbe_real *aux);
+} vlbe_ale_etype;
+
 /* A chain: nodes 0..nn-1, element e between nodes e and e+1 with increasing
    material coordinates.  Global coordinates node by node:
    planar  [x, y, x', y' (, x'(2), y'(2) if sliding) (, p if free)],
@@ -3274,6 +3306,8 @@ typedef struct vlbe_ale_con {
    caller's; the chain never allocates. */
 typedef struct vlbe_ale_chain {
     const vlbe_ale_elem *el;    /* planar element type (NULL in a 3D chain)      */
+    const vlbe_ale_etype *et;   /* per-element types (NULL: el for every element) */
+    void *els;                  /* their objects (see vlbe_ale_etype)             */
     const vlbe_ale3_elem *el3;  /* 3D element type (NULL in a planar chain)      */
     int d, spin;         /* set by layout: dimension 2 or 3, spin angle per node  */
     unsigned mode;       /* OR'ed into every element's mode                        */
@@ -3301,6 +3335,7 @@ VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem
 VLBE_API vlbe_status vlbe_ale_chain_init3(vlbe_ale_chain *ch, const vlbe_ale3_elem *el3,
                                           vlbe_ale_node *nodes, int nn, int nn_cap,
                                           vlbe_ale_con *cons, int ncon_cap);
+VLBE_API vlbe_status vlbe_ale_chain_types(vlbe_ale_chain *ch, const vlbe_ale_etype *et, void *els);
 VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c);
 VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch);
 VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_real t,
@@ -3347,6 +3382,8 @@ static inline vlbe_status vlbe__ale_chain_init(vlbe_ale_chain *ch, const vlbe_al
     if (nn < 2 || nn_cap < nn || ncon_cap < 0 || (ncon_cap > 0 && cons == NULL)) return VLBE_EARG;
     ch->el = el;
     ch->el3 = el3;
+    ch->et = NULL;
+    ch->els = NULL;
     ch->d = el3 ? 3 : 2;
     ch->spin = el3 && !(el3->flags & VLBE_ALE3_NO_SPIN);
     ch->mode = 0;
@@ -3381,6 +3418,33 @@ VLBE_API vlbe_status vlbe_ale_chain_init3(vlbe_ale_chain *ch, const vlbe_ale3_el
                                           vlbe_ale_con *cons, int ncon_cap)
 {
     return vlbe__ale_chain_init(ch, NULL, el3, nodes, nn, nn_cap, cons, ncon_cap);
+}
+
+/* Gives a planar chain per-element types (see vlbe_ale_etype; rancf.h's
+   vlbe_rancf_chain_init calls it): els holds one object per element, at
+   least nn_cap - 1 of them.  A 3D chain: VLBE_EARG. */
+VLBE_API vlbe_status vlbe_ale_chain_types(vlbe_ale_chain *ch, const vlbe_ale_etype *et, void *els)
+{
+    VLBE_ASSERT(ch != NULL && et != NULL && els != NULL);
+    if (ch->el3) return VLBE_EARG;
+    ch->et = et;
+    ch->els = els;
+    return VLBE_OK;
+}
+
+/* the element type of element e of a planar chain */
+static inline const vlbe_ale_elem *vlbe__ale_el(const vlbe_ale_chain *ch, int e)
+{
+    return ch->et ? ch->et->elem(ch->els, e) : ch->el;
+}
+
+/* the basis of element e of a planar chain at p */
+static inline void vlbe__ale_chain_basis(const vlbe_ale_chain *ch, int e, vlbe_real p,
+                                         vlbe_real p1, vlbe_real p2, int kmax, int amax,
+                                         vlbe_herm_ale *b)
+{
+    if (ch->et) ch->et->basis(ch->els, e, p, p1, p2, kmax, amax, b);
+    else vlbe_herm_ale_eval(p, p1, p2, kmax, amax, b);
 }
 
 /* rows of a constraint in a chain of dimension d (-1: not a type; 0: not
@@ -3603,6 +3667,13 @@ VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t,
         }
         return VLBE_OK;
     }
+    if (ch->et) {
+        vlbe_herm_ale b;
+        vlbe__ale_chain_basis(ch, e, p, qe[4], qe[9], 1, 0, &b);
+        if (r) vlbe__ale_sum(&b, 0, 0, qe, r);
+        if (rp) vlbe__ale_sum(&b, 1, 0, qe, rp);
+        return VLBE_OK;
+    }
     return vlbe_ale_point(qe, p, r, rp);
 }
 
@@ -3618,7 +3689,7 @@ VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, cons
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK) return st;
         st = ch->el3 ? vlbe_ale3_energy(ch->el3, md, qe, ve, Ee)
-                     : vlbe_ale_energy(ch->el, md, qe, ve, Ee);
+                     : vlbe_ale_energy(vlbe__ale_el(ch, e), md, qe, ve, Ee);
         if (st != VLBE_OK) return st;
         for (i = 0; i < 3; ++i) E[i] += Ee[i];
     }
@@ -3667,7 +3738,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t
             const vlbe_real p = qe[4] + h * (VLBE_R(1.0) + xi[g]);
             vlbe_herm_ale b;
             vlbe_real r1[2], n1;
-            vlbe_herm_ale_eval(p, qe[4], qe[9], 1, want_rate, &b);
+            vlbe__ale_chain_basis(ch, e, p, qe[4], qe[9], 1, want_rate, &b);
             vlbe__ale_sum(&b, 1, 0, qe, r1);
             n1 = vlbe_sqrt(vlbe_v2_dot(r1, r1));
             if (!(n1 > VLBE_R(0.0))) return VLBE_ESINGULAR;
@@ -3701,26 +3772,27 @@ static inline int vlbe__ale_ne(const vlbe_ale_chain *ch)
 }
 
 /* the element calls of the chain's element type (md: the gathered mode) */
-static inline vlbe_status vlbe__ale_el_mass(const vlbe_ale_chain *ch, unsigned md,
+static inline vlbe_status vlbe__ale_el_mass(const vlbe_ale_chain *ch, int e, unsigned md,
                                             const vlbe_real *qe, vlbe_real *Me)
 {
-    return ch->el3 ? vlbe_ale3_mass(ch->el3, md, qe, Me) : vlbe_ale_mass(ch->el, md, qe, Me);
+    return ch->el3 ? vlbe_ale3_mass(ch->el3, md, qe, Me)
+                   : vlbe_ale_mass(vlbe__ale_el(ch, e), md, qe, Me);
 }
 
-static inline vlbe_status vlbe__ale_el_mass_jac(const vlbe_ale_chain *ch, unsigned md,
+static inline vlbe_status vlbe__ale_el_mass_jac(const vlbe_ale_chain *ch, int e, unsigned md,
                                                 const vlbe_real *qe, const vlbe_real *ae,
                                                 vlbe_real *Je)
 {
     return ch->el3 ? vlbe_ale3_mass_jac(ch->el3, md, qe, ae, Je)
-                   : vlbe_ale_mass_jac(ch->el, md, qe, ae, Je);
+                   : vlbe_ale_mass_jac(vlbe__ale_el(ch, e), md, qe, ae, Je);
 }
 
-static inline vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, unsigned md,
+static inline vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, int e, unsigned md,
                                              const vlbe_real *qe, const vlbe_real *ve,
                                              vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
 {
     return ch->el3 ? vlbe_ale3_force(ch->el3, md, qe, ve, Qe, Ke, De)
-                   : vlbe_ale_force(ch->el, md, qe, ve, Qe, Ke, De);
+                   : vlbe_ale_force(vlbe__ale_el(ch, e), md, qe, ve, Qe, Ke, De);
 }
 
 /* scatter an ne x ne element matrix */
@@ -3769,7 +3841,7 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
     for (i = 0; i < (int)(n * n); ++i) M[i] = VLBE_R(0.0);
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK ||
-            (st = vlbe__ale_el_mass(ch, md, qe, Me)) != VLBE_OK)
+            (st = vlbe__ale_el_mass(ch, e, md, qe, Me)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         vlbe__ale_scatter(ch->n, ne, idx, Me, M);
     }
@@ -3799,16 +3871,16 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
         for (i = 0; i < (int)(n * n); ++i) K[i] = D[i] = VLBE_R(0.0);
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK ||
-            (st = vlbe__ale_el_force(ch, md, qe, ve, Qe, K ? Ke : NULL, K ? De : NULL)) != VLBE_OK)
+            (st = vlbe__ale_el_force(ch, e, md, qe, ve, Qe, K ? Ke : NULL, K ? De : NULL)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         if (vlbe__ale_pres_acc(ch, e, t, ae)) {
             /* inertia of the prescribed p'': Q -= M ae, K -= d(M ae)/dq */
             vlbe_real Me[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Mq[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
-            if ((st = vlbe__ale_el_mass(ch, md, qe, Me)) != VLBE_OK) return vlbe__ale_fail(ch, st, e);
+            if ((st = vlbe__ale_el_mass(ch, e, md, qe, Me)) != VLBE_OK) return vlbe__ale_fail(ch, st, e);
             for (i = 0; i < ne; ++i)
                 for (k = 0; k < ne; ++k) Qe[i] -= Me[i * ne + k] * ae[k];
             if (K) {
-                if ((st = vlbe__ale_el_mass_jac(ch, md, qe, ae, Mq)) != VLBE_OK)
+                if ((st = vlbe__ale_el_mass_jac(ch, e, md, qe, ae, Mq)) != VLBE_OK)
                     return vlbe__ale_fail(ch, st, e);
                 for (i = 0; i < ne * ne; ++i) Ke[i] -= Mq[i];
             }
@@ -3858,7 +3930,7 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
         if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         for (i = 0; i < ne; ++i) ae[i] = idx[i] >= 0 ? a[idx[i]] : VLBE_R(0.0);
-        if ((st = vlbe__ale_el_mass_jac(ch, md, qe, ae, Je)) != VLBE_OK)
+        if ((st = vlbe__ale_el_mass_jac(ch, e, md, qe, ae, Je)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         vlbe__ale_scatter(ch->n, ne, idx, Je, Mq);
     }
@@ -4107,8 +4179,9 @@ VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlb
 VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real ph, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v,
                                            vlbe_real *qn, vlbe_real *vn);
-VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe_real *q,
-                                           const vlbe_real *v, vlbe_real *qn, vlbe_real *vn);
+VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qn,
+                                           vlbe_real *vn);
 VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slider, vlbe_real Lstd,
                                                    vlbe_real t, const vlbe_real *q,
                                                    const vlbe_real *v, vlbe_real *qn,
@@ -4182,7 +4255,7 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
                                            const vlbe_real *q, const vlbe_real *v,
                                            vlbe_real *qn, vlbe_real *vn)
 {
-    vlbe_real qe[10], ve[10] = {0}, qh[5], qhd[5] = {0};
+    vlbe_real qe[10], ve[10] = {0}, qh[5], qhd[5] = {0}, aux[VLBE_ALE_ETYPE_AUX];
     int idx[10], i, k, on;
     unsigned md;
     vlbe_status st;
@@ -4196,7 +4269,10 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
     if (ch->nn >= ch->nn_cap) return VLBE_EWORK;
     if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, v ? ve : NULL, idx, &md)) != VLBE_OK)
         return st;
-    if ((st = vlbe_ale_split(qe, v ? ve : NULL, ph, qh, v ? qhd : NULL)) != VLBE_OK) return st;
+    st = ch->et ? ch->et->split(ch->els, e, qe, v ? ve : NULL, ph, qh, v ? qhd : NULL, aux)
+                : vlbe_ale_split(qe, v ? ve : NULL, ph, qh, v ? qhd : NULL);
+    if (st != VLBE_OK) return st;
+    if (ch->et) ch->et->commit(ch->els, ch->nn - 1, e, 1, aux);
     /* shift nodes e+1.. up by one; their ofs still name the old layout */
     for (i = ch->nn; i > e + 1; --i) ch->node[i] = ch->node[i - 1];
     ch->node[e + 1].pmode = VLBE_ALE_PFIXED;
@@ -4226,23 +4302,48 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
     return vlbe_ale_chain_layout(ch);
 }
 
+/* the per-element types' merge at node i (elements i-1 and i), from the
+   nodes [r, r', p] of both elements */
+static inline vlbe_status vlbe__ale_merge_aux(const vlbe_ale_chain *ch, int i, vlbe_real t,
+                                              const vlbe_real *q, vlbe_real *aux)
+{
+    vlbe_real qa[10], qb[10];
+    int idx[10];
+    unsigned md;
+    vlbe_status st;
+    if ((st = vlbe_ale_chain_gather(ch, i - 1, t, q, NULL, qa, NULL, idx, &md)) != VLBE_OK ||
+        (st = vlbe_ale_chain_gather(ch, i, t, q, NULL, qb, NULL, idx, &md)) != VLBE_OK)
+        return st;
+    return ch->et->merge(ch->els, i - 1, qa, qa + 5, qb + 5, aux);
+}
+
 /* Remove interior node i, merging elements i-1 and i into one between the
    neighbours, whose coordinates stay as they are (eq. 29 of [R]).  The
    merged cubic is the Hermite interpolant of the outer nodes; it differs
    from the two pieces unless they form one cubic, by the interpolation
    error of the removed node (the caller measures the change of positions
-   and energy when it matters; examples/ex_slide.h reports it).  Node i
-   must carry no mass and no constraint, not be sliding and not belong to an
-   equal-length group (else VLBE_EARG, nothing changed).  q -> qn may be
-   in place (qn == q, vn == v). */
-VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe_real *q,
-                                           const vlbe_real *v, vlbe_real *qn, vlbe_real *vn)
+   and energy when it matters; examples/ex_slide.h reports it).  A chain
+   with per-element types (vlbe_ale_etype) asks its merge for the merged
+   element (rancf.h: weights through the removed node, eqs. 30-38); t is
+   the time of q (prescribed material coordinates).  Node i must carry no
+   mass and no constraint, not be sliding and not belong to an equal-length
+   group (else VLBE_EARG, nothing changed).  q -> qn may be in place (qn ==
+   q, vn == v). */
+VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qn,
+                                           vlbe_real *vn)
 {
     int k, j, on;
     VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
     if (ch->el3 || i <= 0 || i >= ch->nn - 1 || ch->nn <= 2) return VLBE_EARG;
     if (ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0) || vlbe__ale_constrained(ch, i))
         return VLBE_EARG;
+    if (ch->et) {
+        vlbe_real aux[VLBE_ALE_ETYPE_AUX];
+        const vlbe_status st = vlbe__ale_merge_aux(ch, i, t, q, aux);
+        if (st != VLBE_OK) return st;
+        ch->et->commit(ch->els, ch->nn - 1, i - 1, -1, aux);
+    }
     on = 0;
     for (j = 0; j < ch->nn; ++j) {
         const int nc = vlbe__ale_ncoord(&ch->node[j]);
@@ -4330,11 +4431,17 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
         ins = Lr >= Lstd;
         at = pr[0] - (Lr - lo < Lstd ? Lr - lo : Lstd);
     }
+    if (ins && ch->et) { /* the merge that follows the insertion must not fail */
+        const int i = side < 0 ? s + 1 : s - 1; /* before the insertion */
+        vlbe_real aux[VLBE_ALE_ETYPE_AUX];
+        if (vlbe__ale_removable(ch, i) && (st = vlbe__ale_merge_aux(ch, i, t, q, aux)) != VLBE_OK)
+            return st;
+    }
     if (!ins) { /* rule (b) only: remove the far node of the short element */
         const int i = s - side; /* s + 1 when side = -1, s - 1 when side = 1 */
         if (side > 0) *slider = s - 1;
         *changed = 3;
-        return vlbe_ale_chain_remove(ch, i, q, v, qn, vn);
+        return vlbe_ale_chain_remove(ch, i, t, q, v, qn, vn);
     }
     if (side < 0) { /* new node in element s-1; the slider becomes s+1 */
         if ((st = vlbe_ale_chain_insert(ch, s - 1, at, t, q, v, qn, vn)) != VLBE_OK) return st;
@@ -4342,7 +4449,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
         *changed = 1;
         if (vlbe__ale_removable(ch, s + 2)) {
             *changed = 2;
-            return vlbe_ale_chain_remove(ch, s + 2, qn, vn, qn, vn);
+            return vlbe_ale_chain_remove(ch, s + 2, t, qn, vn, qn, vn);
         }
     } else { /* new node in element s; the slider keeps its index */
         if ((st = vlbe_ale_chain_insert(ch, s, at, t, q, v, qn, vn)) != VLBE_OK) return st;
@@ -4350,7 +4457,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
         if (vlbe__ale_removable(ch, s - 1)) {
             *changed = 2;
             *slider = s - 1;
-            return vlbe_ale_chain_remove(ch, s - 1, qn, vn, qn, vn);
+            return vlbe_ale_chain_remove(ch, s - 1, t, qn, vn, qn, vn);
         }
     }
     return VLBE_OK;

@@ -87,6 +87,8 @@ API
    vlbe_status vlbe_rancf_arc(c, R, a0, theta, w, x)        circular-arc element (eq. 43)
    vlbe_status vlbe_rancf_nurbs(d, deg, nc, P, wc, U, len, cap, &ne, w, x, p)  a NURBS
                                             curve as elements (exact geometry)
+   vlbe_status vlbe_rancf_chain_init(ch, els, nodes, nn, cap, cons, ccap)  a planar
+                                            chain of ALE-RANCF elements (vlbe_ale_chain)
 
 REFERENCES
    [R] Z. Ding, B. Ouyang, A variable-length rational finite element based on
@@ -169,6 +171,9 @@ VLBE_API vlbe_status vlbe_rancf_nurbs(int d, int deg, int nc, const vlbe_real *P
                                       const vlbe_real *wc, const vlbe_real *U, vlbe_real len,
                                       int cap, int *VLBE_RESTRICT ne, vlbe_real *VLBE_RESTRICT w,
                                       vlbe_real *VLBE_RESTRICT x, vlbe_real *VLBE_RESTRICT p);
+VLBE_API vlbe_status vlbe_rancf_chain_init(vlbe_ale_chain *ch, vlbe_rancf_elem *els,
+                                           vlbe_ale_node *nodes, int nn, int nn_cap,
+                                           vlbe_ale_con *cons, int ncon_cap);
 
 /* ===== implementation =================================================== */
 
@@ -768,6 +773,90 @@ VLBE_API vlbe_status vlbe_rancf_nurbs(int d, int deg, int nc, const vlbe_real *P
     }
     *ne = e;
     return VLBE_OK;
+}
+
+/* ===== chains of rational elements ====================================== */
+/* The per-element types of a planar chain (vlbe_ale_etype) over an array of
+   vlbe_rancf_elem, one per element, each with its weights. */
+static inline const vlbe_ale_elem *vlbe__rancf_et_elem(const void *els, int e)
+{
+    return &((const vlbe_rancf_elem *)els)[e].ale;
+}
+
+static inline void vlbe__rancf_et_basis(const void *els, int e, vlbe_real p, vlbe_real p1,
+                                        vlbe_real p2, int kmax, int amax, vlbe_herm_ale *b)
+{
+    vlbe__rancf_eval(&((const vlbe_rancf_elem *)els)[e], p, p1, p2, kmax, amax, b);
+}
+
+/* aux = [weights of the left part (4), of the right part (4)] */
+static inline vlbe_status vlbe__rancf_et_split(const void *els, int e, const vlbe_real *q,
+                                               const vlbe_real *qd, vlbe_real ph, vlbe_real *qh,
+                                               vlbe_real *qhd, vlbe_real *aux)
+{
+    return vlbe_rancf_split(&((const vlbe_rancf_elem *)els)[e], q, qd, ph, qh, qhd, aux, aux + 4);
+}
+
+/* aux = [merged weights (4), info of vlbe_rancf_merge] */
+static inline vlbe_status vlbe__rancf_et_merge(const void *els, int e, const vlbe_real *na,
+                                               const vlbe_real *nh, const vlbe_real *nb,
+                                               vlbe_real *aux)
+{
+    int info = 0;
+    const vlbe_status st = vlbe_rancf_merge(2, na, nh, nb, aux, &info);
+    (void)els;
+    (void)e;
+    aux[4] = (vlbe_real)info;
+    return st;
+}
+
+/* The new elements take the material, flags and Gauss orders of element e
+   (the one split, or the left one of a merge). */
+static inline void vlbe__rancf_et_commit(void *els, int ne, int e, int op, const vlbe_real *aux)
+{
+    vlbe_rancf_elem *el = (vlbe_rancf_elem *)els;
+    const vlbe_ale_mat mat = el[e].ale.mat;
+    const unsigned fl = el[e].ale.flags;
+    const int nm = el[e].ale.rm.n, nl = el[e].ale.rl.n, nt = el[e].ale.rt.n;
+    int j;
+    if (op > 0) {
+        for (j = ne; j > e + 1; --j) el[j] = el[j - 1];
+        (void)vlbe_rancf_elem_init(&el[e], &mat, aux, fl, nm, nl, nt);
+        (void)vlbe_rancf_elem_init(&el[e + 1], &mat, aux + 4, fl, nm, nl, nt);
+    } else {
+        for (j = e + 1; j + 1 < ne; ++j) el[j] = el[j + 1];
+        (void)vlbe_rancf_elem_init(&el[e], &mat, aux, fl, nm, nl, nt);
+    }
+}
+
+static inline const vlbe_ale_etype *vlbe__rancf_etype(void)
+{
+    static const vlbe_ale_etype t = {vlbe__rancf_et_elem, vlbe__rancf_et_basis,
+                                     vlbe__rancf_et_split, vlbe__rancf_et_merge,
+                                     vlbe__rancf_et_commit};
+    return &t;
+}
+
+/* A planar chain of ALE-RANCF elements: element e (between nodes e and
+   e+1) is els[e], initialized by the caller (vlbe_rancf_elem_init, e.g.
+   unit weights, or the weights of vlbe_rancf_arc / vlbe_rancf_nurbs); els
+   holds nn_cap - 1 elements, the chain keeps them in step with its nodes.
+   Everything else is vlbe_ale_chain's (constraints, sliding nodes, the
+   vlbe_dae callbacks, length control): vlbe_ale_chain_insert splits an
+   element exactly (eqs. 21-28: both parts get their own weights) and
+   vlbe_ale_chain_remove gives the merged element the least-squares
+   weights through the removed node (eqs. 29-38).  ch->mode must not hold
+   VLBE_ALE_INV_AXIAL.  Bad sizes: VLBE_EARG. */
+VLBE_API vlbe_status vlbe_rancf_chain_init(vlbe_ale_chain *ch, vlbe_rancf_elem *els,
+                                           vlbe_ale_node *nodes, int nn, int nn_cap,
+                                           vlbe_ale_con *cons, int ncon_cap)
+{
+    vlbe_status st;
+    VLBE_ASSERT(ch != NULL && els != NULL);
+    if ((st = vlbe_ale_chain_init(ch, &els[0].ale, nodes, nn, nn_cap, cons, ncon_cap)) !=
+        VLBE_OK)
+        return st;
+    return vlbe_ale_chain_types(ch, vlbe__rancf_etype(), els);
 }
 
 #endif /* VLBE_RANCF_H */

@@ -2018,7 +2018,7 @@ static void test_merge_exact(void **state)
     chain_sample(&c.ch, 0, q, NPTS, sample_r0, sample_rp0);
     assert_int_equal(vlbe_ale_chain_energy(&c.ch, 0, q, v, E0), VLBE_OK);
     n0 = c.ch.n;
-    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, q, v, qn, vn), VLBE_OK);
+    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, 0, q, v, qn, vn), VLBE_OK);
     assert_int_equal(c.ch.nn, 2);
     assert_int_equal(c.ch.n, n0 - 4);
     chain_sample(&c.ch, 0, qn, NPTS, sample_r1, sample_rp1);
@@ -2044,7 +2044,7 @@ static void test_merge_exact(void **state)
     memcpy(saved, c.node, 2 * sizeof *saved);
     n0 = c.ch.n;
     assert_int_equal(vlbe_ale_chain_insert(&c.ch, 0, (vlbe_real)p[1], 0, qn, vn, q2, v2), VLBE_OK);
-    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, q2, v2, q2, v2), VLBE_OK);
+    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, 0, q2, v2, q2, v2), VLBE_OK);
     assert_int_equal(c.ch.nn, 2);
     assert_int_equal(c.ch.n, n0);
     assert_memory_equal(saved, c.node, 2 * sizeof *saved);
@@ -2092,7 +2092,7 @@ static void merge_arc(double h, merge_err *m)
     curve_chain(&c, 3, p, -1, arc_f, arc_g, 0u, q, v);
     chain_sample(&c.ch, 0, q, np, sample_r0, sample_rp0);
     assert_int_equal(vlbe_ale_chain_energy(&c.ch, 0, q, v, E0), VLBE_OK);
-    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, q, v, qn, vn), VLBE_OK);
+    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, 0, q, v, qn, vn), VLBE_OK);
     chain_sample(&c.ch, 0, qn, np, sample_r1, sample_rp1);
     assert_int_equal(vlbe_ale_chain_energy(&c.ch, 0, qn, vn, E1), VLBE_OK);
     m->dmax = 0.0;
@@ -2207,7 +2207,7 @@ static void test_insert_remove_bad_inputs(void **state)
     for (k = 0; k < 11 + 9; ++k) {
         for (i = 0; i < N_MAX; ++i) qn[i] = vn[i] = VLBE_R(7.0);
         if (k < 11) {
-            if (vlbe_ale_chain_remove(&c.ch, bad[k], q, v, qn, vn) != VLBE_EARG)
+            if (vlbe_ale_chain_remove(&c.ch, bad[k], 0, q, v, qn, vn) != VLBE_EARG)
                 fail_msg("remove(%d) did not return VLBE_EARG", bad[k]);
         } else {
             static const int e[9] = {-1, 8, 7, 7, 7, 7, 7, 4, 5};
@@ -2229,7 +2229,7 @@ static void test_insert_remove_bad_inputs(void **state)
         for (i = 0; i < N_MAX; ++i) assert_true(qn[i] == VLBE_R(7.0) && vn[i] == VLBE_R(7.0));
     }
     /* node 7 is plain: removed; the constraints keep their nodes (all < 7) */
-    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 7, q, v, qn, vn), VLBE_OK);
+    assert_int_equal(vlbe_ale_chain_remove(&c.ch, 7, 0, q, v, qn, vn), VLBE_OK);
     assert_int_equal(c.ch.nn, 8);
     assert_int_equal(c.ch.n, n0 - 4);
     assert_int_equal(c.con[2].node2, 6);

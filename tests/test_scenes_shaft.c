@@ -302,7 +302,7 @@ static void chain3_layout(void **state)
         int sl = 2, chg = 0;
         vlbe_ale_chain_straight(&c.ch, r0, dir, q);
         assert_int_equal(vlbe_ale_chain_insert(&c.ch, 0, VLBE_R(0.1), 0, q, v, qn, vn), VLBE_EARG);
-        assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, q, v, qn, vn), VLBE_EARG);
+        assert_int_equal(vlbe_ale_chain_remove(&c.ch, 1, 0, q, v, qn, vn), VLBE_EARG);
         assert_int_equal(vlbe_ale_chain_length(&c.ch, 0, q, v, &len, NULL), VLBE_EARG);
         (void)sl, (void)chg;
     }
