@@ -14,6 +14,24 @@
    clamped-free (position and slope direction at the left end) or pinned-
    pinned (positions at both ends).
 
+   Elements: ALE-ANCF (ancf_ale.h) or, with cfg.rational, ALE-RANCF
+   (rancf.h: a chain of vlbe_rancf_elem, unit weights on the straight
+   start; length control then splits exactly and gives merged elements
+   least-squares weights, eqs. 21-38 of the paper).  Every weight set
+   made by length control is collected (ex_slide_out.wall / .wmerge: the
+   paper's Table 2 statistics, eq. 42).
+   Start shape: straight, or with cfg.R > 0 a semicircle of radius R
+   hanging below the supports (0, 0) and (2R, 0) (pinned-pinned; ale-rancf
+   6.3; L = pi R): N arcs of central angle pi/N and reference length R pi/N
+   (vlbe_rancf_arc, eq. 43: exact with rational elements; ALE-ANCF: the
+   Hermite cubics through the same nodes and unit tangents).  The sliding
+   node is made by exact segmentation of the element holding p0 (unless p0
+   is a node), so the chain has N or N + 1 elements.  The arc's
+   parametrisation is not by arc length (|r'| = 2 sin(th/2)/th at the
+   nodes, more inside), so the start is not stress-free: the reference is
+   straight and the start carries that axial strain and the bending
+   EI/R^2 of the curve.
+
    The run: HHT-alpha with a fixed step (halving when Newton fails or an
    iterate leaves the chain's domain); after every step the length control
    (vlbe_ale_chain_length_control) and, after a change, a restart of the
@@ -29,8 +47,10 @@
 #ifndef VLBE_EX_SLIDE_H
 #define VLBE_EX_SLIDE_H
 
-#include "../ancf_ale.h"
+#include "../rancf.h"
 #include "ex_ale.h"
+
+#include <stddef.h>
 
 #include <math.h>
 #include <stdio.h>
@@ -53,6 +73,8 @@ typedef struct ex_slide_cfg {
     int halvings;           /* HHT step halvings                            */
     double probe_p;         /* material point whose y is recorded           */
     double stop;            /* clamped-free: end at an element ahead < stop L_std */
+    int rational;           /* 1: ALE-RANCF elements (rancf.h)              */
+    double R;               /* > 0: semicircle start of radius R (pinned-pinned) */
 } ex_slide_cfg;
 
 /* one row per accepted step (and t = 0) */
@@ -66,6 +88,13 @@ typedef struct ex_slide_event {
     int changed;        /* 1: node inserted, 2: inserted and one removed (merge) */
 } ex_slide_event;
 
+/* a set of weights k_i (eq. 33) made by length control: size, extremes and
+   the deviation sigma = sqrt(sum (k - 1)^2 / n) of eq. (42) */
+typedef struct ex_slide_wset {
+    long n;
+    double kmax, kmin, ss;
+} ex_slide_wset;
+
 typedef struct ex_slide_out {
     vlbe_status status;
     double t_leave;      /* clamped-free: the mass leaves the beam (-1: not reached) */
@@ -77,6 +106,11 @@ typedef struct ex_slide_out {
     double dE_lc;        /* largest |energy jump| at a length-control event [J] */
     int nev;
     ex_slide_event ev[EX_SLIDE_MAXEV];
+    /* rational: k0, k1, k2 (k3 = 1) of every element made by length control
+       (wall: split parts and merged elements; wmerge: merged only) and the
+       merges that fell back to unit weights (eq. 38) */
+    ex_slide_wset wall, wmerge;
+    long merge_fallbacks;
 } ex_slide_out;
 
 typedef struct ex_slide {
@@ -88,7 +122,42 @@ typedef struct ex_slide {
     vlbe_dae sys;
     int slider;
     double Lstd;
+    ex_slide_wset wall, wmerge; /* rational: weights made by length control */
+    long merge_fallbacks;
+    vlbe_ale_etype et;          /* rational: rancf.h's calls, commit recorded */
+    vlbe_rancf_elem els[EX_SLIDE_NMAX + 1];
 } ex_slide;
+
+static inline double ex_slide_sigma(const ex_slide_wset *w)
+{
+    return w->n > 0 ? sqrt(w->ss / (double)w->n) : 0.0;
+}
+
+static inline void ex_slide_wadd(ex_slide_wset *w, const vlbe_real *k)
+{
+    int i;
+    for (i = 0; i < 3; ++i) {
+        const double x = (double)k[i];
+        if (w->n == 0 || x > w->kmax) w->kmax = x;
+        if (w->n == 0 || x < w->kmin) w->kmin = x;
+        w->ss += (x - 1.0) * (x - 1.0);
+        w->n++;
+    }
+}
+
+/* rancf.h's commit, recording the new weights (els is m->els) */
+static inline void ex_slide_commit(void *els, int ne, int e, int op, const vlbe_real *aux)
+{
+    ex_slide *m = (ex_slide *)(void *)((char *)els - offsetof(ex_slide, els));
+    ex_slide_wadd(&m->wall, aux);
+    if (op > 0) {
+        ex_slide_wadd(&m->wall, aux + 4);
+    } else {
+        ex_slide_wadd(&m->wmerge, aux);
+        if (aux[4] != VLBE_R(0.0)) m->merge_fallbacks++;
+    }
+    vlbe__rancf_etype()->commit(els, ne, e, op, aux);
+}
 
 /* A scene on the paper's beam (ale-rancf 6.1 and 6.2: L = 1 m, r = 0.01 m,
    rho = 7200, E = 20 MPa, gravity 9.81), HHT-alpha -0.05 at h = 1e-3 with 8
@@ -116,33 +185,133 @@ static inline void ex_slide_cfg_paper(ex_slide_cfg *c, int N, int support, doubl
     c->stop = 0.1;
 }
 
+/* Node coordinates [r, r'] of the start shape, material coordinates p[],
+   and (rational) the elements' weights; returns the number of nodes and
+   the sliding node (*ks), -1 on bad input. */
+static inline int ex_slide_shape(const ex_slide_cfg *c, const vlbe_ale_mat *mat, double Lstd,
+                                 vlbe_real (*x)[4], vlbe_real *p, vlbe_real (*w)[4], int *ks)
+{
+    const double PI = 3.14159265358979323846;
+    int i, k, nn = c->N + 1, e0;
+    for (i = 0; i <= c->N; ++i) {
+        p[i] = (vlbe_real)(i * Lstd);
+        for (k = 0; k < 4; ++k) w[i][k] = VLBE_R(1.0);
+    }
+    if (c->R <= 0.0) { /* straight: the node nearest to p0 moves there */
+        *ks = (int)floor(c->p0 / Lstd + 0.5);
+        if (*ks < 1) *ks = 1;
+        if (*ks > c->N - 1) *ks = c->N - 1;
+        p[*ks] = (vlbe_real)c->p0;
+        for (i = 0; i < nn; ++i) {
+            x[i][0] = p[i];
+            x[i][1] = x[i][3] = VLBE_R(0.0);
+            x[i][2] = VLBE_R(1.0);
+        }
+        return nn;
+    }
+    { /* semicircle from polar angle pi, counterclockwise (below the x axis) */
+        const vlbe_real cen[2] = {(vlbe_real)c->R, VLBE_R(0.0)};
+        const double th = PI / c->N;
+        vlbe_real xe[8], wa[4];
+        for (i = 0; i < c->N; ++i) {
+            if (vlbe_rancf_arc(cen, (vlbe_real)c->R, (vlbe_real)(PI + i * th), (vlbe_real)th, wa,
+                               xe))
+                return -1;
+            for (k = 0; k < 4; ++k) {
+                x[i][k] = xe[k];
+                x[i + 1][k] = xe[4 + k];
+                if (c->rational) w[i][k] = wa[k];
+            }
+            if (!c->rational) /* ALE-ANCF: unit tangents (arc-length slopes) */
+                for (k = 0; k < 2; ++k) {
+                    const double n0 = hypot((double)xe[2], (double)xe[3]);
+                    const double n1 = hypot((double)xe[6], (double)xe[7]);
+                    x[i][2 + k] = (vlbe_real)((double)xe[2 + k] / n0);
+                    x[i + 1][2 + k] = (vlbe_real)((double)xe[6 + k] / n1);
+                }
+        }
+    }
+    e0 = (int)floor(c->p0 / Lstd);
+    if (e0 < 0 || e0 >= c->N) return -1;
+    if (fabs(c->p0 - e0 * Lstd) < 1e-12 * Lstd || fabs(c->p0 - (e0 + 1) * Lstd) < 1e-12 * Lstd) {
+        *ks = fabs(c->p0 - e0 * Lstd) < 1e-12 * Lstd ? e0 : e0 + 1; /* p0 is a node */
+        return *ks > 0 && *ks < c->N ? nn : -1;
+    }
+    { /* exact segmentation of element e0 at p0: a new node there */
+        vlbe_real qe[10], qh[5], wl[4], wr[4];
+        vlbe_rancf_elem *el = NULL;
+        for (k = 0; k < 4; ++k) {
+            qe[k] = x[e0][k];
+            qe[5 + k] = x[e0 + 1][k];
+        }
+        qe[4] = p[e0];
+        qe[9] = p[e0 + 1];
+        if (c->rational) {
+            el = (vlbe_rancf_elem *)malloc(sizeof *el);
+            if (!el || vlbe_rancf_elem_init(el, mat, w[e0], 0, 0, 0, 0) ||
+                vlbe_rancf_split(el, qe, NULL, (vlbe_real)c->p0, qh, NULL, wl, wr)) {
+                free(el);
+                return -1;
+            }
+            free(el);
+        } else {
+            for (k = 0; k < 4; ++k) wl[k] = wr[k] = VLBE_R(1.0);
+            if (vlbe_ale_split(qe, NULL, (vlbe_real)c->p0, qh, NULL)) return -1;
+        }
+        for (i = nn; i > e0 + 1; --i) { /* nodes e0+1.. and elements e0+1.. move up */
+            p[i] = p[i - 1];
+            for (k = 0; k < 4; ++k) {
+                x[i][k] = x[i - 1][k];
+                w[i][k] = w[i - 1][k];
+            }
+        }
+        p[e0 + 1] = (vlbe_real)c->p0;
+        for (k = 0; k < 4; ++k) {
+            x[e0 + 1][k] = qh[k];
+            w[e0][k] = wl[k];
+            w[e0 + 1][k] = wr[k];
+        }
+        *ks = e0 + 1;
+        return nn + 1;
+    }
+}
+
 static inline int ex_slide_build(ex_slide *m, const ex_slide_cfg *c, vlbe_real *q0, vlbe_real *v0)
 {
     const double PI = 3.14159265358979323846, A = PI * c->r * c->r;
-    vlbe_real r0[2] = {0, 0}, dir[2] = {1, 0};
+    const double L = c->R > 0.0 ? PI * c->R : c->L;
+    vlbe_real x[EX_SLIDE_NMAX + 2][4], p[EX_SLIDE_NMAX + 2], w[EX_SLIDE_NMAX + 2][4], sn;
     vlbe_ale_con k;
-    int i, ks;
-    if (c->N < 2 || c->N > EX_SLIDE_NMAX) return -1;
+    int i, j, ks, nn, st;
+    if (c->N < 2 || c->N > EX_SLIDE_NMAX || (c->R > 0.0 && c->support != EX_SLIDE_PIN_PIN))
+        return -1;
     memset(m, 0, sizeof *m);
     m->mat.rhoA = (vlbe_real)(c->rho * A);
     m->mat.EA = (vlbe_real)(c->E * A);
     m->mat.EI = (vlbe_real)(c->E * PI * c->r * c->r * c->r * c->r / 4.0);
     m->mat.f[1] = (vlbe_real)(-c->g * c->rho * A);
     if (vlbe_ale_elem_init(&m->el, &m->mat, VLBE_ALE_NO_DAMP | c->flags, 0, 0, 0)) return -1;
-    m->Lstd = c->L / c->N;
-    ks = (int)floor(c->p0 / m->Lstd + 0.5);
-    if (ks < 1) ks = 1;
-    if (ks > c->N - 1) ks = c->N - 1;
-    for (i = 0; i <= c->N; ++i) {
-        m->node[i].pmode = VLBE_ALE_PFIXED;
-        m->node[i].p = (vlbe_real)(i * m->Lstd);
+    m->Lstd = L / c->N;
+    if ((nn = ex_slide_shape(c, &m->mat, m->Lstd, x, p, w, &ks)) < 0) return -1;
+    for (i = 0; i < nn; ++i) {
+        m->node[i].pmode = i == ks ? VLBE_ALE_PFREE : VLBE_ALE_PFIXED;
+        m->node[i].p = p[i];
     }
-    m->node[ks].pmode = VLBE_ALE_PFREE;
-    m->node[ks].p = (vlbe_real)c->p0;
     m->node[ks].mass = (vlbe_real)c->mass;
     m->slider = ks;
-    if (vlbe_ale_chain_init(&m->ch, &m->el, m->node, c->N + 1, EX_SLIDE_NMAX + 2, m->con, 4))
-        return -1;
+    if (c->rational) {
+        for (i = 0; i + 1 < nn; ++i)
+            if (vlbe_rancf_elem_init(&m->els[i], &m->mat, w[i], VLBE_ALE_NO_DAMP | c->flags, 0, 0,
+                                     0))
+                return -1;
+        m->et = *vlbe__rancf_etype();
+        m->et.commit = ex_slide_commit;
+        st = vlbe_rancf_chain_init(&m->ch, m->els, m->node, nn, EX_SLIDE_NMAX + 2, m->con, 4) ||
+             vlbe_ale_chain_types(&m->ch, &m->et, m->els);
+    } else {
+        st = vlbe_ale_chain_init(&m->ch, &m->el, m->node, nn, EX_SLIDE_NMAX + 2, m->con, 4);
+    }
+    if (st) return -1;
     m->ch.g[1] = (vlbe_real)-c->g;
     memset(&k, 0, sizeof k);
     k.type = VLBE_ALE_CON_POS; /* left end at the origin */
@@ -151,16 +320,23 @@ static inline int ex_slide_build(ex_slide *m, const ex_slide_cfg *c, vlbe_real *
         k.type = VLBE_ALE_CON_SLOPE_DIR; /* clamp: slope direction (1, 0) */
         k.v[0] = 1;
     } else {
-        k.node = c->N; /* pin at (L, 0) */
-        k.v[0] = (vlbe_real)c->L;
+        k.node = nn - 1; /* pin at the right end of the start shape: (L, 0), (2R, 0) */
+        k.v[0] = c->R > 0.0 ? x[nn - 1][0] : (vlbe_real)c->L;
+        k.v[1] = c->R > 0.0 ? x[nn - 1][1] : VLBE_R(0.0);
     }
     if (vlbe_ale_chain_add(&m->ch, &k) || vlbe_ale_chain_layout(&m->ch)) return -1;
     ex_ale_wire(&m->sys, &m->ch);
-    vlbe_ale_chain_straight(&m->ch, r0, dir, q0);
     for (i = 0; i < m->ch.n; ++i) v0[i] = 0;
-    /* the mass slides at v0 over the resting beam: p' = v0, r' = p' r'(p) */
-    v0[m->node[ks].ofs] = (vlbe_real)c->v0;
-    v0[m->node[ks].ofs + 4] = (vlbe_real)c->v0;
+    for (i = 0; i < nn; ++i) {
+        const int o = m->node[i].ofs;
+        for (j = 0; j < 4; ++j) q0[o + j] = x[i][j];
+        if (i == ks) q0[o + 4] = p[i];
+    }
+    /* the mass slides at v0 over the resting beam: p' = v0 / |r'|, the
+       node's velocity p' r'(p) */
+    sn = vlbe_sqrt(x[ks][2] * x[ks][2] + x[ks][3] * x[ks][3]);
+    v0[m->node[ks].ofs + 4] = (vlbe_real)c->v0 / sn;
+    for (j = 0; j < 2; ++j) v0[m->node[ks].ofs + j] = (vlbe_real)c->v0 * x[ks][2 + j] / sn;
     return 0;
 }
 
@@ -320,6 +496,9 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
         res.t_stop = (double)st.t;
         res.p_stop = (double)st.q[m->node[m->slider].ofs + 4];
     }
+    res.wall = m->wall;
+    res.wmerge = m->wmerge;
+    res.merge_fallbacks = m->merge_fallbacks;
 done:
     res.cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
     free(m);
