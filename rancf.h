@@ -60,6 +60,16 @@ CONVENTIONS
    the test); with p' = 0 at both ends they agree to rounding.
    Not available: VLBE_ALE_INV_AXIAL (its invariant tables are those of
    the polynomial basis): every element call with it returns VLBE_EARG.
+   Chains: vlbe_rancf_chain_init makes a planar vlbe_ale_chain whose
+   element e is els[e] (per-element types, vlbe_ale_etype of ancf_ale.h):
+   constraints, sliding nodes, the vlbe_dae callbacks and length control
+   are the chain's; an insertion splits exactly (both parts get weights
+   by eq. 21), a removal gives the merged element the weights of
+   vlbe_rancf_merge.  Those weights put the merged curve through the
+   removed node but say nothing of its parametrization: on a nearly
+   straight, bent pair they can be far from 1 (0.03..2 in the falling
+   beam of the paper's 6.1 with 5 elements), and the strain energy of the
+   merged element jumps accordingly (examples/falling_beam.c reports it).
    Bezier form (any dimension d = 1..3): control points P0..P3 (4 d reals)
    and weights; element nodal form x = [rA, rA', rB, rB'] (4 d reals) and
    reference length l, related by eqs. 5-6.
