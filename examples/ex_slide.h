@@ -108,7 +108,8 @@ typedef struct ex_slide_out {
     vlbe_status status;
     double t_leave;      /* clamped-free: the mass leaves the beam (-1: not reached) */
     double t_stop, p_stop; /* time and material coordinate of the mass at the end */
-    double cpu, cpu_lc;  /* seconds: all, length control and restarts     */
+    double cpu, cpu_lc;  /* CPU seconds: all; length control and restarts (not the
+                            diagnostics around them)                     */
     long steps, rejected, newton, lu, lc_events;
     double E0, T_max;    /* energy at t = 0, largest kinetic energy [J]    */
     double dE_gain, dE_loss; /* extremes of E - E0 within the steps, jumps out [J] */
@@ -504,17 +505,22 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
             break;
         }
         {
-            const clock_t c1 = clock();
+            /* cpu_lc times the length control and the restart after a
+               change only; the diagnostics (arc length and energy before
+               and after, the shapes) are not counted in it */
             const double len0 = ex_slide_len(&m->ch, st.t, st.q, NULL, NULL);
             double *shp = hist && hist->shape && hist->shape_done < hist->shape_events
                               ? hist->shape + (size_t)(4 * hist->shape_done * hist->shape_pts)
                               : NULL;
+            clock_t c1;
             if (shp) /* before: overwritten every step until an event happens */
                 ex_slide_sample(m, c, t, st.q, hist, shp, shp + hist->shape_pts);
+            c1 = clock();
             vlbe_vec_copy(m->ch.n, st.q, q);
             vlbe_vec_copy(m->ch.n, st.v, v);
             res.status = vlbe_ale_chain_length_control(&m->ch, &m->slider, (vlbe_real)m->Lstd,
                                                        st.t, q, v, qn, vn, &changed);
+            res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;
             if (res.status == VLBE_OK && changed) {
                 const double jump = ex_slide_energy(&m->ch, st.t, qn, vn, NULL) - E;
                 Eref += jump; /* the drift of the steps is measured without it */
@@ -531,6 +537,7 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
                                     shp + 3 * hist->shape_pts);
                     hist->shape_t[hist->shape_done++] = t;
                 }
+                c1 = clock();
                 /* the counters of st restart with it: bank them first */
                 res.newton += st.stats.newton_iters;
                 res.lu += st.stats.lu_factors;
@@ -538,8 +545,8 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
                 ex_ale_wire(&m->sys, &m->ch);
                 res.lc_events++;
                 res.status = vlbe_hht_init(&st, &m->sys, &par, (vlbe_real)t, qn, vn, w, lw, iw, liw);
+                res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;
             }
-            res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;
         }
     }
     if (res.steps > 0 || res.status == VLBE_OK) {
