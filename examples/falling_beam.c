@@ -117,7 +117,7 @@ int main(int argc, char **argv)
     static const char *form_name[FB_NFORM] = {"ALE-ANCF paper form", "ALE-ANCF conservative",
                                               "ALE-RANCF"};
     static const char *suffix[FB_NFORM] = {"", "_cons", "_rancf"};
-    static char names[FB_NFORM][FB_NRUN][48], snames[2][4][64];
+    static char names[FB_NFORM][FB_NRUN][48], snames[2][4][64], stitle[2][160];
     static ex_slide_out res[FB_NFORM][FB_NRUN];
     const double h = 1e-3;
     ex_slide_hist hist[FB_NFORM][FB_NRUN], shp[2];
@@ -264,9 +264,9 @@ int main(int argc, char **argv)
             ex_slide_hist_shapes(&shp[f], 2, FB_SHAPE_PTS * 5 + 1))
             return 1;
         r = ex_slide_run(&cfg, &shp[f]);
-        snprintf(path, sizeof path, "Falling cantilever, 5 %s elements (ale-rancf Figure 12): "
-                 "before and after the first two length-control events", mname[f]);
-        svgp_init(&cshape[f], path, "X [m]", "Y [m]", 0, 0);
+        snprintf(stitle[f], sizeof stitle[f], "Falling cantilever, 5 %s elements (ale-rancf "
+                 "Figure 12): before and after the first two length-control events", mname[f]);
+        svgp_init(&cshape[f], stitle[f], "X [m]", "Y [m]", 0, 0);
         for (k = 0; k < shp[f].shape_done; ++k) {
             const int n = shp[f].shape_pts;
             const double *s = shp[f].shape + (size_t)(4 * k * n);
