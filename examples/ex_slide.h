@@ -60,6 +60,7 @@
 
 #define EX_SLIDE_NMAX 64   /* elements, at most                         */
 #define EX_SLIDE_MAXEV 256 /* length-control events recorded, at most   */
+#define EX_SLIDE_MAXSHAPE 4 /* length-control events whose shapes are sampled, at most */
 
 enum { EX_SLIDE_CLAMP_FREE = 0, EX_SLIDE_PIN_PIN = 1 };
 
@@ -77,10 +78,18 @@ typedef struct ex_slide_cfg {
     double R;               /* > 0: semicircle start of radius R (pinned-pinned) */
 } ex_slide_cfg;
 
-/* one row per accepted step (and t = 0) */
+/* one row per accepted step (and t = 0); optionally (ex_slide_hist_shapes)
+   the beam sampled at shape_pts material points, uniform on [0, L], just
+   before and just after each of the first shape_events length-control
+   events (ale-rancf Figure 12): shape + (4 k + j) shape_pts, j = 0, 1: x, y
+   before event k, j = 2, 3: x, y after it; shape_t[k] its time, shape_done
+   the events sampled. */
 typedef struct ex_slide_hist {
     int n, cap;
     double *t, *probe_y, *mass_x, *mass_y, *mass_p, *energy, *length, *rate;
+    int shape_events, shape_pts, shape_done;
+    double shape_t[EX_SLIDE_MAXSHAPE];
+    double *shape;
 } ex_slide_hist;
 
 typedef struct ex_slide_event {
@@ -99,7 +108,8 @@ typedef struct ex_slide_out {
     vlbe_status status;
     double t_leave;      /* clamped-free: the mass leaves the beam (-1: not reached) */
     double t_stop, p_stop; /* time and material coordinate of the mass at the end */
-    double cpu, cpu_lc;  /* seconds: all, length control and restarts     */
+    double cpu, cpu_lc;  /* CPU seconds: all; length control and restarts (not the
+                            diagnostics around them)                     */
     long steps, rejected, newton, lu, lc_events;
     double E0, T_max;    /* energy at t = 0, largest kinetic energy [J]    */
     double dE_gain, dE_loss; /* extremes of E - E0 within the steps, jumps out [J] */
@@ -379,8 +389,42 @@ static inline int ex_slide_hist_alloc(ex_slide_hist *hi, int cap)
     return 0;
 }
 
+/* Asks for the shapes of the first K (<= EX_SLIDE_MAXSHAPE) length-control
+   events at pts points each (after ex_slide_hist_alloc); 0 on success. */
+static inline int ex_slide_hist_shapes(ex_slide_hist *hi, int K, int pts)
+{
+    if (K < 1 || K > EX_SLIDE_MAXSHAPE || pts < 2) return -1;
+    hi->shape = (double *)malloc((size_t)(4 * K * pts) * sizeof *hi->shape);
+    if (!hi->shape) return -1;
+    hi->shape_events = K;
+    hi->shape_pts = pts;
+    hi->shape_done = 0;
+    return 0;
+}
+
+/* the beam at hi->shape_pts material points into x[], y[] (NaN where the
+   chain cannot be evaluated) */
+static inline void ex_slide_sample(const ex_slide *m, const ex_slide_cfg *c, double t,
+                                   const vlbe_real *q, const ex_slide_hist *hi, double *x,
+                                   double *y)
+{
+    const double L = m->Lstd * c->N;
+    int j;
+    for (j = 0; j < hi->shape_pts; ++j) {
+        vlbe_real r[2];
+        const double p = L * j / (hi->shape_pts - 1);
+        if (vlbe_ale_chain_point(&m->ch, (vlbe_real)t, q, (vlbe_real)p, r, NULL) == VLBE_OK) {
+            x[j] = (double)r[0];
+            y[j] = (double)r[1];
+        } else {
+            x[j] = y[j] = (double)NAN;
+        }
+    }
+}
+
 static inline void ex_slide_hist_free(ex_slide_hist *hi)
 {
+    free(hi->shape);
     free(hi->t);
     memset(hi, 0, sizeof *hi);
 }
@@ -461,12 +505,22 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
             break;
         }
         {
-            const clock_t c1 = clock();
+            /* cpu_lc times the length control and the restart after a
+               change only; the diagnostics (arc length and energy before
+               and after, the shapes) are not counted in it */
             const double len0 = ex_slide_len(&m->ch, st.t, st.q, NULL, NULL);
+            double *shp = hist && hist->shape && hist->shape_done < hist->shape_events
+                              ? hist->shape + (size_t)(4 * hist->shape_done * hist->shape_pts)
+                              : NULL;
+            clock_t c1;
+            if (shp) /* before: overwritten every step until an event happens */
+                ex_slide_sample(m, c, t, st.q, hist, shp, shp + hist->shape_pts);
+            c1 = clock();
             vlbe_vec_copy(m->ch.n, st.q, q);
             vlbe_vec_copy(m->ch.n, st.v, v);
             res.status = vlbe_ale_chain_length_control(&m->ch, &m->slider, (vlbe_real)m->Lstd,
                                                        st.t, q, v, qn, vn, &changed);
+            res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;
             if (res.status == VLBE_OK && changed) {
                 const double jump = ex_slide_energy(&m->ch, st.t, qn, vn, NULL) - E;
                 Eref += jump; /* the drift of the steps is measured without it */
@@ -478,6 +532,12 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
                     ev->dlen = ex_slide_len(&m->ch, st.t, qn, NULL, NULL) - len0;
                     ev->changed = changed;
                 }
+                if (shp) {
+                    ex_slide_sample(m, c, t, qn, hist, shp + 2 * hist->shape_pts,
+                                    shp + 3 * hist->shape_pts);
+                    hist->shape_t[hist->shape_done++] = t;
+                }
+                c1 = clock();
                 /* the counters of st restart with it: bank them first */
                 res.newton += st.stats.newton_iters;
                 res.lu += st.stats.lu_factors;
@@ -485,8 +545,8 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
                 ex_ale_wire(&m->sys, &m->ch);
                 res.lc_events++;
                 res.status = vlbe_hht_init(&st, &m->sys, &par, (vlbe_real)t, qn, vn, w, lw, iw, liw);
+                res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;
             }
-            res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;
         }
     }
     if (res.steps > 0 || res.status == VLBE_OK) {

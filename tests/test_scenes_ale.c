@@ -18,6 +18,14 @@
                        conservative element never gains energy and loses
                        less with a smaller step (HHT dissipation); the paper
                        form gains energy (its missing flux)
+     rancf_unit_equals_ancf  ALE-RANCF with its unit start weights = ALE-ANCF
+                       (falling beam, 5 elements) up to the first length-
+                       control event: histories compared
+     falling_beam_rancf  scene 6.1, 20 ALE-RANCF elements: the mass leaves,
+                       merged weights positive, sigma finite
+     suspended_beam_rancf  scene 6.2, ALE-RANCF, 1 s: status OK, splits exact,
+                       merge arc-length jumps bounded and smaller than
+                       ALE-ANCF's at the first merge (from the same state)
    The dynamic scenes run in double only: in float the Newton tolerances of
    HHT sit near FLT_EPSILON and the ill-conditioned short elements of the
    length control do not converge (a statement about float, not a test).
@@ -250,12 +258,181 @@ static void test_suspended_beam(void **state)
 #endif
 }
 
+/* ======================================================================= */
+/* 4. ALE-RANCF (cfg.rational)                                              */
+/* ======================================================================= */
+
+/* (a) Unit weights: the rational element's basis is the Hermite one (the
+   weighting function sum w_i N_i is 1 identically, eq. 9), so up to the
+   first length-control event the ALE-RANCF run is the ALE-ANCF run.  The
+   falling beam with 5 elements has its first event at t = 0.261 s (both
+   models); t_end = 0.2 s leaves it out (asserted: no event in either run).
+   The histories (tip y, mass x, y, p, energy, arc length) are compared
+   row by row.  Tolerance: the two are different code paths (rancf.h
+   divides by the weighting function and adds the terms of its derivatives,
+   which are 0 here up to rounding), so they may differ by rounding per
+   evaluation, propagated over 200 steps by a Newton iteration whose
+   tolerance is far above rounding (a rounding difference that changes one
+   iteration count leaves a difference of the order of that tolerance, not
+   of EPS).  Measured: 0, bit for bit, in the dbl and dbl-O0 builds (and
+   under the sanitizers); reported with VLBE_TEST_REPORT=1.  Asserted, so
+   that a compiler contracting the two paths differently (FMA) does not
+   fail it: 1e-9 relative to each history's largest magnitude (1e-9 stands
+   for "the same trajectory": the rounding
+   share of a 200-step Newton-converged run is far below it, any model
+   difference, e.g. a weight derivative term not vanishing, gives O(1)
+   relative changes in the tip motion).  Run in double only: the float
+   build does not run the dynamic scenes (see the header). */
+static inline double hist_reldiff(const double *a, const double *b, int n)
+{
+    double d = 0.0, s = 0.0;
+    int k;
+    for (k = 0; k < n; ++k) {
+        if (fabs(a[k]) > s) s = fabs(a[k]);
+        if (fabs(a[k] - b[k]) > d) d = fabs(a[k] - b[k]);
+    }
+    return s > 0.0 ? d / s : d;
+}
+
+static void test_rancf_unit_equals_ancf(void **state)
+{
+    (void)state;
+#ifndef VLBE_USE_FLOAT
+    {
+        ex_slide_cfg cfg;
+        ex_slide_out r[2];
+        ex_slide_hist hi[2];
+        int f, k;
+        double worst = 0.0;
+        for (f = 0; f < 2; ++f) {
+            fb_cfg(&cfg, 5, 0u, 1e-3);
+            cfg.t_end = 0.2;
+            cfg.rational = f;
+            assert_int_equal(ex_slide_hist_alloc(&hi[f], 256), 0);
+            r[f] = ex_slide_run(&cfg, &hi[f]);
+            assert_int_equal(r[f].status, VLBE_OK);
+            assert_int_equal(r[f].lc_events, 0);
+        }
+        assert_int_equal(hi[0].n, hi[1].n);
+        assert_true(hi[0].n > 150);
+        for (k = 0; k < hi[0].n; ++k) assert_true(hi[0].t[k] == hi[1].t[k]);
+        {
+            const double *a[6] = {hi[0].probe_y, hi[0].mass_x, hi[0].mass_y, hi[0].mass_p,
+                                  hi[0].energy, hi[0].length};
+            const double *b[6] = {hi[1].probe_y, hi[1].mass_x, hi[1].mass_y, hi[1].mass_p,
+                                  hi[1].energy, hi[1].length};
+            static const char *nm[6] = {"tip y", "mass x", "mass y", "mass p", "energy",
+                                        "arc length"};
+            for (k = 0; k < 6; ++k) {
+                const double d = hist_reldiff(a[k], b[k], hi[0].n);
+                if (tu_report_on())
+                    print_message("    rancf (unit weights) vs ancf, %s: largest relative "
+                                  "difference %.3g\n", nm[k], d);
+                if (d > worst) worst = d;
+            }
+        }
+        tu_report("rancf unit weights vs ancf, largest relative history difference", worst, 1e-9);
+        assert_true(worst <= 1e-9);
+        ex_slide_hist_free(&hi[0]);
+        ex_slide_hist_free(&hi[1]);
+    }
+#endif
+}
+
+/* (b) Scene 6.1 with 20 ALE-RANCF elements: the mass leaves the beam
+   (measured t_leave 0.731 s; ALE-ANCF 0.566 s, the paper's figures 0.6 to
+   0.7 s; asserted in [0.55, 0.8], the paper's range widened by the spread
+   of our meshes), the weights made by merges exist (the paper's Table 2:
+   57 for 20 elements; measured 57), are all positive (a weight <= 0 makes
+   the element singular, eq. 9) and their sigma (eq. 42) is finite; no
+   merge needed the unit-weight fallback of eq. 38 (measured 0). */
+static void test_falling_beam_rancf(void **state)
+{
+    (void)state;
+#ifndef VLBE_USE_FLOAT
+    {
+        ex_slide_cfg cfg;
+        ex_slide_out r;
+        fb_cfg(&cfg, 20, 0u, 1e-3);
+        cfg.rational = 1;
+        r = ex_slide_run(&cfg, NULL);
+        if (tu_report_on())
+            print_message("    falling beam, 20 ALE-RANCF elements: %s, leaves at %.4f s, %ld "
+                          "events, merged weights %ld in [%.4g, %.4g], sigma %.4g, fallbacks "
+                          "%ld\n", vlbe_status_str(r.status), r.t_leave, r.lc_events, r.wmerge.n,
+                          r.wmerge.kmin, r.wmerge.kmax, ex_slide_sigma(&r.wmerge),
+                          r.merge_fallbacks);
+        assert_int_equal(r.status, VLBE_OK);
+        assert_true(r.t_leave >= 0.55 && r.t_leave <= 0.8);
+        assert_true(r.wmerge.n > 0);
+        assert_true(r.wmerge.kmin > 0.0 && r.wall.kmin > 0.0);
+        assert_true(isfinite(ex_slide_sigma(&r.wmerge)) && isfinite(ex_slide_sigma(&r.wall)));
+        assert_true(r.merge_fallbacks == 0);
+    }
+#endif
+}
+
+/* (c) Scene 6.2, ALE-RANCF, 1 s (events: a split at the start, a merge at
+   0.216 s, a split + merge at 0.602 s).  Asserted:
+   - status OK;
+   - a split (kind 1) changes the arc length by rounding only: 1e-12 m, as
+     for ALE-ANCF above (exact segmentation, eqs. 21-28);
+   - every event's |dlen| <= 1 mm = 3e-3 L_std.  Why this bound: the
+     merged element keeps the end nodes' positions and slopes and fits the
+     two pieces by least squares, so its length differs from theirs by the
+     second-order shape error of that fit; measured 0.134 mm (0.13 mm at
+     both merges).  The ALE-ANCF merge from the very same state (both
+     models are identical up to the first merge, test (a)) jumps by
+     1.63 mm: the bound, 7.5 x the measured rational jump and 0.6 x the
+     ALE-ANCF one, fails if the rational merge degrades to the Hermite one;
+   - the paper's claim, at the first merge (same state before): |dE| and
+     |dlen| of ALE-RANCF below those of ALE-ANCF (paper form); measured
+     0.019 J vs 0.349 J and 0.13 mm vs 1.63 mm. */
+static void test_suspended_beam_rancf(void **state)
+{
+    (void)state;
+#ifndef VLBE_USE_FLOAT
+    {
+        ex_slide_cfg cfg;
+        ex_slide_out r[2];
+        const ex_slide_event *fm[2] = {NULL, NULL};
+        int f, k;
+        for (f = 0; f < 2; ++f) {
+            sb_cfg(&cfg, 0u, 1e-3, 1.0);
+            cfg.rational = f;
+            r[f] = ex_slide_run(&cfg, NULL);
+            assert_int_equal(r[f].status, VLBE_OK);
+            for (k = 0; k < r[f].nev; ++k) {
+                const ex_slide_event *ev = &r[f].ev[k];
+                if (tu_report_on())
+                    print_message("    suspended beam, %s, event %d at %.4f s (kind %d): dE %.4g "
+                                  "J, dlen %.4g mm\n", f ? "ALE-RANCF" : "ALE-ANCF", k + 1, ev->t,
+                                  ev->changed, ev->dE, 1e3 * ev->dlen);
+                if (ev->changed >= 2 && !fm[f]) fm[f] = ev;
+                if (!f) continue;
+                if (ev->changed == 1) assert_true(fabs(ev->dlen) <= 1e-12);
+                assert_true(fabs(ev->dlen) <= 1e-3);
+            }
+        }
+        assert_true(r[1].lc_events >= 2);
+        assert_non_null(fm[0]);
+        assert_non_null(fm[1]);
+        assert_true(fm[0]->t == fm[1]->t); /* the same state before it */
+        assert_true(fabs(fm[1]->dE) < fabs(fm[0]->dE));
+        assert_true(fabs(fm[1]->dlen) < fabs(fm[0]->dlen));
+    }
+#endif
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_chain_length),
         cmocka_unit_test(test_falling_beam),
         cmocka_unit_test(test_suspended_beam),
+        cmocka_unit_test(test_rancf_unit_equals_ancf),
+        cmocka_unit_test(test_falling_beam_rancf),
+        cmocka_unit_test(test_suspended_beam_rancf),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
