@@ -7,6 +7,8 @@
 
 #include "fixtures_common.h"
 
+#include <string.h>
+
 /* Material of the random tests: every term O(1) so that no contribution
    hides below the rounding of another. */
 static inline vlbe_ale_mat mat_std(void)
@@ -48,5 +50,30 @@ static inline double max_abs(int n, const vlbe_real *a)
     return m;
 }
 
+/* a chain node with material coordinate p in mode pmode, nothing else */
+static inline vlbe_ale_node node_make(int pmode, double p)
+{
+    vlbe_ale_node nd;
+    memset(&nd, 0, sizeof nd);
+    nd.pmode = pmode;
+    nd.p = (vlbe_real)p;
+    return nd;
+}
+
+/* a chain constraint */
+static inline vlbe_ale_con con_make(int type, int node, int node2, int which, double v0,
+                                    double v1, double v2)
+{
+    vlbe_ale_con c;
+    memset(&c, 0, sizeof c);
+    c.type = type;
+    c.node = node;
+    c.node2 = node2;
+    c.which = which;
+    c.v[0] = (vlbe_real)v0;
+    c.v[1] = (vlbe_real)v1;
+    c.v[2] = (vlbe_real)v2;
+    return c;
+}
 
 #endif /* VLBE_TEST_ALE_FIXTURES_H */

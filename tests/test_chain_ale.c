@@ -109,30 +109,6 @@ typedef struct chn {
     vlbe_dae sys;
 } chn;
 
-static vlbe_ale_node node_make(int pmode, double p)
-{
-    vlbe_ale_node nd;
-    memset(&nd, 0, sizeof nd);
-    nd.pmode = pmode;
-    nd.p = (vlbe_real)p;
-    return nd;
-}
-
-static vlbe_ale_con con_make(int type, int node, int node2, int which, double v0, double v1,
-                             double v2)
-{
-    vlbe_ale_con c;
-    memset(&c, 0, sizeof c);
-    c.type = type;
-    c.node = node;
-    c.node2 = node2;
-    c.which = which;
-    c.v[0] = (vlbe_real)v0;
-    c.v[1] = (vlbe_real)v1;
-    c.v[2] = (vlbe_real)v2;
-    return c;
-}
-
 /* Element type and chain on c->node[0..nn-1] (filled by the caller); nt:
    Gauss order of the bending term (0 = default). */
 static void chn_init(chn *c, int nn, unsigned flags, int nt)

@@ -66,26 +66,6 @@ typedef struct rch {
     vlbe_ale_chain ch;
 } rch;
 
-static vlbe_ale_node node_make(int pmode, double p)
-{
-    vlbe_ale_node nd;
-    memset(&nd, 0, sizeof nd);
-    nd.pmode = pmode;
-    nd.p = (vlbe_real)p;
-    return nd;
-}
-
-static vlbe_ale_con con_make(int type, int node, double v0, double v1)
-{
-    vlbe_ale_con c;
-    memset(&c, 0, sizeof c);
-    c.type = type;
-    c.node = node;
-    c.v[0] = (vlbe_real)v0;
-    c.v[1] = (vlbe_real)v1;
-    return c;
-}
-
 /* An element with weights w and Gauss orders ng (0: defaults), written to
    dst through a zeroed object so that every byte of it is defined (the
    library's init leaves the unused rule points and the padding as they
@@ -170,6 +150,21 @@ static double rel_diff(int n, const vlbe_real *a, const vlbe_real *b)
    positions by up to amp, slopes turned by up to 2 amp rad and scaled by
    1 +- amp, free p's moved by up to amp/2.  v (may be NULL): O(1) rates,
    free p' up to 0.3. */
+/* c cleared, the O(1) material, nodes 0..4 with fixed p at the arc lengths
+   R th[0..3] of four arcs; returns the last node's p */
+static double arc_nodes(rch *c, const double *th, double R)
+{
+    double p = 0.0;
+    int i;
+    memset(c, 0, sizeof *c);
+    c->mat = mat_std();
+    for (i = 0; i < 5; ++i) {
+        c->node[i] = node_make(VLBE_ALE_PFIXED, p);
+        if (i < 4) p += R * th[i];
+    }
+    return p;
+}
+
 static void arc_setup(rch *c, vlbe_rancf_elem *els, const double *th, double R, double a0,
                       int ng, tu_rng *g, double amp, vlbe_real *q, vlbe_real *v)
 {
@@ -455,15 +450,9 @@ static void test_arc_fd(void **state)
     for (variant = 0; variant < 2; ++variant) {
         tu_rng g = tu_rng_seed(202 + (uint64_t)variant);
         vlbe_real q[N_MAX], v[N_MAX], a[N_MAX];
-        double p = 0.0;
         fd_ctx f;
         int i;
-        memset(&c, 0, sizeof c);
-        c.mat = mat_std();
-        for (i = 0; i < 5; ++i) {
-            c.node[i] = node_make(VLBE_ALE_PFIXED, p);
-            if (i < 4) p += R * th[i];
-        }
+        (void)arc_nodes(&c, th, R);
         c.node[1].pmode = VLBE_ALE_PFREE;
         c.node[2].pmode = VLBE_ALE_PFREE;
         c.node[2].slide = 1;
@@ -575,12 +564,7 @@ static void test_insert(void **state)
     unsigned md;
     const int es_ = 1;
     (void)state;
-    memset(&c, 0, sizeof c);
-    c.mat = mat_std();
-    for (i = 0; i < 5; ++i) {
-        c.node[i] = node_make(VLBE_ALE_PFIXED, p);
-        if (i < 4) p += R * th[i];
-    }
+    p = arc_nodes(&c, th, R);
     pend = p;
     rch_init(&c, els_a, 5, NN_MAX);
     arc_setup(&c, els_a, th, R, -0.4, 8, &g, 0.03, q, v);
@@ -667,17 +651,12 @@ static void test_remove(void **state)
     const double th[4] = {0.5, 0.7, 0.6, 0.9}, R = 1.1, tol_h = 64.0 * EPS;
     tu_rng g = tu_rng_seed(404);
     vlbe_real q[N_MAX], v[N_MAX], qn[N_MAX], vn[N_MAX], qa[10], qb[10], k[4], r[2];
-    double p = 0.0, dh;
+    double dh;
     int idx[10], info = -1, i, j, n0;
     unsigned md;
     const int rmv = 2;
     (void)state;
-    memset(&c, 0, sizeof c);
-    c.mat = mat_std();
-    for (i = 0; i < 5; ++i) {
-        c.node[i] = node_make(VLBE_ALE_PFIXED, p);
-        if (i < 4) p += R * th[i];
-    }
+    (void)arc_nodes(&c, th, R);
     c.node[1].pmode = VLBE_ALE_PFREE;
     rch_init(&c, els_a, 5, NN_MAX);
     arc_setup(&c, els_a, th, R, 0.2, 0, &g, 0.02, q, v);
@@ -783,9 +762,9 @@ static void test_length_control(void **state)
     c.node[2].slide = 1;
     c.node[2].mass = VLBE_R(0.2);
     rch_init(&c, els_a, 5, 5); /* no room for a sixth node */
-    k0 = con_make(VLBE_ALE_CON_POS, 0, 0.0, 0.0);
+    k0 = con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0.0, 0.0, 0.0);
     assert_int_equal(vlbe_ale_chain_add(&c.ch, &k0), VLBE_OK);
-    k0 = con_make(VLBE_ALE_CON_SLIDE_C, 2, 0.0, 0.0);
+    k0 = con_make(VLBE_ALE_CON_SLIDE_C, 2, 0, 0, 0.0, 0.0, 0.0);
     assert_int_equal(vlbe_ale_chain_add(&c.ch, &k0), VLBE_OK);
     assert_int_equal(vlbe_ale_chain_layout(&c.ch), VLBE_OK);
     n0 = c.ch.n;
