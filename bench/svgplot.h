@@ -43,7 +43,7 @@ COMPARISON ROWS
        ROW|<scene>|<quantity [unit]>|<published>|<computed>|<relative error>|<cpu seconds>
    svgp_compare_row() writes one (NaN prints "-": no published value, no
    error).  `make demo` collects the ROW lines of all scenes into one table.
-   Fields must not contain '|'.
+   Fields must not contain '|' (one in the quantity is printed as '/').
 */
 #ifndef VLBE_SVGPLOT_H
 #define VLBE_SVGPLOT_H
@@ -643,7 +643,9 @@ static inline void svgp__num(FILE *f, const char *fmt, double v)
 static inline void svgp_compare_row(FILE *f, const char *scene, const char *quantity,
                                     double published, double ours, double relerr, double cpu_s)
 {
-    fprintf(f, "ROW|%s|%s", scene, quantity);
+    const char *c;
+    fprintf(f, "ROW|%s|", scene);
+    for (c = quantity; *c; ++c) fputc(*c == '|' ? '/' : *c, f); /* '|' separates fields */
     svgp__num(f, "%.10g", published);
     svgp__num(f, "%.10g", ours);
     svgp__num(f, "%.2e", relerr);

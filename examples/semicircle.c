@@ -219,7 +219,7 @@ int main(int argc, char **argv)
                      i ? "ALE-ANCF" : "rational", k);
             svgp_compare_row(stdout, "semicircle", qty, i ? (double)NAN : 0.0, g.rad_err,
                              (double)NAN, 0.0);
-            snprintf(qty, sizeof qty, "start: max |axial strain|, %s, N = %d",
+            snprintf(qty, sizeof qty, "start: max abs axial strain, %s, N = %d",
                      i ? "ALE-ANCF" : "rational", k);
             svgp_compare_row(stdout, "semicircle", qty, (double)NAN, g.eps_max, (double)NAN, 0.0);
         }
@@ -248,7 +248,7 @@ int main(int argc, char **argv)
         snprintf(path, sizeof path, "%s/semicircle_%c%d.csv", dir, run_rat[i] ? 'r' : 'a',
                  run_N[i]);
         if (ex_slide_hist_csv(&hist[i], path)) printf("# could not write %s\n", path);
-        snprintf(qty, sizeof qty, "energy drift within the steps (largest |E - E0|), %s [J]",
+        snprintf(qty, sizeof qty, "energy drift within the steps (largest abs(E - E0)), %s [J]",
                  names[i]);
         svgp_compare_row(stdout, "semicircle", qty, (double)NAN,
                          fmax(-r->dE_loss, r->dE_gain), (double)NAN, r->cpu);
