@@ -43,9 +43,10 @@ static const double wc_h[WC_NH] = {2e-3, 1e-3, 5e-4};
 static vlbe_status wc_run(int N, int rational, double h, int reps, double *x, double *y,
                           double *x5, double *y5, double *cpu, ex_slide_out *o)
 {
-    double t[WC_REPS];
+    double t[WC_REPS] = {0};
     int r;
     *x = *y = *x5 = *y5 = (double)NAN;
+    if (reps < 1 || reps > WC_REPS) return VLBE_EARG;
     for (r = 0; r < reps; ++r) {
         ex_slide_cfg cfg;
         ex_slide_hist hi;
