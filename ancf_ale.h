@@ -4329,21 +4329,14 @@ static inline vlbe_status vlbe__ale_merge_aux(const vlbe_ale_chain *ch, int i, v
    mass and no constraint, not be sliding and not belong to an equal-length
    group (else VLBE_EARG, nothing changed).  q -> qn may be in place (qn ==
    q, vn == v). */
-VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real t,
-                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qn,
-                                           vlbe_real *vn)
+/* The removal itself, node i checked; aux: the merge of the per-element
+   types (vlbe__ale_merge_aux), unused without them. */
+static inline vlbe_status vlbe__ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe_real *q,
+                                                 const vlbe_real *v, vlbe_real *qn, vlbe_real *vn,
+                                                 const vlbe_real *aux)
 {
     int k, j, on;
-    VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
-    if (ch->el3 || i <= 0 || i >= ch->nn - 1 || ch->nn <= 2) return VLBE_EARG;
-    if (ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0) || vlbe__ale_constrained(ch, i))
-        return VLBE_EARG;
-    if (ch->et) {
-        vlbe_real aux[VLBE_ALE_ETYPE_AUX];
-        const vlbe_status st = vlbe__ale_merge_aux(ch, i, t, q, aux);
-        if (st != VLBE_OK) return st;
-        ch->et->commit(ch->els, ch->nn - 1, i - 1, -1, aux);
-    }
+    if (ch->et) ch->et->commit(ch->els, ch->nn - 1, i - 1, -1, aux);
     on = 0;
     for (j = 0; j < ch->nn; ++j) {
         const int nc = vlbe__ale_ncoord(&ch->node[j]);
@@ -4359,6 +4352,22 @@ VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real 
         if (c->type == VLBE_ALE_CON_EQUAL_LEN && c->node2 > i) c->node2--;
     }
     return vlbe_ale_chain_layout(ch);
+}
+
+VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qn,
+                                           vlbe_real *vn)
+{
+    vlbe_real aux[VLBE_ALE_ETYPE_AUX] = {0};
+    VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
+    if (ch->el3 || i <= 0 || i >= ch->nn - 1 || ch->nn <= 2) return VLBE_EARG;
+    if (ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0) || vlbe__ale_constrained(ch, i))
+        return VLBE_EARG;
+    if (ch->et) {
+        const vlbe_status st = vlbe__ale_merge_aux(ch, i, t, q, aux);
+        if (st != VLBE_OK) return st;
+    }
+    return vlbe__ale_chain_remove(ch, i, q, v, qn, vn, aux);
 }
 
 /* may node i be removed by length control? */
@@ -4400,7 +4409,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
                                                    const vlbe_real *v, vlbe_real *qn,
                                                    vlbe_real *vn, int *changed)
 {
-    vlbe_real pl[3], ps[3], pr[3], Ll, Lr, at;
+    vlbe_real pl[3], ps[3], pr[3], Ll, Lr, at, aux[VLBE_ALE_ETYPE_AUX] = {0};
     const vlbe_real lo = VLBE_R(0.5) * Lstd, hi = VLBE_R(1.5) * Lstd;
     const int s = *slider;
     int side = 0, ins, k;
@@ -4431,9 +4440,10 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
         ins = Lr >= Lstd;
         at = pr[0] - (Lr - lo < Lstd ? Lr - lo : Lstd);
     }
-    if (ins && ch->et) { /* the merge that follows the insertion must not fail */
+    if (ins && ch->et) { /* the merge that follows the insertion, made before it: a
+                            failure changes nothing; the two elements it joins are on
+                            the other side of the slider, the insertion leaves them */
         const int i = side < 0 ? s + 1 : s - 1; /* before the insertion */
-        vlbe_real aux[VLBE_ALE_ETYPE_AUX];
         if (vlbe__ale_removable(ch, i) && (st = vlbe__ale_merge_aux(ch, i, t, q, aux)) != VLBE_OK)
             return st;
     }
@@ -4449,7 +4459,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
         *changed = 1;
         if (vlbe__ale_removable(ch, s + 2)) {
             *changed = 2;
-            return vlbe_ale_chain_remove(ch, s + 2, t, qn, vn, qn, vn);
+            return vlbe__ale_chain_remove(ch, s + 2, qn, vn, qn, vn, aux);
         }
     } else { /* new node in element s; the slider keeps its index */
         if ((st = vlbe_ale_chain_insert(ch, s, at, t, q, v, qn, vn)) != VLBE_OK) return st;
@@ -4457,7 +4467,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
         if (vlbe__ale_removable(ch, s - 1)) {
             *changed = 2;
             *slider = s - 1;
-            return vlbe_ale_chain_remove(ch, s - 1, t, qn, vn, qn, vn);
+            return vlbe__ale_chain_remove(ch, s - 1, qn, vn, qn, vn, aux);
         }
     }
     return VLBE_OK;
