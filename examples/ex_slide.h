@@ -197,9 +197,11 @@ static inline void ex_slide_cfg_paper(ex_slide_cfg *c, int N, int support, doubl
 
 /* Node coordinates [r, r'] of the start shape, material coordinates p[],
    and (rational) the elements' weights; returns the number of nodes and
-   the sliding node (*ks), -1 on bad input. */
-static inline int ex_slide_shape(const ex_slide_cfg *c, const vlbe_ale_mat *mat, double Lstd,
-                                 vlbe_real (*x)[4], vlbe_real *p, vlbe_real (*w)[4], int *ks)
+   the sliding node (*ks), -1 on bad input.  scratch: an element object the
+   rational segmentation may overwrite. */
+static inline int ex_slide_shape(const ex_slide_cfg *c, const vlbe_ale_mat *mat,
+                                 vlbe_rancf_elem *scratch, double Lstd, vlbe_real (*x)[4],
+                                 vlbe_real *p, vlbe_real (*w)[4], int *ks)
 {
     const double PI = 3.14159265358979323846;
     int i, k, nn = c->N + 1, e0;
@@ -249,7 +251,6 @@ static inline int ex_slide_shape(const ex_slide_cfg *c, const vlbe_ale_mat *mat,
     }
     { /* exact segmentation of element e0 at p0: a new node there */
         vlbe_real qe[10], qh[5], wl[4], wr[4];
-        vlbe_rancf_elem *el = NULL;
         for (k = 0; k < 4; ++k) {
             qe[k] = x[e0][k];
             qe[5 + k] = x[e0 + 1][k];
@@ -257,13 +258,9 @@ static inline int ex_slide_shape(const ex_slide_cfg *c, const vlbe_ale_mat *mat,
         qe[4] = p[e0];
         qe[9] = p[e0 + 1];
         if (c->rational) {
-            el = (vlbe_rancf_elem *)malloc(sizeof *el);
-            if (!el || vlbe_rancf_elem_init(el, mat, w[e0], 0, 0, 0, 0) ||
-                vlbe_rancf_split(el, qe, NULL, (vlbe_real)c->p0, qh, NULL, wl, wr)) {
-                free(el);
+            if (vlbe_rancf_elem_init(scratch, mat, w[e0], 0, 0, 0, 0) ||
+                vlbe_rancf_split(scratch, qe, NULL, (vlbe_real)c->p0, qh, NULL, wl, wr))
                 return -1;
-            }
-            free(el);
         } else {
             for (k = 0; k < 4; ++k) wl[k] = wr[k] = VLBE_R(1.0);
             if (vlbe_ale_split(qe, NULL, (vlbe_real)c->p0, qh, NULL)) return -1;
@@ -302,7 +299,8 @@ static inline int ex_slide_build(ex_slide *m, const ex_slide_cfg *c, vlbe_real *
     m->mat.f[1] = (vlbe_real)(-c->g * c->rho * A);
     if (vlbe_ale_elem_init(&m->el, &m->mat, VLBE_ALE_NO_DAMP | c->flags, 0, 0, 0)) return -1;
     m->Lstd = L / c->N;
-    if ((nn = ex_slide_shape(c, &m->mat, m->Lstd, x, p, w, &ks)) < 0) return -1;
+    /* m->els[0] is scratch here, initialized for the chain below */
+    if ((nn = ex_slide_shape(c, &m->mat, &m->els[0], m->Lstd, x, p, w, &ks)) < 0) return -1;
     for (i = 0; i < nn; ++i) {
         m->node[i].pmode = i == ks ? VLBE_ALE_PFREE : VLBE_ALE_PFIXED;
         m->node[i].p = p[i];
