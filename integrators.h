@@ -613,6 +613,32 @@ VLBE_API size_t vlbe_dae_work_len(int n, int m)
 }
 VLBE_API size_t vlbe_dae_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
 
+/* Row equilibration before an LU (vlbe_lu_factor's pivot test is relative
+   to the largest entry of the whole matrix, so a row of small but regular
+   entries, e.g. a spin inertia rho I L/3 ~ 1e-7 kg m^2 next to unit
+   constraint entries, reads as zero in float): row i of the N x N matrix A
+   (leading dimension ld) is multiplied by s_i = 2^-e, max_j |a_ij| = f 2^e
+   with f in [1/2, 1).  A power of 2 is exact: the scaled entries are A's
+   own, and the factor differs from an unscaled one only where the row
+   scales change the choice of pivots (scaled partial pivoting).  A zero or
+   non-finite row keeps s_i = 1 (vlbe_lu_factor reports it).  s (N, may be
+   NULL) receives the scales, which the right sides of later solves need;
+   b (N, may be NULL) is scaled along. */
+VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, vlbe_real *s, vlbe_real *b)
+{
+    int i, e;
+    for (i = 0; i < N; ++i) {
+        vlbe_real *ai = A + (size_t)i * ld, r = vlbe_vec_norm_inf(N, ai), si = VLBE_R(1.0);
+        if (r > VLBE_R(0.0) && isfinite(r)) {
+            (void)frexp((double)r, &e);
+            si = (vlbe_real)ldexp(1.0, -e);
+            vlbe_vec_scale(N, si, ai);
+            if (b) b[i] *= si;
+        }
+        if (s) s[i] = si;
+    }
+}
+
 /* Solves [M C_q^T; C_q 0] [qdd; lambda] = [Q; gamma] at (t, q, v). */
 /* a += b for every counter (runs made of several integrator starts, e.g.
    restarts after a change of the model); callback_rc: b's when nonzero. */
@@ -672,6 +698,7 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
         }
     vlbe_vec_copy(n, Q, b);
     if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
+    vlbe__int_equil(N, A, (size_t)N, NULL, b);
     ++stats->lu_factors;
     if ((rc = vlbe_lu_factor(N, A, A, iwork, NULL)) != VLBE_OK) return rc;
     ++stats->lu_solves;
@@ -713,7 +740,8 @@ VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const
    or forward differences for H, H dropped under VLBE_DAE_NO_CHESS).  The
    constraint rows and multiplier columns are scaled by
    s = max|-K + H| / max|C_q| (a symmetric scaling: the LU's relative pivot
-   test then sees blocks of the same size whatever the units). */
+   test then sees blocks of the same size whatever the units), and then
+   every row is equilibrated (vlbe__int_equil), as in the integrators. */
 
 /* Defaults: ftol 0 (off), rtol 1e-10, atol 1e-12, 50 iterations, up to 5
    halvings of a step. */
@@ -878,11 +906,12 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
            constraint rows in the units of force like the iteration matrix
            (with C in its own units a metre of gap would weigh as a newton) */
         merit = vlbe__int_hypot(vlbe_vec_norm2(n, F), sc * vlbe_vec_norm2(m, F + n));
+        for (i = 0; i < n; ++i) d[i] = -F[i];
+        for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
+        vlbe__int_equil(N, A, (size_t)N, NULL, d);
         ++stats->lu_factors;
         /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
         if ((rc = vlbe_lu_factor(N, A, A, iwork, NULL)) != VLBE_OK) return rc;
-        for (i = 0; i < n; ++i) d[i] = -F[i];
-        for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
         ++stats->lu_solves;
         ++stats->newton_iters;
         vlbe_lu_solve(N, A, iwork, 1, d);
@@ -1001,12 +1030,13 @@ VLBE_API vlbe_status vlbe_hht_params_genalpha(vlbe_hht_params *p, vlbe_real rho_
 
 /* Workspace layout (reals): state q v qdd a (4n) lambda (m); trial q v qdd a
    (4n) lambda (m); backup for halving (4n + m); iteration LU (N*N); rhs (N);
-   M (n*n); Q (n); Cq (m*n); C (m); tangent scratch (3n*n + m*n + 3n + m). */
+   M (n*n); Q (n); Cq (m*n); C (m); tangent scratch (3n*n + m*n + 3n + m);
+   row scales of the LU (N). */
 VLBE_API size_t vlbe_hht_work_len(int n, int m)
 {
     size_t N = (size_t)n + (size_t)m, nn = (size_t)n * (size_t)n, mn = (size_t)m * (size_t)n;
     return 3 * (4 * (size_t)n + (size_t)m) + N * N + N + nn + (size_t)n + mn + (size_t)m +
-           3 * nn + mn + 3 * (size_t)n + (size_t)m;
+           3 * nn + mn + 3 * (size_t)n + (size_t)m + N;
 }
 VLBE_API size_t vlbe_hht_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
 
@@ -1098,7 +1128,8 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
     size_t NN = (size_t)N * (size_t)N;
     vlbe_real *tq = vlbe__hht_trial(st), *tv = tq + n, *tqdd = tv + n, *ta = tqdd + n, *tl = ta + n;
     vlbe_real *LU = vlbe__hht_lu(st), *r = LU + NN, *M = r + N, *Q = M + (size_t)n * n,
-              *Cq = Q + n, *C = Cq + (size_t)m * n, *scr = C + m;
+              *Cq = Q + n, *C = Cq + (size_t)m * n, *scr = C + m,
+              *rs = scr + 3 * (size_t)n * n + (size_t)m * n + 3 * (size_t)n + (size_t)m;
     vlbe_real am = p->alpha_m, af = p->alpha_f;
     vlbe_real bp = h * h * p->beta * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am); /* dq/dq''  */
     vlbe_real gp = h * p->gamma * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);    /* dv/dq''  */
@@ -1163,6 +1194,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
             }
             rc = vlbe__int_tangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, gp, LU, N, scr);
             if (rc != VLBE_OK) return rc;
+            vlbe__int_equil(N, LU, (size_t)N, rs, NULL);
             ++st->stats.lu_factors;
             /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
             rc = vlbe_lu_factor(N, LU, LU, st->piv_, NULL);
@@ -1177,6 +1209,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
         }
         ++st->stats.lu_solves;
         ++st->stats.newton_iters;
+        for (i = 0; i < N; ++i) r[i] *= rs[i];
         vlbe_lu_solve(N, LU, st->piv_, 1, r);
         /* update: q'' -= dx, lambda -= dl, and a, q, v along */
         for (i = 0; i < n; ++i) {
@@ -1512,9 +1545,9 @@ VLBE_INLINE vlbe_status vlbe__bdf_res(vlbe_bdf *st, vlbe_real t, const vlbe_real
    are divided by cj and the lambda and mu columns multiplied by cj, so that
    every block stays O(1) as h -> 0 (the unscaled matrix has blocks O(1/h)
    next to O(1) constraint rows, and Schur complements O(h)), then every row
-   divided by its largest entry (M may be small against the identity block,
-   e.g. 1e-6 kg m^2 inertias: without it the LU's relative pivot test
-   fails in float):
+   scaled to its largest entry by vlbe__int_equil (M may be small against
+   the identity block, e.g. 1e-6 kg m^2 inertias: without it the LU's
+   relative pivot test fails in float):
        [ I + (C_q^T mu)_q/cj     -I/cj                    0      C_q^T ]
        [ (Ma+C_q^T l-Q)_q/cj     M + (Ma-Q)_v/cj          C_q^T  0     ]
        [ (C_q v + C_t)_q         C_q                      0      0     ]
@@ -1553,13 +1586,8 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
         if (rc != VLBE_OK) return rc;
     }
     if (!vlbe_all_finite(A, (int)NN)) return VLBE_ENONFINITE;
-    for (i = 0; i < N2; ++i) {
-        vlbe_real *ai = A + (size_t)i * ld, r = vlbe_vec_norm_inf(N2, ai);
-        if (r == VLBE_R(0.0)) return VLBE_ESINGULAR;
-        rs[i] = VLBE_R(1.0) / r;
-        if (i < 2 * n) rs[i] *= ic; /* the 1/cj of the q and v rows, for the solve */
-        vlbe_vec_scale(N2, VLBE_R(1.0) / r, ai);
-    }
+    vlbe__int_equil(N2, A, ld, rs, NULL);
+    for (i = 0; i < 2 * n; ++i) rs[i] *= ic; /* the 1/cj of the q and v rows, for the solve */
     ++st->stats.lu_factors;
     if ((rc = vlbe_lu_factor(N2, A, A, st->piv_, NULL)) != VLBE_OK) return rc;
     st->cj_lu_ = cj;

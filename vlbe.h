@@ -513,7 +513,7 @@ VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int km
    Fails with VLBE_ESINGULAR when a pivot is 0 or |pivot| <= n eps max|A|
    (relatively zero: the computed factor would be noise; the test is
    relative to the whole matrix, so scale rows of very different units to
-   comparable size first, as the integrators do with constraint rows) and writes the
+   comparable size first, as the integrators do: vlbe__int_equil) and writes the
    1-based failing column to *info (if info != NULL; 0 on success);
    VLBE_ENONFINITE when A holds NaN/Inf.  On failure LU holds no factor;
    A is unchanged unless LU == A. */

@@ -27,11 +27,12 @@
    without the spin-switch check) and f1_exact with 4 elements only, 0.25 s
    of response at h = 8e-4, 4e-4, each test saying what it keeps; the suite
    then takes ~0.1 s at -O2 (~7 s under valgrind), the full one ~1 s.
-   Float: the spin chain stops at its first step with VLBE_ESINGULAR: the
-   spin angle's mass rhoI L/3 is r^2/2 = 1.25e-5 of the translational one,
-   below the LU's pivot test n EPS max|A| (~5e-6 relative with n = 41 in
-   float); the float build runs the 3D chain without the spin angle (in
-   double the two give the same history bit for bit, checked below).
+   Float runs the same chains: the spin angle's mass rhoI L/3 is r^2/2 =
+   1.25e-5 of the translational one, below the LU's pivot test n EPS
+   max|A| (~5e-6 relative with n = 41 in float) before the integrators
+   equilibrated the rows of their iteration matrices (integrators.h,
+   vlbe__int_equil); the chain with and without the spin angle give the
+   same history bit for bit in both precisions (checked below).
    Set VLBE_TEST_REPORT=1 to print measured errors beside the tolerances. */
 #include "test_util.h"
 
@@ -42,11 +43,7 @@
 
 #define EPS ((double)VLBE_EPS)
 
-#ifdef VLBE_USE_FLOAT
-#define M3 (MS_3D | MS_NOSPIN) /* see the top: the spin chain is singular in float */
-#else
 #define M3 MS_3D
-#endif
 
 /* Green strain of the prestretch, eps = 1.8e-4 */
 static double prestretch(void)
@@ -111,9 +108,10 @@ static void check_cmp(const char *what, int kind_a, int kind_b, double t_end)
 
 /* 3D (theta = 0) vs planar, string and beam, 0.5 s at h = 2e-4 (slow
    builds 0.1 s: measured 2.7e-12 of the amplitude for the string).  In
-   double (fast builds) also the 3D chain without the spin angle against
-   the one with it: measured bit for bit equal (the spin angles' rows and
-   columns decouple at theta = 0), held to the same tolerances. */
+   fast builds also the 3D chain without the spin angle against the one
+   with it: measured bit for bit equal in double and float (the spin
+   angles' rows and columns decouple at theta = 0), held to the same
+   tolerances. */
 static void test_planar_agreement(void **state)
 {
     const int slow = tu_slow_run();
@@ -121,9 +119,7 @@ static void test_planar_agreement(void **state)
     (void)state;
     check_cmp("3D vs planar string", M3, 0, t_end);
     check_cmp("3D vs planar beam", M3 | MS_BEND, MS_BEND, t_end);
-#ifndef VLBE_USE_FLOAT
     if (!slow) check_cmp("3D without vs with spin angle, string", MS_3D | MS_NOSPIN, MS_3D, t_end);
-#endif
 }
 
 /* The 3D string's first frequency against the exact value of the
@@ -147,7 +143,7 @@ static void test_planar_agreement(void **state)
    - beam, 4 elements (fast builds), against the paper's VLBSE 32.2097 (no
      exact value): measured 5.9e-4, held to 1e-3 (our 4 elements lie 7e-4
      above our converged 32.1682; the paper's 1.3e-3).
-   Float (the chain without spin angle, see the top): the tension carries
+   Float: the tension carries
    FLT_EPSILON / eps = 6.6e-4 relative (see tests/test_chain_ale.c);
    measured 6.9e-4 (slow builds 7.7e-4), held to 4 FLT_EPSILON / eps as the
    planar float check. */
@@ -178,7 +174,7 @@ static void test_f1_exact(void **state)
         ASSERT_CLOSE(fb, MS_F1_PAPER_BEAM3, 1e-3, 0);
     }
 #else
-    tu_report("3D string f1 (float, no spin angle), 4 elements vs exact", fabs(f4 - fx) / fx,
+    tu_report("3D string f1 (float), 4 elements vs exact", fabs(f4 - fx) / fx,
               4.0 * (double)FLT_EPSILON / prestretch());
     ASSERT_CLOSE(f4, fx, 4.0 * (double)FLT_EPSILON / prestretch(), 0);
 #endif
