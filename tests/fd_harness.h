@@ -85,9 +85,9 @@ static inline double fd__fn(void *vc, double x, double *out)
    the values eval returns. */
 static inline void fd_column(fd_ctx *c, int j, double *d)
 {
-    double work[FD_NMAX];
-    const double x = c->wrt_qd ? (double)c->qd[j] : (double)c->q[j];
+    double work[FD_NMAX], x;
     assert_true(j >= 0 && j < c->n && c->nout > 0 && c->nout <= FD_NMAX);
+    x = c->wrt_qd ? (double)c->qd[j] : (double)c->q[j];
     c->j = j;
     tu_central_diff(fd__fn, c, x, c->h_fixed ? c->h : c->h * fmax(1.0, fabs(x)), c->nout, work,
                     d);

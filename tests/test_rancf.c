@@ -740,8 +740,9 @@ static void test_force_jacobians(void **state)
         rancf_make(&el, &m, w, 0, 0, 0, 0);
         for (s = 0; s < nst; ++s) {
             ale_fd c;
-            const vlbe_real *q = c.fd.q;
+            const vlbe_real *q;
             ale_fd_init(&c, &OPS, &el, 0);
+            q = c.fd.q;
             make_state(&g, 0.6, 0.15, c.fd.q, c.fd.qd);
             for (i = 0; i < 10; ++i) c.fd.a[i] = (vlbe_real)(2.0 * tu_rng_uniform(&g));
             for (k = 0; k < N_MODES; ++k) {
