@@ -3,11 +3,14 @@
    states, the 32 modes, central differences of the element functions and
    the Jacobian check, over a table of the element's calls.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
+   The differences themselves are fd_harness.h's (included here).
    Include after test_util.h, the element header and ale_fixtures.h. */
 #ifndef VLBE_TEST_ALE_HARNESS_H
 #define VLBE_TEST_ALE_HARNESS_H
 
 #include <string.h>
+
+#include "fd_harness.h"
 
 /* The calls of one planar element type (el: that type, as the suite's
    adapters cast it back): Q alone, M, a point force's Q (added to a zeroed
@@ -55,99 +58,91 @@ static inline void make_state(tu_rng *g, double curv, double stretch, vlbe_real 
         for (i = 0; i < 10; ++i) qd[i] = (vlbe_real)((is_p(i) ? 0.5 : 1.0) * tu_rng_uniform(g));
 }
 
-/* -- central differences of the element functions ------------------------- */
+/* -- central differences of the element functions (fd_harness.h) -------- */
 enum { FD_Q_OF_Q, FD_Q_OF_QD, FD_MA_OF_Q, FD_PF_OF_Q, FD_R_OF_Q, FD_E_OF_Q };
 
-typedef struct fd_ctx {
+/* The harness context of a planar element: fd (first, fd_harness.h's;
+   el, mode, q, qd, a there), the element's calls, the point load. */
+typedef struct ale_fd {
+    fd_ctx fd;
     const ale_ops *ops;
-    const void *el;
-    unsigned mode;
-    int which, j;
-    vlbe_real q[10], qd[10], a[10], pf, F[2];
-} fd_ctx;
+    vlbe_real pf, F[2];
+} ale_fd;
 
-/* The differenced function: Q, M a, point-force Q, the point r(pf) or E
-   (T, U, V, U + V) as a function of q[j] (or qd[j]); returns the argument
-   rounded to vlbe_real. */
-static inline double fd_fn(void *vc, double x, double *out)
+/* The differenced function (fd_eval): Q, M a, point-force Q, the point
+   r(pf) or E (T, U, V, U + V). */
+static inline double ale_fd_eval(const fd_ctx *fc, const vlbe_real *q, const vlbe_real *qd,
+                                 double *out)
 {
-    const fd_ctx *c = (const fd_ctx *)vc;
-    vlbe_real q[10], qd[10], buf[100];
-    const vlbe_real xr = (vlbe_real)x;
+    const ale_fd *c = (const ale_fd *)fc;
+    vlbe_real buf[100];
     int i, k;
-    memcpy(q, c->q, sizeof q);
-    memcpy(qd, c->qd, sizeof qd);
-    if (c->which == FD_Q_OF_QD)
-        qd[c->j] = xr;
-    else
-        q[c->j] = xr;
-    switch (c->which) {
+    switch (fc->which) {
     case FD_Q_OF_Q:
     case FD_Q_OF_QD:
-        assert_int_equal(c->ops->force(c->el, c->mode, q, qd, buf), VLBE_OK);
+        assert_int_equal(c->ops->force(fc->el, fc->mode, q, qd, buf), VLBE_OK);
         for (i = 0; i < 10; ++i) out[i] = (double)buf[i];
         break;
     case FD_MA_OF_Q:
-        assert_int_equal(c->ops->mass(c->el, c->mode, q, buf), VLBE_OK);
+        assert_int_equal(c->ops->mass(fc->el, fc->mode, q, buf), VLBE_OK);
         for (i = 0; i < 10; ++i) {
             out[i] = 0.0;
-            for (k = 0; k < 10; ++k) out[i] += (double)buf[i * 10 + k] * (double)c->a[k];
+            for (k = 0; k < 10; ++k) out[i] += (double)buf[i * 10 + k] * (double)fc->a[k];
         }
         break;
     case FD_PF_OF_Q:
         fill(10, VLBE_R(0.0), buf);
-        assert_int_equal(c->ops->point_force(c->el, q, c->pf, c->F, buf), VLBE_OK);
+        assert_int_equal(c->ops->point_force(fc->el, q, c->pf, c->F, buf), VLBE_OK);
         for (i = 0; i < 10; ++i) out[i] = (double)buf[i];
         break;
     case FD_R_OF_Q:
         fill(2, VLBE_R(0.0), buf);
-        assert_int_equal(c->ops->point(c->el, q, c->pf, buf), VLBE_OK);
+        assert_int_equal(c->ops->point(fc->el, q, c->pf, buf), VLBE_OK);
         out[0] = (double)buf[0];
         out[1] = (double)buf[1];
         break;
     default:
-        assert_int_equal(c->ops->energy(c->el, c->mode, q, qd, buf), VLBE_OK);
+        assert_int_equal(c->ops->energy(fc->el, fc->mode, q, qd, buf), VLBE_OK);
         for (i = 0; i < 3; ++i) out[i] = (double)buf[i];
         out[3] = (double)buf[1] + (double)buf[2];
         break;
     }
-    return (double)xr;
+    return tu_max_abs(fc->nout, out);
 }
 
-/* J (10 x 10, analytic, d out / d var) against central differences (step
-   EPS^(1/3) times max(1, |x|)) over the columns j that are coordinates
-   (skip: coordinates fixed in mode), rows likewise.  The error of entry
-   (i, j) is measured against the largest entry of the matrix (analytic or
-   differenced, so that a Jacobian that is wrongly zero cannot pass): max
-   |J_fd - J| / max(|J|, |J_fd|) <= tol.  Returns that measured ratio. */
-static inline double check_jac(fd_ctx *c, int which, const vlbe_real *J, unsigned skip,
+/* c zeroed, for the element el (NULL for the point functions of
+   ancf_ale.h) with the calls ops, in mode; step EPS^(1/3) max(1, |x|). */
+static inline void ale_fd_init(ale_fd *c, const ale_ops *ops, const void *el, unsigned mode)
+{
+    memset(c, 0, sizeof *c);
+    fd_init(&c->fd, 10, ale_fd_eval, el, mode);
+    c->ops = ops;
+}
+
+/* Selects the differenced function: which of FD_*, in q or in qd. */
+static inline void ale_fd_use(ale_fd *c, int which)
+{
+    c->fd.which = which;
+    c->fd.wrt_qd = which == FD_Q_OF_QD;
+    c->fd.nout = which == FD_R_OF_Q ? 2 : which == FD_E_OF_Q ? 4 : 10;
+}
+
+/* J (10 x 10, analytic, d out / d var) against central differences
+   (fd_check: step EPS^(1/3) times max(1, |x|)) over the columns j that are
+   coordinates (skip: coordinates fixed in mode), rows likewise.  The error
+   of entry (i, j) is measured against the largest entry of the matrix
+   (analytic or differenced, so that a Jacobian that is wrongly zero cannot
+   pass): max |J_fd - J| / max(|J|, |J_fd|) <= tol.  Returns that measured
+   ratio. */
+static inline double check_jac(ale_fd *c, int which, const vlbe_real *J, unsigned skip,
                                double tol, const char *what)
 {
-    double Jfd[100], d[10], work[10], scale, worst = 0.0;
-    int i, j;
-    c->which = which;
-    for (j = 0; j < 10; ++j) {
-        const double x = which == FD_Q_OF_QD ? (double)c->qd[j] : (double)c->q[j];
-        c->j = j;
-        if (is_fixed(skip, j)) {
-            for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = 0.0;
-            continue;
-        }
-        tu_central_diff(fd_fn, c, x, tu_fd_step((double)VLBE_EPS, fmax(1.0, fabs(x))), 10, work,
-                        d);
-        for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = is_fixed(skip, i) ? 0.0 : d[i];
-    }
-    scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
-    if (scale == 0.0) return 0.0; /* both exactly zero (e.g. D without damping and p') */
-    for (i = 0; i < 10; ++i)
-        for (j = 0; j < 10; ++j) {
-            if (is_fixed(skip, i) || is_fixed(skip, j)) continue;
-            worst = fmax(worst, fabs(Jfd[i * 10 + j] - (double)J[i * 10 + j]) / scale);
-            ASSERT_CLOSE_CTX(Jfd[i * 10 + j], J[i * 10 + j], 0, tol * scale,
-                             "%s: entry (%d, %d), mode %u, max entry %.3g", what, i, j, c->mode,
-                             scale);
-        }
-    return worst;
+    fd_stats st;
+    int sk[10], i;
+    for (i = 0; i < 10; ++i) sk[i] = is_fixed(skip, i);
+    ale_fd_use(c, which);
+    (void)fd_check(&c->fd, J, sk, NULL, tol, 0.0, what, &st);
+    return st.err;
 }
 
 /* Rows and columns of fixed p are exactly zero. */
@@ -169,22 +164,15 @@ static inline void check_fixed_zero(unsigned mode, const vlbe_real *Q, const vlb
 static inline void energy_grad(const ale_ops *ops, const void *el, unsigned mode,
                                const vlbe_real *q, const vlbe_real *qd, int which, double *grad)
 {
-    fd_ctx c;
-    double d[4], work[4];
+    ale_fd c;
+    double Jfd[4 * 10];
     int j;
-    c.ops = ops;
-    c.el = el;
-    c.mode = mode;
-    c.which = FD_E_OF_Q;
-    memcpy(c.q, q, sizeof c.q);
-    memcpy(c.qd, qd, sizeof c.qd);
-    for (j = 0; j < 10; ++j) {
-        const double x = (double)q[j];
-        c.j = j;
-        tu_central_diff(fd_fn, &c, x, tu_fd_step((double)VLBE_EPS, fmax(1.0, fabs(x))), 4, work,
-                        d);
-        grad[j] = d[which];
-    }
+    ale_fd_init(&c, ops, el, mode);
+    memcpy(c.fd.q, q, 10 * sizeof *q);
+    memcpy(c.fd.qd, qd, 10 * sizeof *qd);
+    ale_fd_use(&c, FD_E_OF_Q);
+    fd_jac(&c.fd, NULL, Jfd);
+    for (j = 0; j < 10; ++j) grad[j] = Jfd[which * 10 + j];
 }
 
 #endif /* VLBE_TEST_ALE_HARNESS_H */

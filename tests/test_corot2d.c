@@ -87,6 +87,7 @@
 #include "test_util.h"
 #include "../corot2d.h"
 #include "cr2d_fixtures.h"
+#include "fd_harness.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -179,110 +180,82 @@ static double state_size(const vlbe_cr2d_elem *el, const vlbe_real *q)
 
 
 /* ------------------------------------------------------------------------ */
-/* central differences of the element functions                               */
+/* central differences of the element functions (fd_harness.h)               */
 /* ------------------------------------------------------------------------ */
 enum { FD_Q_OF_Q, FD_Q_OF_QD, FD_MA_OF_Q, FD_E_OF_Q, FD_QV_OF_Q };
 
-typedef struct fd_ctx {
-    const vlbe_cr2d_elem *el;
-    unsigned mode;
-    int which, j;
-    vlbe_real q[6], qd[6], a[6];
-    double fmax; /* largest |output| met by the differences (rounding scale) */
-} fd_ctx;
-
-/* The differenced function of q[j] (or qd[j]): Q; M a; E = {T, U}; or the
-   velocity part of Q, Q(mode) - Q(mode | NO_NLI | NO_DAMP), whose rounding
-   scale is the elastic force (fmax takes both Q's).  Returns the argument
-   rounded to vlbe_real (the one really used). */
-static double fd_fn(void *vc, double x, double *out)
+/* The differenced function (fd_eval) of the element c->el: Q; M a;
+   E = {T, U}; or the velocity part of Q, Q(mode) - Q(mode | NO_NLI |
+   NO_DAMP), whose rounding scale is the elastic force (it returns the
+   largest |entry| of both Q's). */
+static double cr_eval(const fd_ctx *c, const vlbe_real *q, const vlbe_real *qd, double *out)
 {
-    fd_ctx *c = (fd_ctx *)vc;
-    vlbe_real q[6], qd[6], buf[36], buf2[6];
-    const vlbe_real xr = (vlbe_real)x;
+    const vlbe_cr2d_elem *el = (const vlbe_cr2d_elem *)c->el;
+    vlbe_real buf[36], buf2[6];
     int i, k;
-    memcpy(q, c->q, sizeof q);
-    memcpy(qd, c->qd, sizeof qd);
-    if (c->which == FD_Q_OF_QD)
-        qd[c->j] = xr;
-    else
-        q[c->j] = xr;
     switch (c->which) {
     case FD_Q_OF_Q:
     case FD_Q_OF_QD:
-        assert_int_equal(vlbe_cr2d_force(c->el, c->mode, q, qd, buf, NULL, NULL), VLBE_OK);
+        assert_int_equal(vlbe_cr2d_force(el, c->mode, q, qd, buf, NULL, NULL), VLBE_OK);
         for (i = 0; i < 6; ++i) out[i] = (double)buf[i];
-        c->fmax = fmax(c->fmax, cr_max_abs(6, buf));
-        break;
+        return cr_max_abs(6, buf);
     case FD_QV_OF_Q:
-        assert_int_equal(vlbe_cr2d_force(c->el, c->mode, q, qd, buf, NULL, NULL), VLBE_OK);
-        assert_int_equal(vlbe_cr2d_force(c->el, c->mode | VLBE_CR2D_NO_NLI | VLBE_CR2D_NO_DAMP, q,
+        assert_int_equal(vlbe_cr2d_force(el, c->mode, q, qd, buf, NULL, NULL), VLBE_OK);
+        assert_int_equal(vlbe_cr2d_force(el, c->mode | VLBE_CR2D_NO_NLI | VLBE_CR2D_NO_DAMP, q,
                                          qd, buf2, NULL, NULL),
                          VLBE_OK);
         for (i = 0; i < 6; ++i) out[i] = (double)buf[i] - (double)buf2[i];
-        c->fmax = fmax(c->fmax, fmax(cr_max_abs(6, buf), cr_max_abs(6, buf2)));
-        break;
+        return fmax(cr_max_abs(6, buf), cr_max_abs(6, buf2));
     case FD_MA_OF_Q:
-        assert_int_equal(vlbe_cr2d_mass(c->el, c->mode, q, buf), VLBE_OK);
+        assert_int_equal(vlbe_cr2d_mass(el, c->mode, q, buf), VLBE_OK);
         for (i = 0; i < 6; ++i) {
             out[i] = 0.0;
             for (k = 0; k < 6; ++k) out[i] += (double)buf[i * 6 + k] * (double)c->a[k];
         }
-        c->fmax = fmax(c->fmax, tu_max_abs(6, out));
-        break;
+        return tu_max_abs(6, out);
     default:
-        assert_int_equal(vlbe_cr2d_energy(c->el, c->mode, q, qd, buf), VLBE_OK);
+        assert_int_equal(vlbe_cr2d_energy(el, c->mode, q, qd, buf), VLBE_OK);
         out[0] = (double)buf[0];
         out[1] = (double)buf[1];
-        c->fmax = fmax(c->fmax, tu_max_abs(2, out));
-        break;
+        return tu_max_abs(2, out);
     }
-    return (double)xr;
 }
 
-/* Jfd (6 x 6) = central differences of `which` with the step h on every
-   column; c->fmax is reset and collects the largest |output|. */
-static void jac_fd(fd_ctx *c, int which, double h, double *Jfd)
+/* Differences of `which` (in q, or in q' for FD_Q_OF_QD) with the step h on
+   every column, nout outputs. */
+static void fd_use(fd_ctx *c, int which, double h, int nout)
 {
-    double d[6], work[6];
-    int i, j;
     c->which = which;
-    c->fmax = 0.0;
-    for (j = 0; j < 6; ++j) {
-        const double x = which == FD_Q_OF_QD ? (double)c->qd[j] : (double)c->q[j];
-        c->j = j;
-        tu_central_diff(fd_fn, c, x, h, 6, work, d);
-        for (i = 0; i < 6; ++i) Jfd[i * 6 + j] = d[i];
-    }
+    c->wrt_qd = which == FD_Q_OF_QD;
+    c->h = h;
+    c->h_fixed = 1;
+    c->nout = nout;
 }
 
-/* A Jacobian check.  J (analytic) against Jfd with the absolute tolerance
+/* A Jacobian check (fd_check).  J (analytic) against central differences
+   of `which` (step h) with the absolute tolerance
        tol = ct FD_ERR scale + cr EPS fmax / h,
    scale = max(max|J|, max|Jfd|) (so that a Jacobian that is wrongly zero
    cannot pass), the first term the truncation error of the difference (ct
    = 0 where the differenced function is a quadratic: no truncation), the
-   second its rounding (each evaluation rounds outputs of size fmax).
-   Keeps in w the check with the worst ratio |Jfd - J| / tol: w[0] that
-   ratio, w[1] its error and w[2] its tolerance, both relative to scale. */
-static void jac_check(const vlbe_real *J, const double *Jfd, double h, double fmax_, double ct,
-                      double cr, double *w, const char *what, unsigned mode)
+   second its rounding (each evaluation rounds outputs of size fmax, the
+   largest met by the differences).  Keeps in w (may be NULL) the check
+   with the worst ratio |Jfd - J| / tol: w[0] that ratio, w[1] its error
+   and w[2] its tolerance, both relative to scale; returns the ratio of
+   this one. */
+static double jac_check(fd_ctx *c, int which, double h, const vlbe_real *J, double ct, double cr,
+                        double *w, const char *what)
 {
-    double scale = 0.0, tol, e = 0.0;
-    int i;
-    for (i = 0; i < 36; ++i) scale = fmax(scale, fmax(fabs((double)J[i]), fabs(Jfd[i])));
-    if (scale == 0.0) return; /* both exactly zero */
-    tol = ct * FD_ERR * scale + cr * EPS * fmax_ / h;
-    for (i = 0; i < 36; ++i) {
-        e = fmax(e, fabs(Jfd[i] - (double)J[i]));
-        ASSERT_CLOSE_CTX(Jfd[i], J[i], 0, tol,
-                         "%s: entry (%d, %d), mode %u, max entry %.3g, tol %.3g", what, i / 6,
-                         i % 6, mode, scale, tol);
+    fd_stats st;
+    fd_use(c, which, h, c->n);
+    (void)fd_check(c, J, NULL, NULL, ct * FD_ERR, cr * EPS, what, &st);
+    if (st.scale == 0.0) return 0.0; /* both exactly zero */
+    if (w && st.ratio >= w[0]) {
+        w[0] = st.ratio;
+        w[1] = st.err;
+        w[2] = st.tol;
     }
-    if (e / tol >= w[0]) {
-        w[0] = e / tol;
-        w[1] = e / scale;
-        w[2] = tol / scale;
-    }
+    return st.ratio;
 }
 
 /* "name: error, tolerance (both relative to the largest entry)" of the
@@ -344,18 +317,15 @@ static void test_force_jacobians(void **state)
             vlbe_cr2d_elem el;
             fd_ctx c;
             elem_rand(&el, &mats[im], &g, 0);
+            fd_init(&c, 6, cr_eval, &el, 0);
             cr_state_rand(&el, &g, 0.45, epsmax[im], s % 2 ? 2 : -2, 1.0, c.q, c.qd, NULL);
-            c.el = &el;
             for (k = 0; k < N_MODES; ++k) {
                 vlbe_real Q[6], K[36], D[36], K0[36], Kv[36];
-                double Jfd[36];
                 int i;
                 c.mode = mode_of(k);
                 assert_int_equal(vlbe_cr2d_force(&el, c.mode, c.q, c.qd, Q, K, D), VLBE_OK);
-                jac_fd(&c, FD_Q_OF_Q, FD_STEP, Jfd);
-                jac_check(K, Jfd, FD_STEP, c.fmax, 64.0, 16.0, wk, "K", c.mode);
-                jac_fd(&c, FD_Q_OF_QD, 1.0, Jfd);
-                jac_check(D, Jfd, 1.0, c.fmax, 0.0, 16.0, wd, "D", c.mode);
+                (void)jac_check(&c, FD_Q_OF_Q, FD_STEP, K, 64.0, 16.0, wk, "K");
+                (void)jac_check(&c, FD_Q_OF_QD, 1.0, D, 0.0, 16.0, wd, "D");
                 if (im == 1 && (c.mode & (VLBE_CR2D_NO_NLI | VLBE_CR2D_NO_DAMP)) !=
                                    (VLBE_CR2D_NO_NLI | VLBE_CR2D_NO_DAMP)) {
                     assert_int_equal(vlbe_cr2d_force(&el, c.mode | VLBE_CR2D_NO_NLI |
@@ -368,9 +338,8 @@ static void test_force_jacobians(void **state)
                         continue;
                     }
                     for (i = 0; i < 36; ++i) Kv[i] = K[i] - K0[i];
-                    jac_fd(&c, FD_QV_OF_Q, FD_STEP, Jfd);
-                    jac_check(Kv, Jfd, FD_STEP, c.fmax, 64.0, 16.0, wv, "K (velocity part)",
-                              c.mode);
+                    (void)jac_check(&c, FD_QV_OF_Q, FD_STEP, Kv, 64.0, 16.0, wv,
+                                    "K (velocity part)");
                 }
             }
         }
@@ -429,20 +398,18 @@ static void test_mass_jacobian(void **state)
         vlbe_cr2d_elem el;
         fd_ctx c;
         elem_rand(&el, &m, &g, 0);
+        fd_init(&c, 6, cr_eval, &el, 0);
         cr_state_rand(&el, &g, 0.45, 0.05, 2, 1.0, c.q, c.qd, NULL);
         for (i = 0; i < 6; ++i) c.a[i] = (vlbe_real)(2.0 * tu_rng_uniform(&g));
-        c.el = &el;
         for (k = 0; k < N_MODES; ++k) {
             vlbe_real Mq[36];
-            double Jfd[36];
             c.mode = mode_of(k);
             assert_int_equal(vlbe_cr2d_mass_jac(&el, c.mode, c.q, c.a, Mq), VLBE_OK);
             if (c.mode & VLBE_CR2D_LINEAR) {
                 assert_all_equal(36, Mq, VLBE_R(0.0));
                 continue;
             }
-            jac_fd(&c, FD_MA_OF_Q, FD_STEP, Jfd);
-            jac_check(Mq, Jfd, FD_STEP, c.fmax, 64.0, 16.0, w, "Mq", c.mode);
+            (void)jac_check(&c, FD_MA_OF_Q, FD_STEP, Mq, 64.0, 16.0, w, "Mq");
         }
     }
     report3("Mq = d(M a)/dq, err / max|Mq|", w);
@@ -468,7 +435,7 @@ static void test_energy_gradient(void **state)
     static const double epsmax[2] = {0.05, 1e-3};
     tu_rng g = tu_rng_seed(21);
     double w = 0.0, wt = 1e300;
-    int im, s, k, i, j;
+    int im, s, k, i;
     (void)state;
     mats[0] = cr_mat_unit();
     mats[1] = cr_mat_stiff();
@@ -477,31 +444,26 @@ static void test_energy_gradient(void **state)
             vlbe_cr2d_elem el;
             fd_ctx c;
             elem_rand(&el, &mats[im], &g, 0);
+            fd_init(&c, 6, cr_eval, &el, 0);
             cr_state_rand(&el, &g, 0.45, epsmax[im], s % 2 ? 2 : -3, 1.0, c.q, NULL, NULL);
             cr_fill(6, VLBE_R(0.0), c.qd);
-            c.el = &el;
             for (k = 0; k < N_MODES; ++k) {
                 vlbe_real Q[6], K[36], Qb[6];
-                double grad[6], d[6], work[6], scale, tol;
+                double Jfd[2 * 6], scale, tol;
                 c.mode = mode_of(k);
-                c.which = FD_E_OF_Q;
-                c.fmax = 0.0;
                 assert_int_equal(vlbe_cr2d_force(&el, c.mode, c.q, c.qd, Q, K, NULL), VLBE_OK);
                 /* the velocity bits do not matter at rest */
                 assert_int_equal(vlbe_cr2d_force(&el, c.mode & VLBE_CR2D_LINEAR, c.q, c.qd, Qb,
                                                  NULL, NULL),
                                  VLBE_OK);
                 ASSERT_VEC_CLOSE(Q, Qb, 6, 0, 0);
-                for (j = 0; j < 6; ++j) {
-                    c.j = j;
-                    tu_central_diff(fd_fn, &c, (double)c.q[j], FD_STEP, 2, work, d);
-                    grad[j] = d[1];
-                }
+                fd_use(&c, FD_E_OF_Q, FD_STEP, 2);
+                fd_jac(&c, NULL, Jfd); /* row 1: grad U */
                 scale = fmax(cr_max_abs(6, Q), cr_max_abs(36, K));
                 tol = 16.0 * FD_ERR * scale + 16.0 * EPS * c.fmax / FD_STEP;
                 wt = fmin(wt, tol / scale);
                 for (i = 0; i < 6; ++i) {
-                    const double res = grad[i] + (double)Q[i];
+                    const double res = Jfd[6 + i] + (double)Q[i];
                     w = fmax(w, fabs(res) / scale);
                     ASSERT_CLOSE_CTX(res, 0.0, 0, tol, "row %d, mode %u, material %d", i, c.mode,
                                      im);
@@ -1897,64 +1859,30 @@ static void test_beam_assembly(void **state)
     }
 }
 
-/* central differences of the beam callbacks */
-enum { BFD_Q_OF_Q, BFD_Q_OF_V, BFD_MA_OF_Q };
-typedef struct bfd_ctx {
+/* central differences of the beam callbacks (fd_harness.h): fd (first;
+   q, v = fd.qd, a there) and the beam, whose callbacks take it non-const */
+typedef struct beam_fd {
+    fd_ctx fd;
     vlbe_cr2d_beam *bm;
-    int which, j;
-    vlbe_real q[NB], v[NB], a[NB];
-    double fmax;
-} bfd_ctx;
+} beam_fd;
 
-static double bfd_fn(void *vc, double x, double *out)
+/* fd_eval: the beam's M a (FD_MA_OF_Q) or Q (FD_Q_OF_Q, FD_Q_OF_QD) */
+static double beam_eval(const fd_ctx *fc, const vlbe_real *q, const vlbe_real *v, double *out)
 {
-    bfd_ctx *c = (bfd_ctx *)vc;
-    vlbe_real q[NB], v[NB], buf[NB * NB];
-    const vlbe_real xr = (vlbe_real)x;
+    const beam_fd *c = (const beam_fd *)fc;
+    vlbe_real buf[NB * NB];
     int i, k;
-    memcpy(q, c->q, sizeof q);
-    memcpy(v, c->v, sizeof v);
-    if (c->which == BFD_Q_OF_V)
-        v[c->j] = xr;
-    else
-        q[c->j] = xr;
-    if (c->which == BFD_MA_OF_Q) {
+    if (fc->which == FD_MA_OF_Q) {
         assert_int_equal(vlbe_cr2d_beam_mass(c->bm, VLBE_R(0.0), q, v, buf), 0);
         for (i = 0; i < NB; ++i) {
             out[i] = 0.0;
-            for (k = 0; k < NB; ++k) out[i] += (double)buf[i * NB + k] * (double)c->a[k];
+            for (k = 0; k < NB; ++k) out[i] += (double)buf[i * NB + k] * (double)fc->a[k];
         }
     } else {
         assert_int_equal(vlbe_cr2d_beam_force(c->bm, VLBE_R(0.0), q, v, buf), 0);
         for (i = 0; i < NB; ++i) out[i] = (double)buf[i];
     }
-    c->fmax = fmax(c->fmax, tu_max_abs(NB, out));
-    return (double)xr;
-}
-
-/* J (NB x NB) against differences, tolerance as in jac_check */
-static double beam_jac_check(bfd_ctx *c, int which, double h, const vlbe_real *J, double ct,
-                             double cr, const char *what)
-{
-    static double Jfd[NB * NB];
-    double d[NB], work[NB], scale = 0.0, tol, e = 0.0;
-    int i, j;
-    c->which = which;
-    c->fmax = 0.0;
-    for (j = 0; j < NB; ++j) {
-        c->j = j;
-        tu_central_diff(bfd_fn, c, which == BFD_Q_OF_V ? (double)c->v[j] : (double)c->q[j], h, NB,
-                        work, d);
-        for (i = 0; i < NB; ++i) Jfd[i * NB + j] = d[i];
-    }
-    for (i = 0; i < NB * NB; ++i) scale = fmax(scale, fmax(fabs((double)J[i]), fabs(Jfd[i])));
-    tol = ct * FD_ERR * scale + cr * EPS * c->fmax / h;
-    for (i = 0; i < NB * NB; ++i) {
-        e = fmax(e, fabs(Jfd[i] - (double)J[i]));
-        ASSERT_CLOSE_CTX(Jfd[i], J[i], 0, tol, "%s entry (%d, %d), max %.3g, tol %.3g", what,
-                         i / NB, i % NB, scale, tol);
-    }
-    return e / tol;
+    return tu_max_abs(NB, out);
 }
 
 /* force_jac against differences of beam_force (K: step EPS^(1/3),
@@ -1969,7 +1897,7 @@ static void test_beam_jacobians(void **state)
     vlbe_cr2d_beam bm;
     vlbe_real P[NB];
     static vlbe_real K[NB * NB], D[NB * NB], Mq[NB * NB];
-    bfd_ctx c;
+    beam_fd c;
     tu_rng g = tu_rng_seed(92);
     double wk = 0.0, wd = 0.0, wm = 0.0;
     int k, i;
@@ -1978,18 +1906,21 @@ static void test_beam_jacobians(void **state)
     assert_int_equal(vlbe_cr2d_beam_init(&bm, el, NE, NULL, 0), VLBE_OK);
     for (i = 0; i < NB; ++i) P[i] = (vlbe_real)tu_rng_uniform(&g);
     bm.P = P;
-    beam_state(&g, 7.0 * 2.0 * CR_PI + 0.3, c.q, c.v, c.a);
+    fd_init(&c.fd, NB, beam_eval, NULL, 0);
     c.bm = &bm;
+    beam_state(&g, 7.0 * 2.0 * CR_PI + 0.3, c.fd.q, c.fd.qd, c.fd.a);
     for (k = 0; k < N_MODES; ++k) {
+        const vlbe_real *q = c.fd.q, *v = c.fd.qd;
         bm.mode = mode_of(k);
-        assert_int_equal(vlbe_cr2d_beam_force_jac(&bm, VLBE_R(0.0), c.q, c.v, K, D), 0);
-        assert_int_equal(vlbe_cr2d_beam_mass_jac(&bm, VLBE_R(0.0), c.q, c.v, c.a, Mq, NULL), 0);
-        wk = fmax(wk, beam_jac_check(&c, BFD_Q_OF_Q, FD_STEP, K, 64.0, 16.0, "beam K"));
-        wd = fmax(wd, beam_jac_check(&c, BFD_Q_OF_V, 1.0, D, 0.0, 16.0, "beam D"));
+        c.fd.mode = bm.mode;
+        assert_int_equal(vlbe_cr2d_beam_force_jac(&bm, VLBE_R(0.0), q, v, K, D), 0);
+        assert_int_equal(vlbe_cr2d_beam_mass_jac(&bm, VLBE_R(0.0), q, v, c.fd.a, Mq, NULL), 0);
+        wk = fmax(wk, jac_check(&c.fd, FD_Q_OF_Q, FD_STEP, K, 64.0, 16.0, NULL, "beam K"));
+        wd = fmax(wd, jac_check(&c.fd, FD_Q_OF_QD, 1.0, D, 0.0, 16.0, NULL, "beam D"));
         if (bm.mode & VLBE_CR2D_LINEAR)
             assert_all_equal(NB * NB, Mq, VLBE_R(0.0));
         else
-            wm = fmax(wm, beam_jac_check(&c, BFD_MA_OF_Q, FD_STEP, Mq, 64.0, 16.0, "beam Mq"));
+            wm = fmax(wm, jac_check(&c.fd, FD_MA_OF_Q, FD_STEP, Mq, 64.0, 16.0, NULL, "beam Mq"));
     }
     tu_report("beam K vs differences, err / tol", wk, 1.0);
     tu_report("beam D vs differences, err / tol", wd, 1.0);
@@ -2349,6 +2280,23 @@ static void ff_ref(const vlbe_cr2d_elem *el, unsigned mode, const double *fth, c
     }
 }
 
+/* The element with its floating frame, for ff_eval */
+typedef struct ff_pair {
+    const vlbe_cr2d_elem *el;
+    const vlbe_real *fth;
+} ff_pair;
+
+/* fd_eval: the floating-frame Q of c->el (an ff_pair) */
+static double ff_eval(const fd_ctx *c, const vlbe_real *q, const vlbe_real *qd, double *out)
+{
+    const ff_pair *f = (const ff_pair *)c->el;
+    vlbe_real Q[6];
+    int i;
+    assert_int_equal(vlbe_cr2d_force_ff(f->el, c->mode, f->fth, q, qd, Q, NULL, NULL), VLBE_OK);
+    for (i = 0; i < 6; ++i) out[i] = (double)Q[i];
+    return cr_max_abs(6, Q);
+}
+
 /* Random frames theta in [-7, 7] rad (more than a turn), theta' in [-3,
    3], random LINEAR states, both materials, with and without damping:
    (1) Q against ff_ref: the same sums in double; rounding of the sums of
@@ -2376,6 +2324,7 @@ static void test_floating_frame(void **state)
             vlbe_cr2d_elem el;
             vlbe_real q[6], qd[6], fth[2];
             double qdd[6], qdb[6], fthd[2], kmax = 0.0, xmax0 = 0.0;
+            const ff_pair ff = {&el, fth};
             elem_rand(&el, &mats[im], &g, 0);
             for (i = 0; i < 4; ++i) xmax0 = fmax(xmax0, fabs((double)el.X[i]));
             for (i = 0; i < 6; ++i) {
@@ -2391,8 +2340,9 @@ static void test_floating_frame(void **state)
             for (i = 0; i < 36; ++i) kmax = fmax(kmax, fabs((double)el.k0_[i]));
             for (k = 0; k < 2; ++k) {
                 const unsigned mode = VLBE_CR2D_LINEAR | (k ? VLBE_CR2D_NO_DAMP : 0u);
-                vlbe_real Q[6], K[36], D[36], Qp[6], Qm[6];
-                double Qr[6], qmax, tol, Jfd;
+                vlbe_real Q[6], K[36], D[36];
+                double Qr[6], tol;
+                fd_ctx c;
                 assert_int_equal(vlbe_cr2d_force_ff(&el, mode, fth, q, qd, Q, K, D), VLBE_OK);
                 ff_ref(&el, mode, fthd, qdd, qdb, Qr);
                 tol = 16.0 * EPS * kmax * (1.0 + (double)el.mat.ray_b + (double)el.mat.ray_a) *
@@ -2401,27 +2351,25 @@ static void test_floating_frame(void **state)
                     ASSERT_CLOSE((double)Q[i], Qr[i], 0, tol);
                     werr = fmax(werr, fabs((double)Q[i] - Qr[i]) / tol);
                 }
-                qmax = cr_max_abs(6, Q);
-                /* (2) columns by central differences, step 1 */
+                /* (2) columns by central differences, step 1; the tolerance
+                   grows with the largest |Q| met so far (c.fmax) */
+                fd_init(&c, 6, ff_eval, &ff, mode);
+                memcpy(c.q, q, sizeof q);
+                memcpy(c.qd, qd, sizeof qd);
+                c.h = 1.0;
+                c.h_fixed = 1;
+                c.fmax = cr_max_abs(6, Q);
                 for (j = 0; j < 12; ++j) {
-                    vlbe_real x[6], xd[6];
-                    memcpy(x, q, sizeof x);
-                    memcpy(xd, qd, sizeof xd);
-                    if (j < 6) x[j] += VLBE_R(1.0); else xd[j - 6] += VLBE_R(1.0);
-                    assert_int_equal(vlbe_cr2d_force_ff(&el, mode, fth, x, xd, Qp, NULL, NULL), VLBE_OK);
-                    qmax = fmax(qmax, cr_max_abs(6, Qp));
-                    memcpy(x, q, sizeof x);
-                    memcpy(xd, qd, sizeof xd);
-                    if (j < 6) x[j] -= VLBE_R(1.0); else xd[j - 6] -= VLBE_R(1.0);
-                    assert_int_equal(vlbe_cr2d_force_ff(&el, mode, fth, x, xd, Qm, NULL, NULL), VLBE_OK);
-                    qmax = fmax(qmax, cr_max_abs(6, Qm));
+                    double Jfd[6];
+                    c.wrt_qd = j >= 6;
+                    fd_column(&c, j % 6, Jfd);
                     for (i = 0; i < 6; ++i) {
-                        Jfd = 0.5 * ((double)Qp[i] - (double)Qm[i]);
-                        tol = 16.0 * EPS * qmax;
-                        ASSERT_CLOSE_CTX(Jfd, j < 6 ? K[i * 6 + j] : D[i * 6 + j - 6], 0, tol,
-                                         "floating frame: %s (%d, %d), mode %u",
-                                         j < 6 ? "K" : "D", i, j % 6, mode);
-                        wk = fmax(wk, fabs(Jfd - (double)(j < 6 ? K[i * 6 + j] : D[i * 6 + j - 6])) / tol);
+                        const double Jan = (double)(j < 6 ? K[i * 6 + j] : D[i * 6 + j - 6]);
+                        tol = 16.0 * EPS * c.fmax;
+                        ASSERT_CLOSE_CTX(Jfd[i], Jan, 0, tol,
+                                         "floating frame: %s (%d, %d), mode %u", j < 6 ? "K" : "D",
+                                         i, j % 6, mode);
+                        wk = fmax(wk, fabs(Jfd[i] - Jan) / tol);
                     }
                 }
             }

@@ -739,54 +739,54 @@ static void test_force_jacobians(void **state)
         wset(iw, w);
         rancf_make(&el, &m, w, 0, 0, 0, 0);
         for (s = 0; s < nst; ++s) {
-            fd_ctx c;
-            make_state(&g, 0.6, 0.15, c.q, c.qd);
-            for (i = 0; i < 10; ++i) c.a[i] = (vlbe_real)(2.0 * tu_rng_uniform(&g));
-            c.ops = &OPS;
-            c.el = &el;
+            ale_fd c;
+            const vlbe_real *q;
+            ale_fd_init(&c, &OPS, &el, 0);
+            q = c.fd.q;
+            make_state(&g, 0.6, 0.15, c.fd.q, c.fd.qd);
+            for (i = 0; i < 10; ++i) c.fd.a[i] = (vlbe_real)(2.0 * tu_rng_uniform(&g));
             for (k = 0; k < N_MODES; ++k) {
                 vlbe_real Q[10], K[100], D[100], Mq[100];
-                c.mode = mode_of(k);
-                assert_int_equal(vlbe_rancf_force(&el, c.mode, c.q, c.qd, Q, K, D), VLBE_OK);
-                check_fixed_zero(c.mode, Q, K);
-                check_fixed_zero(c.mode, NULL, D);
-                wk = fmax(wk, check_jac(&c, FD_Q_OF_Q, K, c.mode, tol, "K"));
-                wd = fmax(wd, check_jac(&c, FD_Q_OF_QD, D, c.mode, tol, "D"));
+                const unsigned mode = mode_of(k);
+                c.fd.mode = mode;
+                assert_int_equal(vlbe_rancf_force(&el, mode, q, c.fd.qd, Q, K, D), VLBE_OK);
+                check_fixed_zero(mode, Q, K);
+                check_fixed_zero(mode, NULL, D);
+                wk = fmax(wk, check_jac(&c, FD_Q_OF_Q, K, mode, tol, "K"));
+                wd = fmax(wd, check_jac(&c, FD_Q_OF_QD, D, mode, tol, "D"));
                 /* the mass depends on the FIX bits only */
-                if (c.mode & (VLBE_ALE_NO_BEND | VLBE_ALE_NO_DAMP | VLBE_ALE_CONSERVATIVE))
+                if (mode & (VLBE_ALE_NO_BEND | VLBE_ALE_NO_DAMP | VLBE_ALE_CONSERVATIVE))
                     continue;
-                assert_int_equal(vlbe_rancf_mass_jac(&el, c.mode, c.q, c.a, Mq), VLBE_OK);
-                check_fixed_zero(c.mode, NULL, Mq);
-                if ((c.mode & (VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2)) ==
+                assert_int_equal(vlbe_rancf_mass_jac(&el, mode, q, c.fd.a, Mq), VLBE_OK);
+                check_fixed_zero(mode, NULL, Mq);
+                if ((mode & (VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2)) ==
                     (VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2)) {
                     assert_all_equal(100, Mq, VLBE_R(0.0)); /* constant M */
                     continue;
                 }
-                wm = fmax(wm, check_jac(&c, FD_MA_OF_Q, Mq, c.mode, tol, "Mq"));
+                wm = fmax(wm, check_jac(&c, FD_MA_OF_Q, Mq, mode, tol, "Mq"));
             }
             /* point force at interior points, all ten rows and columns */
             c.F[0] = (vlbe_real)(3.0 * tu_rng_uniform(&g));
             c.F[1] = (vlbe_real)(3.0 * tu_rng_uniform(&g));
-            c.mode = 0;
+            c.fd.mode = 0;
             for (ix = 1; ix <= 3; ++ix) {
                 vlbe_real Q[10], K[100];
-                c.pf = (vlbe_real)((double)c.q[4] + 0.25 * ix * ((double)c.q[9] - (double)c.q[4]));
+                c.pf = (vlbe_real)((double)q[4] + 0.25 * ix * ((double)q[9] - (double)q[4]));
                 fill(10, VLBE_R(0.0), Q);
                 fill(100, VLBE_R(0.0), K);
-                assert_int_equal(vlbe_rancf_point_force(&el, c.q, c.pf, c.F, Q, K), VLBE_OK);
+                assert_int_equal(vlbe_rancf_point_force(&el, q, c.pf, c.F, Q, K), VLBE_OK);
                 wp = fmax(wp, check_jac(&c, FD_PF_OF_Q, K, 0, tol, "point force K"));
                 /* virtual work: Q_j = F . dr(pf)/dq_j, r from vlbe_rancf_point */
                 {
-                    double dr[2], work[2], gs = 1.0;
+                    double dr[2 * 10], gs = 1.0;
                     const double Fs = fmax(fabs((double)c.F[0]), fabs((double)c.F[1]));
                     double qv[10];
-                    c.which = FD_R_OF_Q;
+                    ale_fd_use(&c, FD_R_OF_Q);
+                    fd_jac(&c.fd, NULL, dr);
                     for (i = 0; i < 10; ++i) {
-                        const double x = (double)c.q[i];
-                        c.j = i;
-                        tu_central_diff(fd_fn, &c, x, FD_STEP * fmax(1.0, fabs(x)), 2, work, dr);
-                        qv[i] = dr[0] * (double)c.F[0] + dr[1] * (double)c.F[1];
-                        gs = fmax(gs, fmax(fabs(dr[0]), fabs(dr[1])));
+                        qv[i] = dr[i] * (double)c.F[0] + dr[10 + i] * (double)c.F[1];
+                        gs = fmax(gs, fmax(fabs(dr[i]), fabs(dr[10 + i])));
                     }
                     for (i = 0; i < 10; ++i) {
                         wv = fmax(wv, fabs((double)Q[i] - qv[i]) / (Fs * gs));
