@@ -1,6 +1,6 @@
 /* fd_harness.h -- central-difference Jacobians of element functions, the
    harness shared by the element suites: test_ancf_ale.c and test_rancf.c
-   (through ale_harness.h), test_ale3.c, test_corot2d.c.
+   (through ale_harness.h), test_ale3.c, test_corot2d.c, test_ale_inv.c.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
    Include after test_util.h and the element header (vlbe_real, VLBE_EPS).
 

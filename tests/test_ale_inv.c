@@ -53,6 +53,7 @@
 #include "test_util.h"
 #include "../ancf_ale.h"
 #include "ale_fixtures.h"
+#include "fd_harness.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -284,37 +285,23 @@ static void test_inv_equals_gauss(void **state)
     report_vs_gauss("inv", w);
 }
 
-/* central differences of the invariant route's Q (vlbe_ale_force with
-   VLBE_ALE_INV_AXIAL and mode; FIX_P1 | FIX_P2 in mode: vlbe_ale_inv_force's
-   route) in q[j] (or qd[j]) */
-typedef struct fd_ctx {
-    const vlbe_ale_elem *el;
-    unsigned mode;
-    int j, rate;
-    vlbe_real q[10], qd[10];
-} fd_ctx;
-
-static double fd_fn(void *vc, double x, double *out)
+/* the invariant route's Q (vlbe_ale_force with VLBE_ALE_INV_AXIAL and
+   mode; FIX_P1 | FIX_P2 in mode: vlbe_ale_inv_force's route), differenced
+   by fd_harness.h */
+static double inv_eval(const fd_ctx *c, const vlbe_real *q, const vlbe_real *qd, double *out)
 {
-    const fd_ctx *c = (const fd_ctx *)vc;
-    vlbe_real q[10], qd[10], Q[10];
-    const vlbe_real xr = (vlbe_real)x;
+    vlbe_real Q[10];
     int i;
-    memcpy(q, c->q, sizeof q);
-    memcpy(qd, c->qd, sizeof qd);
-    if (c->rate)
-        qd[c->j] = xr;
-    else
-        q[c->j] = xr;
-    assert_int_equal(vlbe_ale_force(c->el, c->mode | VLBE_ALE_INV_AXIAL, q, qd, Q, NULL, NULL),
+    assert_int_equal(vlbe_ale_force((const vlbe_ale_elem *)c->el, c->mode | VLBE_ALE_INV_AXIAL,
+                                    q, qd, Q, NULL, NULL),
                      VLBE_OK);
     for (i = 0; i < 10; ++i) out[i] = (double)Q[i];
-    return (double)xr;
+    return tu_max_abs(10, out);
 }
 
 /* K and D of the invariant route at c's state against central differences
-   of its Q (fd_fn) in every coordinate and rate, the step EPS^(1/3) max(1,
-   |x|); rows and columns of a fixed p (c->mode) exactly zero and not
+   of its Q (inv_eval) in every coordinate and rate, the step EPS^(1/3)
+   max(1, |x|); rows and columns of a fixed p (c->mode) exactly zero and not
    differenced (a fixed p still sets L but is no coordinate).  The error of
    an entry is measured against the largest entry of its matrix (analytic
    or differenced, so that a wrongly zero matrix cannot pass), at most tol;
@@ -322,34 +309,18 @@ static double fd_fn(void *vc, double x, double *out)
 static void check_fd(fd_ctx *c, const vlbe_real *K, const vlbe_real *D, double tol,
                      double *worst)
 {
-    int r, i, j;
+    int r, i, fixed[10];
+    for (i = 0; i < 10; ++i)
+        fixed[i] = (i == 4 && (c->mode & VLBE_ALE_FIX_P1)) || (i == 9 && (c->mode & VLBE_ALE_FIX_P2));
     for (r = 0; r < 2; ++r) {
         const vlbe_real *J = r ? D : K;
-        double Jfd[100], d[10], work[10], scale;
-        int fixed[10];
-        for (i = 0; i < 100; ++i) Jfd[i] = 0.0;
-        for (j = 0; j < 10; ++j)
-            fixed[j] = (j == 4 && (c->mode & VLBE_ALE_FIX_P1)) ||
-                       (j == 9 && (c->mode & VLBE_ALE_FIX_P2));
-        c->rate = r;
-        for (j = 0; j < 10; ++j) {
-            const double x = r ? (double)c->qd[j] : (double)c->q[j];
-            if (fixed[j]) continue;
-            c->j = j;
-            tu_central_diff(fd_fn, c, x, FD_STEP * fmax(1.0, fabs(x)), 10, work, d);
-            for (i = 0; i < 10; ++i) Jfd[i * 10 + j] = d[i];
-        }
-        scale = fmax(max_abs(100, J), tu_max_abs(100, Jfd));
-        if (scale == 0.0) continue; /* D of the undamped cable: both zero */
-        for (i = 0; i < 100; ++i) {
-            if (fixed[i / 10] || fixed[i % 10]) {
+        fd_stats st;
+        for (i = 0; i < 100; ++i)
+            if (fixed[i / 10] || fixed[i % 10])
                 ASSERT_CLOSE_CTX(J[i], 0.0, 0, 0, "fixed p entry %d, mode %u", i, c->mode);
-                continue;
-            }
-            worst[r] = fmax(worst[r], fabs(Jfd[i] - (double)J[i]) / scale);
-            ASSERT_CLOSE_CTX(Jfd[i], J[i], 0, tol * scale, "%s (%d, %d), mode %u", r ? "D" : "K",
-                             i / 10, i % 10, c->mode);
-        }
+        c->wrt_qd = r;
+        (void)fd_check(c, J, fixed, NULL, tol, 0.0, r ? "D" : "K", &st);
+        worst[r] = fmax(worst[r], st.err);
     }
 }
 
@@ -372,8 +343,7 @@ static void test_inv_jacobians(void **state)
         for (k = 0; k < ARRAY_LEN(modes); ++k) {
             fd_ctx c;
             vlbe_real Q[10], K[100], D[100];
-            c.el = &el;
-            c.mode = modes[k] | FIX;
+            fd_init(&c, 10, inv_eval, &el, modes[k] | FIX);
             make_state(&g, 0.8 + 0.3 * s, 0.15, c.q, c.qd);
             assert_int_equal(vlbe_ale_inv_force(&el, c.mode, c.q, c.qd, Q, K, D), VLBE_OK);
             check_fd(&c, K, D, tol, worst);
@@ -541,8 +511,7 @@ static void test_ale_inv_jacobians(void **state)
             for (k = 0; k < ARRAY_LEN(ale_modes); ++k) {
                 fd_ctx c;
                 vlbe_real Q[10], K[100], D[100];
-                c.el = &el;
-                c.mode = ale_modes[k] | ale_pmodes[ip];
+                fd_init(&c, 10, inv_eval, &el, ale_modes[k] | ale_pmodes[ip]);
                 make_ale_state(&g, 0.8 + 0.3 * s, 0.15, c.q, c.qd);
                 assert_int_equal(
                     vlbe_ale_force(&el, c.mode | VLBE_ALE_INV_AXIAL, c.q, c.qd, Q, K, D), VLBE_OK);
