@@ -620,8 +620,8 @@ VLBE_API size_t vlbe_dae_iwork_len(int n, int m) { return (size_t)n + (size_t)m;
    (leading dimension ld) is multiplied by s_i = 2^-e, max_j |a_ij| = f 2^e
    with f in [1/2, 1).  A power of 2 is exact: the scaled entries are A's
    own, and the factor differs from an unscaled one only where the row
-   scales change the choice of pivots (scaled partial pivoting).  A zero or
-   non-finite row keeps s_i = 1 (vlbe_lu_factor reports it).  s (N, may be
+   scales change the choice of pivots (scaled partial pivoting).  A zero,
+   subnormal or non-finite row keeps s_i = 1 (vlbe_lu_factor reports it).  s (N, may be
    NULL) receives the scales, which the right sides of later solves need;
    b (N, may be NULL) is scaled along. */
 VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, vlbe_real *s, vlbe_real *b)
@@ -632,6 +632,7 @@ VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, vlbe_real *s, v
         if (r > VLBE_R(0.0) && isfinite(r)) {
             (void)frexp((double)r, &e);
             si = (vlbe_real)ldexp(1.0, -e);
+            if (!isfinite(si)) si = VLBE_R(1.0); /* a subnormal row: 2^-e overflows */
             vlbe_vec_scale(N, si, ai);
             if (b) b[i] *= si;
         }
