@@ -491,12 +491,18 @@ VLBE_INLINE vlbe_status vlbe__int_constr_q(const vlbe_dae *s, vlbe_dae_stats *c,
     return VLBE_OK;
 }
 
+/* Scratch of vlbe__int_tangent2 / vlbe__int_tangent: 3 n*n + m*n + 3n + m. */
+VLBE_INLINE size_t vlbe__int_tangent_len(int n, int m)
+{
+    return 3 * (size_t)n * (size_t)n + (size_t)m * (size_t)n + 3 * (size_t)n + (size_t)m;
+}
+
 /* Adds  cq * d(M a + C_q^T lambda - Q)/dq  to the n x n block Jq (leading
    dimension ldq) and  cv * d(M a - Q)/dv  to the n x n block Jv (ldv; may be
    the same block as Jq), using the optional Jacobian callbacks and forward
    differences for those missing.  lam == NULL leaves out the C_q^T lambda
    term.  Qbase = Q(t,q,v) and Mbase = M(t,q,v) must be given (they are at
-   hand in every caller).  w: 3 n*n + m*n + 3n + m reals (scratch). */
+   hand in every caller).  w: vlbe__int_tangent_len(n, m) reals (scratch). */
 VLBE_INLINE vlbe_status vlbe__int_tangent2(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v,
                                            const vlbe_real *a, const vlbe_real *lam,
@@ -581,7 +587,7 @@ VLBE_INLINE vlbe_status vlbe__int_tangent2(const vlbe_dae *s, vlbe_dae_stats *c,
 
 /* Adds  cq * d(M a + C_q^T lambda - Q)/dq + cv * d(M a - Q)/dv  to the n x n
    block J (leading dimension ld); see vlbe__int_tangent2.
-   w: 3 n*n + m*n + 3n + m reals (scratch). */
+   w: vlbe__int_tangent_len(n, m) reals (scratch). */
 VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                           const vlbe_real *q, const vlbe_real *v,
                                           const vlbe_real *a, const vlbe_real *lam,
@@ -621,9 +627,9 @@ VLBE_API size_t vlbe_dae_iwork_len(int n, int m) { return (size_t)n + (size_t)m;
    with f in [1/2, 1).  A power of 2 is exact: the scaled entries are A's
    own, and the factor differs from an unscaled one only where the row
    scales change the choice of pivots (scaled partial pivoting).  A zero,
-   subnormal or non-finite row keeps s_i = 1 (vlbe_lu_factor reports it).  s (N, may be
-   NULL) receives the scales, which the right sides of later solves need;
-   b (N, may be NULL) is scaled along. */
+   subnormal or non-finite row keeps s_i = 1 (vlbe_lu_factor reports it).
+   s (N, may be NULL) receives the scales, which the right sides of later
+   solves need; b (N, may be NULL) is scaled along. */
 VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, vlbe_real *s, vlbe_real *b)
 {
     int i, e;
@@ -763,7 +769,7 @@ VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
 VLBE_API size_t vlbe_static_work_len(int n, int m)
 {
     size_t N = (size_t)n + (size_t)m, nn = (size_t)n * (size_t)n, mn = (size_t)m * (size_t)n;
-    return 5 * N + 3 * (size_t)n + 2 * mn + N * N + nn + 3 * nn + mn + 3 * (size_t)n + (size_t)m;
+    return 5 * N + 3 * (size_t)n + 2 * mn + N * N + nn + vlbe__int_tangent_len(n, m);
 }
 VLBE_API size_t vlbe_static_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
 
@@ -1037,7 +1043,7 @@ VLBE_API size_t vlbe_hht_work_len(int n, int m)
 {
     size_t N = (size_t)n + (size_t)m, nn = (size_t)n * (size_t)n, mn = (size_t)m * (size_t)n;
     return 3 * (4 * (size_t)n + (size_t)m) + N * N + N + nn + (size_t)n + mn + (size_t)m +
-           3 * nn + mn + 3 * (size_t)n + (size_t)m + N;
+           vlbe__int_tangent_len(n, m) + N;
 }
 VLBE_API size_t vlbe_hht_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
 
@@ -1130,7 +1136,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
     vlbe_real *tq = vlbe__hht_trial(st), *tv = tq + n, *tqdd = tv + n, *ta = tqdd + n, *tl = ta + n;
     vlbe_real *LU = vlbe__hht_lu(st), *r = LU + NN, *M = r + N, *Q = M + (size_t)n * n,
               *Cq = Q + n, *C = Cq + (size_t)m * n, *scr = C + m,
-              *rs = scr + 3 * (size_t)n * n + (size_t)m * n + 3 * (size_t)n + (size_t)m;
+              *rs = scr + vlbe__int_tangent_len(n, m);
     vlbe_real am = p->alpha_m, af = p->alpha_f;
     vlbe_real bp = h * h * p->beta * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am); /* dq/dq''  */
     vlbe_real gp = h * p->gamma * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);    /* dv/dq''  */
@@ -1374,7 +1380,7 @@ VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
 VLBE_INLINE size_t vlbe__bdf_scr_len(int n, int m)
 {
     size_t N = (size_t)n, Mm = (size_t)m;
-    size_t a = 3 * N * N + Mm * N + 3 * N + Mm;      /* vlbe__int_tangent2 */
+    size_t a = vlbe__int_tangent_len(n, m);          /* vlbe__int_tangent2 */
     size_t b = N * N + Mm * N + 5 * N + 3 * Mm;      /* vlbe__int_constr_q (lam, mu, g) */
     return a > b ? a : b;
 }
