@@ -24,12 +24,6 @@
    A banded LU: add a backend to lu_backends[] whose factor/solve take the
    dense matrix decoded here (restricted to the band by lu_band_mask) and
    whose reconstruct() gives the dense L, U; the checks are the same. */
-#ifndef FUZZ_NAME
-#define FUZZ_NAME "lu"
-#else
-#undef FUZZ_NAME
-#define FUZZ_NAME "lu"
-#endif
 #include "fuzz_util.h"
 
 #define LU_NMAX 12
@@ -208,9 +202,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     vlbe_status st;
     fz_rd rd;
     unsigned flags;
-    fz_init(&rd, data, size);
-    flags = fz_u8(&rd);
-    rd.nf = (int)(flags & 1u);
+    flags = fz_begin("lu", &rd, data, size);
     inplace = (int)((flags >> 1) & 1u);
     pinfo = (flags & 4u) ? NULL : &info;
     n = fz_int(&rd, 1, LU_NMAX);

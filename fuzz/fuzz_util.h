@@ -2,8 +2,9 @@
    decoders of reals and indices, snapshots of caller-visible data and the
    contract check FUZZ_CHECK      -- part of vlbe   SPDX-License-Identifier: MIT
 
-   Each harness fuzz/fuzz_<name>.c defines FUZZ_NAME "<name>", includes this
-   file and the headers it tests, and defines LLVMFuzzerTestOneInput.  Two
+   Each harness fuzz/fuzz_<name>.c includes this file and the headers it
+   tests and defines LLVMFuzzerTestOneInput, which starts with
+   fz_begin("<name>", &rd, data, size).  Two
    builds:
      libFuzzer (make fuzz): clang -fsanitize=fuzzer,address,undefined; a
         failed FUZZ_CHECK prints "FUZZ VIOLATION [name] file:line: msg" with
@@ -66,7 +67,8 @@
 #endif
 
 /* -- reporting ------------------------------------------------------------ */
-static char fz_ctx[256]; /* context of the current call (fz_note) */
+static char fz_ctx[256];           /* context of the current call (fz_note)  */
+static const char *fz_harness = "?"; /* set by fz_begin                      */
 
 /* Sets the context printed with a violation: the routine and arguments. */
 static inline void fz_note(const char *fmt, ...)
@@ -81,21 +83,21 @@ static inline void fz_note(const char *fmt, ...)
 /* defined by the replay test: records the failure and longjmps back */
 void vlbe_fuzz_fail_hook(const char *harness, const char *file, int line, const char *msg,
                          const char *ctx);
-#define FUZZ_CHECK(cond, msg)                                                          \
-    do {                                                                               \
-        if (!(cond)) vlbe_fuzz_fail_hook(FUZZ_NAME, __FILE__, __LINE__, (msg), fz_ctx); \
+#define FUZZ_CHECK(cond, msg)                                                            \
+    do {                                                                                 \
+        if (!(cond)) vlbe_fuzz_fail_hook(fz_harness, __FILE__, __LINE__, (msg), fz_ctx); \
     } while (0)
 #else
-static inline void fz_violation(const char *harness, const char *file, int line, const char *msg)
+static inline void fz_violation(const char *file, int line, const char *msg)
 {
-    fprintf(stderr, "FUZZ VIOLATION [%s] %s:%d: %s (in %s)\n", harness, file, line, msg,
+    fprintf(stderr, "FUZZ VIOLATION [%s] %s:%d: %s (in %s)\n", fz_harness, file, line, msg,
             fz_ctx);
     fflush(stderr);
     abort();
 }
-#define FUZZ_CHECK(cond, msg)                                                \
-    do {                                                                     \
-        if (!(cond)) fz_violation(FUZZ_NAME, __FILE__, __LINE__, (msg));     \
+#define FUZZ_CHECK(cond, msg)                                 \
+    do {                                                      \
+        if (!(cond)) fz_violation(__FILE__, __LINE__, (msg)); \
     } while (0)
 #endif
 
@@ -108,10 +110,24 @@ typedef struct fz_rd {
 
 static inline void fz_init(fz_rd *r, const uint8_t *data, size_t size)
 {
+    fz_ctx[0] = 0;
     r->p = data;
     r->n = size;
     r->i = 0;
     r->nf = 0;
+}
+
+static inline unsigned fz_u8(fz_rd *r);
+/* start of every harness: names it, resets reader, snapshots, context;
+   returns the first byte (the harness's flags), bit 0 = non-finite reals */
+static inline unsigned fz_begin(const char *name, fz_rd *r, const uint8_t *data, size_t size)
+{
+    unsigned f;
+    fz_harness = name;
+    fz_init(r, data, size);
+    f = fz_u8(r);
+    r->nf = (int)(f & 1u);
+    return f;
 }
 
 static inline unsigned fz_u8(fz_rd *r) { return r->i < r->n ? r->p[r->i++] : 0u; }
@@ -251,6 +267,12 @@ static inline void fz_mods(fz_rd *r, vlbe_real *x, int n, double a)
     for (i = 0; i < n; ++i) x[i] = fz_mod(r, a);
 }
 
+/* one status value known to vlbe (catches garbage statuses) */
+static inline int fz_status_known(vlbe_status s)
+{
+    return strcmp(vlbe_status_str(s), "unknown status") != 0;
+}
+
 /* -- outputs, snapshots ------------------------------------------------------ */
 #define FZ_SENTINEL 0xA5 /* every byte of an unwritten output: a finite real */
 
@@ -273,6 +295,7 @@ typedef struct fz_snap_ent {
     size_t n;
     size_t off;
     const char *what;
+    int kind; /* 0 output or state, 1 input (const: never changes), 2 real output */
 } fz_snap_ent;
 static unsigned char fz_pool[FZ_POOL];
 static fz_snap_ent fz_snaps[FZ_NSNAP];
@@ -287,7 +310,7 @@ static inline void fz_snap_reset(void)
 
 /* remembers n bytes at p (what: its name in a violation message); NULL or
    n == 0 is ignored */
-static inline void fz_snap(const void *p, size_t n, const char *what)
+static inline void fz_snap_kind(const void *p, size_t n, const char *what, int kind)
 {
     if (!p || !n) return;
     if (fz_nsnap >= FZ_NSNAP || n > FZ_POOL - fz_pool_used) {
@@ -299,18 +322,74 @@ static inline void fz_snap(const void *p, size_t n, const char *what)
     fz_snaps[fz_nsnap].n = n;
     fz_snaps[fz_nsnap].off = fz_pool_used;
     fz_snaps[fz_nsnap].what = what;
+    fz_snaps[fz_nsnap].kind = kind;
     fz_pool_used += n;
     ++fz_nsnap;
 }
 
-/* NULL if every snapshot is bitwise unchanged, else the first changed name */
-static inline const char *fz_snap_changed(void)
+/* state or non-real output: bitwise unchanged on failure */
+static inline void fz_snap(const void *p, size_t n, const char *what) { fz_snap_kind(p, n, what, 0); }
+/* const input: never changes */
+static inline void fz_in(const void *p, size_t n, const char *what) { fz_snap_kind(p, n, what, 1); }
+/* array of n reals written by the call: pre-filled with the sentinel here;
+   finite on success, unchanged on failure */
+static inline void fz_out(vlbe_real *p, size_t n, const char *what)
+{
+    if (!p) return;
+    fz_fill(p, n * sizeof *p);
+    fz_snap_kind(p, n * sizeof *p, what, 2);
+}
+/* the same without the sentinel (an accumulating output: Q += ...) */
+static inline void fz_acc(vlbe_real *p, size_t n, const char *what)
+{
+    if (p) fz_snap_kind(p, n * sizeof *p, what, 2);
+}
+
+/* NULL if every snapshot (inputs only: only_in) is bitwise unchanged, else
+   the first changed name */
+static inline const char *fz_snap_changed_k(int only_in)
 {
     int k;
     for (k = 0; k < fz_nsnap; ++k)
-        if (memcmp(fz_snaps[k].p, fz_pool + fz_snaps[k].off, fz_snaps[k].n) != 0)
+        if ((!only_in || fz_snaps[k].kind == 1) && memcmp(fz_snaps[k].p, fz_pool + fz_snaps[k].off, fz_snaps[k].n) != 0)
             return fz_snaps[k].what;
     return NULL;
+}
+static inline const char *fz_snap_changed(void) { return fz_snap_changed_k(0); }
+
+static inline void fz_ctx_add(const char *what, const char *name)
+{
+    size_t l = strlen(fz_ctx);
+    snprintf(fz_ctx + l, sizeof fz_ctx - l, " [%s: %s]", what, name);
+}
+
+/* The contract after a call whose outputs and state were registered with
+   fz_out / fz_acc / fz_snap / fz_in: a known status; inputs unchanged;
+   VLBE_OK: every real output finite; otherwise: everything unchanged. */
+static inline int fz_skip(const char *id);
+static inline void fz_post(vlbe_status st)
+{
+    const char *w;
+    char id[64];
+    int k;
+    FUZZ_CHECK(fz_status_known(st), "unknown status value");
+    if ((w = fz_snap_changed_k(1)) != NULL) fz_ctx_add("changed", w);
+    FUZZ_CHECK(w == NULL, "a const input changed");
+    if (st == VLBE_OK) {
+        snprintf(id, sizeof id, "%s-finite", fz_harness);
+        if (fz_skip(id)) return;
+        for (k = 0; k < fz_nsnap; ++k)
+            if (fz_snaps[k].kind == 2 &&
+                !fz_finite((const vlbe_real *)fz_snaps[k].p, fz_snaps[k].n / sizeof(vlbe_real))) {
+                fz_ctx_add("non-finite", fz_snaps[k].what);
+                FUZZ_CHECK(0, "status OK but an output holds NaN/Inf");
+            }
+        return;
+    }
+    snprintf(id, sizeof id, "%s-unchanged", fz_harness);
+    if (fz_skip(id)) return;
+    if ((w = fz_snap_changed()) != NULL) fz_ctx_add("changed", w);
+    FUZZ_CHECK(w == NULL, "non-OK status but a caller-visible output changed");
 }
 
 /* Contract 3 after a failed call: names the first changed output in the
@@ -318,16 +397,15 @@ static inline const char *fz_snap_changed(void)
 #define FZ_CHECK_UNCHANGED()                                                       \
     do {                                                                           \
         const char *fz_w_ = fz_snap_changed();                                     \
-        if (fz_w_) {                                                               \
-            size_t fz_l_ = strlen(fz_ctx);                                         \
-            snprintf(fz_ctx + fz_l_, sizeof fz_ctx - fz_l_, " [changed: %s]", fz_w_); \
-        }                                                                          \
+        if (fz_w_) fz_ctx_add("changed", fz_w_);                                   \
         FUZZ_CHECK(fz_w_ == NULL, "non-OK status but a caller-visible output changed"); \
     } while (0)
 
 /* Development aid: VLBE_FUZZ_SKIP="id1,id2" in the environment skips the
    checks of those ids (a known violation that would otherwise stop every
-   run at the same place).  Never set by make fuzz or the replay test. */
+   run at the same place): "<harness>-finite" (OK with NaN/Inf outputs),
+   "<harness>-unchanged" (outputs written on failure) and the ids named in
+   the harnesses.  Never set by make fuzz or the replay test. */
 static inline int fz_skip(const char *id)
 {
     static const char *env;
@@ -356,7 +434,5 @@ static inline void fz_dump(const char *name, const vlbe_real *x, int n)
     fprintf(stderr, "\n");
 }
 
-/* one status value known to vlbe (catches garbage statuses) */
-static inline int fz_status_known(vlbe_status s) { return strcmp(vlbe_status_str(s), "unknown status") != 0; }
 
 #endif /* VLBE_FUZZ_UTIL_H */
