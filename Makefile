@@ -12,6 +12,13 @@
 #   make lint           cppcheck
 #   make cmocka         make sure cmocka is usable (installs it with apt-get
 #                       when run as root on Debian)
+#   make fuzz           build the libFuzzer harnesses fuzz/fuzz_*.c with clang
+#                       (ASan + UBSan) and run each for FUZZ_TIME seconds
+#                       (default 600 / number of harnesses) from its seed
+#                       corpus fuzz/corpus/<name>/; new inputs and crash
+#                       files go to build/fuzz/ (FUZZ_SEEDS=<dir pattern>,
+#                       % = harness name, to start from other seeds)
+#   make fuzz-build     build them only; make fuzz-clang: the clang check
 #   make clean
 #
 # cmocka from somewhere else: make test CMOCKA_CFLAGS=-I/opt/cmocka/include \
@@ -43,7 +50,9 @@ TEST_DIR = tests
 TEST_SRCS := $(wildcard $(TEST_DIR)/test_*.c)
 TEST_NAMES := $(basename $(notdir $(TEST_SRCS)))
 # tests include the examples (VLBE_EXAMPLE_NO_MAIN): they are dependencies too
-TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(wildcard $(EXAMPLE_DIR)/*.c $(EXAMPLE_DIR)/*.h)
+# tests/test_fuzz_corpus.c includes the fuzz harnesses
+TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(wildcard $(EXAMPLE_DIR)/*.c $(EXAMPLE_DIR)/*.h) \
+            $(wildcard fuzz/*.c fuzz/*.h)
 TEST_CFGS := dbl dbl-O0 flt san
 CFG_dbl := -O2
 CFG_dbl-O0 := -O0
@@ -76,7 +85,7 @@ DEMO_WP_BINS := $(addprefix $(BUILD)/demo/,$(DEMO_WP_NAMES))
 BENCH_DIR_ARG := $(DEMO_WP_NAMES)
 
 .PHONY: all check test check-headers cmocka test-build examples demo bench \
-        bench-portable lint clean
+        bench-portable lint clean fuzz fuzz-build fuzz-clang
 
 all: test examples
 
@@ -218,6 +227,65 @@ bench-portable: $(BENCH_PORTABLE_BINS)
 	  case " $(BENCH_DIR_ARG) " in *" $$b "*) $(BUILD)/bench/portable/$$b $(OUT)/bench/portable;; \
 	  *) $(BUILD)/bench/portable/$$b portable;; esac; \
 	done
+
+# -- fuzzing -----------------------------------------------------------------
+# One libFuzzer binary per fuzz/fuzz_<name>.c (clang: -fsanitize=fuzzer needs
+# its libclang_rt.fuzzer).  Each runs FUZZ_TIME seconds, one after the other
+# (never -fork/-jobs), on a scratch copy of the seeds: the committed corpus
+# is read, new inputs land in build/fuzz/work/<name>/, crashes in
+# build/fuzz/artifacts/<name>/.  The summary counts a harness that stopped on
+# "FUZZ VIOLATION" (a failed contract check, fuzz/fuzz_util.h) as a
+# contract violation and any other stop (sanitizer report, signal, timeout)
+# as a crash; any finding makes the target fail.
+FUZZ_CC ?= clang
+FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+FUZZ_SRCS := $(wildcard fuzz/fuzz_*.c)
+FUZZ_NAMES := $(patsubst fuzz_%,%,$(basename $(notdir $(FUZZ_SRCS))))
+FUZZ_BINS := $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_NAMES))
+FUZZ_TIME ?= $(shell n=$(words $(FUZZ_NAMES)); [ $$n -gt 0 ] && echo $$((600 / n)) || echo 60)
+FUZZ_SEEDS ?= fuzz/corpus/%
+FUZZ_OPTS ?= -timeout=20 -rss_limit_mb=2048
+FUZZ_PROBE = printf '\#include <stdint.h>\n\#include <stddef.h>\nint LLVMFuzzerTestOneInput(const uint8_t *d, size_t n);\nint LLVMFuzzerTestOneInput(const uint8_t *d, size_t n) { (void)d; (void)n; return 0; }\n' | \
+  $(FUZZ_CC) $(FUZZ_FLAGS) -x c - -o $(BUILD)/.fuzz-probe >/dev/null 2>&1
+
+fuzz-clang:
+	@mkdir -p $(BUILD)
+	@if $(FUZZ_PROBE); then exit 0; fi; \
+	if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	  echo "fuzz: $(FUZZ_CC) with libFuzzer not usable, installing clang with apt-get"; \
+	  { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y clang; } || true; \
+	fi; \
+	if $(FUZZ_PROBE); then exit 0; fi; \
+	echo "make fuzz needs clang with libFuzzer and the ASan/UBSan runtimes (Debian: apt-get install clang," >&2; \
+	echo "which brings libclang_rt.fuzzer; or set FUZZ_CC to such a clang)" >&2; \
+	exit 1
+
+$(BUILD)/fuzz/fuzz_%: fuzz/fuzz_%.c $(HEADERS) $(wildcard fuzz/*.h) | fuzz-clang
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -I. $< -o $@ -lm
+
+fuzz-build: $(FUZZ_BINS)
+
+fuzz: fuzz-build
+	@set -u; total=0; crashes=0; viol=0; \
+	for h in $(FUZZ_NAMES); do \
+	  w=$(BUILD)/fuzz/work/$$h; a=$(BUILD)/fuzz/artifacts/$$h; log=$(BUILD)/fuzz/$$h.log; \
+	  seeds=$$(echo '$(FUZZ_SEEDS)' | sed "s/%/$$h/g"); \
+	  mkdir -p $$w $$a; [ -d "$$seeds" ] || seeds=""; \
+	  echo "== fuzz $$h ($(FUZZ_TIME) s, seeds: $${seeds:-none})"; \
+	  rc=0; ./$(BUILD)/fuzz/fuzz_$$h -max_total_time=$(FUZZ_TIME) -print_final_stats=1 $(FUZZ_OPTS) \
+	    -artifact_prefix=$$a/ $$w $$seeds > $$log 2>&1 || rc=$$?; \
+	  ex=$$(sed -n 's/^stat::number_of_executed_units: *//p' $$log | tail -1); ex=$${ex:-0}; \
+	  total=$$((total + ex)); \
+	  if [ $$rc -ne 0 ]; then \
+	    if grep -q '^FUZZ VIOLATION' $$log; then viol=$$((viol + 1)); what="contract violation"; \
+	    else crashes=$$((crashes + 1)); what="crash"; fi; \
+	    echo "   $$h: $$ex executions, STOPPED on a $$what (log $$log):"; \
+	    grep -m3 -E '^FUZZ VIOLATION|ERROR: |runtime error|Test unit written' $$log | sed 's/^/     /'; \
+	  else echo "   $$h: $$ex executions, no finding"; fi; \
+	done; \
+	echo "fuzz: $$total executions, $$crashes crashes, $$viol contract violations"; \
+	[ $$crashes -eq 0 ] && [ $$viol -eq 0 ]
 
 # -- lint ---------------------------------------------------------------------
 LINT_OPTS = --enable=warning,performance,portability --error-exitcode=1 --inline-suppr -q \

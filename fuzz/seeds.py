@@ -88,6 +88,76 @@ seed("ale", "good_sys_force", ale(9, 0, 3, 1.0, extra=B(1) + Ms(0.5, 0.7) + Ms(0
 seed("ale", "good_init_bad_order", B(0) + Ms(*MAT_STD) + B(0, 10, 1, 1))
 
 
+# -- rancf: flags, op, d, kd, w (4), l, x (4 d moderate), arguments ------
+def rancf(op, d, kd, w, l, x, extra=b"", flags=0):
+    return B(flags, op, d, kd) + Rs(*w) + R(l) + Ms(*x) + extra
+
+
+X8 = (0, 0, 1, 0, 1, 0.2, 1, 0)
+seed("rancf", "known_to_bezier_weight_ratio", rancf(0, 2, 0, (1e300, 1e-300, 1, 1), 1.0, X8))
+seed("rancf", "known_bezier_split_weight_ratio", rancf(3, 2, 0, (1e-300, 1, 1, 1e300), 0.5, X8))
+seed("rancf", "good_to_bezier_unit", rancf(0, 2, 0, (1, 1, 1, 1), 1.0, X8))
+seed("rancf", "good_from_bezier_bad_d", rancf(1, 4, 0, (1, 0.8, 0.8, 1), 1.0, X8))
+seed("rancf", "good_split_arc_weights", rancf(3, 2, 0, (1, 0.805, 0.805, 1), 0.3, X8))
+seed("rancf", "good_negative_weight", rancf(2, 2, 0, (1, -1, 1, 1), 0.3, X8))
+
+
+# -- cr2d: flags, material (EA, EI, rhoA, rhoI, ray_a, ray_b), X1, X2 - X1,
+# element flags, op, mode, kd, q displacements (3 per node), q', args ----
+def cr2d(dX, op, kd=3, extra=b"", flags=0):
+    return (B(flags) + Ms(100, 1, 1, 0.01, 0.1, 0.01) + Ms(0, 0) + Rs(*dX) + B(0, op, 0, kd) +
+            Ms(0.01, 0, 0.1, 0, 0.02, -0.1) + Ms(0.1, 0, 0, 0, 0.1, 0.2) + extra)
+
+
+seed("cr2d", "known_elem_init_tiny_chord", cr2d((1e-120, 0), 0))
+seed("cr2d", "known_beam_init_ne_int_max", cr2d((1, 0), 8, extra=B(2, 0)))
+seed("cr2d", "good_force", cr2d((1, 0.5), 0))
+seed("cr2d", "good_trans_force", cr2d((1, 0), 4, extra=Ms(0, 0.5, 0)))
+seed("cr2d", "good_beam_init_bad_dof", cr2d((1, 0), 8, extra=B(9, 3, 1, 1, 0, 9, 2)))
+
+
+# -- chain: flags, nn - 2, spare capacity, nodes (mode byte, dp, [p0], pd,
+# pdd), constraint count, q perturbations (n), v (n), op, var, t, args ----
+def chain(nn, op, var, args=b"", flags=0, spare=1, q=None, n=None):
+    nodes = b""
+    for i in range(nn):
+        nodes += B(0) + M(0.3) + (M(0) if i == 0 else b"") + M(0) + M(0)
+    n = n or 4 * nn
+    qb = Ms(*(q or (0,) * n))
+    return B(flags, nn - 2, spare) + nodes + B(0) + qb + Ms(*(0.1,) * n) + B(op, var) + M(0) + args
+
+
+seed("chain", "known_pnode_nn", chain(3, 0, 0, B(1)))
+seed("chain", "known_pnode_minus1", chain(3, 0, 0, B(0)))
+seed("chain", "known_gather_nn_minus_1", chain(3, 1, 0, B(1)))
+seed("chain", "known_insert_int_max", chain(3, 2, 0, B(4) + M(0)))
+seed("chain", "known_gather_v_null_ve", chain(3, 1, 1, B(9, 0)))
+seed("chain", "known_force_jac_d_null", chain(3, 8, 2))
+seed("chain", "known_energy_nan_q_writes_E", chain(3, 5, 0, flags=1, q=[float("nan")] + [0] * 11))
+seed("chain", "good_pnode_valid", chain(3, 0, 0, B(9, 1)))
+seed("chain", "good_insert_middle", chain(3, 2, 0, B(9, 0) + M(0)))
+seed("chain", "good_energy", chain(4, 5, 0))
+seed("chain", "good_length", chain(3, 6, 0))
+
+
+# -- step: flags, ne - 2, Le (moderate), integrator byte, HHT: rho_inf or
+# 4 raw parameters, newton_max, max_halvings + 1, t0, q perturbations,
+# rates, h.  BDF: max_order - 1, t0, q, v, t_stop ------------------------
+def step(integ, params, t0, Le=0.9, ne=2, flags=0, tail=b""):
+    return B(flags, ne - 2) + M(Le - 0.1) + B(integ) + params + B(10, 1) + M(t0) + tail
+
+
+seed("step", "known_hht_init_t0_nan", step(0, M(0.8), float("nan"), flags=1))
+seed("step", "known_hht_init_gamma_nan", step(2, Rs(-0.2, 0.1, 0.3, float("nan")), 0, flags=1))
+# element length = the largest real (an fz_real extreme): the consistent
+# acceleration's matrix is singular
+seed("step", "known_hht_init_writes_state_on_failure",
+     B(0, 1) + bytes.fromhex("2ff600008a0a") + B(0) + M(0.8) + B(10, 1) + M(0))
+seed("step", "good_hht_step", step(0, M(0.8), 0))
+seed("step", "good_hht_step_3el", step(0, M(0.5), 1.0, ne=3))
+seed("step", "good_bdf_step", B(0, 0) + M(0.8) + B(1, 1) + M(0))
+
+
 def main():
     for h, lst in SEEDS.items():
         d = os.path.join(ROOT, h)
