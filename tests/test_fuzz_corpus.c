@@ -18,7 +18,7 @@
 
    Tests (one per harness): lu, ale, ale3, rancf, cr2d, chain, step.
    Seeds named known_* and found_* reproduce contract violations of the base
-   code 77b73ad (fuzz/seeds.py, fuzz/README): they fail here until the
+   code 77b73ad (fuzz/seeds.py): they fail here until the
    library is fixed, and are regression tests after that; good_* pass. */
 #define _POSIX_C_SOURCE 200809L
 #include "test_util.h"
