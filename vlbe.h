@@ -30,6 +30,19 @@ CONVENTIONS
    are caught by VLBE_ASSERT.  Nothing here allocates, prints or aborts.
    Stack: every function here uses less than 256 bytes of stack.
 
+   FAILURE CONTRACT (every vlbe module keeps it).  (1) A routine returning
+   vlbe_status never returns VLBE_OK with a NaN or Inf in an output when its
+   inputs are finite: it returns VLBE_ENONFINITE, or a more specific code
+   when an input is outside its range (VLBE_ELENGTH, VLBE_EWEIGHT, ...).
+   (2) Every index and size argument is range-checked before use (without
+   overflow in the check) and VLBE_EARG returned when out of range.  (3) A
+   call that fails leaves every caller-visible output bitwise as it was:
+   arrays, *out scalars, structs passed by pointer, counters; the only
+   exceptions are documented at the function (buffers documented as
+   scratch, e.g. the LU of vlbe_lu_factor after a failed elimination).
+   (4) A NULL where the documentation requires a pointer is a programmer
+   error (VLBE_ASSERT); every pointer documented as optional may be NULL.
+
    ALE basis.  A material point p on an element whose nodes sit at material
    coordinates p1 < p2 (L = p2 - p1, s = (2p - p1 - p2)/L in [-1, 1],
    xi = (p - p1)/L = (s + 1)/2 in [0, 1]).  The cubic Hermite functions
