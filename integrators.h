@@ -1608,6 +1608,10 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     for (i = 0; i < m; ++i) st->mu[i] = VLBE_R(0.0);
     vlbe_vec_copy(N2, st->q, vlbe__bdf_phi(st, 1));
     phi1 = vlbe__bdf_vec(st, 0);
+    /* coefficients: set by the first step; zero until then (a defined,
+       comparable state) */
+    for (i = 0; i < VLBE_BDF_MAXORD + 2; ++i)
+        st->psi_[i] = st->alpha_[i] = st->beta_[i] = st->gamma_[i] = st->sigma_[i] = VLBE_R(0.0);
     /* phi_2 = psi_1 y'(t0): psi_1 = 1 until the first step sets h */
     st->psi_[1] = VLBE_R(1.0);
     /* first step: h0, else from the local error of backward Euler on q,
