@@ -119,7 +119,6 @@ typedef float vlbe_real;
 #define VLBE_EPS FLT_EPSILON
 #define VLBE_REAL_MAX FLT_MAX
 #define VLBE_REAL_MIN FLT_MIN
-#define VLBE_REAL_MAX_EXP FLT_MAX_EXP
 #ifndef vlbe_sqrt
 #define vlbe_sqrt sqrtf
 #define vlbe_fabs fabsf
@@ -137,7 +136,6 @@ typedef double vlbe_real;
 #define VLBE_EPS DBL_EPSILON
 #define VLBE_REAL_MAX DBL_MAX
 #define VLBE_REAL_MIN DBL_MIN
-#define VLBE_REAL_MAX_EXP DBL_MAX_EXP
 #ifndef vlbe_sqrt
 #define vlbe_sqrt sqrt
 #define vlbe_fabs fabs
@@ -556,8 +554,8 @@ VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int km
 VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, int *piv, int *info)
 {
     size_t nn, N, e;
-    vlbe_real amax = VLBE_R(0.0), tol;
-    int i, j, k, ex, scan;
+    vlbe_real amax = VLBE_R(0.0), tol, lim;
+    int i, j, k, scan;
     VLBE_ASSERT(n >= 1 && A != NULL && LU != NULL && piv != NULL);
     N = (size_t)n;
     nn = N * N;
@@ -570,9 +568,12 @@ VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, in
         for (e = 0; e < nn; ++e) LU[e] = A[e];
     tol = (vlbe_real)n * VLBE_EPS * amax;
     if (!(tol >= VLBE_REAL_MIN)) tol = VLBE_REAL_MIN; /* underflow: 1/pivot must stay finite */
-    /* amax < 2^ex; growth <= 2^(n-1) (1 + eps)^(4(n-1)) < 2^n */
-    (void)frexp((double)amax, &ex);
-    scan = n >= VLBE_REAL_MAX_EXP || ex > VLBE_REAL_MAX_EXP - 1 - n;
+    /* growth <= 2^(n-1) (1 + eps)^(4(n-1)) < 2^n: scan when amax 2^n may
+       pass VLBE_REAL_MAX (halvings are exact, no libm call, no double in a
+       float build) */
+    lim = VLBE_REAL_MAX;
+    for (k = 0; k < n && lim > amax; ++k) lim *= VLBE_R(0.5);
+    scan = !(lim > amax);
     for (k = 0; k < n; ++k) {
         vlbe_real *rk = LU + (size_t)k * N, pmax = vlbe_fabs(rk[k]), inv;
         int p = k;
