@@ -14,7 +14,10 @@ USAGE
      ... allocate lw vlbe_real and liw int ...
      vlbe_hht st;
      if (vlbe_hht_init(&st, &sys, &par, t0, q0, v0, work, lw, iwork, liw)) fail;
-     while (st.t < t_end) if (vlbe_hht_step(&st, h)) break;   (state in st.q, st.v)
+     while (st.t < t_end - h / 2) if (vlbe_hht_step(&st, h)) break;   (state in st.q, st.v)
+       (st.t after k steps is t0 + k h rounded once or twice, never a sum of k
+       roundings; the margin h/2 keeps that rounding from adding a step, and
+       the loop takes round((t_end - t0)/h) steps)
 
      BDF with error control (same problem, its own workspace sizes):
      vlbe_bdf_params bp;  vlbe_bdf_params_default(&bp);  bp.rtol = bp.atol = 1e-8;
@@ -51,7 +54,22 @@ CONVENTIONS
    The integrators know nothing of elements: they see only the callbacks.
    Failure of a step (Newton divergence, singular iteration matrix,
    non-finite values, step below minimum) is returned as a vlbe_status and
-   leaves the state at the last accepted step.  No allocation: the caller
+   leaves the state at the last accepted step.
+   Failure contract: vlbe.h's; its exceptions here are (a) stats, which
+   count the work of failed calls too (rejected, newton_fails, callback_rc
+   exist for that); (b) the private iteration-matrix caches of the
+   integrator states (a failed step may drop them: the next step forms a
+   new matrix); (c) work and iwork of vlbe_hht_init and vlbe_bdf_init when
+   the consistent-start solve fails (its scratch; *st and the arguments
+   are untouched, and argument errors touch nothing), and of
+   vlbe_dae_consistent_acc and vlbe_dae_static (pure scratch); (d)
+   vlbe_bdf_advance, a loop of vlbe_bdf_step calls, each all or nothing:
+   on failure the state is the last accepted step.  A failed vlbe_hht_step
+   or vlbe_bdf_step leaves t, q, v, q'', a, lambda, mu, h, order and the
+   method's history bit for bit as before the call.  Parameters are
+   validated: every real finite, iteration counts in 1..VLBE_INT_MAX_ITER,
+   max_halvings of HHT in 0..VLBE_HHT_MAX_HALVINGS (VLBE_EARG otherwise).
+   No allocation: the caller
    gives a real and an int workspace whose sizes the *_work_len() and
    *_iwork_len() queries return.  Stack: a few hundred bytes per call; all
    arrays live in the caller's workspace.
@@ -110,6 +128,11 @@ REFERENCES
 #define VLBE_DAE_MASS_V 2u     /* M depends on v too (FD of M a in v)          */
 #define VLBE_DAE_NO_CHESS 4u   /* drop d(C_q^T lambda)/dq from the iteration matrix */
 
+/* Upper bounds of the iteration parameters (VLBE_EARG above them) */
+#define VLBE_HHT_MAX_HALVINGS 30 /* vlbe_hht_params.max_halvings: steps down to h / 2^30,
+                                    recursion depth 30                          */
+#define VLBE_INT_MAX_ITER 1000   /* newton_max of HHT and BDF, max_iter of vlbe_dae_static */
+
 /* -- types -------------------------------------------------------------- */
 /* The problem: callbacks with a user context.  mass, force are required;
    constr and constr_jac when m > 0.  The rest is optional (NULL). */
@@ -162,9 +185,11 @@ typedef struct vlbe_hht_params {
     vlbe_real alpha_m, alpha_f, beta, gamma;
     vlbe_real rtol, atol;   /* Newton: estimated error of the position and velocity
                                increments <= atol + rtol |x| (default 1e-9, 1e-11) */
-    int newton_max;         /* iterations per attempt (default 10)                     */
-    int modified;           /* 1: keep the LU while the iteration contracts (default 1) */
-    int max_halvings;       /* step halvings on Newton failure (default 0 = off)        */
+    int newton_max;         /* iterations per attempt, 1..VLBE_INT_MAX_ITER (default 10) */
+    int modified;           /* 1: keep the LU while the iteration contracts, 0: full
+                               Newton (default 1)                                       */
+    int max_halvings;       /* step halvings on Newton failure, 0..VLBE_HHT_MAX_HALVINGS
+                               (default 0 = off)                                        */
     vlbe_real ftol;         /* residual test (default 0 = off): when > 0 an iterate is
                                converged only if, besides the increment test, the
                                weighted Euclidean norm of the residual
@@ -192,7 +217,7 @@ typedef struct vlbe_static_params {
     vlbe_real ftol;    /* residual test, absolute, in the units of Q and C
                           (C enters unscaled); 0 = off (default 0)                */
     vlbe_real rtol, atol; /* increment test (default 1e-10, 1e-12); both 0 = off */
-    int max_iter;      /* Newton iterations, >= 1 (default 50)                     */
+    int max_iter;      /* Newton iterations, 1..VLBE_INT_MAX_ITER (default 50)     */
     int max_halvings;  /* line search: halvings of a Newton step, 0..50 (default 5);
                           0 = plain Newton, the full step is always taken         */
 } vlbe_static_params;
@@ -211,6 +236,9 @@ typedef struct vlbe_hht {
     int *piv_;
     vlbe_real h_lu_;   /* step size of the stored LU (0 = none) */
     int have_lu_;
+    /* time without drift: t = t_base_ + k_run_ h_run_ over a run of equal steps */
+    vlbe_real t_base_, h_run_;
+    long k_run_;
 } vlbe_hht;
 
 /* BDF (orders 1..5, variable step and order, DASSL-style) on the stabilized
@@ -236,7 +264,8 @@ typedef struct vlbe_bdf_params {
                              error test has cut h below the band (BDF5: w h <
                              0.71), whatever the tolerance: the examples/ex_spin.h
                              ANCF beam (w up to 3.7e4 rad/s) then steps at 2e-5 s */
-    int newton_max;       /* Newton iterations per attempt (default 4, as DASSL)   */
+    int newton_max;       /* Newton iterations per attempt, 1..VLBE_INT_MAX_ITER
+                             (default 4, as DASSL)                                 */
     int fixed_step;       /* 1: every step is h0 (h_min, h_max, rtol/atol for the
                              error test unused), order 1, 2, ... up to max_order;
                              for stability studies (default 0)                     */
@@ -272,6 +301,8 @@ typedef struct vlbe_bdf {
     vlbe_real cj_lu_;   /* cj of the stored iteration matrix               */
     vlbe_real rate_;    /* last Newton rate estimate s (diagnostic only)   */
     int kold_, ns_, phase_, jcalc_; /* jcalc_: -1 matrix needed, 0 fresh, 1 old */
+    vlbe_real t_base_;  /* fixed_step: t = t_base_ + k_run_ h0 (no drift)     */
+    long k_run_;
 } vlbe_bdf;
 
 /* -- API prototypes ----------------------------------------------------- */
@@ -843,7 +874,8 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     if (!(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
         !(par->ftol >= VLBE_R(0.0)) || !isfinite(par->rtol) || !isfinite(par->atol) ||
         !isfinite(par->ftol) || !(par->rtol + par->atol + par->ftol > VLBE_R(0.0)) ||
-        par->max_iter < 1 || par->max_halvings < 0 || par->max_halvings > 50)
+        par->max_iter < 1 || par->max_iter > VLBE_INT_MAX_ITER || par->max_halvings < 0 ||
+        par->max_halvings > 50)
         return VLBE_EARG;
     if (!work || !iwork || work_len < vlbe_static_work_len(n, m) ||
         iwork_len < vlbe_static_iwork_len(n, m))
@@ -1057,6 +1089,30 @@ VLBE_INLINE vlbe_real *vlbe__hht_lu(const vlbe_hht *st)
     return st->w_ + 2 * (4 * st->n + st->m);
 }
 
+/* Parameters of the family: every real finite, alpha_m < 1, alpha_f < 1,
+   beta > 0, gamma >= 0; rtol, atol >= 0 with rtol + atol > 0; ftol >= 0;
+   newton_max 1..VLBE_INT_MAX_ITER, modified 0 or 1, max_halvings
+   0..VLBE_HHT_MAX_HALVINGS. */
+VLBE_INLINE int vlbe__hht_params_ok(const vlbe_hht_params *p)
+{
+    return isfinite(p->alpha_m) && isfinite(p->alpha_f) && isfinite(p->beta) &&
+           isfinite(p->gamma) && isfinite(p->rtol) && isfinite(p->atol) && isfinite(p->ftol) &&
+           p->alpha_m < VLBE_R(1.0) && p->alpha_f < VLBE_R(1.0) && p->beta > VLBE_R(0.0) &&
+           p->gamma >= VLBE_R(0.0) && p->rtol >= VLBE_R(0.0) && p->atol >= VLBE_R(0.0) &&
+           p->rtol + p->atol > VLBE_R(0.0) && p->ftol >= VLBE_R(0.0) && p->newton_max >= 1 &&
+           p->newton_max <= VLBE_INT_MAX_ITER && (p->modified == 0 || p->modified == 1) &&
+           p->max_halvings >= 0 && p->max_halvings <= VLBE_HHT_MAX_HALVINGS;
+}
+
+/* Consistent start at t0: q''_0 and lambda_0 from vlbe_dae_consistent_acc,
+   a_0 = q''_0.  Returns VLBE_EARG (problem, parameters: see
+   vlbe__hht_params_ok), VLBE_EWORK, VLBE_ENONFINITE (t0, q0, v0, or the
+   start solve), or the status of the start solve (VLBE_ESINGULAR,
+   VLBE_ECALLBACK).  On failure *st is unchanged, and so are work and iwork
+   when the argument checks fail; when the start solve fails, work and iwork
+   hold its scratch (unspecified: the solve needs (n+m)^2 reals that only
+   work can give), so do not re-initialize into the workspace of a state
+   that must survive a failed call. */
 VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe_hht_params *par,
                                    vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
                                    vlbe_real *work, size_t work_len, int *iwork,
@@ -1064,7 +1120,8 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
 {
     int n, m;
     vlbe_status rc;
-    vlbe_real *scratch;
+    vlbe_real *scratch, *tqdd, *tl;
+    vlbe_hht s;
     VLBE_ASSERT(st != NULL && par != NULL && q0 != NULL && v0 != NULL);
     if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
     n = sys->n;
@@ -1072,35 +1129,42 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
     if (!work || !iwork || work_len < vlbe_hht_work_len(n, m) ||
         iwork_len < vlbe_hht_iwork_len(n, m))
         return VLBE_EWORK;
-    if (!(par->alpha_m < VLBE_R(1.0)) || !(par->alpha_f < VLBE_R(1.0)) || !(par->beta > VLBE_R(0.0)) ||
-        !(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
-        !(par->rtol + par->atol > VLBE_R(0.0)) || par->newton_max < 1 || par->max_halvings < 0 ||
-        !(par->ftol >= VLBE_R(0.0)) || !isfinite(par->ftol))
-        return VLBE_EARG;
-    if (!vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n)) return VLBE_ENONFINITE;
-    st->sys = sys;
-    st->par = *par;
-    st->n = n;
-    st->m = m;
-    st->t = t0;
-    st->q = work;
-    st->v = st->q + n;
-    st->qdd = st->v + n;
-    st->a = st->qdd + n;
-    st->lambda = st->a + n;
-    st->w_ = st->lambda + m;
-    st->piv_ = iwork;
-    st->have_lu_ = 0;
-    st->h_lu_ = VLBE_R(0.0);
-    vlbe__int_stats_zero(&st->stats);
-    vlbe_vec_copy(n, q0, st->q);
-    vlbe_vec_copy(n, v0, st->v);
-    /* consistent q'' and lambda: the scratch after the LU area is large enough */
-    scratch = vlbe__hht_lu(st);
-    rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, st->qdd, st->lambda, &st->stats, scratch,
+    if (!vlbe__hht_params_ok(par)) return VLBE_EARG;
+    if (!isfinite(t0) || !vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n))
+        return VLBE_ENONFINITE;
+    s.sys = sys;
+    s.par = *par;
+    s.n = n;
+    s.m = m;
+    s.t = t0;
+    s.q = work;
+    s.v = s.q + n;
+    s.qdd = s.v + n;
+    s.a = s.qdd + n;
+    s.lambda = s.a + n;
+    s.w_ = s.lambda + m;
+    s.piv_ = iwork;
+    s.have_lu_ = 0;
+    s.h_lu_ = VLBE_R(0.0);
+    s.t_base_ = t0;
+    s.h_run_ = VLBE_R(0.0);
+    s.k_run_ = 0;
+    vlbe__int_stats_zero(&s.stats);
+    /* consistent q'' and lambda into the trial area (the state area stays
+       as it was until the solve succeeded); the scratch after the LU area
+       is large enough */
+    tqdd = vlbe__hht_trial(&s) + 2 * n;
+    tl = vlbe__hht_trial(&s) + 4 * n;
+    scratch = vlbe__hht_lu(&s);
+    rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, tqdd, tl, &s.stats, scratch,
                                  (size_t)(work + work_len - scratch), iwork, iwork_len);
     if (rc != VLBE_OK) return rc;
-    vlbe_vec_copy(n, st->qdd, st->a); /* a_0 = q''_0 (Arnold-Bruls) */
+    if (q0 != s.q) vlbe_vec_copy(n, q0, s.q); /* a restart may pass the old state */
+    if (v0 != s.v) vlbe_vec_copy(n, v0, s.v);
+    vlbe_vec_copy(n, tqdd, s.qdd);
+    vlbe_vec_copy(n, tqdd, s.a); /* a_0 = q''_0 (Arnold-Bruls) */
+    if (m > 0) vlbe_vec_copy(m, tl, s.lambda);
+    *st = s;
     return VLBE_OK;
 }
 
@@ -1125,9 +1189,10 @@ VLBE_INLINE vlbe_real vlbe__int_wrms(int n, const vlbe_real *x, const vlbe_real 
     return vlbe_sqrt(s / (vlbe_real)(n > 0 ? n : 1));
 }
 
-/* One attempt of one step of size h from the accepted state into the trial
+/* One attempt of one step of size h from the accepted state at st->t to
+   t1 (~ st->t + h, given by the caller without drift) into the trial
    arrays; the accepted state is not touched. */
-VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
+VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t1)
 {
     const vlbe_dae *s = st->sys;
     const vlbe_hht_params *p = &st->par;
@@ -1140,7 +1205,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h)
     vlbe_real am = p->alpha_m, af = p->alpha_f;
     vlbe_real bp = h * h * p->beta * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am); /* dq/dq''  */
     vlbe_real gp = h * p->gamma * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);    /* dv/dq''  */
-    vlbe_real t1 = st->t + h, prev = VLBE_R(0.0), theta = VLBE_R(0.0);
+    vlbe_real prev = VLBE_R(0.0), theta = VLBE_R(0.0);
     int pending = 0; /* ftol > 0: the increment test passed, the residual is due */
     vlbe_status rc;
 
@@ -1296,14 +1361,15 @@ VLBE_INLINE void vlbe__hht_copy_state(int n, int m, const vlbe_real *src, vlbe_r
     vlbe_vec_copy(4 * n + m, src, dst);
 }
 
-/* Step of size h with up to `depth` levels of halving. */
-VLBE_INLINE vlbe_status vlbe__hht_step_rec(vlbe_hht *st, vlbe_real h, int depth)
+/* Step of size h from st->t to t1 with up to `depth` levels of halving
+   (the halves end at st->t + h/2 and at t1). */
+VLBE_INLINE vlbe_status vlbe__hht_step_rec(vlbe_hht *st, vlbe_real h, vlbe_real t1, int depth)
 {
     int n = st->n, m = st->m;
-    vlbe_status rc = vlbe__hht_attempt(st, h);
+    vlbe_status rc = vlbe__hht_attempt(st, h, t1);
     if (rc == VLBE_OK) {
         vlbe__hht_copy_state(n, m, vlbe__hht_trial(st), st->q); /* q v qdd a lambda are contiguous */
-        st->t += h;
+        st->t = t1;
         ++st->stats.steps;
         return VLBE_OK;
     }
@@ -1317,8 +1383,8 @@ VLBE_INLINE vlbe_status vlbe__hht_step_rec(vlbe_hht *st, vlbe_real h, int depth)
         /* the backup area is shared by all levels: only the outermost level
            restores, inner levels return their status upwards */
         if (depth == st->par.max_halvings) vlbe__hht_copy_state(n, m, st->q, bk);
-        rc = vlbe__hht_step_rec(st, VLBE_R(0.5) * h, depth - 1);
-        if (rc == VLBE_OK) rc = vlbe__hht_step_rec(st, VLBE_R(0.5) * h, depth - 1);
+        rc = vlbe__hht_step_rec(st, VLBE_R(0.5) * h, t0 + VLBE_R(0.5) * h, depth - 1);
+        if (rc == VLBE_OK) rc = vlbe__hht_step_rec(st, VLBE_R(0.5) * h, t1, depth - 1);
         if (rc != VLBE_OK && depth == st->par.max_halvings) {
             vlbe__hht_copy_state(n, m, bk, st->q);
             st->t = t0;
@@ -1330,13 +1396,38 @@ VLBE_INLINE vlbe_status vlbe__hht_step_rec(vlbe_hht *st, vlbe_real h, int depth)
 /* Advances the state by one step of size h > 0 (with halving on Newton
    failure when par.max_halvings > 0).  On failure the state is the one before
    the call and the status says why; a step below h / 2^max_halvings that still
-   fails returns its Newton status (VLBE_ENOCONV, VLBE_ESINGULAR, ...). */
+   fails returns its Newton status (VLBE_ENOCONV, VLBE_ESINGULAR, ...).
+   h <= 0, NaN or Inf: VLBE_EARG; st->t + h == st->t: VLBE_ESTEP.
+   Time: a run of steps of the same h from t_b ends step k at
+   t = t_b + k h (one product, no sum of k roundings: |t - (t_b + k h)| is
+   a rounding or two of t, whatever k), so a rheonomic constraint is met at
+   the time it should be.  A new h (or a t changed by the caller) starts a
+   new run from the current t; the halvings inside a step do not. */
 VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
 {
+    vlbe_real tb, hr, t1;
+    long k;
+    vlbe_status rc;
     VLBE_ASSERT(st != NULL && st->sys != NULL);
     if (!(h > VLBE_R(0.0)) || !isfinite(h)) return VLBE_EARG;
     if (st->t + h == st->t) return VLBE_ESTEP;
-    return vlbe__hht_step_rec(st, h, st->par.max_halvings);
+    tb = st->t_base_;
+    hr = st->h_run_;
+    k = st->k_run_;
+    /* a new run: other h, t moved by the caller, or k about to lose
+       exactness in vlbe_real (float: 2^23 steps) */
+    if (h != hr || st->t != tb + (vlbe_real)k * hr || (vlbe_real)(k + 1) * VLBE_EPS >= VLBE_R(1.0)) {
+        tb = st->t;
+        hr = h;
+        k = 0;
+    }
+    t1 = tb + (vlbe_real)(k + 1) * hr;
+    rc = vlbe__hht_step_rec(st, h, t1, st->par.max_halvings);
+    if (rc != VLBE_OK) return rc;
+    st->t_base_ = tb;
+    st->h_run_ = hr;
+    st->k_run_ = k + 1;
+    return VLBE_OK;
 }
 
 /* ===== BDF orders 1..5, variable step and order (GGL index-2 form) ======= */
@@ -1385,8 +1476,16 @@ VLBE_INLINE size_t vlbe__bdf_scr_len(int n, int m)
     return a > b ? a : b;
 }
 
+/* Size of the backup area of the BDF workspace (see below). */
+VLBE_INLINE size_t vlbe__bdf_backup_len(int n, int m)
+{
+    return (2 * (size_t)n + 2 * (size_t)m) * VLBE_BDF_MAXORD + 5 * (VLBE_BDF_MAXORD + 2);
+}
+
 /* Workspace layout (reals), N2 = 2n + 2m: y (N2); phi (MAXORD+1 columns of
-   N2); trial y, trial y', e = y - y_pred, delta (4 N2); then the tail:
+   N2); trial y, trial y', e = y - y_pred, delta (4 N2); backup of phi_2 ..
+   phi_{MAXORD+1} and of psi, alpha, beta, gamma, sigma, for a failed
+   vlbe_bdf_step (MAXORD N2 + 5 (MAXORD+2)); then the tail:
    iteration matrix (N2*N2), M (n*n), Q (n), Cq (m*n), Ct (m), row scales
    of the iteration matrix (N2), scratch. */
 VLBE_API size_t vlbe_bdf_work_len(int n, int m)
@@ -1395,7 +1494,8 @@ VLBE_API size_t vlbe_bdf_work_len(int n, int m)
     size_t tail = N2 * N2 + (size_t)n * (size_t)n + (size_t)n + (size_t)m * (size_t)n +
                   (size_t)m + N2 + vlbe__bdf_scr_len(n, m);
     size_t dae = vlbe_dae_work_len(n, m);
-    return N2 * (size_t)(VLBE_BDF_MAXORD + 1 + 5) + (tail > dae ? tail : dae);
+    return N2 * (size_t)(VLBE_BDF_MAXORD + 1 + 5) + vlbe__bdf_backup_len(n, m) +
+           (tail > dae ? tail : dae);
 }
 VLBE_API size_t vlbe_bdf_iwork_len(int n, int m) { return 2 * (size_t)n + 2 * (size_t)m; }
 
@@ -1409,7 +1509,11 @@ VLBE_INLINE vlbe_real *vlbe__bdf_vec(const vlbe_bdf *st, int i)
 {
     return st->w_ + (size_t)i * (size_t)vlbe__bdf_n2(st);
 }
-VLBE_INLINE vlbe_real *vlbe__bdf_tail(const vlbe_bdf *st) { return vlbe__bdf_vec(st, 4); }
+VLBE_INLINE vlbe_real *vlbe__bdf_backup(const vlbe_bdf *st) { return vlbe__bdf_vec(st, 4); }
+VLBE_INLINE vlbe_real *vlbe__bdf_tail(const vlbe_bdf *st)
+{
+    return vlbe__bdf_backup(st) + vlbe__bdf_backup_len(st->n, st->m);
+}
 
 /* Weighted RMS norm of the q and v parts of x (error test); weights from
    the last accepted step. */
@@ -1432,6 +1536,14 @@ VLBE_INLINE vlbe_real vlbe__bdf_newton_norm(const vlbe_bdf *st, const vlbe_real 
     return vlbe_sqrt(((vlbe_real)n2 * a * a + (vlbe_real)m2 * b * b) / (vlbe_real)(n2 + m2));
 }
 
+/* Consistent start at t0 (see vlbe_bdf).  Returns VLBE_EARG (problem,
+   parameters: every real finite and >= 0, rtol + atol > 0, max_order
+   1..VLBE_BDF_MAXORD, newton_max 1..VLBE_INT_MAX_ITER, fixed_step and
+   stiff_filter 0 or 1, h0 > 0 with fixed_step, h_min <= h_max when h_max >
+   0), VLBE_EWORK, VLBE_ENONFINITE (t0, q0, v0, or the start solve), or the
+   status of the start solve.  On failure *st is unchanged, and so are work
+   and iwork when the argument checks fail; when the start solve fails they
+   hold its scratch (unspecified), as for vlbe_hht_init. */
 VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe_bdf_params *par,
                                    vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
                                    vlbe_real *work, size_t work_len, int *iwork,
@@ -1439,7 +1551,8 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
 {
     int n, m, N2, i;
     vlbe_status rc;
-    vlbe_real *tail, *phi2, *phi1, ypn;
+    vlbe_real *tail, *phi2, *phi1, *tq, ypn;
+    vlbe_bdf s, *st_out = st;
     VLBE_ASSERT(st != NULL && par != NULL && q0 != NULL && v0 != NULL);
     if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
     n = sys->n;
@@ -1450,8 +1563,10 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     if (!(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
         !(par->rtol + par->atol > VLBE_R(0.0)) || !(par->h0 >= VLBE_R(0.0)) ||
         !(par->h_min >= VLBE_R(0.0)) || !(par->h_max >= VLBE_R(0.0)) ||
-        !isfinite(par->h0) || !isfinite(par->h_max) || par->max_order < 1 ||
+        !isfinite(par->rtol) || !isfinite(par->atol) || !isfinite(par->h0) ||
+        !isfinite(par->h_min) || !isfinite(par->h_max) || par->max_order < 1 ||
         par->max_order > VLBE_BDF_MAXORD || par->newton_max < 1 ||
+        par->newton_max > VLBE_INT_MAX_ITER || par->fixed_step < 0 || par->fixed_step > 1 ||
         par->stiff_filter < 0 || par->stiff_filter > 1 ||
         (par->fixed_step && !(par->h0 > VLBE_R(0.0))) ||
         (par->h_max > VLBE_R(0.0) && par->h_min > par->h_max))
@@ -1459,6 +1574,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     if (!isfinite(t0) || !vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n))
         return VLBE_ENONFINITE;
     N2 = 2 * n + 2 * m;
+    st = &s; /* built here, copied to *st_out on success */
     st->sys = sys;
     st->par = *par;
     st->n = n;
@@ -1471,21 +1587,31 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     st->phi_ = work + N2;
     st->w_ = st->phi_ + (size_t)N2 * (VLBE_BDF_MAXORD + 1);
     st->piv_ = iwork;
+    st->t_base_ = t0;
+    st->k_run_ = 0;
     vlbe__int_stats_zero(&st->stats);
-    vlbe_vec_copy(n, q0, st->q);
-    vlbe_vec_copy(n, v0, st->v);
     /* y'(t0) = (v0, q''0, 0, 0) into phi_2, with q''0 and lambda0 from the
-       consistent-acceleration system; mu0 = 0 */
+       consistent-acceleration system (solved into the trial area: the state
+       area stays as it was until the solve succeeded); mu0 = 0 */
     phi2 = vlbe__bdf_phi(st, 2);
     tail = vlbe__bdf_tail(st);
-    rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, phi2 + n, st->lambda, &st->stats, tail,
+    tq = vlbe__bdf_vec(st, 0);
+    rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, tq, tq + n, &st->stats, tail,
                                  (size_t)(work + work_len - tail), iwork, iwork_len);
     if (rc != VLBE_OK) return rc;
+    if (q0 != st->q) vlbe_vec_copy(n, q0, st->q); /* a restart may pass the old state */
+    if (v0 != st->v) vlbe_vec_copy(n, v0, st->v);
+    vlbe_vec_copy(n, tq, phi2 + n);
+    if (m > 0) vlbe_vec_copy(m, tq + n, st->lambda);
     vlbe_vec_copy(n, v0, phi2);
     for (i = 0; i < 2 * m; ++i) phi2[2 * n + i] = VLBE_R(0.0);
     for (i = 0; i < m; ++i) st->mu[i] = VLBE_R(0.0);
     vlbe_vec_copy(N2, st->q, vlbe__bdf_phi(st, 1));
     phi1 = vlbe__bdf_vec(st, 0);
+    /* coefficients: set by the first step; zero until then (a defined,
+       comparable state) */
+    for (i = 0; i < VLBE_BDF_MAXORD + 2; ++i)
+        st->psi_[i] = st->alpha_[i] = st->beta_[i] = st->gamma_[i] = st->sigma_[i] = VLBE_R(0.0);
     /* phi_2 = psi_1 y'(t0): psi_1 = 1 until the first step sets h */
     st->psi_[1] = VLBE_R(1.0);
     /* first step: h0, else from the local error of backward Euler on q,
@@ -1515,6 +1641,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     st->ns_ = 0;
     st->phase_ = 0;
     st->jcalc_ = -1;
+    *st_out = s;
     return VLBE_OK;
 }
 
@@ -1785,12 +1912,50 @@ converged:
     return VLBE_OK;
 }
 
-/* One accepted step (several attempts if needed) with t + h <= t_stop. */
+/* Saves the parts of the state that the attempts of a step change before
+   it is accepted (phi_2 .. phi_{k+1} scaled by the coefficients, the
+   coefficients themselves) to the backup area; vlbe__bdf_unsave puts them
+   back bit for bit after a failed step. */
+VLBE_INLINE void vlbe__bdf_save(const vlbe_bdf *st, int k)
+{
+    int N2 = vlbe__bdf_n2(st), L = VLBE_BDF_MAXORD + 2;
+    vlbe_real *b = vlbe__bdf_backup(st), *c = b + (size_t)N2 * VLBE_BDF_MAXORD;
+    vlbe_vec_copy(N2 * k, vlbe__bdf_phi(st, 2), b);
+    vlbe_vec_copy(L, st->psi_, c);
+    vlbe_vec_copy(L, st->alpha_, c + L);
+    vlbe_vec_copy(L, st->beta_, c + 2 * L);
+    vlbe_vec_copy(L, st->gamma_, c + 3 * L);
+    vlbe_vec_copy(L, st->sigma_, c + 4 * L);
+}
+VLBE_INLINE void vlbe__bdf_unsave(vlbe_bdf *st, int k)
+{
+    int N2 = vlbe__bdf_n2(st), L = VLBE_BDF_MAXORD + 2;
+    const vlbe_real *b = vlbe__bdf_backup(st), *c = b + (size_t)N2 * VLBE_BDF_MAXORD;
+    vlbe_vec_copy(N2 * k, b, vlbe__bdf_phi(st, 2));
+    vlbe_vec_copy(L, c, st->psi_);
+    vlbe_vec_copy(L, c + L, st->alpha_);
+    vlbe_vec_copy(L, c + 2 * L, st->beta_);
+    vlbe_vec_copy(L, c + 3 * L, st->gamma_);
+    vlbe_vec_copy(L, c + 4 * L, st->sigma_);
+}
+
+/* One accepted step (several attempts if needed) with t + h <= t_stop.
+   t_stop <= t or not finite: VLBE_EARG.  On failure the state is as it was
+   before the call (t, h, order, q, v, lambda, mu and the history of
+   the method, bit for bit), except stats, which count the failed work, and
+   the stored iteration matrix, which is dropped if a failed attempt formed
+   a new one.  With fixed_step, a run of
+   steps h0 from t_b ends step k at t_b + k h0 (a product, no drift), and a
+   step that would end within 4 eps |t| of t_stop ends on it (the same
+   method coefficients, no sliver step left). */
 VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
 {
     const vlbe_bdf_params *p;
-    int N2, k, kmax, ns, knew, nef = 0, ncf = 0, nsf = 0, to_stop, shortened;
+    int N2, k, kmax, ns, knew, nef = 0, ncf = 0, nsf = 0, to_stop, shortened, k0, phase0, jcalc0;
+    long nlu0;
     vlbe_real h, hnat, hmin, t1, est, terk, terkm1 = VLBE_R(0.0), erkm1 = VLBE_R(0.0), dist;
+    vlbe_real cj0, rate0, tb;
+    long krun;
     vlbe_real *e, *d, *yp;
     vlbe_status rc;
     VLBE_ASSERT(st != NULL && st->sys != NULL);
@@ -1814,9 +1979,30 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
     hmin = VLBE_R(4.0) * VLBE_EPS *
            (vlbe_fabs(st->t) > vlbe_fabs(t_stop) ? vlbe_fabs(st->t) : vlbe_fabs(t_stop));
     if (p->h_min > hmin) hmin = p->h_min;
-    /* land on t_stop exactly; avoid leaving a sliver (< 10% of h) behind */
+    /* fixed steps: the run of steps h0 (restarted when t was moved: a
+       shortened step, the caller, k no longer exact in vlbe_real) */
+    tb = st->t_base_;
+    krun = st->k_run_;
+    if (p->fixed_step &&
+        (st->t != tb + (vlbe_real)krun * h || (vlbe_real)(krun + 1) * VLBE_EPS >= VLBE_R(1.0))) {
+        tb = st->t;
+        krun = 0;
+    }
+    /* what a failure puts back */
+    k0 = st->order;
+    phase0 = st->phase_;
+    jcalc0 = st->jcalc_;
+    nlu0 = st->stats.lu_factors;
+    cj0 = st->cj_;
+    rate0 = st->rate_;
+    vlbe__bdf_save(st, k0);
+    /* land on t_stop exactly; avoid leaving a sliver (< 10% of h) behind;
+       a fixed step h0 that ends within hmin (4 eps |t|) of t_stop ends on
+       it with the coefficients of h0 */
     to_stop = shortened = 0;
-    if (h >= dist) {
+    if (p->fixed_step && vlbe_fabs(dist - h) <= hmin) {
+        to_stop = 1;
+    } else if (h >= dist) {
         h = dist;
         to_stop = 1;
     } else if (!p->fixed_step && VLBE_R(1.1) * h > dist) {
@@ -1826,8 +2012,11 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
     for (;;) {
         vlbe_real enorm, ck, alphas = VLBE_R(0.0), alpha0 = VLBE_R(0.0), cj;
         int j, failed_newton = 0, lower;
-        t1 = to_stop ? t_stop : st->t + h;
-        if (t1 == st->t) return VLBE_ESTEP;
+        t1 = to_stop ? t_stop : (p->fixed_step ? tb + (vlbe_real)(krun + 1) * h : st->t + h);
+        if (t1 == st->t) {
+            rc = VLBE_ESTEP;
+            goto fail;
+        }
         /* first step: phi_2 = h y'(t0) */
         if (st->kold_ == 0 && st->psi_[1] != h) {
             vlbe_vec_scale(N2, h / st->psi_[1], vlbe__bdf_phi(st, 2));
@@ -1879,10 +2068,7 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
             }
             if (ck * enorm <= VLBE_R(1.0)) break; /* accepted */
         } else {
-            if (!vlbe__int_retry(&st->stats, rc)) {
-                vlbe__bdf_restore(st, h, k, ns);
-                return rc;
-            }
+            if (!vlbe__int_retry(&st->stats, rc)) goto fail;
             failed_newton = 1;
         }
         /* failed attempt: back to the last accepted step, smaller h */
@@ -1891,15 +2077,15 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
         st->phase_ = 1;
         if (failed_newton) {
             if (rc == VLBE_ESINGULAR) {
-                if (++nsf >= 3) return rc;
+                if (++nsf >= 3) goto fail;
             } else {
                 ++st->stats.newton_fails;
-                if (++ncf >= 10) return rc;
+                if (++ncf >= 10) goto fail;
             }
             st->jcalc_ = -1;
-            if (p->fixed_step) return rc;
+            if (p->fixed_step) goto fail;
             h *= VLBE_R(0.25);
-            if (h < hmin) return rc;
+            if (h < hmin) goto fail;
         } else {
             ++nef;
             if (nef == 1) {
@@ -1913,7 +2099,10 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
                 k = nef == 2 ? knew : 1;
                 h *= VLBE_R(0.25);
             }
-            if (h < hmin) return VLBE_ESTEP;
+            if (h < hmin) {
+                rc = VLBE_ESTEP;
+                goto fail;
+            }
         }
         to_stop = 0;
     }
@@ -1925,6 +2114,11 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
         vlbe_real *y = vlbe__bdf_vec(st, 0);
         vlbe_vec_copy(N2, y, st->q);
         st->t = t1;
+        if (p->fixed_step) {
+            /* a step cut short for t_stop ends the run */
+            st->t_base_ = h == p->h0 ? tb : t1;
+            st->k_run_ = h == p->h0 ? krun + 1 : 0;
+        }
         ++st->stats.steps;
         st->h_last = h;
         st->order_last = k;
@@ -1983,11 +2177,26 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
         st->h = hnew;
     }
     return VLBE_OK;
+fail:
+    /* the state of the call's start: phi and the coefficients from the
+       backup (the attempts' scaling and its undoing are not exact), the
+       scalars from their copies; the stored matrix is kept unless an
+       attempt re-formed it (then it may be a failed one) */
+    vlbe__bdf_unsave(st, k0);
+    st->phase_ = phase0;
+    st->cj_ = cj0;
+    st->rate_ = rate0;
+    st->jcalc_ = st->stats.lu_factors == nlu0 ? jcalc0 : -1;
+    return rc;
 }
 
 /* Steps until st->t == t_out exactly (the last step is shortened to land
-   there).  t_out == t returns at once; t_out < t is VLBE_EARG.  On failure
-   the state is the last accepted step (which may lie past the start). */
+   there).  t_out == t returns at once; t_out < t or not finite is
+   VLBE_EARG.  On failure the state is the last accepted step, which may lie
+   past the start: a documented exception to the failure contract (the
+   steps are vlbe_bdf_step calls, each all or nothing; undoing the accepted
+   ones would take a second copy of the whole history and throw away valid
+   work -- st->t says how far the run got). */
 VLBE_API vlbe_status vlbe_bdf_advance(vlbe_bdf *st, vlbe_real t_out)
 {
     vlbe_status rc;

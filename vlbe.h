@@ -30,6 +30,19 @@ CONVENTIONS
    are caught by VLBE_ASSERT.  Nothing here allocates, prints or aborts.
    Stack: every function here uses less than 256 bytes of stack.
 
+   FAILURE CONTRACT (every vlbe module keeps it).  (1) A routine returning
+   vlbe_status never returns VLBE_OK with a NaN or Inf in an output when its
+   inputs are finite: it returns VLBE_ENONFINITE, or a more specific code
+   when an input is outside its range (VLBE_ELENGTH, VLBE_EWEIGHT, ...).
+   (2) Every index and size argument is range-checked before use (without
+   overflow in the check) and VLBE_EARG returned when out of range.  (3) A
+   call that fails leaves every caller-visible output bitwise as it was:
+   arrays, *out scalars, structs passed by pointer, counters; the only
+   exceptions are documented at the function (buffers documented as
+   scratch, e.g. the LU of vlbe_lu_factor after a failed elimination).
+   (4) A NULL where the documentation requires a pointer is a programmer
+   error (VLBE_ASSERT); every pointer documented as optional may be NULL.
+
    ALE basis.  A material point p on an element whose nodes sit at material
    coordinates p1 < p2 (L = p2 - p1, s = (2p - p1 - p2)/L in [-1, 1],
    xi = (p - p1)/L = (s + 1)/2 in [0, 1]).  The cubic Hermite functions
@@ -105,6 +118,7 @@ typedef float vlbe_real;
 #define VLBE_R(x) x##f
 #define VLBE_EPS FLT_EPSILON
 #define VLBE_REAL_MAX FLT_MAX
+#define VLBE_REAL_MIN FLT_MIN
 #ifndef vlbe_sqrt
 #define vlbe_sqrt sqrtf
 #define vlbe_fabs fabsf
@@ -121,6 +135,7 @@ typedef double vlbe_real;
 #define VLBE_R(x) x
 #define VLBE_EPS DBL_EPSILON
 #define VLBE_REAL_MAX DBL_MAX
+#define VLBE_REAL_MIN DBL_MIN
 #ifndef vlbe_sqrt
 #define vlbe_sqrt sqrt
 #define vlbe_fabs fabs
@@ -509,23 +524,41 @@ VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int km
 /* LU = P A with partial pivoting (Golub & Van Loan alg. 3.4.1), right-looking,
    row-major so the rank-1 update runs along contiguous rows.
    A, LU: n*n row-major.  LU may equal A (in-place); otherwise A is untouched.
-   piv[k] = row swapped with row k at step k.
-   Fails with VLBE_ESINGULAR when a pivot is 0 or |pivot| <= n eps max|A|
-   (relatively zero: the computed factor would be noise; the test is
-   relative to the whole matrix, so scale rows of very different units to
-   comparable size first, as the integrators do: vlbe__int_equil) and writes the
-   1-based failing column to *info (if info != NULL; 0 on success);
-   VLBE_ENONFINITE when A holds NaN/Inf.  On failure LU holds no factor;
-   A is unchanged unless LU == A. */
+   piv[k] = row swapped with row k at step k.  *info (if info != NULL) is 0
+   on success.
+   Fails with
+     VLBE_ENONFINITE  A holds NaN or Inf (found before anything is written:
+                      LU, piv and *info are untouched), or the elimination
+                      overflowed (entries near VLBE_REAL_MAX: the growth of
+                      partial pivoting, up to 2^(n-1), passed it);
+     VLBE_ESINGULAR   a pivot is 0 or not above tol = max(n eps max|A|,
+                      VLBE_REAL_MIN): relatively zero (the computed factor
+                      would be noise; the test is relative to the whole
+                      matrix, so scale rows of very different units to
+                      comparable size first, as the integrators do:
+                      vlbe__int_equil), or below the smallest normal number,
+                      whose reciprocal may overflow; the 1-based failing
+                      column is written to *info (LAPACK's k+1), which is the
+                      only failure that writes *info.
+   On either failure after the elimination started, LU and piv hold partial
+   results, unspecified (so A is lost when LU == A): the one exception to
+   "a failed call leaves the caller's data as it was", since keeping them
+   would need a copy of the matrix.  A successful factor is finite and its
+   pivots have finite reciprocals, so vlbe_lu_solve cannot produce NaN or
+   Inf from it unless B or the solution overflows.
+   Cost of the checks: a comparison per pivot; the overflow scan of the
+   factor at the end runs only when max|A| 2^n can pass VLBE_REAL_MAX
+   (growth bound of partial pivoting: |l_ik| <= 1, so every elimination step
+   at most doubles the largest active entry, rounding included), which
+   never happens for matrices of ordinary size and scale. */
 VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, int *piv, int *info)
 {
     size_t nn, N, e;
-    vlbe_real amax = VLBE_R(0.0), tol;
-    int i, j, k;
+    vlbe_real amax = VLBE_R(0.0), tol, lim;
+    int i, j, k, scan;
     VLBE_ASSERT(n >= 1 && A != NULL && LU != NULL && piv != NULL);
     N = (size_t)n;
     nn = N * N;
-    if (info) *info = 0;
     for (e = 0; e < nn; ++e) {
         vlbe_real t = vlbe_fabs(A[e]);
         if (!isfinite(t)) return VLBE_ENONFINITE;
@@ -534,6 +567,13 @@ VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, in
     if (LU != A)
         for (e = 0; e < nn; ++e) LU[e] = A[e];
     tol = (vlbe_real)n * VLBE_EPS * amax;
+    if (!(tol >= VLBE_REAL_MIN)) tol = VLBE_REAL_MIN; /* underflow: 1/pivot must stay finite */
+    /* growth <= 2^(n-1) (1 + eps)^(4(n-1)) < 2^n: scan when amax 2^n may
+       pass VLBE_REAL_MAX (halvings are exact, no libm call, no double in a
+       float build) */
+    lim = VLBE_REAL_MAX;
+    for (k = 0; k < n && lim > amax; ++k) lim *= VLBE_R(0.5);
+    scan = !(lim > amax);
     for (k = 0; k < n; ++k) {
         vlbe_real *rk = LU + (size_t)k * N, pmax = vlbe_fabs(rk[k]), inv;
         int p = k;
@@ -545,7 +585,8 @@ VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, in
             }
         }
         piv[k] = p;
-        if (pmax <= tol || pmax == VLBE_R(0.0)) {
+        if (!(pmax > tol)) {
+            if (pmax != pmax) return VLBE_ENONFINITE; /* only after an overflow */
             if (info) *info = k + 1;
             return VLBE_ESINGULAR;
         }
@@ -566,6 +607,12 @@ VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, in
                 for (j = k + 1; j < n; ++j) ri[j] -= lik * rk[j];
         }
     }
+    if (scan) {
+        vlbe_real z = VLBE_R(0.0);
+        for (e = 0; e < nn; ++e) z += LU[e] * VLBE_R(0.0); /* NaN iff an entry is not finite */
+        if (z != z) return VLBE_ENONFINITE;
+    }
+    if (info) *info = 0;
     return VLBE_OK;
 }
 

@@ -355,7 +355,10 @@ static inline void sp_rest(const sp_model *m, vlbe_real *q, vlbe_real *v)
     int i;
     for (i = 0; i < m->n; ++i) q[i] = v[i] = VLBE_R(0.0);
     if (m->cfg.model == SP_ANCF) {
-        const vlbe_real r0[2] = {VLBE_R(0.0), VLBE_R(0.0)}, dir[2] = {VLBE_R(1.0), VLBE_R(0.0)};
+        /* static: gcc 12 at -O3 -march=native reports automatic arrays here
+           as maybe-uninitialized (a false positive of its vectorizer) */
+        static const vlbe_real r0[2] = {VLBE_R(0.0), VLBE_R(0.0)};
+        static const vlbe_real dir[2] = {VLBE_R(1.0), VLBE_R(0.0)};
         vlbe_ale_chain_straight(&m->ch, r0, dir, q);
     }
 }
