@@ -3574,6 +3574,16 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
     return VLBE_OK;
 }
 
+/* 1 when x[0..n-1] are all finite: x - x is 0 for finite x and NaN for
+   NaN and +-Inf; no early exit and an integer AND, so the loop vectorises
+   (the chains' per-call checks of q, v, Q) */
+static inline int vlbe__ale_finite(const vlbe_real *x, int n)
+{
+    int i, ok = 1;
+    for (i = 0; i < n; ++i) ok &= x[i] - x[i] == VLBE_R(0.0);
+    return ok;
+}
+
 /* p, p', p'' of node i at time t (q, v: the state, for free nodes; v may
    be NULL: p' = 0).  i outside [0, nn): VLBE_EARG; a failing pfun:
    VLBE_ECALLBACK; a non-finite result (NaN in q, v, an overflow of the
@@ -3587,31 +3597,33 @@ VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_
     if (i < 0 || i >= ch->nn) return VLBE_EARG;
     nd = &ch->node[i];
     switch (nd->pmode) {
-    case VLBE_ALE_PFREE:
+    case VLBE_ALE_PFREE: {
+        const int k = vlbe__ale_pidx(ch, i);
         VLBE_ASSERT(q != NULL);
-        r[0] = q[vlbe__ale_pidx(ch, i)];
-        r[1] = v ? v[vlbe__ale_pidx(ch, i)] : VLBE_R(0.0);
-        r[2] = VLBE_R(0.0);
-        break;
-    case VLBE_ALE_PPRESCRIBED:
+        if (!isfinite(q[k]) || (v && !isfinite(v[k]))) return VLBE_ENONFINITE;
+        p3[0] = q[k];
+        p3[1] = v ? v[k] : VLBE_R(0.0);
+        p3[2] = VLBE_R(0.0);
+        return VLBE_OK;
+    }
+    case VLBE_ALE_PPRESCRIBED: /* through locals: p(t) may overflow, pfun give NaN */
         if (ch->pfun) {
             if (ch->pfun(ch->user, i, t, r)) return VLBE_ECALLBACK;
-            break;
+        } else {
+            r[0] = nd->p + (nd->pd + VLBE_R(0.5) * nd->pdd * t) * t;
+            r[1] = nd->pd + nd->pdd * t;
+            r[2] = nd->pdd;
         }
-        r[0] = nd->p + (nd->pd + VLBE_R(0.5) * nd->pdd * t) * t;
-        r[1] = nd->pd + nd->pdd * t;
-        r[2] = nd->pdd;
-        break;
-    default:
-        r[0] = nd->p;
-        r[1] = r[2] = VLBE_R(0.0);
-        break;
+        if (!vlbe_all_finite(r, 3)) return VLBE_ENONFINITE;
+        p3[0] = r[0];
+        p3[1] = r[1];
+        p3[2] = r[2];
+        return VLBE_OK;
+    default: /* node.p: finite (layout) */
+        p3[0] = nd->p;
+        p3[1] = p3[2] = VLBE_R(0.0);
+        return VLBE_OK;
     }
-    if (!vlbe_all_finite(r, 3)) return VLBE_ENONFINITE;
-    p3[0] = r[0];
-    p3[1] = r[1];
-    p3[2] = r[2];
-    return VLBE_OK;
 }
 
 /* vlbe_ale_chain_gather without the range check, written in place (the
@@ -3881,26 +3893,47 @@ static inline vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, int e, un
                    : vlbe_ale_force(vlbe__ale_el(ch, e), md, qe, ve, Qe, Ke, De);
 }
 
-/* scatter an ne x ne element matrix; returns 1 when every entry it added
-   to is finite afterwards (an entry once NaN or Inf stays so under later
-   additions, so checking each scatter's entries checks the whole sum;
-   x * 0 is 0 for finite x and NaN otherwise: no branch in the loop) */
-static inline int vlbe__ale_scatter(int n, int ne, const int *idx, const vlbe_real *Ae,
-                                    vlbe_real *A)
+/* scatter an ne x ne element matrix */
+static inline void vlbe__ale_scatter(int n, int ne, const int *idx, const vlbe_real *Ae,
+                                     vlbe_real *A)
 {
-    vlbe_real z = VLBE_R(0.0);
     int i, j;
     for (i = 0; i < ne; ++i) {
         vlbe_real *row;
         if (idx[i] < 0) continue;
         row = A + (size_t)idx[i] * (size_t)n;
         for (j = 0; j < ne; ++j)
-            if (idx[j] >= 0) {
-                row[idx[j]] += Ae[i * ne + j];
-                z += row[idx[j]] * VLBE_R(0.0);
-            }
+            if (idx[j] >= 0) row[idx[j]] += Ae[i * ne + j];
     }
-    return z == VLBE_R(0.0);
+}
+
+/* 1 when every entry an element can touch in the assembled n x n matrix A
+   is finite: rows of node i, columns of nodes i-1 .. i+1 (contiguous in
+   q), checked after the assembly (an entry that overflowed while being
+   summed stays Inf or NaN); one vectorised pass over the band */
+static inline int vlbe__ale_band_finite(const vlbe_ale_chain *ch, const vlbe_real *A)
+{
+    const size_t n = (size_t)ch->n;
+    int i, r, ok = 1;
+    for (i = 0; i < ch->nn; ++i) {
+        const int lo = ch->node[i > 0 ? i - 1 : 0].ofs;
+        const int hi = i + 2 < ch->nn ? ch->node[i + 2].ofs : ch->n;
+        const int r1 = i + 1 < ch->nn ? ch->node[i + 1].ofs : ch->n;
+        for (r = ch->node[i].ofs; r < r1; ++r)
+            ok &= vlbe__ale_finite(A + (size_t)r * n + (size_t)lo, hi - lo);
+    }
+    return ok;
+}
+
+/* 1 when the diagonal of the n x n matrix A is finite: enough for the mass
+   matrix, a sum of positive semidefinite element matrices (w G^T G, eqs.
+   19, 28) and point masses, whose entries obey |M_ij| <= sqrt(M_ii M_jj) */
+static inline int vlbe__ale_diag_finite(int n, const vlbe_real *A)
+{
+    const size_t n1 = (size_t)n + 1;
+    int i, ok = 1;
+    for (i = 0; i < n; ++i) ok &= A[(size_t)i * n1] - A[(size_t)i * n1] == VLBE_R(0.0);
+    return ok;
 }
 
 /* zero n * n entries (the layout checked that n * n fits in a size_t) */
@@ -3911,28 +3944,50 @@ static inline void vlbe__ale_zero_nn(int n, vlbe_real *A)
     for (i = 0; i < nn; ++i) A[i] = VLBE_R(0.0);
 }
 
-/* NaN/Inf in a callback's input q, v, a (each n; v, a may be NULL),
-   found before any output is written: records the failure the assembly
-   would have met -- the first element that gathers a non-finite value,
-   with its status -- and returns the callback's value; 0 when all finite */
-static inline int vlbe__ale_in_check(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
-                                     const vlbe_real *v, const vlbe_real *a)
+/* the first element whose coordinates hold entry k of q (or v, a): that
+   of node i's position, slopes, spin and p is element i - 1 (element 0 for
+   node 0), except the right slope of a sliding node: element i */
+static inline int vlbe__ale_elem_of(const vlbe_ale_chain *ch, int k)
 {
-    vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ];
-    int e, k, idx[VLBE_ALE3_NQ];
-    unsigned md;
-    vlbe_status st;
-    if (vlbe_all_finite(q, ch->n) && (!v || vlbe_all_finite(v, ch->n)) &&
-        (!a || vlbe_all_finite(a, ch->n)))
+    int i = 0;
+    while (i + 1 < ch->nn && ch->node[i + 1].ofs <= k) ++i; /* node i holds k */
+    if (i == 0) return 0;
+    if (ch->node[i].slide && i + 1 < ch->nn && k >= ch->node[i].ofs + 2 * ch->d &&
+        k < ch->node[i].ofs + 3 * ch->d)
+        return i;
+    return i - 1;
+}
+
+/* index of the first NaN/Inf of x[0..n-1], n when none (x may be NULL) */
+static inline int vlbe__ale_first_bad(const vlbe_real *x, int n)
+{
+    int k = 0;
+    if (x)
+        while (k < n && isfinite(x[k])) ++k;
+    return x ? k : n;
+}
+
+/* NaN/Inf in a callback's input q, v, a (each n; v, a may be NULL), found
+   before any output is written: records VLBE_ENONFINITE with the first
+   element that gathers such a value and returns the callback's value; 0
+   when all finite (the common case: one vectorised pass per array) */
+static inline int vlbe__ale_in_check(vlbe_ale_chain *ch, const vlbe_real *q, const vlbe_real *v,
+                                     const vlbe_real *a)
+{
+    int e = ch->nn, k, j;
+    const vlbe_real *x[3];
+    if (vlbe__ale_finite(q, ch->n) && (!v || vlbe__ale_finite(v, ch->n)) &&
+        (!a || vlbe__ale_finite(a, ch->n)))
         return 0;
-    for (e = 0; e + 1 < ch->nn; ++e) {
-        if ((st = vlbe__ale_gather(ch, e, t, q, v, qe, v ? ve : NULL, idx, &md)) != VLBE_OK)
-            return vlbe__ale_fail(ch, st, e);
-        if (a)
-            for (k = 0; k < vlbe__ale_ne(ch); ++k)
-                if (idx[k] >= 0 && !isfinite(a[idx[k]])) return vlbe__ale_fail(ch, VLBE_ENONFINITE, e);
-    }
-    return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+    x[0] = q;
+    x[1] = v;
+    x[2] = a;
+    for (j = 0; j < 3; ++j)
+        if ((k = vlbe__ale_first_bad(x[j], ch->n)) < ch->n) {
+            const int ek = vlbe__ale_elem_of(ch, k);
+            if (ek < e) e = ek;
+        }
+    return vlbe__ale_fail(ch, VLBE_ENONFINITE, e);
 }
 
 /* prescribed p'' of the element's non-coordinate p's, as an acceleration
@@ -3965,21 +4020,20 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
     vlbe_status st;
     (void)v;
     VLBE_ASSERT(ch != NULL && q != NULL && M != NULL);
-    if ((rc = vlbe__ale_in_check(ch, t, q, NULL, NULL)) != 0) return rc;
+    if ((rc = vlbe__ale_in_check(ch, q, NULL, NULL)) != 0) return rc;
     vlbe__ale_zero_nn(ch->n, M);
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe__ale_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK ||
             (st = vlbe__ale_el_mass(ch, e, md, qe, Me)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
-        if (!vlbe__ale_scatter(ch->n, ne, idx, Me, M)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, e);
+        vlbe__ale_scatter(ch->n, ne, idx, Me, M);
     }
     for (i = 0; i < ch->nn; ++i)
         for (k = 0; k < ch->d; ++k) {
             const size_t r = (size_t)(ch->node[i].ofs + k);
             M[r * n + r] += ch->node[i].mass;
-            if (!isfinite(M[r * n + r])) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
         }
-    return 0;
+    return vlbe__ale_diag_finite(ch->n, M) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
 
 /* Q and/or K, D (n x n; any of the three may be NULL) */
@@ -3994,7 +4048,7 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
     unsigned md;
     vlbe_status st;
     VLBE_ASSERT(ch != NULL && q != NULL && v != NULL);
-    if ((rc = vlbe__ale_in_check(ch, t, q, v, NULL)) != 0) return rc;
+    if ((rc = vlbe__ale_in_check(ch, q, v, NULL)) != 0) return rc;
     if (Q)
         for (i = 0; i < ch->n; ++i) Q[i] = VLBE_R(0.0);
     if (K) vlbe__ale_zero_nn(ch->n, K);
@@ -4018,14 +4072,15 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
         if (Q)
             for (i = 0; i < ne; ++i)
                 if (idx[i] >= 0) Q[idx[i]] += Qe[i];
-        if ((K && !vlbe__ale_scatter(ch->n, ne, idx, Ke, K)) ||
-            (D && !vlbe__ale_scatter(ch->n, ne, idx, De, D)))
-            return vlbe__ale_fail(ch, VLBE_ENONFINITE, e);
+        if (K) vlbe__ale_scatter(ch->n, ne, idx, Ke, K);
+        if (D) vlbe__ale_scatter(ch->n, ne, idx, De, D);
     }
+    if ((K && !vlbe__ale_band_finite(ch, K)) || (D && !vlbe__ale_band_finite(ch, D)))
+        return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
     if (Q) {
         for (i = 0; i < ch->nn; ++i)
             for (k = 0; k < ch->d; ++k) Q[ch->node[i].ofs + k] += ch->node[i].mass * ch->g[k];
-        if (!vlbe_all_finite(Q, ch->n)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+        if (!vlbe__ale_finite(Q, ch->n)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
     }
     return 0;
 }
@@ -4055,7 +4110,7 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
     vlbe_status st;
     (void)v;
     VLBE_ASSERT(ch != NULL && q != NULL && a != NULL && Mq != NULL);
-    if ((rc = vlbe__ale_in_check(ch, t, q, NULL, a)) != 0) return rc;
+    if ((rc = vlbe__ale_in_check(ch, q, NULL, a)) != 0) return rc;
     vlbe__ale_zero_nn(ch->n, Mq);
     if (Mv) vlbe__ale_zero_nn(ch->n, Mv);
     for (e = 0; e + 1 < ch->nn; ++e) {
@@ -4064,9 +4119,9 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
         for (i = 0; i < ne; ++i) ae[i] = idx[i] >= 0 ? a[idx[i]] : VLBE_R(0.0);
         if ((st = vlbe__ale_el_mass_jac(ch, e, md, qe, ae, Je)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
-        if (!vlbe__ale_scatter(ch->n, ne, idx, Je, Mq)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, e);
+        vlbe__ale_scatter(ch->n, ne, idx, Je, Mq);
     }
-    return 0;
+    return vlbe__ale_band_finite(ch, Mq) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
 
 /* known p (and its rates) of node i for the equal-length constraint */

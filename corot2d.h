@@ -1456,18 +1456,28 @@ static inline int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
 
 /* A[3e.., 3e..] += Ae (6x6) in the n x n matrix; 1 when the entries added
    to are finite afterwards (a NaN/Inf entry stays so under later
-   additions; x * 0 is 0 only for finite x: no branch in the loop) */
+   additions; x - x == 0 only for finite x: no branch in the loop) */
 static inline int vlbe__cr2d_scatter(int n, int e, const vlbe_real *Ae, vlbe_real *A)
 {
     const size_t o = (size_t)(3 * e), N = (size_t)n;
-    vlbe_real z = VLBE_R(0.0);
     size_t i, j;
+    int ok = 1;
     for (i = 0; i < 6; ++i)
         for (j = 0; j < 6; ++j) {
-            A[(o + i) * N + o + j] += Ae[i * 6 + j];
-            z += A[(o + i) * N + o + j] * VLBE_R(0.0);
+            const vlbe_real x = A[(o + i) * N + o + j] + Ae[i * 6 + j];
+            A[(o + i) * N + o + j] = x;
+            ok &= x - x == VLBE_R(0.0);
         }
-    return z == VLBE_R(0.0);
+    return ok;
+}
+
+/* 1 when x[0..n-1] are all finite (no early exit, an integer AND: the
+   loop vectorises; the callbacks' checks of q, v, a, Q) */
+static inline int vlbe__cr2d_finite(const vlbe_real *x, int n)
+{
+    int i, ok = 1;
+    for (i = 0; i < n; ++i) ok &= x[i] - x[i] == VLBE_R(0.0);
+    return ok;
 }
 
 /* zero cnt entries (init checked that n * n and nfix * n fit in a size_t) */
@@ -1484,8 +1494,8 @@ static inline int vlbe__cr2d_in_check(vlbe_cr2d_beam *b, const vlbe_real *q, con
                                       const vlbe_real *a)
 {
     int e;
-    if (vlbe_all_finite(q, b->n) && (!v || vlbe_all_finite(v, b->n)) &&
-        (!a || vlbe_all_finite(a, b->n)))
+    if (vlbe__cr2d_finite(q, b->n) && (!v || vlbe__cr2d_finite(v, b->n)) &&
+        (!a || vlbe__cr2d_finite(a, b->n)))
         return 0;
     for (e = 0; e < b->ne; ++e)
         if (!vlbe_all_finite(q + 3 * e, 6) || (v && !vlbe_all_finite(v + 3 * e, 6)) ||
@@ -1553,7 +1563,7 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const v
         if ((K && !vlbe__cr2d_scatter(b->n, e, Ke, K)) || (D && !vlbe__cr2d_scatter(b->n, e, De, D)))
             return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
-    if (Q && !vlbe_all_finite(Q, b->n)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
+    if (Q && !vlbe__cr2d_finite(Q, b->n)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
     return 0;
 }
 

@@ -758,8 +758,9 @@ static void test_callbacks_input(void **state)
      force: gravity 9.81 on that mass (fails on 77b73ad: 0 with Q = -Inf);
      point: r of a chain whose positions are near REAL_MAX: the Hermite
        sum overflows (fails on 77b73ad: VLBE_OK with r = Inf);
-   and the scatter helper's flag: 1 for a finite sum, 0 when an entry is or
-   becomes NaN/Inf (two finite entries of 0.75 REAL_MAX). */
+   and the helpers that check the assembled matrices: the band of K (every
+   entry an element adds to) and the diagonal (of M: positive semidefinite,
+   |M_ij| <= sqrt(M_ii M_jj)) see an entry that overflowed. */
 static void test_overflow_outputs(void **state)
 {
     static pfx c;
@@ -814,21 +815,27 @@ static void test_overflow_outputs(void **state)
         }
     }
 
-    { /* the scatter's finiteness flag (internal helper) */
-        vlbe_real A2[4], Ae[4];
-        const int id[2] = {0, 1}, idn[2] = {-1, 1};
-        fill(4, VLBE_R(0.0), A2);
-        fill(4, VLBE_R(1.0), Ae);
-        assert_int_equal(vlbe__ale_scatter(2, 2, id, Ae, A2), 1);
-        fill(4, VLBE_REAL_MAX * VLBE_R(0.75), Ae);
-        assert_int_equal(vlbe__ale_scatter(2, 2, id, Ae, A2), 1);
-        assert_int_equal(vlbe__ale_scatter(2, 2, id, Ae, A2), 0); /* 1.5 REAL_MAX */
-        fill(4, VLBE_R(0.0), A2);
-        fill(4, VLBE_R(1.0), Ae);
-        Ae[0] = (vlbe_real)NAN; /* in the skipped row: not added, not seen */
-        assert_int_equal(vlbe__ale_scatter(2, 2, idn, Ae, A2), 1);
-        Ae[3] = (vlbe_real)INFINITY;
-        assert_int_equal(vlbe__ale_scatter(2, 2, idn, Ae, A2), 0);
+    { /* the assembled-matrix checks (internal helpers): every entry an
+         element touches (the band of nodes i-1 .. i+1), the diagonal */
+        static vlbe_real K[NMAX * NMAX], D[NMAX * NMAX];
+        const size_t n = (size_t)c.ch.n;
+        int e2, j;
+        pfx_init(&c);
+        assert_int_equal(vlbe_ale_chain_force_jac(&c.ch, 0, c.q, c.v, K, D), 0);
+        assert_int_equal(vlbe__ale_band_finite(&c.ch, K), 1);
+        assert_int_equal(vlbe__ale_diag_finite(c.ch.n, K), 1);
+        for (e2 = 0; e2 + 1 < c.ch.nn; ++e2) { /* each element's corner entries */
+            const int r0 = c.node[e2].ofs, r1 = c.node[e2 + 1].ofs + 3;
+            const size_t ent[2] = {(size_t)r0 * n + (size_t)r1, (size_t)r1 * n + (size_t)r0};
+            for (j = 0; j < 2; ++j) {
+                const vlbe_real keep = K[ent[j]];
+                K[ent[j]] = keep + VLBE_REAL_MAX + VLBE_REAL_MAX; /* overflowed in a sum */
+                assert_int_equal(vlbe__ale_band_finite(&c.ch, K), 0);
+                K[ent[j]] = keep;
+            }
+        }
+        K[3 * n + 3] = (vlbe_real)NAN;
+        assert_int_equal(vlbe__ale_diag_finite(c.ch.n, K), 0);
     }
 }
 
