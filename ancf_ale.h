@@ -3354,7 +3354,23 @@ VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, cons
 VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v, vlbe_real *len,
                                            vlbe_real *rate);
-/* vlbe_dae callbacks (user = the chain) */
+/* vlbe_dae callbacks (user = the chain).  They return 0, or on failure
+   the value of vlbe__ale_fail (1: the state is outside the model's domain,
+   the integrator may retry; -1: fatal) with the status and the element (-1:
+   none, or a constraint) in ch->err, ch->err_elem -- the only change a call
+   makes to the chain.  Non-finite q, v (force, force_jac), a (mass_jac) or
+   lambda (constr_hess) are found before anything is written: VLBE_ENONFINITE
+   (for q, v, a with the first element that meets them) and the outputs
+   untouched.  Exception to the rule that a failed call writes nothing: a
+   failure on finite inputs -- an element shorter than Lmin, out of its
+   domain or failing, a failing or NaN pfun / afun, a zero slope of
+   SLIDE_D, a sum that overflows (VLBE_ENONFINITE) -- leaves M, Q, K, D, Mq,
+   Mv, C, Cq, Ct, gamma, H unspecified: they are assembled in place (n x n,
+   the chain has no room for a copy) and an element's failure shows only
+   after the earlier elements were added.  The integrators treat them as
+   scratch after a failure.  force_jac: K or D may be NULL;
+   mass_jac: Mv may be NULL (it is zero: M does not depend on v); constr_jac:
+   Ct may be NULL. */
 VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                                  vlbe_real *M);
 VLBE_API int vlbe_ale_chain_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
@@ -3466,7 +3482,8 @@ static inline int vlbe__ale_con_rows(const vlbe_ale_chain *ch, const vlbe_ale_co
         return planar ? 1 : 0;
     case VLBE_ALE_CON_P: return 1;
     case VLBE_ALE_CON_SPIN: return planar ? 0 : 1;
-    case VLBE_ALE_CON_EQUAL_LEN: return c->node2 - c->node - 1;
+    case VLBE_ALE_CON_EQUAL_LEN: /* node checked first: node2 - node cannot overflow */
+        return (c->node < 0 || c->node2 <= c->node) ? -1 : c->node2 - c->node - 1;
     default: return -1;
     }
 }
@@ -3502,13 +3519,17 @@ static inline int vlbe__ale_sidx(const vlbe_ale_chain *ch, int i, int which)
 }
 
 /* Assign coordinates (node.ofs, n) and count constraint rows (m); checks
-   the nodes and constraints.  Call after any change of nodes or constraints. */
+   the nodes and constraints.  Call after any change of nodes or constraints.
+   VLBE_EARG also when n or m would exceed INT_MAX or n * n, m * n the
+   range of size_t (the callbacks' matrices).  On failure the chain is unchanged. */
 VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
 {
-    int i, k, n = 0, m = 0;
+    int i, k, n = 0, m = 0, d, spin;
     VLBE_ASSERT(ch != NULL);
-    ch->d = ch->el3 ? 3 : 2;
-    ch->spin = ch->el3 && !((ch->el3->flags | ch->mode) & VLBE_ALE3_NO_SPIN);
+    d = ch->el3 ? 3 : 2;
+    spin = ch->el3 && !((ch->el3->flags | ch->mode) & VLBE_ALE3_NO_SPIN);
+    if (ch->nn < 2 || ch->nn > ch->nn_cap || ch->ncon < 0 || ch->ncon > ch->ncon_cap)
+        return VLBE_EARG;
     for (i = 0; i < ch->nn; ++i) {
         const vlbe_ale_node *nd = &ch->node[i];
         if (nd->pmode < VLBE_ALE_PFIXED || nd->pmode > VLBE_ALE_PFREE || nd->slide < 0 ||
@@ -3521,8 +3542,9 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
     for (k = 0; k < ch->ncon; ++k) {
         const vlbe_ale_con *c = &ch->con[k];
         int r = vlbe__ale_con_rows(ch, c);
-        if (r < 1 || c->node < 0 || c->node >= ch->nn) return VLBE_EARG;
-        if (c->type == VLBE_ALE_CON_SPIN && !ch->spin) return VLBE_EARG;
+        if (r < 1 || c->node < 0 || c->node >= ch->nn || m > INT_MAX - r) return VLBE_EARG;
+        if (!vlbe_all_finite(c->v, 3)) return VLBE_ENONFINITE;
+        if (c->type == VLBE_ALE_CON_SPIN && !spin) return VLBE_EARG;
         if (c->type == VLBE_ALE_CON_EQUAL_LEN) {
             if (c->node2 >= ch->nn) return VLBE_EARG;
             for (i = c->node + 1; i < c->node2; ++i)
@@ -3534,51 +3556,84 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
             return VLBE_EARG;
         m += r;
     }
-    for (i = 0; i < ch->nn; ++i) {
-        ch->node[i].ofs = n;
-        n += ch->d * (2 + ch->node[i].slide) + ch->spin + (ch->node[i].pmode == VLBE_ALE_PFREE);
+    for (i = 0; i < ch->nn; ++i) { /* count first: a refused layout changes nothing */
+        const int nc = d * (2 + ch->node[i].slide) + spin + (ch->node[i].pmode == VLBE_ALE_PFREE);
+        if (n > INT_MAX - nc) return VLBE_EARG;
+        n += nc;
     }
+    if ((size_t)n > (size_t)-1 / (size_t)n || (size_t)m > (size_t)-1 / (size_t)n)
+        return VLBE_EARG;
+    for (i = 0, n = 0; i < ch->nn; ++i) {
+        ch->node[i].ofs = n;
+        n += d * (2 + ch->node[i].slide) + spin + (ch->node[i].pmode == VLBE_ALE_PFREE);
+    }
+    ch->d = d;
+    ch->spin = spin;
     ch->n = n;
     ch->m = m;
     return VLBE_OK;
 }
 
-/* p, p', p'' of node i at time t (q, v: the state, for free nodes). */
+/* 1 when x[0..n-1] are all finite: x - x is 0 for finite x and NaN for
+   NaN and +-Inf; no early exit and an integer AND, so the loop vectorises
+   (the chains' per-call checks of q, v, Q) */
+static inline int vlbe__ale_finite(const vlbe_real *x, int n)
+{
+    int i, ok = 1;
+    for (i = 0; i < n; ++i) ok &= x[i] - x[i] == VLBE_R(0.0);
+    return ok;
+}
+
+/* p, p', p'' of node i at time t (q, v: the state, for free nodes; v may
+   be NULL: p' = 0).  i outside [0, nn): VLBE_EARG; a failing pfun:
+   VLBE_ECALLBACK; a non-finite result (NaN in q, v, an overflow of the
+   prescribed p(t)): VLBE_ENONFINITE.  On failure p3 is not written. */
 VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_real t,
                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *p3)
 {
-    const vlbe_ale_node *nd = &ch->node[i];
+    const vlbe_ale_node *nd;
+    vlbe_real r[3];
+    VLBE_ASSERT(ch != NULL && p3 != NULL);
+    if (i < 0 || i >= ch->nn) return VLBE_EARG;
+    nd = &ch->node[i];
     switch (nd->pmode) {
-    case VLBE_ALE_PFREE:
-        p3[0] = q[vlbe__ale_pidx(ch, i)];
-        p3[1] = v ? v[vlbe__ale_pidx(ch, i)] : VLBE_R(0.0);
+    case VLBE_ALE_PFREE: {
+        const int k = vlbe__ale_pidx(ch, i);
+        VLBE_ASSERT(q != NULL);
+        if (!isfinite(q[k]) || (v && !isfinite(v[k]))) return VLBE_ENONFINITE;
+        p3[0] = q[k];
+        p3[1] = v ? v[k] : VLBE_R(0.0);
         p3[2] = VLBE_R(0.0);
         return VLBE_OK;
-    case VLBE_ALE_PPRESCRIBED:
+    }
+    case VLBE_ALE_PPRESCRIBED: /* through locals: p(t) may overflow, pfun give NaN */
         if (ch->pfun) {
-            if (ch->pfun(ch->user, i, t, p3)) return VLBE_ECALLBACK;
-            return vlbe_all_finite(p3, 3) ? VLBE_OK : VLBE_ENONFINITE;
+            if (ch->pfun(ch->user, i, t, r)) return VLBE_ECALLBACK;
+        } else {
+            r[0] = nd->p + (nd->pd + VLBE_R(0.5) * nd->pdd * t) * t;
+            r[1] = nd->pd + nd->pdd * t;
+            r[2] = nd->pdd;
         }
-        p3[0] = nd->p + (nd->pd + VLBE_R(0.5) * nd->pdd * t) * t;
-        p3[1] = nd->pd + nd->pdd * t;
-        p3[2] = nd->pdd;
+        if (!vlbe_all_finite(r, 3)) return VLBE_ENONFINITE;
+        p3[0] = r[0];
+        p3[1] = r[1];
+        p3[2] = r[2];
         return VLBE_OK;
-    default:
+    default: /* node.p: finite (layout) */
         p3[0] = nd->p;
         p3[1] = p3[2] = VLBE_R(0.0);
         return VLBE_OK;
     }
 }
 
-/* Element e's coordinates qe (and rates ve when v != NULL), its index map
-   idx into q (-1 for a p that is not a coordinate) and element mode; qe,
-   ve, idx hold the element's coordinates (10 planar, vlbe_ale3_nq(mode)
-   3D: VLBE_ALE3_NQ is always enough). */
-VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
+/* vlbe_ale_chain_gather without the range check, written in place (the
+   callers' own locals): rates when v and ve are both given */
+static inline vlbe_status vlbe__ale_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v, vlbe_real *qe,
                                            vlbe_real *ve, int *idx, unsigned *mode)
 {
     const int d = ch->d, nb = 2 * d + ch->spin + 1; /* element block per node */
+    const int rates = v != NULL && ve != NULL;
     int s, k;
     vlbe_status st;
     *mode = ch->mode;
@@ -3595,15 +3650,43 @@ VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe
         if ((st = vlbe_ale_chain_pnode(ch, i, t, q, v, p3)) != VLBE_OK) return st;
         for (k = 0; k < nb - 1; ++k) {
             qe[b + k] = q[idx[b + k]];
-            if (ve) ve[b + k] = v[idx[b + k]];
+            if (rates) ve[b + k] = v[idx[b + k]];
         }
         qe[b + nb - 1] = p3[0];
-        if (ve) ve[b + nb - 1] = p3[1];
+        if (rates) ve[b + nb - 1] = p3[1];
         if (ch->node[i].pmode == VLBE_ALE_PFIXED) *mode |= s ? VLBE_ALE_FIX_P2 : VLBE_ALE_FIX_P1;
     }
-    if (!vlbe_all_finite(qe, 2 * nb) || (ve && !vlbe_all_finite(ve, 2 * nb)))
+    if (!vlbe_all_finite(qe, 2 * nb) || (rates && !vlbe_all_finite(ve, 2 * nb)))
         return VLBE_ENONFINITE;
     if (!(qe[2 * nb - 1] - qe[nb - 1] > ch->Lmin)) return VLBE_ELENGTH;
+    return VLBE_OK;
+}
+
+/* Element e's coordinates qe (and rates ve when v and ve are given; ve is
+   written only then), its index map idx into q (-1 for a p that is not a
+   coordinate) and element mode; qe, ve, idx hold the element's coordinates
+   (10 planar, vlbe_ale3_nq(mode) 3D: VLBE_ALE3_NQ is always enough).  e
+   outside [0, nn - 1): VLBE_EARG; NaN/Inf in the element's coordinates or
+   rates: VLBE_ENONFINITE; p2 - p1 <= ch->Lmin: VLBE_ELENGTH; the errors of
+   vlbe_ale_chain_pnode.  On failure nothing is written. */
+VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qe,
+                                           vlbe_real *ve, int *idx, unsigned *mode)
+{
+    vlbe_real qt[VLBE_ALE3_NQ], vt[VLBE_ALE3_NQ];
+    int it[VLBE_ALE3_NQ], k, ne;
+    unsigned md;
+    vlbe_status st;
+    VLBE_ASSERT(ch != NULL && q != NULL && qe != NULL && idx != NULL && mode != NULL);
+    if (e < 0 || e >= ch->nn - 1) return VLBE_EARG;
+    if ((st = vlbe__ale_gather(ch, e, t, q, v, qt, ve ? vt : NULL, it, &md)) != VLBE_OK) return st;
+    ne = 2 * (2 * ch->d + ch->spin + 1);
+    for (k = 0; k < ne; ++k) {
+        qe[k] = qt[k];
+        idx[k] = it[k];
+        if (v && ve) ve[k] = vt[k];
+    }
+    *mode = md;
     return VLBE_OK;
 }
 
@@ -3648,73 +3731,82 @@ VLBE_API vlbe_status vlbe_ale_chain_locate(const vlbe_ale_chain *ch, vlbe_real t
     return VLBE_EBOUND;
 }
 
+/* Position r and slope rp (each d components; either may be NULL) of the
+   material point p, in the first element holding it.  Errors of
+   vlbe_ale_chain_locate and _gather, of the element's point evaluation; a
+   non-finite r or rp: VLBE_ENONFINITE.  On failure r, rp are not written. */
 VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
                                           vlbe_real p, vlbe_real *r, vlbe_real *rp)
 {
-    vlbe_real qe[VLBE_ALE3_NQ];
-    int e, idx[VLBE_ALE3_NQ];
+    vlbe_real qe[VLBE_ALE3_NQ], r3[3], rp3[3];
+    int e, k, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
+    VLBE_ASSERT(ch != NULL);
     if ((st = vlbe_ale_chain_locate(ch, t, q, p, &e)) != VLBE_OK) return st;
-    if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK) return st;
-    if (ch->el3) { /* through locals: r, rp have d = 3 entries here */
-        vlbe_real r3[3], rp3[3];
-        int k;
+    if ((st = vlbe__ale_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK) return st;
+    /* through locals: committed when finite */
+    if (ch->el3) {
         if ((st = vlbe_ale3_point(md | ch->el3->flags, qe, p, r3, rp3, NULL)) != VLBE_OK) return st;
-        for (k = 0; k < ch->d; ++k) {
-            if (r) r[k] = r3[k];
-            if (rp) rp[k] = rp3[k];
-        }
-        return VLBE_OK;
-    }
-    if (ch->et) {
+    } else if (ch->et) {
         vlbe_herm_ale b;
         vlbe__ale_chain_basis(ch, e, p, qe[4], qe[9], 1, 0, &b);
-        if (r) vlbe__ale_sum(&b, 0, 0, qe, r);
-        if (rp) vlbe__ale_sum(&b, 1, 0, qe, rp);
-        return VLBE_OK;
+        vlbe__ale_sum(&b, 0, 0, qe, r3);
+        vlbe__ale_sum(&b, 1, 0, qe, rp3);
+    } else if ((st = vlbe_ale_point(qe, p, r3, rp3)) != VLBE_OK) {
+        return st;
     }
-    return vlbe_ale_point(qe, p, r, rp);
-}
-
-/* Kinetic, strain and potential energy (loads and gravity on point masses). */
-VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
-                                           const vlbe_real *v, vlbe_real *E)
-{
-    vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ], Ee[3];
-    int e, i, k, idx[VLBE_ALE3_NQ];
-    unsigned md;
-    vlbe_status st;
-    E[0] = E[1] = E[2] = VLBE_R(0.0);
-    for (e = 0; e + 1 < ch->nn; ++e) {
-        if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK) return st;
-        st = ch->el3 ? vlbe_ale3_energy(ch->el3, md, qe, ve, Ee)
-                     : vlbe_ale_energy(vlbe__ale_el(ch, e), md, qe, ve, Ee);
-        if (st != VLBE_OK) return st;
-        for (i = 0; i < 3; ++i) E[i] += Ee[i];
-    }
-    for (i = 0; i < ch->nn; ++i) {
-        const vlbe_real m = ch->node[i].mass, *r = q + ch->node[i].ofs, *rd = v + ch->node[i].ofs;
-        for (k = 0; k < ch->d; ++k) {
-            E[0] += VLBE_R(0.5) * m * rd[k] * rd[k];
-            E[2] -= m * ch->g[k] * r[k];
-        }
+    if (!vlbe_all_finite(r3, ch->d) || !vlbe_all_finite(rp3, ch->d)) return VLBE_ENONFINITE;
+    for (k = 0; k < ch->d; ++k) {
+        if (r) r[k] = r3[k];
+        if (rp) rp[k] = rp3[k];
     }
     return VLBE_OK;
 }
 
-/* Records a callback failure and returns the callback's value: positive
-   (the integrator may retry a smaller step) when the state itself is out of
-   the model's domain -- an element shorter than Lmin or inverted, a zero
-   slope, non-finite values, which a Newton iterate can produce -- and
-   negative (fatal) for everything else (bad arguments, a failing pfun). */
+/* Kinetic, strain and potential energy E = {T, U, V} (loads and gravity on
+   point masses); v is required.  Errors of vlbe_ale_chain_gather and the
+   element energies; a sum that overflows: VLBE_ENONFINITE.  On failure E
+   is not written. */
+VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                           const vlbe_real *v, vlbe_real *E)
+{
+    vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ], Ee[3], Es[3];
+    int e, i, k, idx[VLBE_ALE3_NQ];
+    unsigned md;
+    vlbe_status st;
+    VLBE_ASSERT(ch != NULL && q != NULL && v != NULL && E != NULL);
+    Es[0] = Es[1] = Es[2] = VLBE_R(0.0);
+    for (e = 0; e + 1 < ch->nn; ++e) {
+        if ((st = vlbe__ale_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK) return st;
+        st = ch->el3 ? vlbe_ale3_energy(ch->el3, md, qe, ve, Ee)
+                     : vlbe_ale_energy(vlbe__ale_el(ch, e), md, qe, ve, Ee);
+        if (st != VLBE_OK) return st;
+        for (i = 0; i < 3; ++i) Es[i] += Ee[i];
+    }
+    for (i = 0; i < ch->nn; ++i) {
+        const vlbe_real m = ch->node[i].mass, *r = q + ch->node[i].ofs, *rd = v + ch->node[i].ofs;
+        for (k = 0; k < ch->d; ++k) {
+            Es[0] += VLBE_R(0.5) * m * rd[k] * rd[k];
+            Es[2] -= m * ch->g[k] * r[k];
+        }
+    }
+    if (!vlbe_all_finite(Es, 3)) return VLBE_ENONFINITE;
+    E[0] = Es[0];
+    E[1] = Es[1];
+    E[2] = Es[2];
+    return VLBE_OK;
+}
+
 /* Deformed arc length of the chain, sum of int |r'| dp over the elements
    (8-point Gauss-Legendre per element: |r'| is the root of a quartic, smooth
    while r' != 0), and, when v and rate are given, its time derivative
    d/dt int |r'| dp = int r'.(dr'/dt)/|r'| dp + |r'| p' at the last node
    - |r'| p' at the first (dr'/dt at fixed material p: the material rate of
    the slope, eq. 14 of [R] differentiated in p); the terms of interior
-   nodes cancel, |r'| being continuous there.  A zero slope: VLBE_ESINGULAR. */
+   nodes cancel, |r'| being continuous there.  A zero slope: VLBE_ESINGULAR;
+   an overflow: VLBE_ENONFINITE; a 3D chain: VLBE_EARG.  On failure len and
+   rate are not written. */
 VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v, vlbe_real *len,
                                            vlbe_real *rate)
@@ -3730,8 +3822,8 @@ VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t
     if ((st = vlbe_gl_rule(8, &xi, &w)) != VLBE_OK) return st;
     for (e = 0; e + 1 < ch->nn; ++e) {
         vlbe_real h;
-        if ((st = vlbe_ale_chain_gather(ch, e, t, q, want_rate ? v : NULL, qe, want_rate ? ve : NULL,
-                                        idx, &md)) != VLBE_OK)
+        if ((st = vlbe__ale_gather(ch, e, t, q, want_rate ? v : NULL, qe, want_rate ? ve : NULL,
+                                   idx, &md)) != VLBE_OK)
             return st;
         h = VLBE_R(0.5) * (qe[9] - qe[4]);
         for (g = 0; g < 8; ++g) {
@@ -3753,11 +3845,17 @@ VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t
             Ld -= vlbe_sqrt(vlbe_v2_dot(qe + 2, qe + 2)) * ve[4];
         if (want_rate && e + 2 == ch->nn) Ld += vlbe_sqrt(vlbe_v2_dot(qe + 7, qe + 7)) * ve[9];
     }
+    if (!isfinite(L) || (want_rate && !isfinite(Ld))) return VLBE_ENONFINITE;
     *len = L;
     if (want_rate) *rate = Ld;
     return VLBE_OK;
 }
 
+/* Records a callback failure and returns the callback's value: positive
+   (the integrator may retry a smaller step) when the state itself is out of
+   the model's domain -- an element shorter than Lmin or inverted, a zero
+   slope, non-finite values, which a Newton iterate can produce -- and
+   negative (fatal) for everything else (bad arguments, a failing pfun). */
 static inline int vlbe__ale_fail(vlbe_ale_chain *ch, vlbe_status st, int where)
 {
     ch->err = st;
@@ -3809,6 +3907,89 @@ static inline void vlbe__ale_scatter(int n, int ne, const int *idx, const vlbe_r
     }
 }
 
+/* 1 when every entry an element can touch in the assembled n x n matrix A
+   is finite: rows of node i, columns of nodes i-1 .. i+1 (contiguous in
+   q), checked after the assembly (an entry that overflowed while being
+   summed stays Inf or NaN); one vectorised pass over the band */
+static inline int vlbe__ale_band_finite(const vlbe_ale_chain *ch, const vlbe_real *A)
+{
+    const size_t n = (size_t)ch->n;
+    int i, r, ok = 1;
+    for (i = 0; i < ch->nn; ++i) {
+        const int lo = ch->node[i > 0 ? i - 1 : 0].ofs;
+        const int hi = i + 2 < ch->nn ? ch->node[i + 2].ofs : ch->n;
+        const int r1 = i + 1 < ch->nn ? ch->node[i + 1].ofs : ch->n;
+        for (r = ch->node[i].ofs; r < r1; ++r)
+            ok &= vlbe__ale_finite(A + (size_t)r * n + (size_t)lo, hi - lo);
+    }
+    return ok;
+}
+
+/* 1 when the diagonal of the n x n matrix A is finite: enough for the mass
+   matrix, a sum of positive semidefinite element matrices (w G^T G, eqs.
+   19, 28) and point masses, whose entries obey |M_ij| <= sqrt(M_ii M_jj) */
+static inline int vlbe__ale_diag_finite(int n, const vlbe_real *A)
+{
+    const size_t n1 = (size_t)n + 1;
+    int i, ok = 1;
+    for (i = 0; i < n; ++i) ok &= A[(size_t)i * n1] - A[(size_t)i * n1] == VLBE_R(0.0);
+    return ok;
+}
+
+/* zero n * n entries (the layout checked that n * n fits in a size_t) */
+static inline void vlbe__ale_zero_nn(int n, vlbe_real *A)
+{
+    const size_t nn = (size_t)n * (size_t)n;
+    size_t i;
+    for (i = 0; i < nn; ++i) A[i] = VLBE_R(0.0);
+}
+
+/* the first element whose coordinates hold entry k of q (or v, a): that
+   of node i's position, slopes, spin and p is element i - 1 (element 0 for
+   node 0), except the right slope of a sliding node: element i */
+static inline int vlbe__ale_elem_of(const vlbe_ale_chain *ch, int k)
+{
+    int i = 0;
+    while (i + 1 < ch->nn && ch->node[i + 1].ofs <= k) ++i; /* node i holds k */
+    if (i == 0) return 0;
+    if (ch->node[i].slide && i + 1 < ch->nn && k >= ch->node[i].ofs + 2 * ch->d &&
+        k < ch->node[i].ofs + 3 * ch->d)
+        return i;
+    return i - 1;
+}
+
+/* index of the first NaN/Inf of x[0..n-1], n when none (x may be NULL) */
+static inline int vlbe__ale_first_bad(const vlbe_real *x, int n)
+{
+    int k = 0;
+    if (x)
+        while (k < n && isfinite(x[k])) ++k;
+    return x ? k : n;
+}
+
+/* NaN/Inf in a callback's input q, v, a (each n; v, a may be NULL), found
+   before any output is written: records VLBE_ENONFINITE with the first
+   element that gathers such a value and returns the callback's value; 0
+   when all finite (the common case: one vectorised pass per array) */
+static inline int vlbe__ale_in_check(vlbe_ale_chain *ch, const vlbe_real *q, const vlbe_real *v,
+                                     const vlbe_real *a)
+{
+    int e = ch->nn, k, j;
+    const vlbe_real *x[3];
+    if (vlbe__ale_finite(q, ch->n) && (!v || vlbe__ale_finite(v, ch->n)) &&
+        (!a || vlbe__ale_finite(a, ch->n)))
+        return 0;
+    x[0] = q;
+    x[1] = v;
+    x[2] = a;
+    for (j = 0; j < 3; ++j)
+        if ((k = vlbe__ale_first_bad(x[j], ch->n)) < ch->n) {
+            const int ek = vlbe__ale_elem_of(ch, k);
+            if (ek < e) e = ek;
+        }
+    return vlbe__ale_fail(ch, VLBE_ENONFINITE, e);
+}
+
 /* prescribed p'' of the element's non-coordinate p's, as an acceleration
    vector in element coordinates (zero elsewhere); returns 0 if all zero */
 static inline int vlbe__ale_pres_acc(const vlbe_ale_chain *ch, int e, vlbe_real t, vlbe_real *ae)
@@ -3834,13 +4015,15 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
     const size_t n = (size_t)ch->n;
     const int ne = vlbe__ale_ne(ch);
     vlbe_real qe[VLBE_ALE3_NQ], Me[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
-    int e, i, k, idx[VLBE_ALE3_NQ];
+    int e, i, k, rc, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     (void)v;
-    for (i = 0; i < (int)(n * n); ++i) M[i] = VLBE_R(0.0);
+    VLBE_ASSERT(ch != NULL && q != NULL && M != NULL);
+    if ((rc = vlbe__ale_in_check(ch, q, NULL, NULL)) != 0) return rc;
+    vlbe__ale_zero_nn(ch->n, M);
     for (e = 0; e + 1 < ch->nn; ++e) {
-        if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK ||
+        if ((st = vlbe__ale_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK ||
             (st = vlbe__ale_el_mass(ch, e, md, qe, Me)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         vlbe__ale_scatter(ch->n, ne, idx, Me, M);
@@ -3850,28 +4033,29 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
             const size_t r = (size_t)(ch->node[i].ofs + k);
             M[r * n + r] += ch->node[i].mass;
         }
-    return 0;
+    return vlbe__ale_diag_finite(ch->n, M) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
 
-/* Q and, when K != NULL, K and D (both n x n) */
+/* Q and/or K, D (n x n; any of the three may be NULL) */
 static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
                                          const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                          vlbe_real *D)
 {
-    const size_t n = (size_t)ch->n;
     const int ne = vlbe__ale_ne(ch);
     vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ], Qe[VLBE_ALE3_NQ], ae[VLBE_ALE3_NQ];
     vlbe_real Ke[VLBE_ALE3_NQ * VLBE_ALE3_NQ], De[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
-    int e, i, k, idx[VLBE_ALE3_NQ];
+    int e, i, k, rc, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
+    VLBE_ASSERT(ch != NULL && q != NULL && v != NULL);
+    if ((rc = vlbe__ale_in_check(ch, q, v, NULL)) != 0) return rc;
     if (Q)
         for (i = 0; i < ch->n; ++i) Q[i] = VLBE_R(0.0);
-    if (K)
-        for (i = 0; i < (int)(n * n); ++i) K[i] = D[i] = VLBE_R(0.0);
+    if (K) vlbe__ale_zero_nn(ch->n, K);
+    if (D) vlbe__ale_zero_nn(ch->n, D);
     for (e = 0; e + 1 < ch->nn; ++e) {
-        if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK ||
-            (st = vlbe__ale_el_force(ch, e, md, qe, ve, Qe, K ? Ke : NULL, K ? De : NULL)) != VLBE_OK)
+        if ((st = vlbe__ale_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK ||
+            (st = vlbe__ale_el_force(ch, e, md, qe, ve, Qe, K ? Ke : NULL, D ? De : NULL)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         if (vlbe__ale_pres_acc(ch, e, t, ae)) {
             /* inertia of the prescribed p'': Q -= M ae, K -= d(M ae)/dq */
@@ -3888,20 +4072,23 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
         if (Q)
             for (i = 0; i < ne; ++i)
                 if (idx[i] >= 0) Q[idx[i]] += Qe[i];
-        if (K) {
-            vlbe__ale_scatter(ch->n, ne, idx, Ke, K);
-            vlbe__ale_scatter(ch->n, ne, idx, De, D);
-        }
+        if (K) vlbe__ale_scatter(ch->n, ne, idx, Ke, K);
+        if (D) vlbe__ale_scatter(ch->n, ne, idx, De, D);
     }
-    if (Q)
+    if ((K && !vlbe__ale_band_finite(ch, K)) || (D && !vlbe__ale_band_finite(ch, D)))
+        return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+    if (Q) {
         for (i = 0; i < ch->nn; ++i)
             for (k = 0; k < ch->d; ++k) Q[ch->node[i].ofs + k] += ch->node[i].mass * ch->g[k];
+        if (!vlbe__ale_finite(Q, ch->n)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+    }
     return 0;
 }
 
 VLBE_API int vlbe_ale_chain_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                                   vlbe_real *Q)
 {
+    VLBE_ASSERT(Q != NULL);
     return vlbe__ale_chain_forces((vlbe_ale_chain *)user, t, q, v, Q, NULL, NULL);
 }
 
@@ -3916,25 +4103,25 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
                                      vlbe_real *Mv)
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
-    const size_t n = (size_t)ch->n;
     const int ne = vlbe__ale_ne(ch);
     vlbe_real qe[VLBE_ALE3_NQ], ae[VLBE_ALE3_NQ], Je[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
-    int e, i, idx[VLBE_ALE3_NQ];
+    int e, i, rc, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     (void)v;
-    for (i = 0; i < (int)(n * n); ++i) Mq[i] = VLBE_R(0.0);
-    if (Mv)
-        for (i = 0; i < (int)(n * n); ++i) Mv[i] = VLBE_R(0.0);
+    VLBE_ASSERT(ch != NULL && q != NULL && a != NULL && Mq != NULL);
+    if ((rc = vlbe__ale_in_check(ch, q, NULL, a)) != 0) return rc;
+    vlbe__ale_zero_nn(ch->n, Mq);
+    if (Mv) vlbe__ale_zero_nn(ch->n, Mv);
     for (e = 0; e + 1 < ch->nn; ++e) {
-        if ((st = vlbe_ale_chain_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK)
+        if ((st = vlbe__ale_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         for (i = 0; i < ne; ++i) ae[i] = idx[i] >= 0 ? a[idx[i]] : VLBE_R(0.0);
         if ((st = vlbe__ale_el_mass_jac(ch, e, md, qe, ae, Je)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         vlbe__ale_scatter(ch->n, ne, idx, Je, Mq);
     }
-    return 0;
+    return vlbe__ale_band_finite(ch, Mq) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
 
 /* known p (and its rates) of node i for the equal-length constraint */
@@ -3974,11 +4161,12 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
                                               const vlbe_real *q, vlbe_real *C, vlbe_real *Cq,
                                               vlbe_real *Ct)
 {
-    const size_t n = (size_t)ch->n;
+    const size_t n = (size_t)ch->n, nm = n * (size_t)ch->m;
+    size_t iz;
     int k, r = 0, i, b;
     vlbe_status st;
     if (Cq)
-        for (i = 0; i < (int)(n * (size_t)ch->m); ++i) Cq[i] = VLBE_R(0.0);
+        for (iz = 0; iz < nm; ++iz) Cq[iz] = VLBE_R(0.0);
     for (k = 0; k < ch->ncon; ++k) {
         const vlbe_ale_con *c = &ch->con[k];
         const int o = ch->node[c->node].ofs;
@@ -4081,15 +4269,25 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
 VLBE_API int vlbe_ale_chain_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C)
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
-    vlbe_status st = vlbe__ale_chain_con(ch, t, q, C, NULL, NULL);
+    vlbe_status st;
+    VLBE_ASSERT(ch != NULL && q != NULL && C != NULL);
+    if (!vlbe_all_finite(q, ch->n)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+    st = vlbe__ale_chain_con(ch, t, q, C, NULL, NULL);
+    if (st == VLBE_OK && !vlbe_all_finite(C, ch->m)) st = VLBE_ENONFINITE;
     return st ? vlbe__ale_fail(ch, st, -1) : 0;
 }
 
+/* (Cq's entries are finite for finite q: +-1, the constraints' v (checked
+   by add and layout), cos and sin, slopes over their norms, al, be) */
 VLBE_API int vlbe_ale_chain_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq,
                                        vlbe_real *Ct)
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
-    vlbe_status st = vlbe__ale_chain_con(ch, t, q, NULL, Cq, Ct);
+    vlbe_status st;
+    VLBE_ASSERT(ch != NULL && q != NULL && Cq != NULL);
+    if (!vlbe_all_finite(q, ch->n)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+    st = vlbe__ale_chain_con(ch, t, q, NULL, Cq, Ct);
+    if (st == VLBE_OK && Ct && !vlbe_all_finite(Ct, ch->m)) st = VLBE_ENONFINITE;
     return st ? vlbe__ale_fail(ch, st, -1) : 0;
 }
 
@@ -4101,6 +4299,10 @@ VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real 
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
     int k, r = 0, i;
+    vlbe_status st;
+    VLBE_ASSERT(ch != NULL && q != NULL && v != NULL && gamma != NULL);
+    if (!vlbe_all_finite(q, ch->n) || !vlbe_all_finite(v, ch->n))
+        return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
     for (k = 0; k < ch->ncon; ++k) {
         const vlbe_ale_con *c = &ch->con[k];
         const int rows = vlbe__ale_con_rows(ch, c), o = ch->node[c->node].ofs;
@@ -4110,9 +4312,9 @@ VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real 
         } else if (c->type == VLBE_ALE_CON_EQUAL_LEN) {
             vlbe_real pa[3], pz[3];
             int ca, cz;
-            if (vlbe__ale_eql_end(ch, c->node, t, q, pa, &ca) ||
-                vlbe__ale_eql_end(ch, c->node2, t, q, pz, &cz))
-                return vlbe__ale_fail(ch, VLBE_ECALLBACK, -1);
+            if ((st = vlbe__ale_eql_end(ch, c->node, t, q, pa, &ca)) != VLBE_OK ||
+                (st = vlbe__ale_eql_end(ch, c->node2, t, q, pz, &cz)) != VLBE_OK)
+                return vlbe__ale_fail(ch, st, -1);
             for (i = c->node + 1; i < c->node2; ++i) {
                 const vlbe_real al = (vlbe_real)(c->node2 - i) / (vlbe_real)(c->node2 - c->node);
                 gamma[r + i - c->node - 1] = (ca >= 0 ? VLBE_R(0.0) : al * pa[2]) +
@@ -4133,15 +4335,14 @@ VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real 
             /* C = s x e(a): C_qt v = a' (s'.e), C_tt = a'' (s.e) - a'^2 (s x e) */
             vlbe_real cs[2], w[2];
             int s;
-            const vlbe_status st = vlbe__ale_angle(ch, k, t, cs, w, &s);
-            if (st != VLBE_OK) return vlbe__ale_fail(ch, st, -1);
+            if ((st = vlbe__ale_angle(ch, k, t, cs, w, &s)) != VLBE_OK) return vlbe__ale_fail(ch, st, -1);
             gamma[r] = -(VLBE_R(2.0) * w[0] * (v[s] * cs[0] + v[s + 1] * cs[1]) +
                          w[1] * (q[s] * cs[0] + q[s + 1] * cs[1]) -
                          w[0] * w[0] * (q[s] * cs[1] - q[s + 1] * cs[0]));
         }
         r += rows;
     }
-    return 0;
+    return vlbe_all_finite(gamma, ch->m) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
 
 /* H = d(C_q^T lambda)/dq: only the |r'| constraint is nonlinear. */
@@ -4152,7 +4353,10 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
     const size_t n = (size_t)ch->n;
     int k, r = 0, i, j, s;
     (void)t;
-    for (i = 0; i < (int)(n * n); ++i) H[i] = VLBE_R(0.0);
+    VLBE_ASSERT(ch != NULL && q != NULL && lambda != NULL && H != NULL);
+    if (!vlbe_all_finite(q, ch->n) || !vlbe_all_finite(lambda, ch->m))
+        return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+    vlbe__ale_zero_nn(ch->n, H);
     for (k = 0; k < ch->ncon; ++k) {
         const vlbe_ale_con *c = &ch->con[k];
         if (c->type == VLBE_ALE_CON_SLIDE_D) {
@@ -4163,9 +4367,11 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
                 const size_t b = (size_t)(o + 2 + 2 * s);
                 if (!(na > VLBE_R(0.0))) return vlbe__ale_fail(ch, VLBE_ESINGULAR, c->node);
                 for (i = 0; i < 2; ++i)
-                    for (j = 0; j < 2; ++j)
-                        H[(b + (size_t)i) * n + b + (size_t)j] +=
-                            f * ((i == j ? VLBE_R(1.0) : VLBE_R(0.0)) - a[i] * a[j] / (na * na));
+                    for (j = 0; j < 2; ++j) {
+                        vlbe_real *h = &H[(b + (size_t)i) * n + b + (size_t)j];
+                        *h += f * ((i == j ? VLBE_R(1.0) : VLBE_R(0.0)) - a[i] * a[j] / (na * na));
+                        if (!isfinite(*h)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, c->node);
+                    }
             }
         }
         r += vlbe__ale_con_rows(ch, c);
@@ -4250,7 +4456,10 @@ static inline int vlbe__ale_constrained(const vlbe_ale_chain *ch, int i)
    be NULL).  Constraints on later nodes are renumbered.  Needs
    nn < nn_cap (else VLBE_EWORK); qn, vn hold ch->n + 4 reals.  An element
    inside an equal-length group (VLBE_ALE_CON_EQUAL_LEN) cannot be split
-   (VLBE_EARG).  On failure nothing changes. */
+   (VLBE_EARG); e outside [0, nn - 1) or a 3D chain: VLBE_EARG; the errors
+   of vlbe_ale_chain_gather and of the split (ph outside (p1, p2):
+   VLBE_EBOUND; a non-finite new node: VLBE_ENONFINITE).  On failure
+   nothing changes. */
 VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real ph, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v,
                                            vlbe_real *qn, vlbe_real *vn)
@@ -4261,17 +4470,18 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
     vlbe_status st;
     VLBE_ASSERT(ch != NULL && q != NULL && qn != NULL);
     if (ch->el3) return VLBE_EARG; /* planar chains only */
-    if (e < 0 || e + 1 >= ch->nn) return VLBE_EARG;
+    if (e < 0 || e >= ch->nn - 1 || ch->n > INT_MAX - 4) return VLBE_EARG;
     for (k = 0; k < ch->ncon; ++k) { /* a fixed node inside an equally spaced group: no */
         const vlbe_ale_con *c = &ch->con[k];
         if (c->type == VLBE_ALE_CON_EQUAL_LEN && e >= c->node && e < c->node2) return VLBE_EARG;
     }
     if (ch->nn >= ch->nn_cap) return VLBE_EWORK;
-    if ((st = vlbe_ale_chain_gather(ch, e, t, q, v, qe, v ? ve : NULL, idx, &md)) != VLBE_OK)
+    if ((st = vlbe__ale_gather(ch, e, t, q, v, qe, v ? ve : NULL, idx, &md)) != VLBE_OK)
         return st;
     st = ch->et ? ch->et->split(ch->els, e, qe, v ? ve : NULL, ph, qh, v ? qhd : NULL, aux)
                 : vlbe_ale_split(qe, v ? ve : NULL, ph, qh, v ? qhd : NULL);
     if (st != VLBE_OK) return st;
+    if (!vlbe_all_finite(qh, 5) || !vlbe_all_finite(qhd, 5)) return VLBE_ENONFINITE;
     if (ch->et) ch->et->commit(ch->els, ch->nn - 1, e, 1, aux);
     /* shift nodes e+1.. up by one; their ofs still name the old layout */
     for (i = ch->nn; i > e + 1; --i) ch->node[i] = ch->node[i - 1];
@@ -4311,8 +4521,8 @@ static inline vlbe_status vlbe__ale_merge_aux(const vlbe_ale_chain *ch, int i, v
     int idx[10];
     unsigned md;
     vlbe_status st;
-    if ((st = vlbe_ale_chain_gather(ch, i - 1, t, q, NULL, qa, NULL, idx, &md)) != VLBE_OK ||
-        (st = vlbe_ale_chain_gather(ch, i, t, q, NULL, qb, NULL, idx, &md)) != VLBE_OK)
+    if ((st = vlbe__ale_gather(ch, i - 1, t, q, NULL, qa, NULL, idx, &md)) != VLBE_OK ||
+        (st = vlbe__ale_gather(ch, i, t, q, NULL, qb, NULL, idx, &md)) != VLBE_OK)
         return st;
     return ch->et->merge(ch->els, i - 1, qa, qa + 5, qb + 5, aux);
 }
@@ -4403,18 +4613,27 @@ static inline int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
    (copied unchanged when nothing is done; qn, vn must not alias q, v); *slider
    follows its node; *changed = 0 (nothing), 1 (inserted), 2 (inserted and
    removed), 3 (removed).  Restart the integrator from (qn, vn) when
-   *changed != 0. */
+   *changed != 0.  A slider at a chain end (0 or nn - 1): nothing done.
+   Errors: VLBE_EARG for *slider outside [0, nn), a 3D chain, or Lstd not
+   finite or with 0.5 Lstd <= max(0, ch->Lmin) (the control would make
+   elements the callbacks refuse); the errors of vlbe_ale_chain_pnode,
+   _insert and _remove.  On failure nothing changes: the chain, its nodes,
+   constraints and element objects, qn, vn, *slider and *changed. */
 VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slider, vlbe_real Lstd,
                                                    vlbe_real t, const vlbe_real *q,
                                                    const vlbe_real *v, vlbe_real *qn,
                                                    vlbe_real *vn, int *changed)
 {
-    vlbe_real pl[3], ps[3], pr[3], Ll, Lr, at, aux[VLBE_ALE_ETYPE_AUX] = {0};
+    vlbe_real pl[3], ps[3], pr[3], Ll = VLBE_R(0.0), Lr = VLBE_R(0.0), at,
+        aux[VLBE_ALE_ETYPE_AUX] = {0};
     const vlbe_real lo = VLBE_R(0.5) * Lstd, hi = VLBE_R(1.5) * Lstd;
-    const int s = *slider;
-    int side = 0, ins, k;
+    int s, side = 0, ins, k;
     vlbe_status st;
-    *changed = 0;
+    VLBE_ASSERT(ch != NULL && slider != NULL && q != NULL && qn != NULL && changed != NULL);
+    s = *slider;
+    if (ch->el3 || s < 0 || s >= ch->nn || !isfinite(Lstd) || !(lo > VLBE_R(0.0)) ||
+        !(lo > ch->Lmin))
+        return VLBE_EARG;
     if (s > 0 && s < ch->nn - 1) {
         if ((st = vlbe_ale_chain_pnode(ch, s - 1, t, q, v, pl)) != VLBE_OK ||
             (st = vlbe_ale_chain_pnode(ch, s, t, q, v, ps)) != VLBE_OK ||
@@ -4431,6 +4650,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
             qn[k] = q[k];
             if (v && vn) vn[k] = v[k];
         }
+        *changed = 0;
         return VLBE_OK;
     }
     if (side < 0) {
@@ -4447,11 +4667,14 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
         if (vlbe__ale_removable(ch, i) && (st = vlbe__ale_merge_aux(ch, i, t, q, aux)) != VLBE_OK)
             return st;
     }
+    /* *slider and *changed are written only after the change succeeded (the
+       removal after an insertion cannot fail: its merge is made above) */
     if (!ins) { /* rule (b) only: remove the far node of the short element */
         const int i = s - side; /* s + 1 when side = -1, s - 1 when side = 1 */
+        if ((st = vlbe_ale_chain_remove(ch, i, t, q, v, qn, vn)) != VLBE_OK) return st;
         if (side > 0) *slider = s - 1;
         *changed = 3;
-        return vlbe_ale_chain_remove(ch, i, t, q, v, qn, vn);
+        return VLBE_OK;
     }
     if (side < 0) { /* new node in element s-1; the slider becomes s+1 */
         if ((st = vlbe_ale_chain_insert(ch, s - 1, at, t, q, v, qn, vn)) != VLBE_OK) return st;

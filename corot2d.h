@@ -166,6 +166,7 @@ REFERENCES
 #ifndef VLBE_COROT2D_H
 #define VLBE_COROT2D_H
 #include "vlbe.h"
+#include <limits.h>
 
 #if !defined(VLBE_VERSION_MAJOR) || VLBE_VERSION_MAJOR != 0 || VLBE_VERSION_MINOR < 1
 #error "corot2d.h needs vlbe.h 0.1 or newer in the same directory"
@@ -1319,7 +1320,18 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
    status and the element in err, err_elem.  With joint set, element trans
    is evaluated as the transition element (vlbe_cr2d_trans_*); the caller
    moves trans (and the constraints of the nodes inside the joint) when a
-   node crosses the exit. */
+   node crosses the exit.  NaN/Inf in a callback's q, v (force, force_jac)
+   or a (mass_jac) is found before anything is written (VLBE_ENONFINITE at
+   the first element reading it, outputs untouched); a fix's dof outside
+   [0, n) in a constraint callback: VLBE_EARG (-1).  Exception to the rule
+   that a failed call writes nothing: a failure on finite inputs -- an
+   element out of its domain, a fix or frame function giving NaN, a sum
+   that overflows (VLBE_ENONFINITE, err_elem -1 outside the elements) --
+   leaves M, Q, K, D, Mq, Mv, C, Cq, Ct, gamma unspecified: they are
+   assembled in place (n x n; the beam has no room for a copy) and an
+   element's failure shows only after the earlier elements were added.  The
+   integrators treat them as scratch after a failure.  K or D of force_jac,
+   Mv of mass_jac, Ct of constr_jac may be NULL. */
 typedef struct vlbe_cr2d_fix {
     int dof;          /* index in q                                        */
     vlbe_real g[3];   /* g(t) = g0 + g1 t + g2 t^2/2 when fun is NULL      */
@@ -1368,17 +1380,27 @@ VLBE_API vlbe_status vlbe_cr2d_beam_energy_t(const vlbe_cr2d_beam *b, vlbe_real 
                                              const vlbe_real *q, const vlbe_real *v,
                                              vlbe_real *E);
 
+/* ne >= 1 elements el[0..ne-1], nfix >= 0 prescribed coordinates fix
+   (NULL when nfix = 0), each dof in [0, n): else VLBE_EARG, also when n =
+   3 (ne + 1) would exceed INT_MAX or n * n, nfix * n the range of size_t
+   (the callbacks' matrices); a non-finite g of a fix without fun:
+   VLBE_ENONFINITE.  On failure b is not written. */
 VLBE_API vlbe_status vlbe_cr2d_beam_init(vlbe_cr2d_beam *b, const vlbe_cr2d_elem *el, int ne,
                                          const vlbe_cr2d_fix *fix, int nfix)
 {
-    int i;
+    int i, n;
     VLBE_ASSERT(b != NULL && el != NULL);
-    if (ne < 1 || nfix < 0 || (nfix > 0 && fix == NULL)) return VLBE_EARG;
+    if (ne < 1 || ne > INT_MAX / 3 - 1 || nfix < 0 || (nfix > 0 && fix == NULL)) return VLBE_EARG;
+    n = 3 * (ne + 1);
+    if ((size_t)n > (size_t)-1 / (size_t)n || (size_t)nfix > (size_t)-1 / (size_t)n)
+        return VLBE_EARG;
     for (i = 0; i < nfix; ++i)
-        if (fix[i].dof < 0 || fix[i].dof >= 3 * (ne + 1)) return VLBE_EARG;
+        if (fix[i].dof < 0 || fix[i].dof >= n) return VLBE_EARG;
+    for (i = 0; i < nfix; ++i)
+        if (!fix[i].fun && !vlbe_all_finite(fix[i].g, 3)) return VLBE_ENONFINITE;
     b->el = el;
     b->ne = ne;
-    b->n = 3 * (ne + 1);
+    b->n = n;
     b->mode = 0;
     b->P = NULL;
     b->load = VLBE_R(1.0);
@@ -1432,13 +1454,66 @@ static inline int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
                : -1;
 }
 
-/* A[3e.., 3e..] += Ae (6x6) in the n x n matrix */
-static inline void vlbe__cr2d_scatter(int n, int e, const vlbe_real *Ae, vlbe_real *A)
+/* A[3e.., 3e..] += Ae (6x6) in the n x n matrix; 1 when the entries added
+   to are finite afterwards (a NaN/Inf entry stays so under later
+   additions; x - x == 0 only for finite x: no branch in the loop) */
+static inline int vlbe__cr2d_scatter(int n, int e, const vlbe_real *Ae, vlbe_real *A)
 {
     const size_t o = (size_t)(3 * e), N = (size_t)n;
     size_t i, j;
+    int ok = 1;
     for (i = 0; i < 6; ++i)
-        for (j = 0; j < 6; ++j) A[(o + i) * N + o + j] += Ae[i * 6 + j];
+        for (j = 0; j < 6; ++j) {
+            const vlbe_real x = A[(o + i) * N + o + j] + Ae[i * 6 + j];
+            A[(o + i) * N + o + j] = x;
+            ok &= x - x == VLBE_R(0.0);
+        }
+    return ok;
+}
+
+/* 1 when x[0..n-1] are all finite (no early exit, an integer AND: the
+   loop vectorises; the callbacks' checks of q, v, a, Q) */
+static inline int vlbe__cr2d_finite(const vlbe_real *x, int n)
+{
+    int i, ok = 1;
+    for (i = 0; i < n; ++i) ok &= x[i] - x[i] == VLBE_R(0.0);
+    return ok;
+}
+
+/* zero cnt entries (init checked that n * n and nfix * n fit in a size_t) */
+static inline void vlbe__cr2d_zero(size_t cnt, vlbe_real *A)
+{
+    size_t i;
+    for (i = 0; i < cnt; ++i) A[i] = VLBE_R(0.0);
+}
+
+/* NaN/Inf in a callback's q, v, a (each n; v, a may be NULL), found before
+   any output is written: records VLBE_ENONFINITE at the first element that
+   reads it and returns the callback's value (1); 0 when all finite */
+static inline int vlbe__cr2d_in_check(vlbe_cr2d_beam *b, const vlbe_real *q, const vlbe_real *v,
+                                      const vlbe_real *a)
+{
+    int e;
+    if (vlbe__cr2d_finite(q, b->n) && (!v || vlbe__cr2d_finite(v, b->n)) &&
+        (!a || vlbe__cr2d_finite(a, b->n)))
+        return 0;
+    for (e = 0; e < b->ne; ++e)
+        if (!vlbe_all_finite(q + 3 * e, 6) || (v && !vlbe_all_finite(v + 3 * e, 6)) ||
+            (a && !vlbe_all_finite(a + 3 * e, 6)))
+            break;
+    return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e < b->ne ? e : -1);
+}
+
+/* the constraint callbacks: every fix's dof in [0, n) (the caller may move
+   the fixes after init) and q finite; 0 or the callback's value */
+static inline int vlbe__cr2d_fix_check(vlbe_cr2d_beam *b, const vlbe_real *q, const vlbe_real *v)
+{
+    int k;
+    for (k = 0; k < b->nfix; ++k)
+        if (b->fix[k].dof < 0 || b->fix[k].dof >= b->n) return vlbe__cr2d_fail(b, VLBE_EARG, -1);
+    if ((q && !vlbe_all_finite(q, b->n)) || (v && !vlbe_all_finite(v, b->n)))
+        return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
+    return 0;
 }
 
 VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
@@ -1447,15 +1522,17 @@ VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, co
     vlbe_cr2d_beam *b = (vlbe_cr2d_beam *)user;
     vlbe_real Me[36];
     vlbe_status st;
-    int e;
+    int e, rc;
     (void)t;
     (void)v;
-    vlbe_vec_zero(b->n * b->n, M);
+    VLBE_ASSERT(b != NULL && q != NULL && M != NULL);
+    if ((rc = vlbe__cr2d_in_check(b, q, NULL, NULL)) != 0) return rc;
+    vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, M);
     for (e = 0; e < b->ne; ++e) {
         if ((st = vlbe__cr2d_mass_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e, Me)) !=
             VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
-        vlbe__cr2d_scatter(b->n, e, Me, M);
+        if (!vlbe__cr2d_scatter(b->n, e, Me, M)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
 }
@@ -1466,14 +1543,16 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const v
 {
     vlbe_real Qe[6], Ke[36], De[36], fth[2];
     vlbe_status st;
-    int e, i;
+    int e, i, rc;
+    VLBE_ASSERT(b != NULL && q != NULL && v != NULL);
+    if ((rc = vlbe__cr2d_in_check(b, q, v, NULL)) != 0) return rc;
     if (Q) {
         vlbe_vec_zero(b->n, Q);
         if (b->P)
             for (i = 0; i < b->n; ++i) Q[i] = b->load * b->P[i];
     }
-    if (K) vlbe_vec_zero(b->n * b->n, K);
-    if (D) vlbe_vec_zero(b->n * b->n, D);
+    if (K) vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, K);
+    if (D) vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, D);
     for (e = 0; e < b->ne; ++e) {
         if ((st = vlbe__cr2d_force_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode,
                                        vlbe__cr2d_bframe(b, e, t, fth), q + 3 * e, v + 3 * e,
@@ -1481,15 +1560,17 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const v
             return vlbe__cr2d_fail(b, st, e);
         if (Q)
             for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
-        if (K) vlbe__cr2d_scatter(b->n, e, Ke, K);
-        if (D) vlbe__cr2d_scatter(b->n, e, De, D);
+        if ((K && !vlbe__cr2d_scatter(b->n, e, Ke, K)) || (D && !vlbe__cr2d_scatter(b->n, e, De, D)))
+            return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
+    if (Q && !vlbe__cr2d_finite(Q, b->n)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
     return 0;
 }
 
 VLBE_API int vlbe_cr2d_beam_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                                   vlbe_real *Q)
 {
+    VLBE_ASSERT(Q != NULL);
     return vlbe__cr2d_beam_forces((vlbe_cr2d_beam *)user, t, q, v, Q, NULL, NULL);
 }
 
@@ -1506,40 +1587,46 @@ VLBE_API int vlbe_cr2d_beam_mass_jac(void *user, vlbe_real t, const vlbe_real *q
     vlbe_cr2d_beam *b = (vlbe_cr2d_beam *)user;
     vlbe_real Me[36];
     vlbe_status st;
-    int e;
+    int e, rc;
     (void)t;
     (void)v;
-    vlbe_vec_zero(b->n * b->n, Mq);
-    if (Mv) vlbe_vec_zero(b->n * b->n, Mv);
+    VLBE_ASSERT(b != NULL && q != NULL && a != NULL && Mq != NULL);
+    if ((rc = vlbe__cr2d_in_check(b, q, NULL, a)) != 0) return rc;
+    vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, Mq);
+    if (Mv) vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, Mv);
     for (e = 0; e < b->ne; ++e) {
         if ((st = vlbe__cr2d_mass_jac_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e,
                                           a + 3 * e, Me)) != VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
-        vlbe__cr2d_scatter(b->n, e, Me, Mq);
+        if (!vlbe__cr2d_scatter(b->n, e, Me, Mq)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
 }
 
 VLBE_API int vlbe_cr2d_beam_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C)
 {
-    const vlbe_cr2d_beam *b = (const vlbe_cr2d_beam *)user;
+    vlbe_cr2d_beam *b = (vlbe_cr2d_beam *)user;
     vlbe_real g[3];
-    int k;
+    int k, rc;
+    VLBE_ASSERT(b != NULL && q != NULL && (b->nfix == 0 || C != NULL));
+    if ((rc = vlbe__cr2d_fix_check(b, q, NULL)) != 0) return rc;
     for (k = 0; k < b->nfix; ++k) {
         vlbe_cr2d_fix_eval(&b->fix[k], t, g);
         C[k] = q[b->fix[k].dof] - g[0];
     }
-    return 0;
+    return vlbe_all_finite(C, b->nfix) ? 0 : vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
 }
 
 VLBE_API int vlbe_cr2d_beam_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq,
                                        vlbe_real *Ct)
 {
-    const vlbe_cr2d_beam *b = (const vlbe_cr2d_beam *)user;
+    vlbe_cr2d_beam *b = (vlbe_cr2d_beam *)user;
     vlbe_real g[3];
-    int k;
+    int k, rc;
     (void)q;
-    vlbe_vec_zero(b->nfix * b->n, Cq);
+    VLBE_ASSERT(b != NULL && (b->nfix == 0 || Cq != NULL));
+    if ((rc = vlbe__cr2d_fix_check(b, NULL, NULL)) != 0) return rc;
+    vlbe__cr2d_zero((size_t)b->nfix * (size_t)b->n, Cq);
     for (k = 0; k < b->nfix; ++k) {
         Cq[(size_t)k * (size_t)b->n + (size_t)b->fix[k].dof] = VLBE_R(1.0);
         if (Ct) {
@@ -1547,27 +1634,30 @@ VLBE_API int vlbe_cr2d_beam_constr_jac(void *user, vlbe_real t, const vlbe_real 
             Ct[k] = -g[1];
         }
     }
-    return 0;
+    return (!Ct || vlbe_all_finite(Ct, b->nfix)) ? 0 : vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
 }
 
 VLBE_API int vlbe_cr2d_beam_constr_acc(void *user, vlbe_real t, const vlbe_real *q,
                                        const vlbe_real *v, vlbe_real *gamma)
 {
-    const vlbe_cr2d_beam *b = (const vlbe_cr2d_beam *)user;
+    vlbe_cr2d_beam *b = (vlbe_cr2d_beam *)user;
     vlbe_real g[3];
-    int k;
+    int k, rc;
     (void)q;
     (void)v;
+    VLBE_ASSERT(b != NULL && (b->nfix == 0 || gamma != NULL));
+    if ((rc = vlbe__cr2d_fix_check(b, NULL, NULL)) != 0) return rc;
     for (k = 0; k < b->nfix; ++k) {
         vlbe_cr2d_fix_eval(&b->fix[k], t, g);
         gamma[k] = g[2];
     }
-    return 0;
+    return vlbe_all_finite(gamma, b->nfix) ? 0 : vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
 }
 
 VLBE_API vlbe_status vlbe_cr2d_beam_energy(const vlbe_cr2d_beam *b, const vlbe_real *q,
                                            const vlbe_real *v, vlbe_real *E)
 {
+    VLBE_ASSERT(b != NULL);
     if (b->frame) return VLBE_EARG; /* the frame needs the time: _energy_t */
     return vlbe_cr2d_beam_energy_t(b, VLBE_R(0.0), q, v, E);
 }
@@ -1579,6 +1669,7 @@ VLBE_API vlbe_status vlbe_cr2d_beam_energy_t(const vlbe_cr2d_beam *b, vlbe_real 
     vlbe_real Ee[2], fth[2], T = VLBE_R(0.0), U = VLBE_R(0.0);
     vlbe_status st;
     int e;
+    VLBE_ASSERT(b != NULL && q != NULL && v != NULL && E != NULL);
     for (e = 0; e < b->ne; ++e) {
         if ((st = vlbe__cr2d_energy_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode,
                                         vlbe__cr2d_bframe(b, e, t, fth), q + 3 * e, v + 3 * e,
@@ -1587,6 +1678,7 @@ VLBE_API vlbe_status vlbe_cr2d_beam_energy_t(const vlbe_cr2d_beam *b, vlbe_real 
         T += Ee[0];
         U += Ee[1];
     }
+    if (!isfinite(T) || !isfinite(U)) return VLBE_ENONFINITE; /* a sum that overflows */
     E[0] = T;
     E[1] = U;
     return VLBE_OK;

@@ -1707,7 +1707,7 @@ static double chain_U_composite(const vlbe_ale_chain *ch, vlbe_real t, const vlb
     const int npan = 16;
     double U = 0.0;
     int e, j, g, idx[10];
-    unsigned md;
+    unsigned md = 0u; /* written by a successful gather */
     assert_int_equal(vlbe_gl_rule(12, &x, &w), VLBE_OK);
     for (e = 0; e + 1 < ch->nn; ++e) {
         vlbe_real qe[10];
