@@ -16,7 +16,8 @@
                     then solve: X finite when the solution with the same
                     factor in long double fits in vlbe_real with 2^(n+4) to
                     spare; a finite X has |P b - P A x| <= (6n + 6) eps
-                    |L||U||x| (+ floor) (Higham, Accuracy and Stability,
+                    |L||U||x| (+ underflow floors, see lu_check_solve)
+                    (Higham, Accuracy and Stability,
                     thm. 9.4: gamma_3n).
      factor not OK  status VLBE_ESINGULAR (info in 1..n) or VLBE_ENONFINITE
                     (only when A holds NaN/Inf); A, piv unchanged; LU and
@@ -103,12 +104,33 @@ static lu_ld lu_solve_ld(int n, int nrhs, const vlbe_real *LU, const int *piv,
     return big;
 }
 
+/* Residual bound of the solve.  r = P b - P A x = (P b - L U x) + (L U - P A) x
+   with the computed L, U, x:
+   - (L U - P A) x: the factor's backward error, asserted by lu_check_factor
+     entrywise: |P A - L U|_ij <= (4n + 4) eps (|L||U|)_ij + 4n dmin (1 + cu_j),
+     cu_j = sum_k |u_kj|.  The dmin part is absolute, not relative to |L||U|:
+     a subnormal multiplier l_ik ~ a_ik / u_kk is rounded on the grid of
+     dmin, so l_ik u_kk misses a_ik by up to |u_kk| dmin / 2 however small
+     l_ik u_kk (and so row i of |L||U|) is.  Times x it gives
+     4n dmin sum_j (1 + cu_j) |x_j|, which |U| bounds, not row i of |L||U|
+     (A = [108 1; 3.2e-310 1], x_1 = 6.8e226: l_21 = a_21 fl(1 / u_11) is
+     the correctly rounded quotient a_21 / u_11, 0.39 dmin off, and r_2 =
+     (a_21 - l_21 u_11) x_1 = 42 dmin x_1, above the solve floor
+     8n dmin (1 + lu1)(1 + max|x|) = 32 dmin x_1; no factor stored in
+     vlbe_real does better).  The reciprocal of vlbe_lu_factor adds a
+     relative eps / 2 to l_ik before that rounding, << dmin for a subnormal
+     l_ik.
+   - P b - L U x: the two triangular solves (Higham thm. 8.5) with the
+     eps part in (2n + 2) eps |L||U||x|; each underflowing product and the
+     last rounding x_i = t / u_ii add an absolute dmin / 2, i.e. row i gets
+     at most dmin / 2 (n + sum_k |l_ik| (n + |u_kk|)) <= n dmin (n + 1 + lu1) / 2
+     (|l_ik| <= 1), below 8n dmin (1 + lu1) for n + 1 <= 15 (LU_NMAX = 12). */
 static void lu_check_solve(int n, int nrhs, const vlbe_real *A, const vlbe_real *LU,
                            const int *piv, const vlbe_real *B)
 {
     vlbe_real X[LU_NMAX * LU_RMAX];
     lu_ld xl[LU_NMAX * LU_RMAX], L[LU_NMAX * LU_NMAX], U[LU_NMAX * LU_NMAX],
-        PA[LU_NMAX * LU_NMAX], PB[LU_NMAX * LU_RMAX];
+        PA[LU_NMAX * LU_NMAX], PB[LU_NMAX * LU_RMAX], cu[LU_NMAX];
     const lu_ld dmin = (lu_ld)ldexp(1.0, FZ_MIN_EXP - FZ_MANT_DIG);
     const lu_ld big = lu_solve_ld(n, nrhs, LU, piv, B, xl);
     int i, j, k, r, fin;
@@ -124,9 +146,13 @@ static void lu_check_solve(int n, int nrhs, const vlbe_real *A, const vlbe_real 
     lu_expand(n, LU, L, U);
     lu_permute(n, n, piv, A, PA);
     lu_permute(n, nrhs, piv, B, PB);
+    for (j = 0; j < n; ++j) {
+        cu[j] = 0.0L;
+        for (k = 0; k < n; ++k) cu[j] += lu_fabsl(U[k * n + j]);
+    }
     for (r = 0; r < nrhs; ++r)
         for (i = 0; i < n; ++i) {
-            lu_ld res = PB[i * nrhs + r], bnd = 0.0L, lu1 = 0.0L, xm = 0.0L;
+            lu_ld res = PB[i * nrhs + r], bnd = 0.0L, lu1 = 0.0L, xm = 0.0L, fx = 0.0L;
             for (j = 0; j < n; ++j) {
                 lu_ld lu_ij = 0.0L;
                 res -= PA[i * n + j] * (lu_ld)X[j * nrhs + r];
@@ -134,9 +160,11 @@ static void lu_check_solve(int n, int nrhs, const vlbe_real *A, const vlbe_real 
                 bnd += lu_ij * lu_fabsl((lu_ld)X[j * nrhs + r]);
                 lu1 += lu_ij;
                 if (lu_fabsl((lu_ld)X[j * nrhs + r]) > xm) xm = lu_fabsl((lu_ld)X[j * nrhs + r]);
+                fx += (1.0L + cu[j]) * lu_fabsl((lu_ld)X[j * nrhs + r]);
             }
             FUZZ_CHECK(lu_fabsl(res) <= (lu_ld)(6 * n + 6) * (lu_ld)VLBE_EPS * bnd +
-                                            8.0L * n * dmin * (1.0L + lu1) * (1.0L + xm),
+                                            8.0L * n * dmin * (1.0L + lu1) * (1.0L + xm) +
+                                            4.0L * n * dmin * fx,
                        "solve residual above the backward-error bound");
         }
 }
