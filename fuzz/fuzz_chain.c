@@ -18,7 +18,10 @@
        VLBE_EARG (contract 2: checked before any use);
      chain_init / chain_add with bad sizes or nodes => not OK;
      every status routine: OK => outputs finite, else outputs and the chain
-       (struct, nodes, constraints) bitwise unchanged (fz_post);
+       (struct, nodes, constraints) bitwise unchanged (fz_post); insert,
+       remove and length control owe finite qn, vn only for finite q, v
+       (fz_post_in): they copy the coordinates of the nodes they do not
+       touch without looking at them (contract 1 is about finite inputs);
      the callback vlbe_ale_chain_force_jac with D = NULL (allowed by the
        vlbe_dae contract: "Mv may be NULL", K and D: either may be NULL in
        the element calls) must not crash; 0 => K finite. */
@@ -40,7 +43,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     vlbe_real q[CH_QMAX], v[CH_QMAX], qn[CH_QMAX + 8], vn[CH_QMAX + 8], qe[VLBE_ALE3_NQ],
         ve[VLBE_ALE3_NQ], p3[3], E[3], len, rate, r[2], rp[2], p = VLBE_R(0.0), t, Lstd,
         K[CH_QMAX * CH_QMAX], Dm[CH_QMAX * CH_QMAX];
-    int nn, cap, ncon, i, k, idx[VLBE_ALE3_NQ], e, slider, changed, n;
+    int nn, cap, ncon, i, k, idx[VLBE_ALE3_NQ], e, slider, changed, n, infin = 1;
     unsigned op, var, md;
     vlbe_status st;
     fz_rd rd;
@@ -151,6 +154,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     case 4:
         fz_out(qn, (size_t)(n + 8), "qn");
         fz_out(vn, (size_t)(n + 8), "vn");
+        infin = fz_finite(q, (size_t)n) && ((op != 4 && (var & 1u)) || fz_finite(v, (size_t)n));
         if (op == 2) {
             e = fz_index(&rd, nn - 1);
             p = (var & 4u) ? fz_real(&rd) : fz_mod(&rd, 1.0);
@@ -221,6 +225,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     }
-    fz_post(st);
+    fz_post_in(st, infin);
     return 0;
 }
