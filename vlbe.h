@@ -545,7 +545,9 @@ VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int km
    "a failed call leaves the caller's data as it was", since keeping them
    would need a copy of the matrix.  A successful factor is finite and its
    pivots have finite reciprocals, so vlbe_lu_solve cannot produce NaN or
-   Inf from it unless B or the solution overflows.
+   Inf from it unless B, the solution or a product or partial sum of the
+   substitutions overflows (the substitutions are not scaled as LAPACK's
+   xLATRS: e.g. u_12 x_2 may pass VLBE_REAL_MAX for a finite x_1).
    Cost of the checks: a comparison per pivot; the overflow scan of the
    factor at the end runs only when max|A| 2^n can pass VLBE_REAL_MAX
    (growth bound of partial pivoting: |l_ik| <= 1, so every elimination step

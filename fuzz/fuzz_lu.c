@@ -14,7 +14,8 @@
                     matrix with an exactly zero row or column
                     (n >= 2);
                     then solve: X finite when the solution with the same
-                    factor in long double fits in vlbe_real with 2^(n+4) to
+                    factor in long double, and every product and partial
+                    sum on the way, fit in vlbe_real with 2^(n+4) to
                     spare; a finite X has |P b - P A x| <= (6n + 6) eps
                     |L||U||x| (+ underflow floors, see lu_check_solve)
                     (Higham, Accuracy and Stability,
@@ -81,8 +82,13 @@ static void lu_check_factor(int n, const vlbe_real *A, const vlbe_real *LU, cons
         }
 }
 
+static lu_ld lu_big(lu_ld big, lu_ld v) { return lu_fabsl(v) > big ? lu_fabsl(v) : big; }
+
 /* solution with the same factor in long double: x (n x nrhs); returns the
-   largest magnitude of any intermediate or final value */
+   largest magnitude of any intermediate or final value: every product
+   l_ik y_k, u_ik x_k and partial sum of the substitutions, not only y and
+   x (A = [3.0e305 -1.5e306; -9.3e298 3.1e290], b = (1.4e306, 1.4e306):
+   x = (-1.5e7, -3.0e6), but u_12 x_2 = 4.5e312 overflows on the way) */
 static lu_ld lu_solve_ld(int n, int nrhs, const vlbe_real *LU, const int *piv,
                         const vlbe_real *B, lu_ld *x)
 {
@@ -90,15 +96,22 @@ static lu_ld lu_solve_ld(int n, int nrhs, const vlbe_real *LU, const int *piv,
     int i, k, r;
     lu_expand(n, LU, L, U);
     lu_permute(n, nrhs, piv, B, x);
+    for (i = 0; i < n * nrhs; ++i) big = lu_big(big, x[i]);
     for (r = 0; r < nrhs; ++r) {
-        for (i = 0; i < n; ++i) {
-            for (k = 0; k < i; ++k) x[i * nrhs + r] -= L[i * n + k] * x[k * nrhs + r];
-            if (lu_fabsl(x[i * nrhs + r]) > big) big = lu_fabsl(x[i * nrhs + r]);
-        }
+        for (i = 0; i < n; ++i)
+            for (k = 0; k < i; ++k) {
+                const lu_ld t = L[i * n + k] * x[k * nrhs + r];
+                x[i * nrhs + r] -= t;
+                big = lu_big(lu_big(big, t), x[i * nrhs + r]);
+            }
         for (i = n - 1; i >= 0; --i) {
-            for (k = i + 1; k < n; ++k) x[i * nrhs + r] -= U[i * n + k] * x[k * nrhs + r];
+            for (k = i + 1; k < n; ++k) {
+                const lu_ld t = U[i * n + k] * x[k * nrhs + r];
+                x[i * nrhs + r] -= t;
+                big = lu_big(lu_big(big, t), x[i * nrhs + r]);
+            }
             x[i * nrhs + r] /= U[i * n + i];
-            if (lu_fabsl(x[i * nrhs + r]) > big) big = lu_fabsl(x[i * nrhs + r]);
+            big = lu_big(big, x[i * nrhs + r]);
         }
     }
     return big;
