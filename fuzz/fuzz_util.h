@@ -14,7 +14,7 @@
         FUZZ_CHECK calls vlbe_fuzz_fail_hook(), defined by the test, which
         records harness, file, line and message and longjmps back to the
         replay loop (the harnesses hold no resources: no malloc).
-   The contract checked (the shared brief of the failure-path work):
+   The contract checked (vlbe.h, FAILURE CONTRACT):
      1. status OK and all inputs finite => every output finite;
      2. an index or size out of range => VLBE_EARG;
      3. status != OK => every caller-visible output and state bitwise as

@@ -4,10 +4,10 @@ input format of fuzz/fuzz_util.h (part of vlbe, SPDX-License-Identifier: MIT).
 
     python3 fuzz/seeds.py          (from the repository root)
 
-Seeds named known_* reproduce the contract violations of the base code
-77b73ad listed when the fuzzing started, found_* those the harnesses found
-(the replay test fails on both until the library is fixed); good_* are
-inputs the base code handles as the contract says.  Inputs found by the
+Seeds named known_* reproduce contract violations of 77b73ad that were
+found by hand, found_* those the harnesses found (both are regression
+inputs: the replay test failed on them at 77b73ad); good_* are inputs that
+code already handled as the contract says.  Inputs found by the
 fuzzer are copied into the corpus by hand (minimised)."""
 import os
 import struct

@@ -17,9 +17,9 @@
    (6n + 6) eps |L||U||x|; the rest are exact: finite / bitwise unchanged).
 
    Tests (one per harness): lu, ale, ale3, rancf, cr2d, chain, step.
-   Seeds named known_* and found_* reproduce contract violations of the base
-   code 77b73ad (fuzz/seeds.py): they fail here until the
-   library is fixed, and are regression tests after that; good_* pass. */
+   Seeds named known_* and found_* reproduce contract violations of 77b73ad
+   (fuzz/seeds.py): regression inputs, each failed here on that code;
+   good_* passed there too. */
 #define _POSIX_C_SOURCE 200809L
 #include "test_util.h"
 
