@@ -490,13 +490,37 @@ static inline void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp,
     }
 }
 
+/* 1 when x[0..n) are all finite.  Branch-free (it vectorizes): the final
+   check of an element's outputs, computed in locals, before they are
+   committed to the caller's arrays. */
+static inline int vlbe__ale_finite(const vlbe_real *x, int n)
+{
+    int i, ok = 1;
+    for (i = 0; i < n; ++i) ok &= vlbe_fabs(x[i]) <= VLBE_REAL_MAX;
+    return ok;
+}
+
+/* The element length L = p2 - p1 in range: L > 0, L finite and L^-4 (the
+   largest power of 1/L the element's basis carries, vlbe__ale_lpow)
+   finite: double L > ~2.7e-78, float L > ~7.4e-10.  VLBE_ELENGTH
+   otherwise. */
+static inline vlbe_status vlbe__ale_len(vlbe_real p1, vlbe_real p2)
+{
+    const vlbe_real L = p2 - p1;
+    vlbe_real r;
+    if (!(L > VLBE_R(0.0)) || !(L <= VLBE_REAL_MAX)) return VLBE_ELENGTH;
+    r = VLBE_R(1.0) / L;
+    r *= r;
+    if (!(r * r <= VLBE_REAL_MAX)) return VLBE_ELENGTH;
+    return VLBE_OK;
+}
+
 /* Input checks shared by the eval functions. */
 static inline vlbe_status vlbe__ale_check(const vlbe_real *q, const vlbe_real *qd)
 {
     if (!vlbe_all_finite(q, VLBE_ALE_NQ)) return VLBE_ENONFINITE;
     if (qd && !vlbe_all_finite(qd, VLBE_ALE_NQ)) return VLBE_ENONFINITE;
-    if (!(q[9] - q[4] > VLBE_R(0.0))) return VLBE_ELENGTH;
-    return VLBE_OK;
+    return vlbe__ale_len(q[4], q[9]);
 }
 
 /* Which p's are coordinates: bit k set when p_{k+1} is free. */
@@ -1534,6 +1558,11 @@ static inline vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode
         for (i = 0; i < 100; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
     st = vlbe__ale_forces(el, mode, q, qd, Qt, jac ? Kt : NULL, jac ? Dt : NULL);
     if (st != VLBE_OK) return st;
+    /* finite inputs can still overflow (huge slopes, rates, L^3 of a huge
+       element): nothing is written then */
+    if (!vlbe__ale_finite(Qt, 10) || (K && !vlbe__ale_finite(Kt, 100)) ||
+        (D && !vlbe__ale_finite(Dt, 100)))
+        return VLBE_ENONFINITE;
     for (i = 0; i < 10; ++i) Q[i] = Qt[i];
     if (K)
         for (i = 0; i < 100; ++i) K[i] = Kt[i];
@@ -1592,21 +1621,37 @@ static inline void vlbe__ale_mass_mirror(vlbe_real *M)
         }
 }
 
-/* M(q) = rhoA int G^T G dp (eq. 19). */
-static inline void vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
-                                  vlbe_real *M)
+/* A mass matrix (n x n) that is a sum of Gram matrices w G^T G (w > 0) is
+   finite when its diagonal is at most REAL_MAX / 4: every term of an
+   off-diagonal entry is bounded by the mean of the two diagonal terms
+   (|w a b| <= w (a^2 + b^2) / 2), an overflowed or NaN factor makes its
+   diagonal term Inf or NaN.  So n compares validate the n^2 entries. */
+static inline int vlbe__ale_gram_ok(const vlbe_real *M, int n)
+{
+    int i, ok = 1;
+    for (i = 0; i < n; ++i) ok &= M[i * (n + 1)] <= VLBE_R(0.25) * VLBE_REAL_MAX;
+    return ok;
+}
+
+/* M(q) = rhoA int G^T G dp (eq. 19), into the caller's local Mt; then
+   validated (vlbe__ale_gram_ok) and only then written to M. */
+static inline vlbe_status vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
+                                         vlbe_real *VLBE_RESTRICT M)
 {
     const vlbe_real L = q[9] - q[4];
-    vlbe_real Lp[6];
+    vlbe_real Lp[6], Mt[100];
     vlbe__ale_pt pt;
     int g, i;
     vlbe__ale_lpow(L, Lp);
-    for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
+    for (i = 0; i < 100; ++i) Mt[i] = VLBE_R(0.0);
     for (g = 0; g < el->rm.n; ++g) {
         vlbe__ale_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, q, NULL, 0, &pt);
-        vlbe__ale_mass_pt(&pt, pm, el->mat.rhoA * el->rm.g[g].w * L, M);
+        vlbe__ale_mass_pt(&pt, pm, el->mat.rhoA * el->rm.g[g].w * L, Mt);
     }
+    if (!vlbe__ale_gram_ok(Mt, 10)) return VLBE_ENONFINITE;
+    for (i = 0; i < 100; ++i) M[i] = Mt[i];
     vlbe__ale_mass_mirror(M);
+    return VLBE_OK;
 }
 
 VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -1615,8 +1660,7 @@ VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const
     vlbe_status st;
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    vlbe__ale_mass(el, vlbe__ale_pmask(mode | el->flags), q, M);
-    return VLBE_OK;
+    return vlbe__ale_mass(el, vlbe__ale_pmask(mode | el->flags), q, M);
 }
 
 VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -1650,6 +1694,7 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
         vlbe__ale_mass_mirror(M);
         vlbe__ale_degree(vlbe__ale_lay2(), Ma, dF);
         vlbe__ale_pcols(vlbe__ale_lay2(), L, pm, dF, ap, q, a, J, M);
+        if (!vlbe__ale_finite(J, 100)) return VLBE_ENONFINITE;
     }
     for (i = 0; i < 100; ++i) Mq[i] = J[i];
     return VLBE_OK;
@@ -1692,9 +1737,30 @@ VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, con
             if ((st = vlbe__ale_kap(pt.X[1][0], pt.X[2][0], &kap, gy, NULL)) != VLBE_OK) return st;
             U += el->rt.g[g].w * L * VLBE_R(0.5) * mt->EI * kap * kap;
         }
+    if (!isfinite(T) || !isfinite(U) || !isfinite(V)) return VLBE_ENONFINITE;
     E[0] = T;
     E[1] = U;
     E[2] = V;
+    return VLBE_OK;
+}
+
+/* r and r' (either may be NULL) from a basis b evaluated with k <= 1,
+   written only when both are finite (shared with rancf.h). */
+static inline vlbe_status vlbe__ale_point_b(const vlbe_herm_ale *b, const vlbe_real *q,
+                                            vlbe_real *r, vlbe_real *rp)
+{
+    vlbe_real x[4];
+    vlbe__ale_sum(b, 0, 0, q, x);
+    vlbe__ale_sum(b, 1, 0, q, x + 2);
+    if (!vlbe__ale_finite(x, 4)) return VLBE_ENONFINITE;
+    if (r) {
+        r[0] = x[0];
+        r[1] = x[1];
+    }
+    if (rp) {
+        rp[0] = x[2];
+        rp[1] = x[3];
+    }
     return VLBE_OK;
 }
 
@@ -1709,9 +1775,7 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[4], q[9], 1, 0, &b);
-    if (r) vlbe__ale_sum(&b, 0, 0, q, r);
-    if (rp) vlbe__ale_sum(&b, 1, 0, q, rp);
-    return VLBE_OK;
+    return vlbe__ale_point_b(&b, q, r, rp);
 }
 
 /* Strain and curvature from a basis b evaluated with k <= 2 (shared with
@@ -1719,12 +1783,14 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
 static inline vlbe_status vlbe__ale_strain_b(const vlbe_herm_ale *b, const vlbe_real *q,
                                              vlbe_real *eps, vlbe_real *kap)
 {
-    vlbe_real r1[2], r2[2], gy[4], k = VLBE_R(0.0);
+    vlbe_real r1[2], r2[2], gy[4], k = VLBE_R(0.0), e;
     vlbe_status st;
     vlbe__ale_sum(b, 1, 0, q, r1);
     vlbe__ale_sum(b, 2, 0, q, r2);
     if (kap && (st = vlbe__ale_kap(r1, r2, &k, gy, NULL)) != VLBE_OK) return st;
-    if (eps) *eps = vlbe__ale_eps(r1, gy, NULL);
+    e = vlbe__ale_eps(r1, gy, NULL);
+    if ((eps && !isfinite(e)) || !isfinite(k)) return VLBE_ENONFINITE;
+    if (eps) *eps = e;
     if (kap) *kap = k;
     return VLBE_OK;
 }
@@ -1782,6 +1848,22 @@ static inline void vlbe__ale_point_force_b(const vlbe_herm_ale *b, const vlbe_re
         }
 }
 
+/* vlbe__ale_point_force_b on copies of Q and K, committed only when the
+   sums are finite (shared with rancf.h). */
+static inline vlbe_status vlbe__ale_point_force_c(const vlbe_herm_ale *b, const vlbe_real *q,
+                                                  const vlbe_real *F, vlbe_real *Q, vlbe_real *K)
+{
+    vlbe_real Qt[10], Kt[100];
+    int i;
+    for (i = 0; i < 10; ++i) Qt[i] = Q[i];
+    for (i = 0; K && i < 100; ++i) Kt[i] = K[i];
+    vlbe__ale_point_force_b(b, q, F, Qt, K ? Kt : NULL);
+    if (!vlbe__ale_finite(Qt, 10) || (K && !vlbe__ale_finite(Kt, 100))) return VLBE_ENONFINITE;
+    for (i = 0; i < 10; ++i) Q[i] = Qt[i];
+    for (i = 0; K && i < 100; ++i) K[i] = Kt[i];
+    return VLBE_OK;
+}
+
 VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, const vlbe_real *F,
                                           vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K)
 {
@@ -1792,8 +1874,7 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
     if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
     if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
     vlbe_herm_ale_eval(pf, q[4], q[9], 0, 2, &b);
-    vlbe__ale_point_force_b(&b, q, F, Q, K);
-    return VLBE_OK;
+    return vlbe__ale_point_force_c(&b, q, F, Q, K);
 }
 
 /* ===== invariant-matrix forces of fixed-length elements and chains ====== */
@@ -2365,8 +2446,7 @@ static inline vlbe_status vlbe__a3_check(const vlbe__ale_lay *ly, const vlbe_rea
     if (ly->bad) return VLBE_EARG;
     if (!vlbe_all_finite(q, ly->n)) return VLBE_ENONFINITE;
     if (qd && !vlbe_all_finite(qd, ly->n)) return VLBE_ENONFINITE;
-    if (!(q[ly->p[1]] - q[ly->p[0]] > VLBE_R(0.0))) return VLBE_ELENGTH;
-    return VLBE_OK;
+    return vlbe__ale_len(q[ly->p[0]], q[ly->p[1]]);
 }
 
 /* The basis at one point scaled to the current L: N[k][a][j] = L^(m_j - k
@@ -2899,6 +2979,9 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
         Dp = Dt;
     }
     if ((st = vlbe__a3_forces(el, &ly, mode, q, qd, Qt, Kp, Dp)) != VLBE_OK) return st;
+    if (!vlbe__ale_finite(Qt, ly.n) || (K && !vlbe__ale_finite(Kt, nn)) ||
+        (D && !vlbe__ale_finite(Dt, nn)))
+        return VLBE_ENONFINITE; /* overflow from finite input: nothing written */
     for (i = 0; i < ly.n; ++i) Q[i] = Qt[i];
     if (K)
         for (i = 0; i < nn; ++i) K[i] = Kt[i];
@@ -2908,20 +2991,18 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
 }
 
 /* M(q) (eq. 28): w rhoA G_r^T G_r + w rhoI G_th^T G_th summed over the
-   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k]. */
-VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                    vlbe_real *VLBE_RESTRICT M)
+   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k].  Into a local
+   M (mode with the element's flags, input checked): VLBE_ENONFINITE when
+   it overflowed (vlbe__ale_gram_ok). */
+static inline vlbe_status vlbe__a3_mass(const vlbe_ale3_elem *el, unsigned mode,
+                                        const vlbe__ale_lay *lyp, const vlbe_real *q,
+                                        vlbe_real *VLBE_RESTRICT M)
 {
     const vlbe_ale3_mat *mt = &el->mat;
-    vlbe__ale_lay ly;
+    const vlbe__ale_lay ly = *lyp;
     vlbe__a3_pt pt;
     vlbe_real Lp[6], L, X[2][3], Xt[2];
-    vlbe_status st;
     int g, i, j, k, l, c, n, pm;
-    VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
-    mode |= el->flags;
-    vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
     n = ly.n;
     pm = vlbe__ale_pmask(mode);
     L = q[ly.p[1]] - q[ly.p[0]];
@@ -2963,6 +3044,22 @@ VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, con
                 if ((pm & (1 << k)) && (pm & (1 << l)))
                     M[ly.p[k] * n + ly.p[l]] += wa * vlbe_v3_dot(X[k], X[l]) + wi * Xt[k] * Xt[l];
     }
+    return vlbe__ale_gram_ok(M, n) ? VLBE_OK : VLBE_ENONFINITE;
+}
+
+VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                    vlbe_real *VLBE_RESTRICT M)
+{
+    vlbe_real Mt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    vlbe__ale_lay ly;
+    vlbe_status st;
+    int i;
+    VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
+    mode |= el->flags;
+    vlbe__ale_layout(mode, &ly);
+    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
+    if ((st = vlbe__a3_mass(el, mode, &ly, q, Mt)) != VLBE_OK) return st;
+    for (i = 0; i < ly.n * ly.n; ++i) M[i] = Mt[i];
     return VLBE_OK;
 }
 
@@ -2990,7 +3087,7 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
     pm = vlbe__ale_pmask(mode);
     for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
     if (pm) {
-        if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
+        if ((st = vlbe__a3_mass(el, mode, &ly, q, M)) != VLBE_OK) return st;
         L = q[ly.p[1]] - q[ly.p[0]];
         ap[0] = (pm & 1) ? a[ly.p[0]] : VLBE_R(0.0);
         ap[1] = (pm & 2) ? a[ly.p[1]] : VLBE_R(0.0);
@@ -3039,6 +3136,7 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
         }
         vlbe__ale_degree(&ly, Ma, dF);
         vlbe__ale_pcols(&ly, L, pm, dF, ap, q, a, J, M);
+        if (!vlbe__ale_finite(J, nn)) return VLBE_ENONFINITE;
     }
     for (i = 0; i < nn; ++i) Mq[i] = J[i];
     return VLBE_OK;
@@ -3060,7 +3158,7 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
     mode |= el->flags;
     vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
-    if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
+    if ((st = vlbe__a3_mass(el, mode, &ly, q, M)) != VLBE_OK) return st;
     n = ly.n;
     for (i = 0; i < n; ++i)
         for (j = 0; j < n; ++j) T += VLBE_R(0.5) * qd[i] * M[i * n + j] * qd[j];
@@ -3093,6 +3191,7 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
             U += w * VLBE_R(0.5) * mt->GI * phi * phi;
         }
     }
+    if (!isfinite(T) || !isfinite(U) || !isfinite(V)) return VLBE_ENONFINITE;
     E[0] = T;
     E[1] = U;
     E[2] = V;
@@ -3107,15 +3206,23 @@ VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_rea
 {
     vlbe__ale_lay ly;
     vlbe_herm_ale b;
+    vlbe_real x[7];
     vlbe_status st;
+    int i;
     VLBE_ASSERT(q != NULL);
     vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 1, 0, &b);
-    if (r) vlbe__a3_sum(&ly, b.h[0][0], q, r);
-    if (rp) vlbe__a3_sum(&ly, b.h[1][0], q, rp);
-    if (th) *th = vlbe__a3_tsum(&ly, b.l[0][0], q);
+    vlbe__a3_sum(&ly, b.h[0][0], q, x);
+    vlbe__a3_sum(&ly, b.h[1][0], q, x + 3);
+    x[6] = vlbe__a3_tsum(&ly, b.l[0][0], q);
+    if (!vlbe__ale_finite(x, 7)) return VLBE_ENONFINITE;
+    for (i = 0; i < 3; ++i) {
+        if (r) r[i] = x[i];
+        if (rp) rp[i] = x[3 + i];
+    }
+    if (th) *th = x[6];
     return VLBE_OK;
 }
 
@@ -3127,7 +3234,7 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
 {
     vlbe__ale_lay ly;
     vlbe_herm_ale b;
-    vlbe_real a[3], r2[3], G[7] = {0, 0, 0, 0, 0, 0, 0}, kk = VLBE_R(0.0);
+    vlbe_real a[3], r2[3], G[7] = {0, 0, 0, 0, 0, 0, 0}, kk = VLBE_R(0.0), x[3];
     vlbe_status st;
     VLBE_ASSERT(q != NULL);
     vlbe__ale_layout(mode, &ly);
@@ -3140,18 +3247,24 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
         (st = vlbe__a3_bend(a, r2, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL, &kk)) !=
             VLBE_OK)
         return st;
-    if (eps) *eps = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
-    if (kap) *kap = vlbe_sqrt(kk);
-    if (phi) *phi = vlbe__a3_tsum(&ly, b.l[1][0], q);
+    x[0] = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
+    x[1] = vlbe_sqrt(kk);
+    x[2] = vlbe__a3_tsum(&ly, b.l[1][0], q);
+    if ((eps && !isfinite(x[0])) || (kap && !isfinite(x[1])) || (phi && !isfinite(x[2])))
+        return VLBE_ENONFINITE;
+    if (eps) *eps = x[0];
+    if (kap) *kap = x[1];
+    if (phi) *phi = x[2];
     return VLBE_OK;
 }
 
 /* A point load at material point pf in [p1, p2] on the position field
    (F, 3 components: eq. 45) or on the spin field (torque T about the
-   axis: eq. 46): Q += S(pf)^T F, K += d/dq (K may be NULL). */
-static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q, vlbe_real pf,
-                                              const vlbe_real *F, vlbe_real T, int torque,
-                                              vlbe_real *Q, vlbe_real *K)
+   axis: eq. 46): Q += S(pf)^T F, K += d/dq (K may be NULL), on the
+   caller's copies (vlbe__a3_point_load). */
+static inline vlbe_status vlbe__a3_point_add(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                             const vlbe_real *F, vlbe_real T, int torque,
+                                             vlbe_real *Q, vlbe_real *K)
 {
     static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
     vlbe__ale_lay ly;
@@ -3202,6 +3315,25 @@ static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q,
             }
         }
     }
+    return VLBE_OK;
+}
+
+/* vlbe__a3_point_add on copies of Q and K, committed when finite. */
+static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                              const vlbe_real *F, vlbe_real T, int torque,
+                                              vlbe_real *Q, vlbe_real *K)
+{
+    vlbe_real Qt[VLBE_ALE3_NQ], Kt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    vlbe_status st;
+    const int n = vlbe_ale3_nq(mode), nn = n * n;
+    int i;
+    for (i = 0; i < n; ++i) Qt[i] = Q[i];
+    for (i = 0; K && i < nn; ++i) Kt[i] = K[i];
+    if ((st = vlbe__a3_point_add(mode, q, pf, F, T, torque, Qt, K ? Kt : NULL)) != VLBE_OK)
+        return st;
+    if (!vlbe__ale_finite(Qt, n) || (K && !vlbe__ale_finite(Kt, nn))) return VLBE_ENONFINITE;
+    for (i = 0; i < n; ++i) Q[i] = Qt[i];
+    for (i = 0; K && i < nn; ++i) K[i] = Kt[i];
     return VLBE_OK;
 }
 
@@ -4198,6 +4330,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
 VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlbe_real ph,
                                     vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd)
 {
+    vlbe_real h[4], hd[4];
     vlbe_herm_ale b;
     vlbe_status st;
     int k;
@@ -4207,11 +4340,17 @@ VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlb
     if (!(ph > q[4] && ph < q[9])) return VLBE_EBOUND;
     vlbe_herm_ale_eval(ph, q[4], q[9], 1, 1, &b);
     for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
-        vlbe__ale_sum(&b, k, 0, q, qh + 2 * k);
-        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, qhd + 2 * k);
+        vlbe__ale_sum(&b, k, 0, q, h + 2 * k);
+        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, hd + 2 * k);
     }
+    if (!vlbe__ale_finite(h, 4) || (qd && qhd && !vlbe__ale_finite(hd, 4)))
+        return VLBE_ENONFINITE;
+    for (k = 0; k < 4; ++k) qh[k] = h[k];
     qh[4] = ph;
-    if (qd && qhd) qhd[4] = VLBE_R(0.0);
+    if (qd && qhd) {
+        for (k = 0; k < 4; ++k) qhd[k] = hd[k];
+        qhd[4] = VLBE_R(0.0);
+    }
     return VLBE_OK;
 }
 

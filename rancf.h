@@ -341,9 +341,7 @@ VLBE_API vlbe_status vlbe_rancf_point(const vlbe_rancf_elem *el, const vlbe_real
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe__rancf_eval(el, p, q[4], q[9], 1, 0, &b);
-    if (r) vlbe__ale_sum(&b, 0, 0, q, r);
-    if (rp) vlbe__ale_sum(&b, 1, 0, q, rp);
-    return VLBE_OK;
+    return vlbe__ale_point_b(&b, q, r, rp);
 }
 
 VLBE_API vlbe_status vlbe_rancf_strain(const vlbe_rancf_elem *el, const vlbe_real *q,
@@ -370,8 +368,7 @@ VLBE_API vlbe_status vlbe_rancf_point_force(const vlbe_rancf_elem *el, const vlb
     if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
     if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
     vlbe__rancf_eval(el, pf, q[4], q[9], 0, 2, &b);
-    vlbe__ale_point_force_b(&b, q, F, Q, K);
-    return VLBE_OK;
+    return vlbe__ale_point_force_c(&b, q, F, Q, K);
 }
 
 /* -- Bezier form ---------------------------------------------------------- */
