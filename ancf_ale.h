@@ -324,6 +324,7 @@ typedef struct vlbe_ale_inv_sys {
     const vlbe_real *T; /* assembled quartic invariants, band rows of pairs  */
     const vlbe_real *B; /* assembled quadratic invariants, one per pair      */
     vlbe_real *H;      /* scratch: 8 products per pair, then the slots      */
+    vlbe_real Lmin, Lmax; /* shortest, longest element (overflow bound)    */
 } vlbe_ale_inv_sys;
 
 /* -- API prototypes ----------------------------------------------------- */
@@ -1959,14 +1960,51 @@ static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const v
                                              const vlbe_real *v)
 {
     const int n = 4 * (ne + 1);
+    vlbe_status st;
     int e;
     if (!vlbe_all_finite(x, n) || (v && !vlbe_all_finite(v, n))) return VLBE_ENONFINITE;
     if (L) {
         if (!vlbe_all_finite(L, ne)) return VLBE_ENONFINITE;
         for (e = 0; e < ne; ++e)
-            if (!(L[e] > VLBE_R(0.0))) return VLBE_ELENGTH;
+            if ((st = vlbe__ale_len(VLBE_R(0.0), L[e])) != VLBE_OK) return st;
     }
     return VLBE_OK;
+}
+
+/* The forces of a chain of fixed-length cable elements are accumulated in
+   the caller's Q, K, D, so they are bounded before anything is written:
+   with xm, sm the largest position and slope component of x (vm, wm of
+   v), every element's |r'| <= A = 2 (3 xm / Lmin + 2 sm) (|h1'|, |h3'| <=
+   1.5 / L, |h2'|, |h4'| <= 1; twice that for the 1-norm of 2-vectors)
+   and |r_v'| <= B likewise; the axial force density is at most EA (1 + c)
+   (1 + A + B)^2 and Q, K, D at most that times (1 + A + B) max(2.25 /
+   Lmin, Lmax, 1.5) (the integrals of the basis slopes and their
+   products), times 8 for the two elements of a node and the Gauss route's
+   rounding.  fq bounds the load part (|f|_1 max(L, L^2) of an element,
+   or the stored load vector).  Returns 1 when that bound stays below
+   REAL_MAX / 1024 (then no sum can overflow); inputs finite, Lmin > 0. */
+static inline int vlbe__ale_cable_ok(vlbe_real EA, vlbe_real c, vlbe_real fq, vlbe_real Lmin,
+                                     vlbe_real Lmax, int ne, const vlbe_real *x,
+                                     const vlbe_real *v)
+{
+    vlbe_real m[4] = {0, 0, 0, 0}, A, B, g, z;
+    int i, j;
+    for (i = 0; i <= ne; ++i)
+        for (j = 0; j < 4; ++j) {
+            const vlbe_real a = vlbe_fabs(x[4 * i + j]);
+            const vlbe_real b = v ? vlbe_fabs(v[4 * i + j]) : VLBE_R(0.0);
+            const int s = j >> 1; /* 0: position, 1: slope */
+            if (a > m[s]) m[s] = a;
+            if (b > m[2 + s]) m[2 + s] = b;
+        }
+    A = VLBE_R(2.0) * (VLBE_R(3.0) * m[0] / Lmin + VLBE_R(2.0) * m[1]);
+    B = VLBE_R(2.0) * (VLBE_R(3.0) * m[2] / Lmin + VLBE_R(2.0) * m[3]);
+    g = VLBE_R(1.0) + A + B;
+    z = VLBE_R(2.25) / Lmin;
+    if (Lmax > z) z = Lmax;
+    if (VLBE_R(1.5) > z) z = VLBE_R(1.5);
+    return VLBE_R(8.0) * (EA * (VLBE_R(1.0) + c) * g * g * g * z + fq) <=
+           VLBE_REAL_MAX / VLBE_R(1024.0);
 }
 
 /* Cable forces (axial + load; NO_BEND, both p fixed implied) of a chain of
@@ -1975,24 +2013,36 @@ static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const v
    VLBE_ALE_INV_AXIAL.  x, v (v may be NULL = 0): n = 4 (ne + 1)
    coordinates (INVARIANTS); Q (n) is overwritten, K, D (n *
    VLBE_ALE_INV_BW, band storage, either may be NULL) too.  Errors (nothing
-   written): VLBE_ENONFINITE for NaN/Inf in L, x, v; VLBE_ELENGTH for
-   L[e] <= 0. */
+   written): VLBE_EARG for ne < 1 or ne so large that n * VLBE_ALE_INV_BW
+   overflows an int; VLBE_ENONFINITE for NaN/Inf in L, x, v, or data so
+   large that the forces could overflow (vlbe__ale_cable_ok: far beyond
+   any physical chain); VLBE_ELENGTH for L[e] out of range (<= 0, or
+   L^-4 overflows, as vlbe_ale_force). */
 VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned mode, int ne,
                                               const vlbe_real *L, const vlbe_real *x,
                                               const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
                                               vlbe_real *VLBE_RESTRICT K,
                                               vlbe_real *VLBE_RESTRICT D)
 {
-    const int n = 4 * (ne + 1);
-    vlbe_real qe[10], ve[10], Qe[10], Ke[100], De[100];
+    vlbe_real qe[10], ve[10], Qe[10], Ke[100], De[100], Lmin, Lmax, fq;
     vlbe_status st;
-    int e, i, j;
-    VLBE_ASSERT(el != NULL && L != NULL && x != NULL && Q != NULL && ne >= 1);
-    VLBE_ASSERT(ne <= (INT_MAX - 4) / 4 / VLBE_ALE_INV_BW);
+    int n, e, i, j;
+    VLBE_ASSERT(el != NULL && L != NULL && x != NULL && Q != NULL);
+    if (ne < 1 || ne > (INT_MAX - 4) / 4 / VLBE_ALE_INV_BW - 1) return VLBE_EARG;
+    n = 4 * (ne + 1);
     mode |= el->flags | VLBE_ALE_NO_BEND | VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2;
     if ((st = vlbe__ale_chain_in(ne, L, x, v)) != VLBE_OK) return st;
-    /* nothing fails below: a cable element with p fixed, finite data and
-       L > 0 has no failing case */
+    Lmin = Lmax = L[0];
+    for (e = 1; e < ne; ++e) {
+        if (L[e] < Lmin) Lmin = L[e];
+        if (L[e] > Lmax) Lmax = L[e];
+    }
+    fq = (vlbe_fabs(el->mat.f[0]) + vlbe_fabs(el->mat.f[1])) * Lmax * (VLBE_R(1.0) + Lmax);
+    if (!vlbe__ale_cable_ok(el->mat.EA, (mode & VLBE_ALE_NO_DAMP) ? VLBE_R(0.0) : el->mat.c_eps,
+                            fq, Lmin, Lmax, ne, x, v))
+        return VLBE_ENONFINITE;
+    /* nothing fails below: a cable element with p fixed, finite data, L in
+       range and forces bounded as above has no failing case */
     for (i = 0; i < n; ++i) Q[i] = VLBE_R(0.0);
     for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
     for (i = 0; D && i < n * VLBE_ALE_INV_BW; ++i) D[i] = VLBE_R(0.0);
@@ -2007,9 +2057,10 @@ VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned 
         qe[4] = ve[4] = ve[9] = VLBE_R(0.0);
         qe[9] = L[e];
         if (K || D) /* K and D come together; the Q-only route without */
-            (void)vlbe_ale_force(el, mode, qe, ve, Qe, Ke, De);
+            st = vlbe_ale_force(el, mode, qe, ve, Qe, Ke, De);
         else
-            (void)vlbe_ale_force(el, mode, qe, ve, Qe, NULL, NULL);
+            st = vlbe_ale_force(el, mode, qe, ve, Qe, NULL, NULL);
+        if (st != VLBE_OK) return st; /* excluded by the checks above */
         for (i = 0; i < 8; ++i) {
             const int ri = i + (i >= 4), gi = o + i;
             Q[gi] += Qe[ri];
@@ -2130,8 +2181,9 @@ VLBE_API size_t vlbe_ale_inv_sys_work_len(int ne)
    vlbe_ale_inv_sys_work_len(ne)), which must live as long as sys and is
    also the scratch of vlbe_ale_inv_sys_force (one evaluation at a time per
    buffer).  Errors (sys and work untouched): VLBE_EARG for ne < 1 or too
-   large, VLBE_EWORK for a short buffer, VLBE_ENONFINITE for NaN/Inf in L,
-   VLBE_ELENGTH for L[e] <= 0. */
+   large, VLBE_EWORK for a short buffer, VLBE_ENONFINITE for NaN/Inf in L
+   or a load f L^2 that could overflow, VLBE_ELENGTH for L[e] <= 0 or
+   L[e]^4 or L[e]^-4 (the scaled tables) out of range. */
 VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale_elem *el,
                                            unsigned mode, int ne, const vlbe_real *L,
                                            vlbe_real *work, size_t work_len)
@@ -2139,14 +2191,24 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
     const vlbe_ale_inv *iv;
     const signed char *pa = vlbe__ale_sys_pa();
     const size_t need = vlbe_ale_inv_sys_work_len(ne);
-    vlbe_real *T, *B, *F;
+    vlbe_real *T, *B, *F, fm, Lmin, Lmax;
+    vlbe_status st;
     int np, nnz, e, p, r, i;
     VLBE_ASSERT(sys != NULL && el != NULL && L != NULL && work != NULL);
     if (need == 0) return VLBE_EARG;
     if (work_len < need) return VLBE_EWORK;
     if (!vlbe_all_finite(L, ne)) return VLBE_ENONFINITE;
-    for (e = 0; e < ne; ++e)
-        if (!(L[e] > VLBE_R(0.0))) return VLBE_ELENGTH;
+    fm = vlbe_fabs(el->mat.f[0]) + vlbe_fabs(el->mat.f[1]);
+    Lmin = Lmax = L[0];
+    for (e = 0; e < ne; ++e) {
+        /* the tables carry L^-3 .. L^4 (entries <= 10), the load L^2 f */
+        const vlbe_real L2 = L[e] * L[e];
+        if ((st = vlbe__ale_len(VLBE_R(0.0), L[e])) != VLBE_OK) return st;
+        if (!(L2 * L2 <= VLBE_REAL_MAX / VLBE_R(64.0))) return VLBE_ELENGTH;
+        if (!(fm * (L[e] + L2) <= VLBE_REAL_MAX / VLBE_R(64.0))) return VLBE_ENONFINITE;
+        if (L[e] < Lmin) Lmin = L[e];
+        if (L[e] > Lmax) Lmax = L[e];
+    }
     mode |= el->flags;
     iv = &el->inv;
     np = 5 * ne + 1;
@@ -2187,6 +2249,8 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
     sys->T = T;
     sys->B = B;
     sys->H = F + 4 * ne + 4;
+    sys->Lmin = Lmin;
+    sys->Lmax = Lmax;
     return VLBE_OK;
 }
 
@@ -2198,7 +2262,8 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
    forces and blocks go to the nodal rows and columns by the chain rule.
    v may be NULL (= 0; D is still c dQ/dv).  Same numbers as
    vlbe_ale_inv_chain_force to rounding.  Errors (nothing written):
-   VLBE_ENONFINITE for NaN/Inf in x, v. */
+   VLBE_ENONFINITE for NaN/Inf in x, v, or data so large that the forces
+   could overflow (vlbe__ale_cable_ok). */
 static inline vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
                                               const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                               vlbe_real *D)
@@ -2212,6 +2277,10 @@ static inline vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const
     vlbe_status st;
     int P, i, j;
     if ((st = vlbe__ale_chain_in(ne, NULL, x, damp ? v : NULL)) != VLBE_OK) return st;
+    /* the stored load is below REAL_MAX / 64 (vlbe_ale_inv_sys_init) */
+    if (!vlbe__ale_cable_ok(EA, sys->c, VLBE_R(0.0), sys->Lmin, sys->Lmax, ne, x,
+                            damp ? v : NULL))
+        return VLBE_ENONFINITE;
     for (i = 0; i < n; ++i) Q[i] = F[i];
     for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
     for (i = 0; D && i < n * VLBE_ALE_INV_BW; ++i) D[i] = VLBE_R(0.0);
