@@ -63,10 +63,16 @@ CONVENTIONS
    bending force (default 5; its integrand is rational).  At most
    VLBE_ALE_NGP_MAX points per term.
 
-   Errors: VLBE_ELENGTH when L = p2 - p1 <= 0; VLBE_ENONFINITE for NaN/Inf in
-   q or q'; VLBE_ESINGULAR when the slope vanishes (|r'|^2 <= eps) at a
-   bending point (the curvature is undefined there); VLBE_EBOUND when a
-   point load lies outside [p1, p2].  On failure no output is written.
+   Errors: VLBE_ELENGTH when L = p2 - p1 is out of range: L <= 0, L = Inf
+   (p1, p2 of opposite huge signs) or L^-4, the largest power of 1/L the
+   basis carries, overflows (double: L below ~2.7e-78, float: ~7.4e-10);
+   VLBE_ENONFINITE for NaN/Inf in q or q', and when finite data overflow
+   (slopes, rates or lengths so large that an output would be Inf or
+   NaN: every output is checked before it is written); VLBE_ESINGULAR
+   when the slope vanishes (|r'|^2 <= eps) at a bending point (the
+   curvature is undefined there); VLBE_EBOUND when a point load lies
+   outside [p1, p2].  On failure no output is written (point loads, which
+   add to Q and K, work on copies).
    Stack: vlbe_ale_force with K, D uses up to about 7 kB (gcc -fstack-usage,
    -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
    e-columns and the point scratch), the other eval calls at most 3 kB.
@@ -2382,8 +2388,9 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
    (every term is homogeneous under p -> s p, slopes -> slopes / s, p' ->
    s p'; row degrees 1 + m_j for positions and slopes, 1 for theta, 0 for
    p; the axial part 4 and 2 lower, the twist part 2 lower).
-   Errors: VLBE_ELENGTH (p2 <= p1), VLBE_ENONFINITE, VLBE_ESINGULAR (|r'|^2
-   <= eps at a bending point), VLBE_EBOUND (point load outside [p1, p2]),
+   Errors: VLBE_ELENGTH (L = p2 - p1 out of range, as the planar
+   element), VLBE_ENONFINITE (NaN/Inf in the input, or an output that
+   would overflow), VLBE_ESINGULAR (|r'|^2 <= eps at a bending point), VLBE_EBOUND (point load outside [p1, p2]),
    VLBE_EARG for the planar element's VLBE_ALE_CONSERVATIVE and
    VLBE_ALE_INV_AXIAL (not available here: with free p the elastic
    p-forces are the paper's, without the end energy fluxes); no output is

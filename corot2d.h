@@ -118,8 +118,11 @@ CONVENTIONS
 
    Errors: VLBE_ENONFINITE for NaN/Inf in q, q' or an acceleration;
    VLBE_ELENGTH when the chord length l <= L * 1e-6 (the frame is
-   undefined); vlbe_cr2d_elem_init: VLBE_ELENGTH for X1 = X2, VLBE_EARG /
-   VLBE_ENONFINITE for a bad material.  Transition element: VLBE_EBOUND
+   undefined); VLBE_ENONFINITE also when finite input overflows (each
+   output is checked before it is written); vlbe_cr2d_elem_init:
+   VLBE_ELENGTH for X1 = X2 or a length so small that the tabulated
+   stiffness (L^-3) overflows, VLBE_ENONFINITE for one so large that the
+   mass (L^3) does, VLBE_EARG / VLBE_ENONFINITE for a bad material.  Transition element: VLBE_EBOUND
    when node 1 is outside the joint by more than L/2 (a.(x1 - C) > L/2:
    the formulas continue smoothly to a node just outside, as Newton
    iterates and the step in which it leaves need), node 2 not outside

@@ -74,7 +74,13 @@ CONVENTIONS
    and weights; element nodal form x = [rA, rA', rB, rB'] (4 d reals) and
    reference length l, related by eqs. 5-6.
    Errors: as ancf_ale.h, plus VLBE_EWEIGHT for a non-positive or
-   non-finite weight.  On failure no output is written.
+   non-finite weight, for weights whose smallest is below REAL_MIN (the
+   smallest normal number) times the largest (their ratios would
+   over/underflow), for weights so uneven that the element's basis
+   tables overflow (vlbe_rancf_elem_init) and for a split whose part
+   would get a weight that underflows to 0.  Every routine checks its
+   outputs before it writes them (VLBE_ENONFINITE when finite input
+   overflows); on failure no output is written.
 
 API
    vlbe_status vlbe_rancf_basis_eval(w, p, p1, p2, kmax, amax, b)  rational basis in
