@@ -244,6 +244,8 @@ REFERENCES
 #define VLBE_ANCF_ALE_H
 #include "vlbe.h"
 #include <limits.h>
+#include <stdint.h>
+#include <string.h>
 
 #if !defined(VLBE_VERSION_MAJOR) || VLBE_VERSION_MAJOR != 0 || VLBE_VERSION_MINOR < 1
 #error "ancf_ale.h needs vlbe.h 0.1 or newer in the same directory"
@@ -320,6 +322,8 @@ typedef struct vlbe_ale_elem {
     vlbe_ale_rule rm, rl, rt; /* mass/inertia/loads, axial, bending */
     vlbe_ale_gp ends[2];
     vlbe_ale_inv inv;
+    vlbe_real bmax; /* largest |basis number| (k = 0, a <= 2) of rm: the
+                       overflow bound of vlbe_ale_mass (set by init) */
 } vlbe_ale_elem;
 
 /* The system invariants of a chain of ne fixed-length elements (see
@@ -415,6 +419,26 @@ static inline vlbe_status vlbe__ale_rule(vlbe_ale_rule *r, int n, int ndef)
     return VLBE_OK;
 }
 
+/* the largest |b[0][a][j]|, |l[0][a][j]| (a <= 2) of a rule: N and its
+   first p1/p2 partials at L = 1 (vlbe__ale_mass_ok) */
+static inline vlbe_real vlbe__ale_rule_bmax(const vlbe_ale_rule *r)
+{
+    vlbe_real m = VLBE_R(0.0);
+    int g, a, j;
+    for (g = 0; g < r->n; ++g)
+        for (a = 0; a < 3; ++a) {
+            for (j = 0; j < 4; ++j) {
+                const vlbe_real t = vlbe_fabs(r->g[g].b[0][a][j]);
+                m = t > m ? t : m;
+            }
+            for (j = 0; j < 2; ++j) {
+                const vlbe_real t = vlbe_fabs(r->g[g].l[0][a][j]);
+                m = t > m ? t : m;
+            }
+        }
+    return m;
+}
+
 VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *mat,
                                         unsigned flags, int nm, int nl, int nt)
 {
@@ -437,6 +461,7 @@ VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *m
     vlbe__ale_gp_fill(&el->ends[0], VLBE_R(0.0), VLBE_R(0.0));
     vlbe__ale_gp_fill(&el->ends[1], VLBE_R(1.0), VLBE_R(0.0));
     if ((st = vlbe_ale_inv_init(&el->inv)) != VLBE_OK) return st;
+    el->bmax = vlbe__ale_rule_bmax(&el->rm);
     el->mat = *mat;
     el->flags = flags;
     return VLBE_OK;
@@ -502,23 +527,43 @@ static inline void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp,
    committed to the caller's arrays. */
 static inline int vlbe__ale_finite(const vlbe_real *x, int n)
 {
-    int i, ok = 1;
-    for (i = 0; i < n; ++i) ok &= vlbe_fabs(x[i]) <= VLBE_REAL_MAX;
-    return ok;
+    /* on the bits (integer operations only, so no floating-point exception
+       flag is raised): the exponent field plus one carries into the sign
+       bit exactly when it is all ones (Inf, NaN), and an OR of numbers
+       below the sign bit stays below it; about twice as fast as comparing
+       |x| with REAL_MAX */
+#ifdef VLBE_USE_FLOAT
+    const uint32_t E = 0x7f800000u, one = 0x00800000u, S = 0x80000000u;
+    uint32_t b = 0, u;
+#else
+    const uint64_t E = 0x7ff0000000000000u, one = 0x0010000000000000u, S = 0x8000000000000000u;
+    uint64_t b = 0, u;
+#endif
+    int i;
+    for (i = 0; i < n; ++i) {
+        memcpy(&u, &x[i], sizeof u);
+        b |= (u & E) + one;
+    }
+    return (b & S) == 0;
 }
 
-/* The element length L = p2 - p1 in range: L > 0, L finite and L^-4 (the
-   largest power of 1/L the element's basis carries, vlbe__ale_lpow)
-   finite: double L > ~2.7e-78, float L > ~7.4e-10.  VLBE_ELENGTH
-   otherwise. */
+/* Shortest element length: L^-4, the largest power of 1/L the element's
+   basis carries (vlbe__ale_lpow), stays finite, with a little room
+   (double: 1.8e-77 > 2^-255, (1/L)^4 < 2^1020; float: 4.7e-10 > 2^-31,
+   (1/L)^4 < 2^124). */
+#ifdef VLBE_USE_FLOAT
+#define VLBE__ALE_LMIN VLBE_R(4.7e-10)
+#else
+#define VLBE__ALE_LMIN VLBE_R(1.8e-77)
+#endif
+
+/* The element length L = p2 - p1 in range: VLBE__ALE_LMIN <= L <=
+   REAL_MAX; VLBE_ELENGTH otherwise (L <= 0, L^-4 overflows, p2 - p1
+   overflowed).  Two compares, no division: every element call makes it. */
 static inline vlbe_status vlbe__ale_len(vlbe_real p1, vlbe_real p2)
 {
     const vlbe_real L = p2 - p1;
-    vlbe_real r;
-    if (!(L > VLBE_R(0.0)) || !(L <= VLBE_REAL_MAX)) return VLBE_ELENGTH;
-    r = VLBE_R(1.0) / L;
-    r *= r;
-    if (!(r * r <= VLBE_REAL_MAX)) return VLBE_ELENGTH;
+    if (!(L >= VLBE__ALE_LMIN && L <= VLBE_REAL_MAX)) return VLBE_ELENGTH;
     return VLBE_OK;
 }
 
@@ -1550,10 +1595,12 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     return VLBE_OK;
 }
 
-/* vlbe_ale_force with the final mode (element flags already ORed in) */
+/* vlbe_ale_force with the final mode (element flags already ORed in);
+   fin = 0 skips the final finiteness check of the outputs (for a caller
+   that bounded them from the data, vlbe_ale_inv_chain_force) */
 static inline vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode,
                                           const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
-                                          vlbe_real *K, vlbe_real *D)
+                                          vlbe_real *K, vlbe_real *D, int fin)
 {
     vlbe_real Qt[10], Kt[100], Dt[100];
     const int jac = K != NULL || D != NULL;
@@ -1567,8 +1614,8 @@ static inline vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode
     if (st != VLBE_OK) return st;
     /* finite inputs can still overflow (huge slopes, rates, L^3 of a huge
        element): nothing is written then */
-    if (!vlbe__ale_finite(Qt, 10) || (K && !vlbe__ale_finite(Kt, 100)) ||
-        (D && !vlbe__ale_finite(Dt, 100)))
+    if (fin && (!vlbe__ale_finite(Qt, 10) || (K && !vlbe__ale_finite(Kt, 100)) ||
+                (D && !vlbe__ale_finite(Dt, 100))))
         return VLBE_ENONFINITE;
     for (i = 0; i < 10; ++i) Q[i] = Qt[i];
     if (K)
@@ -1583,7 +1630,7 @@ VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, cons
                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
 {
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
-    return vlbe__ale_force(el, mode | el->flags, q, qd, Q, K, D);
+    return vlbe__ale_force(el, mode | el->flags, q, qd, Q, K, D, 1);
 }
 
 /* One point's part w G^T G of M (eq. 19): e-e blocks and p1-p2 for
@@ -1628,35 +1675,50 @@ static inline void vlbe__ale_mass_mirror(vlbe_real *M)
         }
 }
 
-/* A mass matrix (n x n) that is a sum of Gram matrices w G^T G (w > 0) is
-   finite when its diagonal is at most REAL_MAX / 4: every term of an
-   off-diagonal entry is bounded by the mean of the two diagonal terms
-   (|w a b| <= w (a^2 + b^2) / 2), an overflowed or NaN factor makes its
-   diagonal term Inf or NaN.  So n compares validate the n^2 entries. */
-static inline int vlbe__ale_gram_ok(const vlbe_real *M, int n)
+/* A mass matrix sum_g w_g G^T G (w_g > 0, sum w_g = rho L) is bounded
+   before it is formed, so that it can be accumulated in the caller's M:
+   its entries are w times products of basis values N (|N| <= A = bmax
+   max(1, L)) and components of the p-partials X of r (|X_c| <= Xc =
+   bmax (sum of the position/angle components / L + sum of the slope
+   components) <= 2 bmax (mp / L + ms) for the two nodes' largest
+   components mp, ms; d components: |X.X| <= d Xc^2), so every entry and
+   every partial sum is at most rho L (A + 2 Xc)^2 for d <= 4, and the
+   factors at most (A + 2 Xc)^2.  1 when both stay below REAL_MAX / 4.
+   mp, ms: 0 with both p fixed (X is not formed then). */
+static inline int vlbe__ale_mass_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
+                                    vlbe_real mp, vlbe_real ms)
 {
-    int i, ok = 1;
-    for (i = 0; i < n; ++i) ok &= M[i * (n + 1)] <= VLBE_R(0.25) * VLBE_REAL_MAX;
-    return ok;
+    const vlbe_real A = bmax * (L > VLBE_R(1.0) ? L : VLBE_R(1.0));
+    const vlbe_real g = A + VLBE_R(4.0) * bmax * (mp * iL + ms);
+    return g * g <= VLBE_R(0.25) * VLBE_REAL_MAX &&
+           rho * L * (g * g) <= VLBE_R(0.25) * VLBE_REAL_MAX;
 }
 
-/* M(q) = rhoA int G^T G dp (eq. 19), into the caller's local Mt; then
-   validated (vlbe__ale_gram_ok) and only then written to M. */
+/* M(q) = rhoA int G^T G dp (eq. 19), bounded first (vlbe__ale_mass_ok):
+   VLBE_ENONFINITE, nothing written, when it could overflow. */
 static inline vlbe_status vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
                                          vlbe_real *VLBE_RESTRICT M)
 {
     const vlbe_real L = q[9] - q[4];
-    vlbe_real Lp[6], Mt[100];
+    vlbe_real Lp[6], mp = VLBE_R(0.0), ms = VLBE_R(0.0);
     vlbe__ale_pt pt;
     int g, i;
     vlbe__ale_lpow(L, Lp);
-    for (i = 0; i < 100; ++i) Mt[i] = VLBE_R(0.0);
+    if (pm)
+        for (i = 0; i < 2; ++i) { /* node i: r at 5 i, r' at 5 i + 2 */
+            const vlbe_real a = vlbe_fabs(q[5 * i]), b = vlbe_fabs(q[5 * i + 1]);
+            const vlbe_real c = vlbe_fabs(q[5 * i + 2]), d = vlbe_fabs(q[5 * i + 3]);
+            mp = a > mp ? a : mp;
+            mp = b > mp ? b : mp;
+            ms = c > ms ? c : ms;
+            ms = d > ms ? d : ms;
+        }
+    if (!vlbe__ale_mass_ok(el->bmax, el->mat.rhoA, L, Lp[3], mp, ms)) return VLBE_ENONFINITE;
+    for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
     for (g = 0; g < el->rm.n; ++g) {
         vlbe__ale_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, q, NULL, 0, &pt);
-        vlbe__ale_mass_pt(&pt, pm, el->mat.rhoA * el->rm.g[g].w * L, Mt);
+        vlbe__ale_mass_pt(&pt, pm, el->mat.rhoA * el->rm.g[g].w * L, M);
     }
-    if (!vlbe__ale_gram_ok(Mt, 10)) return VLBE_ENONFINITE;
-    for (i = 0; i < 100; ++i) M[i] = Mt[i];
     vlbe__ale_mass_mirror(M);
     return VLBE_OK;
 }
@@ -1954,21 +2016,54 @@ VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, 
 {
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
     mode |= el->flags | VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2 | VLBE_ALE_INV_AXIAL;
-    return vlbe__ale_force(el, mode, q, qd, Q, K, D);
+    return vlbe__ale_force(el, mode, q, qd, Q, K, D, 1);
 }
 
 /* n x n band storage (VLBE_ALE_INV_BW per row): entry (i, j) */
 #define VLBE__ALE_BAND(i, j) ((size_t)(i) * VLBE_ALE_INV_BW + (size_t)((j) - (i) + VLBE_ALE_INV_KD))
 
-/* Inputs of a chain of ne elements: lengths (L may be NULL), x, v (may be
-   NULL), n = 4 (ne + 1) coordinates each. */
-static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const vlbe_real *x,
-                                             const vlbe_real *v)
+/* |x| over the ne + 1 nodes of a chain, per component (4 lanes: the
+   compiler vectorizes it): ok &= finite, m[j] = max |x_j|. */
+static inline int vlbe__ale_chain_max(int ne, const vlbe_real *x, vlbe_real *m)
 {
-    const int n = 4 * (ne + 1);
+    vlbe_real m0 = VLBE_R(0.0), m1 = VLBE_R(0.0), m2 = VLBE_R(0.0), m3 = VLBE_R(0.0);
+    int i, ok = 1;
+    for (i = 0; i <= ne; ++i) {
+        const vlbe_real a0 = vlbe_fabs(x[4 * i]), a1 = vlbe_fabs(x[4 * i + 1]);
+        const vlbe_real a2 = vlbe_fabs(x[4 * i + 2]), a3 = vlbe_fabs(x[4 * i + 3]);
+        ok &= (a0 <= VLBE_REAL_MAX) & (a1 <= VLBE_REAL_MAX) & (a2 <= VLBE_REAL_MAX) &
+              (a3 <= VLBE_REAL_MAX);
+        m0 = a0 > m0 ? a0 : m0;
+        m1 = a1 > m1 ? a1 : m1;
+        m2 = a2 > m2 ? a2 : m2;
+        m3 = a3 > m3 ? a3 : m3;
+    }
+    m[0] = m0;
+    m[1] = m1;
+    m[2] = m2;
+    m[3] = m3;
+    return ok;
+}
+
+/* Inputs of a chain of ne elements: lengths (L may be NULL), x, v (may be
+   NULL), n = 4 (ne + 1) coordinates each; mx = the largest position and
+   slope component of x, then of v (0 for v = NULL), for
+   vlbe__ale_cable_ok. */
+static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const vlbe_real *x,
+                                             const vlbe_real *v, vlbe_real *mx)
+{
+    vlbe_real m[4];
     vlbe_status st;
     int e;
-    if (!vlbe_all_finite(x, n) || (v && !vlbe_all_finite(v, n))) return VLBE_ENONFINITE;
+    if (!vlbe__ale_chain_max(ne, x, m)) return VLBE_ENONFINITE;
+    mx[0] = m[0] > m[1] ? m[0] : m[1];
+    mx[1] = m[2] > m[3] ? m[2] : m[3];
+    mx[2] = mx[3] = VLBE_R(0.0);
+    if (v) {
+        if (!vlbe__ale_chain_max(ne, v, m)) return VLBE_ENONFINITE;
+        mx[2] = m[0] > m[1] ? m[0] : m[1];
+        mx[3] = m[2] > m[3] ? m[2] : m[3];
+    }
     if (L) {
         if (!vlbe_all_finite(L, ne)) return VLBE_ENONFINITE;
         for (e = 0; e < ne; ++e)
@@ -1979,8 +2074,9 @@ static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const v
 
 /* The forces of a chain of fixed-length cable elements are accumulated in
    the caller's Q, K, D, so they are bounded before anything is written:
-   with xm, sm the largest position and slope component of x (vm, wm of
-   v), every element's |r'| <= A = 2 (3 xm / Lmin + 2 sm) (|h1'|, |h3'| <=
+   with mx = {xm, sm, vm, wm} the largest position and slope component of
+   x and of v (vlbe__ale_chain_in), every element's |r'| <= A = 2 (3 xm /
+   Lmin + 2 sm) (|h1'|, |h3'| <=
    1.5 / L, |h2'|, |h4'| <= 1; twice that for the 1-norm of 2-vectors)
    and |r_v'| <= B likewise; the axial force density is at most EA (1 + c)
    (1 + A + B)^2 and Q, K, D at most that times (1 + A + B) max(2.25 /
@@ -1990,19 +2086,9 @@ static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const v
    or the stored load vector).  Returns 1 when that bound stays below
    REAL_MAX / 1024 (then no sum can overflow); inputs finite, Lmin > 0. */
 static inline int vlbe__ale_cable_ok(vlbe_real EA, vlbe_real c, vlbe_real fq, vlbe_real Lmin,
-                                     vlbe_real Lmax, int ne, const vlbe_real *x,
-                                     const vlbe_real *v)
+                                     vlbe_real Lmax, const vlbe_real *m)
 {
-    vlbe_real m[4] = {0, 0, 0, 0}, A, B, g, z;
-    int i, j;
-    for (i = 0; i <= ne; ++i)
-        for (j = 0; j < 4; ++j) {
-            const vlbe_real a = vlbe_fabs(x[4 * i + j]);
-            const vlbe_real b = v ? vlbe_fabs(v[4 * i + j]) : VLBE_R(0.0);
-            const int s = j >> 1; /* 0: position, 1: slope */
-            if (a > m[s]) m[s] = a;
-            if (b > m[2 + s]) m[2 + s] = b;
-        }
+    vlbe_real A, B, g, z;
     A = VLBE_R(2.0) * (VLBE_R(3.0) * m[0] / Lmin + VLBE_R(2.0) * m[1]);
     B = VLBE_R(2.0) * (VLBE_R(3.0) * m[2] / Lmin + VLBE_R(2.0) * m[3]);
     g = VLBE_R(1.0) + A + B;
@@ -2030,14 +2116,14 @@ VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned 
                                               vlbe_real *VLBE_RESTRICT K,
                                               vlbe_real *VLBE_RESTRICT D)
 {
-    vlbe_real qe[10], ve[10], Qe[10], Ke[100], De[100], Lmin, Lmax, fq;
+    vlbe_real qe[10], ve[10], Qe[10], Ke[100], De[100], Lmin, Lmax, fq, mx[4];
     vlbe_status st;
     int n, e, i, j;
     VLBE_ASSERT(el != NULL && L != NULL && x != NULL && Q != NULL);
     if (ne < 1 || ne > (INT_MAX - 4) / 4 / VLBE_ALE_INV_BW - 1) return VLBE_EARG;
     n = 4 * (ne + 1);
     mode |= el->flags | VLBE_ALE_NO_BEND | VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2;
-    if ((st = vlbe__ale_chain_in(ne, L, x, v)) != VLBE_OK) return st;
+    if ((st = vlbe__ale_chain_in(ne, L, x, v, mx)) != VLBE_OK) return st;
     Lmin = Lmax = L[0];
     for (e = 1; e < ne; ++e) {
         if (L[e] < Lmin) Lmin = L[e];
@@ -2045,7 +2131,7 @@ VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned 
     }
     fq = (vlbe_fabs(el->mat.f[0]) + vlbe_fabs(el->mat.f[1])) * Lmax * (VLBE_R(1.0) + Lmax);
     if (!vlbe__ale_cable_ok(el->mat.EA, (mode & VLBE_ALE_NO_DAMP) ? VLBE_R(0.0) : el->mat.c_eps,
-                            fq, Lmin, Lmax, ne, x, v))
+                            fq, Lmin, Lmax, mx))
         return VLBE_ENONFINITE;
     /* nothing fails below: a cable element with p fixed, finite data, L in
        range and forces bounded as above has no failing case */
@@ -2062,10 +2148,12 @@ VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned 
         }
         qe[4] = ve[4] = ve[9] = VLBE_R(0.0);
         qe[9] = L[e];
-        if (K || D) /* K and D come together; the Q-only route without */
-            st = vlbe_ale_force(el, mode, qe, ve, Qe, Ke, De);
+        /* K and D come together; the Q-only route without; the outputs are
+           bounded above, so the element's own final check is skipped */
+        if (K || D)
+            st = vlbe__ale_force(el, mode, qe, ve, Qe, Ke, De, 0);
         else
-            st = vlbe_ale_force(el, mode, qe, ve, Qe, NULL, NULL);
+            st = vlbe__ale_force(el, mode, qe, ve, Qe, NULL, NULL, 0);
         if (st != VLBE_OK) return st; /* excluded by the checks above */
         for (i = 0; i < 8; ++i) {
             const int ri = i + (i >= 4), gi = o + i;
@@ -2279,13 +2367,12 @@ static inline vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const
     const signed char *pa = vlbe__ale_sys_pa();
     const vlbe_real *F = sys->B + np, *T = sys->T;
     const vlbe_real EA = sys->EA, EAc = sys->EA * sys->c;
-    vlbe_real *H = sys->H, *rs = sys->H + 8 * np, y[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    vlbe_real *H = sys->H, *rs = sys->H + 8 * np, y[8] = {0, 0, 0, 0, 0, 0, 0, 0}, mx[4];
     vlbe_status st;
     int P, i, j;
-    if ((st = vlbe__ale_chain_in(ne, NULL, x, damp ? v : NULL)) != VLBE_OK) return st;
+    if ((st = vlbe__ale_chain_in(ne, NULL, x, damp ? v : NULL, mx)) != VLBE_OK) return st;
     /* the stored load is below REAL_MAX / 64 (vlbe_ale_inv_sys_init) */
-    if (!vlbe__ale_cable_ok(EA, sys->c, VLBE_R(0.0), sys->Lmin, sys->Lmax, ne, x,
-                            damp ? v : NULL))
+    if (!vlbe__ale_cable_ok(EA, sys->c, VLBE_R(0.0), sys->Lmin, sys->Lmax, mx))
         return VLBE_ENONFINITE;
     for (i = 0; i < n; ++i) Q[i] = F[i];
     for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
@@ -2416,6 +2503,7 @@ typedef struct vlbe_ale3_elem {
     vlbe_ale3_mat mat;
     unsigned flags;
     vlbe_ale_rule rm, rs; /* mass/inertia/loads; strains (axial, bending, twist) */
+    vlbe_real bmax;       /* as vlbe_ale_elem.bmax (Hermite and linear) */
 } vlbe_ale3_elem;
 
 VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlbe_real E,
@@ -2489,6 +2577,7 @@ VLBE_API vlbe_status vlbe_ale3_elem_init(vlbe_ale3_elem *el, const vlbe_ale3_mat
     if (nm < 0 || nm > VLBE_ALE_NGP_MAX || ns < 0 || ns > VLBE_ALE_NGP_MAX) return VLBE_EARG;
     if ((st = vlbe__ale_rule(&el->rm, nm, 4)) != VLBE_OK) return st;
     if ((st = vlbe__ale_rule(&el->rs, ns, 5)) != VLBE_OK) return st;
+    el->bmax = vlbe__ale_rule_bmax(&el->rm);
     el->mat = *mat;
     el->flags = flags;
     return VLBE_OK;
@@ -3067,22 +3156,39 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
 }
 
 /* M(q) (eq. 28): w rhoA G_r^T G_r + w rhoI G_th^T G_th summed over the
-   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k].  Into a local
-   M (mode with the element's flags, input checked): VLBE_ENONFINITE when
-   it overflowed (vlbe__ale_gram_ok). */
+   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k] (mode with the
+   element's flags, input checked).  Bounded first (vlbe__ale_mass_ok):
+   VLBE_ENONFINITE, nothing written, when it could overflow. */
 static inline vlbe_status vlbe__a3_mass(const vlbe_ale3_elem *el, unsigned mode,
-                                        const vlbe__ale_lay *lyp, const vlbe_real *q,
-                                        vlbe_real *VLBE_RESTRICT M)
+                                        const vlbe_real *q, vlbe_real *VLBE_RESTRICT M)
 {
     const vlbe_ale3_mat *mt = &el->mat;
-    const vlbe__ale_lay ly = *lyp;
+    vlbe__ale_lay ly;
     vlbe__a3_pt pt;
     vlbe_real Lp[6], L, X[2][3], Xt[2];
+    vlbe_real mp = VLBE_R(0.0), ms = VLBE_R(0.0);
     int g, i, j, k, l, c, n, pm;
+    vlbe__ale_layout(mode, &ly); /* here, not passed in: with a constant mode
+                                    the compiler folds the layout */
     n = ly.n;
     pm = vlbe__ale_pmask(mode);
     L = q[ly.p[1]] - q[ly.p[0]];
     vlbe__ale_lpow(L, Lp);
+    if (pm)
+        for (i = 0; i < 2; ++i) { /* positions and spin angles / L, slopes */
+            for (c = 0; c < 3; ++c) {
+                const vlbe_real a = vlbe_fabs(q[ly.e[2 * i] + c]);
+                const vlbe_real b = vlbe_fabs(q[ly.e[2 * i + 1] + c]);
+                mp = a > mp ? a : mp;
+                ms = b > ms ? b : ms;
+            }
+            if (ly.spin) {
+                const vlbe_real a = vlbe_fabs(q[ly.th[i]]);
+                mp = a > mp ? a : mp;
+            }
+        }
+    if (!vlbe__ale_mass_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms))
+        return VLBE_ENONFINITE;
     for (i = 0; i < n * n; ++i) M[i] = VLBE_R(0.0);
     for (g = 0; g < el->rm.n; ++g) {
         const vlbe_real w = el->rm.g[g].w * L, wa = w * mt->rhoA, wi = w * mt->rhoI;
@@ -3120,23 +3226,19 @@ static inline vlbe_status vlbe__a3_mass(const vlbe_ale3_elem *el, unsigned mode,
                 if ((pm & (1 << k)) && (pm & (1 << l)))
                     M[ly.p[k] * n + ly.p[l]] += wa * vlbe_v3_dot(X[k], X[l]) + wi * Xt[k] * Xt[l];
     }
-    return vlbe__ale_gram_ok(M, n) ? VLBE_OK : VLBE_ENONFINITE;
+    return VLBE_OK;
 }
 
 VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
                                     vlbe_real *VLBE_RESTRICT M)
 {
-    vlbe_real Mt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
     vlbe__ale_lay ly;
     vlbe_status st;
-    int i;
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
     mode |= el->flags;
     vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
-    if ((st = vlbe__a3_mass(el, mode, &ly, q, Mt)) != VLBE_OK) return st;
-    for (i = 0; i < ly.n * ly.n; ++i) M[i] = Mt[i];
-    return VLBE_OK;
+    return vlbe__a3_mass(el, mode, q, M);
 }
 
 /* Mq = d(M a)/dq (zero with both p fixed: M is constant).  With z = rho G a
@@ -3163,7 +3265,7 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
     pm = vlbe__ale_pmask(mode);
     for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
     if (pm) {
-        if ((st = vlbe__a3_mass(el, mode, &ly, q, M)) != VLBE_OK) return st;
+        if ((st = vlbe__a3_mass(el, mode, q, M)) != VLBE_OK) return st;
         L = q[ly.p[1]] - q[ly.p[0]];
         ap[0] = (pm & 1) ? a[ly.p[0]] : VLBE_R(0.0);
         ap[1] = (pm & 2) ? a[ly.p[1]] : VLBE_R(0.0);
@@ -3234,7 +3336,7 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
     mode |= el->flags;
     vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
-    if ((st = vlbe__a3_mass(el, mode, &ly, q, M)) != VLBE_OK) return st;
+    if ((st = vlbe__a3_mass(el, mode, q, M)) != VLBE_OK) return st;
     n = ly.n;
     for (i = 0; i < n; ++i)
         for (j = 0; j < n; ++j) T += VLBE_R(0.5) * qd[i] * M[i * n + j] * qd[j];

@@ -229,6 +229,17 @@ static inline vlbe_status vlbe__rancf_b_out(const vlbe_herm_ale *t, int kmax, in
 {
     const int na = amax == 0 ? 1 : (amax == 1 ? 3 : VLBE_DA_N), kl = kmax < 1 ? kmax : 1;
     int k, a, ok = isfinite(t->L) && isfinite(t->s);
+    if (na == VLBE_DA_N) { /* all partials: the rows k <= kmax are contiguous */
+        const size_t nh = (size_t)(kmax + 1) * VLBE_DA_N * 4, nl = (size_t)(kl + 1) * VLBE_DA_N * 2;
+        if (!ok || !vlbe__ale_finite(&t->h[0][0][0], (int)nh) ||
+            !vlbe__ale_finite(&t->l[0][0][0], (int)nl))
+            return VLBE_ENONFINITE;
+        b->L = t->L;
+        b->s = t->s;
+        memcpy(&b->h[0][0][0], &t->h[0][0][0], nh * sizeof(vlbe_real));
+        memcpy(&b->l[0][0][0], &t->l[0][0][0], nl * sizeof(vlbe_real));
+        return VLBE_OK;
+    }
     for (k = 0; k <= kmax; ++k)
         for (a = 0; a < na; ++a) ok &= vlbe__ale_finite(t->h[k][a], 4);
     for (k = 0; k <= kl; ++k)
@@ -349,6 +360,7 @@ VLBE_API vlbe_status vlbe_rancf_elem_init(vlbe_rancf_elem *el, const vlbe_ale_ma
     vlbe__rancf_gp(&t, &t.ale.ends[1]);
     ok &= vlbe__rancf_gp_ok(&t.ale.ends[0]) & vlbe__rancf_gp_ok(&t.ale.ends[1]);
     if (!ok) return VLBE_EWEIGHT; /* weights so uneven that the basis overflows */
+    t.ale.bmax = vlbe__ale_rule_bmax(&t.ale.rm);
     *el = t;
     return VLBE_OK;
 }
