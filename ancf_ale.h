@@ -64,8 +64,9 @@ CONVENTIONS
    VLBE_ALE_NGP_MAX points per term.
 
    Errors: VLBE_ELENGTH when L = p2 - p1 is out of range: L <= 0, L = Inf
-   (p1, p2 of opposite huge signs) or L^-4, the largest power of 1/L the
-   basis carries, overflows (double: L below ~2.7e-78, float: ~7.4e-10);
+   (p1, p2 of opposite huge signs) or so small that L^-4, the largest
+   power of 1/L the basis carries, could overflow (double: L < 1.8e-77,
+   float: L < 4.7e-10);
    VLBE_ENONFINITE for NaN/Inf in q or q', and when finite data overflow
    (slopes, rates or lengths so large that an output would be Inf or
    NaN: every output is checked before it is written); VLBE_ESINGULAR

@@ -17,7 +17,7 @@
    Reproductions are given in both precisions: the double values (1e-100,
    1e300, ...) are not representable in float, so the float build uses
    values that provoke the same overflow there (L^-4 overflows float for
-   L < 7.4e-10, a squared slope of 1e24 times a stiffness overflows, a
+   L < 4.7e-10, a squared slope of 1e24 times a stiffness overflows, a
    weight ratio of 1e60 is out of float's range); each test says which.
    No tolerance is used: the checks are status codes, finiteness and
    bitwise equality.
