@@ -2478,7 +2478,8 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
    p; the axial part 4 and 2 lower, the twist part 2 lower).
    Errors: VLBE_ELENGTH (L = p2 - p1 out of range, as the planar
    element), VLBE_ENONFINITE (NaN/Inf in the input, or an output that
-   would overflow), VLBE_ESINGULAR (|r'|^2 <= eps at a bending point), VLBE_EBOUND (point load outside [p1, p2]),
+   would overflow), VLBE_ESINGULAR (|r'|^2 <= eps at a bending point),
+   VLBE_EBOUND (point load outside [p1, p2]),
    VLBE_EARG for the planar element's VLBE_ALE_CONSERVATIVE and
    VLBE_ALE_INV_AXIAL (not available here: with free p the elastic
    p-forces are the paper's, without the end energy fluxes); no output is

@@ -122,9 +122,10 @@ CONVENTIONS
    output is checked before it is written); vlbe_cr2d_elem_init:
    VLBE_ELENGTH for X1 = X2 or a length so small that the tabulated
    stiffness (L^-3) overflows, VLBE_ENONFINITE for one so large that the
-   mass (L^3) does, VLBE_EARG / VLBE_ENONFINITE for a bad material.  Transition element: VLBE_EBOUND
-   when node 1 is outside the joint by more than L/2 (a.(x1 - C) > L/2:
-   the formulas continue smoothly to a node just outside, as Newton
+   mass (L^3) does, VLBE_EARG / VLBE_ENONFINITE for a bad material.
+   Transition element: VLBE_EBOUND when node 1 is outside the joint by
+   more than L/2 (a.(x1 - C) > L/2: the formulas continue smoothly to a
+   node just outside, as Newton
    iterates and the step in which it leaves need), node 2 not outside
    (a.(x2 - C) <= 0, or |x2 - C| <= 1e-6 L) or L2 <= 1e-6 L; VLBE_EARG for
    |a| != 1, a non-finite C or the LINEAR mode (no linear transition
