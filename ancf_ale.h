@@ -1695,6 +1695,41 @@ static inline int vlbe__ale_mass_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, 
            rho * L * (g * g) <= VLBE_R(0.25) * VLBE_REAL_MAX;
 }
 
+/* d(M a)/dq bounded before it is formed (vlbe_ale_mass_jac, 3D too), with
+   g, A, Xc of vlbe__ale_mass_ok (M <= rho L g^2), U = max(1, 1/L) (|p1/p2
+   partial of N| <= bmax U), am the largest |a_i|, ms the largest slope
+   component: |G a| <= 4 am g, the e-columns (w c N, w N_p z, w c X with
+   c = sum ap N_p) at most 8 rho L am bmax U g, M a at most 16 am rho L
+   g^2, and the p-columns of the scaling identity ((dF - ap M_p + sum_slope
+   (J_e q + M_e a)) / L, 6 slope components at most) at most rho L am U
+   (40 g^2 + 48 ms bmax U g); all below 256 rho L (1 + am) U h^2 with h = g
+   + bmax U (1 + ms).  1 when that and its factor without rho L stay below
+   REAL_MAX / 4. */
+static inline int vlbe__ale_mjac_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
+                                    vlbe_real mp, vlbe_real ms, vlbe_real am)
+{
+    const vlbe_real A = bmax * (L > VLBE_R(1.0) ? L : VLBE_R(1.0));
+    const vlbe_real U = iL > VLBE_R(1.0) ? iL : VLBE_R(1.0);
+    const vlbe_real h = A + VLBE_R(4.0) * bmax * (mp * iL + ms) + bmax * U * (VLBE_R(1.0) + ms);
+    const vlbe_real f = VLBE_R(256.0) * (VLBE_R(1.0) + am) * U * h * h;
+    return f <= VLBE_R(0.25) * VLBE_REAL_MAX && rho * L * f <= VLBE_R(0.25) * VLBE_REAL_MAX;
+}
+
+/* largest position and slope component of the two nodes of a planar q */
+static inline void vlbe__ale_qmax(const vlbe_real *q, vlbe_real *mp, vlbe_real *ms)
+{
+    int i;
+    *mp = *ms = VLBE_R(0.0);
+    for (i = 0; i < 2; ++i) { /* node i: r at 5 i, r' at 5 i + 2 */
+        const vlbe_real a = vlbe_fabs(q[5 * i]), b = vlbe_fabs(q[5 * i + 1]);
+        const vlbe_real c = vlbe_fabs(q[5 * i + 2]), d = vlbe_fabs(q[5 * i + 3]);
+        *mp = a > *mp ? a : *mp;
+        *mp = b > *mp ? b : *mp;
+        *ms = c > *ms ? c : *ms;
+        *ms = d > *ms ? d : *ms;
+    }
+}
+
 /* M(q) = rhoA int G^T G dp (eq. 19), bounded first (vlbe__ale_mass_ok):
    VLBE_ENONFINITE, nothing written, when it could overflow. */
 static inline vlbe_status vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
@@ -1705,15 +1740,7 @@ static inline vlbe_status vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const 
     vlbe__ale_pt pt;
     int g, i;
     vlbe__ale_lpow(L, Lp);
-    if (pm)
-        for (i = 0; i < 2; ++i) { /* node i: r at 5 i, r' at 5 i + 2 */
-            const vlbe_real a = vlbe_fabs(q[5 * i]), b = vlbe_fabs(q[5 * i + 1]);
-            const vlbe_real c = vlbe_fabs(q[5 * i + 2]), d = vlbe_fabs(q[5 * i + 3]);
-            mp = a > mp ? a : mp;
-            mp = b > mp ? b : mp;
-            ms = c > ms ? c : ms;
-            ms = d > ms ? d : ms;
-        }
+    if (pm) vlbe__ale_qmax(q, &mp, &ms);
     if (!vlbe__ale_mass_ok(el->bmax, el->mat.rhoA, L, Lp[3], mp, ms)) return VLBE_ENONFINITE;
     for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
     for (g = 0; g < el->rm.n; ++g) {
@@ -1745,10 +1772,15 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
     if ((st = vlbe__ale_check(q, a)) != VLBE_OK) return st;
     for (i = 0; i < 100; ++i) J[i] = VLBE_R(0.0);
     if (pm) { /* with both p fixed M is constant and J stays zero */
+        vlbe_real mp, ms, am = VLBE_R(0.0);
         L = q[9] - q[4];
         ap[0] = (pm & 1) ? a[4] : VLBE_R(0.0);
         ap[1] = (pm & 2) ? a[9] : VLBE_R(0.0);
         vlbe__ale_lpow(L, Lp);
+        vlbe__ale_qmax(q, &mp, &ms);
+        for (i = 0; i < 10; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
+        if (!vlbe__ale_mjac_ok(el->bmax, el->mat.rhoA, L, Lp[3], mp, ms, am))
+            return VLBE_ENONFINITE;
         for (i = 0; i < 10; ++i) Ma[i] = VLBE_R(0.0);
         for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
         for (g = 0; g < el->rm.n; ++g) { /* d(M a)/dq and M itself */
@@ -1764,7 +1796,6 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
         vlbe__ale_mass_mirror(M);
         vlbe__ale_degree(vlbe__ale_lay2(), Ma, dF);
         vlbe__ale_pcols(vlbe__ale_lay2(), L, pm, dF, ap, q, a, J, M);
-        if (!vlbe__ale_finite(J, 100)) return VLBE_ENONFINITE;
     }
     for (i = 0; i < 100; ++i) Mq[i] = J[i];
     return VLBE_OK;
@@ -2081,11 +2112,13 @@ static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const v
    1.5 / L, |h2'|, |h4'| <= 1; twice that for the 1-norm of 2-vectors)
    and |r_v'| <= B likewise; the axial force density is at most EA (1 + c)
    (1 + A + B)^2 and Q, K, D at most that times (1 + A + B) max(2.25 /
-   Lmin, Lmax, 1.5) (the integrals of the basis slopes and their
-   products), times 8 for the two elements of a node and the Gauss route's
-   rounding.  fq bounds the load part (|f|_1 max(L, L^2) of an element,
-   or the stored load vector).  Returns 1 when that bound stays below
-   REAL_MAX / 1024 (then no sum can overflow); inputs finite, Lmin > 0. */
+   Lmin, Lmax^2, 1.5) (the integrals of the basis slopes and their
+   products; Lmax^2: the Gauss route forms w N = L^2 of a slope function
+   for the load rows even when f = 0), times 8 for the two elements of a
+   node and the Gauss route's rounding.  fq bounds the load part (|f|_1 max(L, L^2) of an element,
+   or the stored load vector).  Returns 1 when that bound, and the
+   factor (1 + A + B)^3 max(...) alone, stay below REAL_MAX / 1024 (then
+   no intermediate or sum can overflow); inputs finite, Lmin > 0. */
 static inline int vlbe__ale_cable_ok(vlbe_real EA, vlbe_real c, vlbe_real fq, vlbe_real Lmin,
                                      vlbe_real Lmax, const vlbe_real *m)
 {
@@ -2094,10 +2127,13 @@ static inline int vlbe__ale_cable_ok(vlbe_real EA, vlbe_real c, vlbe_real fq, vl
     B = VLBE_R(2.0) * (VLBE_R(3.0) * m[2] / Lmin + VLBE_R(2.0) * m[3]);
     g = VLBE_R(1.0) + A + B;
     z = VLBE_R(2.25) / Lmin;
-    if (Lmax > z) z = Lmax;
+    if (Lmax * Lmax > z) z = Lmax * Lmax; /* w N of a slope: L^2 (the load rows) */
     if (VLBE_R(1.5) > z) z = VLBE_R(1.5);
-    return VLBE_R(8.0) * (EA * (VLBE_R(1.0) + c) * g * g * g * z + fq) <=
-           VLBE_REAL_MAX / VLBE_R(1024.0);
+    /* the data's own factor too: with a tiny EA the strain could still
+       overflow */
+    return g * g * g * z <= VLBE_REAL_MAX / VLBE_R(1024.0) &&
+           VLBE_R(8.0) * (EA * (VLBE_R(1.0) + c) * g * g * g * z + fq) <=
+               VLBE_REAL_MAX / VLBE_R(1024.0);
 }
 
 /* Cable forces (axial + load; NO_BEND, both p fixed implied) of a chain of
@@ -3157,6 +3193,27 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
     return VLBE_OK;
 }
 
+/* largest position or spin-angle component (they scale with 1/L in the
+   p-partials) and slope component of the two nodes of a 3D q */
+static inline void vlbe__a3_qmax(const vlbe__ale_lay *ly, const vlbe_real *q, vlbe_real *mp,
+                                 vlbe_real *ms)
+{
+    int i, c;
+    *mp = *ms = VLBE_R(0.0);
+    for (i = 0; i < 2; ++i) {
+        for (c = 0; c < 3; ++c) {
+            const vlbe_real a = vlbe_fabs(q[ly->e[2 * i] + c]);
+            const vlbe_real b = vlbe_fabs(q[ly->e[2 * i + 1] + c]);
+            *mp = a > *mp ? a : *mp;
+            *ms = b > *ms ? b : *ms;
+        }
+        if (ly->spin) {
+            const vlbe_real a = vlbe_fabs(q[ly->th[i]]);
+            *mp = a > *mp ? a : *mp;
+        }
+    }
+}
+
 /* M(q) (eq. 28): w rhoA G_r^T G_r + w rhoI G_th^T G_th summed over the
    mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k] (mode with the
    element's flags, input checked).  Bounded first (vlbe__ale_mass_ok):
@@ -3176,19 +3233,7 @@ static inline vlbe_status vlbe__a3_mass(const vlbe_ale3_elem *el, unsigned mode,
     pm = vlbe__ale_pmask(mode);
     L = q[ly.p[1]] - q[ly.p[0]];
     vlbe__ale_lpow(L, Lp);
-    if (pm)
-        for (i = 0; i < 2; ++i) { /* positions and spin angles / L, slopes */
-            for (c = 0; c < 3; ++c) {
-                const vlbe_real a = vlbe_fabs(q[ly.e[2 * i] + c]);
-                const vlbe_real b = vlbe_fabs(q[ly.e[2 * i + 1] + c]);
-                mp = a > mp ? a : mp;
-                ms = b > ms ? b : ms;
-            }
-            if (ly.spin) {
-                const vlbe_real a = vlbe_fabs(q[ly.th[i]]);
-                mp = a > mp ? a : mp;
-            }
-        }
+    if (pm) vlbe__a3_qmax(&ly, q, &mp, &ms);
     if (!vlbe__ale_mass_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms))
         return VLBE_ENONFINITE;
     for (i = 0; i < n * n; ++i) M[i] = VLBE_R(0.0);
@@ -3267,11 +3312,16 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
     pm = vlbe__ale_pmask(mode);
     for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
     if (pm) {
+        vlbe_real mp, ms, am = VLBE_R(0.0);
         if ((st = vlbe__a3_mass(el, mode, q, M)) != VLBE_OK) return st;
         L = q[ly.p[1]] - q[ly.p[0]];
         ap[0] = (pm & 1) ? a[ly.p[0]] : VLBE_R(0.0);
         ap[1] = (pm & 2) ? a[ly.p[1]] : VLBE_R(0.0);
         vlbe__ale_lpow(L, Lp);
+        vlbe__a3_qmax(&ly, q, &mp, &ms);
+        for (i = 0; i < n; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
+        if (!vlbe__ale_mjac_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms, am))
+            return VLBE_ENONFINITE;
         for (i = 0; i < n; ++i) Ma[i] = VLBE_R(0.0);
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_real w = el->rm.g[g].w * L;
@@ -3316,7 +3366,6 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
         }
         vlbe__ale_degree(&ly, Ma, dF);
         vlbe__ale_pcols(&ly, L, pm, dF, ap, q, a, J, M);
-        if (!vlbe__ale_finite(J, nn)) return VLBE_ENONFINITE;
     }
     for (i = 0; i < nn; ++i) Mq[i] = J[i];
     return VLBE_OK;

@@ -64,6 +64,7 @@ typedef vlbe_real R;
 #define CR_TINY VLBE_R(1e-14) /* |X2 - X1|^-3 = 1e42 overflows float    */
 #define HUGE_RATE VLBE_R(1e20) /* q'^2 = 1e40 overflows                 */
 #define NEAR_MAX VLBE_R(3e38)
+#define HUGE_L VLBE_R(1e25)    /* L^2 = 1e50 overflows                  */
 #else
 #define TINY_L 1e-100
 #define SUBN_L 1e-320
@@ -74,6 +75,7 @@ typedef vlbe_real R;
 #define CR_TINY 1e-120
 #define HUGE_RATE 1e160
 #define NEAR_MAX 1e308
+#define HUGE_L 1e200
 #endif
 
 /* -- sentinel snapshots ---------------------------------------------------- */
@@ -261,7 +263,8 @@ static void test_ale_subnormal_length(void **state)
     EXPECT_FAIL(vlbe_rancf_point_force(&rel_, q, q[9] / 3, F, Q, K), VLBE_ELENGTH);
 }
 
-/* fails on 77b73ad: VLBE_OK with M[44] = Inf, Mq = NaN, E = Inf, eps = Inf */
+/* fails on 77b73ad: VLBE_OK with M[44] = Inf, Mq = NaN, E = Inf, eps = Inf,
+   and Mq = Inf for a huge acceleration */
 static void test_ale_mass_huge_slope(void **state)
 {
     R q[10], qd[10], M[100], E[3], eps, kap;
@@ -278,6 +281,13 @@ static void test_ale_mass_huge_slope(void **state)
     EXPECT_FAIL(vlbe_ale_strain(q, VLBE_R(0.3), &eps, NULL), VLBE_ENONFINITE);
     EXPECT_FAIL(vlbe_rancf_mass(&rel_, 0, q, M), VLBE_ENONFINITE);
     EXPECT_FAIL(vlbe_rancf_energy(&rel_, 0, q, qd, E), VLBE_ENONFINITE);
+    /* a short element (L = 0.01) with an acceleration near REAL_MAX:
+       d(M a)/dq overflows (its p-columns carry 1/L) */
+    ale_q(VLBE_R(0.01), 1, q, qd);
+    qd[2] = NEAR_MAX;
+    qd[4] = NEAR_MAX;
+    EXPECT_FAIL(vlbe_ale_mass_jac(&el_, 0, q, qd, M), VLBE_ENONFINITE);
+    EXPECT_FAIL(vlbe_rancf_mass_jac(&rel_, 0, q, qd, M), VLBE_ENONFINITE);
 }
 
 /* -- 3D element ------------------------------------------------------------ */
@@ -365,8 +375,8 @@ static void chain_x(R sl, R *x, R *v)
     }
 }
 
-/* fails on 77b73ad: VLBE_OK with NaN in Q (L = 1e-320); ne = 0 and a huge
-   ne hit VLBE_ASSERT (abort) there */
+/* fails on 77b73ad: VLBE_OK with NaN in Q (L = 1e-320, L = 1e200: float
+   1e-44, 1e25); ne = 0 and a huge ne hit VLBE_ASSERT (abort) there */
 static void test_inv_chain_tiny_length(void **state)
 {
     static R K[NX * VLBE_ALE_INV_BW], D[NX * VLBE_ALE_INV_BW];
@@ -386,6 +396,8 @@ static void test_inv_chain_tiny_length(void **state)
                 VLBE_ELENGTH);
     L[1] = TINY_L;
     EXPECT_FAIL(vlbe_ale_inv_chain_force(&el_, 0, NE, L, x, v, Q, K, D), VLBE_ELENGTH);
+    L[1] = HUGE_L; /* the load rows' w N = L^2 overflows */
+    EXPECT_FAIL(vlbe_ale_inv_chain_force(&el_, 0, NE, L, x, v, Q, K, D), VLBE_ENONFINITE);
     L[1] = VLBE_R(0.5);
     chain_x(BIG_SLOPE, x, v);
     EXPECT_FAIL(vlbe_ale_inv_chain_force(&el_, 0, NE, L, x, v, Q, K, D), VLBE_ENONFINITE);
