@@ -2586,6 +2586,13 @@ VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlb
         return VLBE_EARG;
     A = pi * radius * radius;
     J = VLBE_R(0.25) * A * radius * radius;
+    {
+        /* a radius, density or modulus so large that a section constant
+           overflows: VLBE_ENONFINITE, mat untouched */
+        const vlbe_real m[5] = {rho * A, rho * VLBE_R(2.0) * J, E * A, E * J,
+                                G * VLBE_R(2.0) * J};
+        if (!vlbe__ale_finite(m, 5)) return VLBE_ENONFINITE;
+    }
     mat->rhoA = rho * A;
     mat->rhoI = rho * VLBE_R(2.0) * J; /* polar I_p = 2 J */
     mat->EA = E * A;

@@ -30,6 +30,7 @@
      ale_mass_huge_slope     mass, mass_jac, energy, strain with slope 1e160
                              (float 1e20)
      ale3_overflow           3D element: tiny L, huge slope, huge rates
+     ale3_mat_circle         section constants that overflow
      inv_chain_tiny_length   vlbe_ale_inv_chain_force with L = 1e-320 (float
                              1e-44), huge slopes, bad ne
      inv_sys_overflow        vlbe_ale_inv_sys_init with L = 1e-320, sys_force
@@ -355,6 +356,26 @@ static void test_ale3_overflow(void **state)
     sn_keep(K, sizeof K);
     EXPECT_FAIL(vlbe_ale3_point_force(0, q, q[15] / 3, F, Q, K), VLBE_ELENGTH);
     EXPECT_FAIL(vlbe_ale3_point_torque(0, q, q[15] / 3, 2, Q, K), VLBE_ELENGTH);
+}
+
+/* fails on 77b73ad: VLBE_OK with rhoA = EA = Inf for a radius of 1e200
+   (float 1e20: r^4 overflows) */
+static void test_ale3_mat_circle(void **state)
+{
+#ifdef VLBE_USE_FLOAT
+    const R big = VLBE_R(1e20);
+#else
+    const R big = 1e200;
+#endif
+    vlbe_ale3_mat m;
+    (void)state;
+    memset(&m, 0x5A, sizeof m);
+    sn_begin();
+    sn_keep(&m, sizeof m);
+    EXPECT_FAIL(vlbe_ale3_mat_circle(&m, 7800, VLBE_R(2e11), VLBE_R(8e10), big), VLBE_ENONFINITE);
+    assert_int_equal(vlbe_ale3_mat_circle(&m, 7800, VLBE_R(2e11), VLBE_R(8e10), VLBE_R(0.01)),
+                     VLBE_OK);
+    assert_true(all_fin(&m.rhoA, 5) && m.rhoA > 0);
 }
 
 /* -- invariant route ------------------------------------------------------ */
@@ -754,6 +775,7 @@ int main(void)
         cmocka_unit_test(test_ale_subnormal_length),
         cmocka_unit_test(test_ale_mass_huge_slope),
         cmocka_unit_test(test_ale3_overflow),
+        cmocka_unit_test(test_ale3_mat_circle),
         cmocka_unit_test(test_inv_chain_tiny_length),
         cmocka_unit_test(test_inv_sys_overflow),
         cmocka_unit_test(test_rancf_to_bezier_weights),
