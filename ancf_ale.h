@@ -3222,20 +3222,23 @@ static inline void vlbe__a3_qmax(const vlbe__ale_lay *ly, const vlbe_real *q, vl
 }
 
 /* M(q) (eq. 28): w rhoA G_r^T G_r + w rhoI G_th^T G_th summed over the
-   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k] (mode with the
-   element's flags, input checked).  Bounded first (vlbe__ale_mass_ok):
-   VLBE_ENONFINITE, nothing written, when it could overflow. */
-static inline vlbe_status vlbe__a3_mass(const vlbe_ale3_elem *el, unsigned mode,
-                                        const vlbe_real *q, vlbe_real *VLBE_RESTRICT M)
+   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k].  Bounded
+   first (vlbe__ale_mass_ok): VLBE_ENONFINITE, nothing written, when it
+   could overflow. */
+VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                    vlbe_real *VLBE_RESTRICT M)
 {
     const vlbe_ale3_mat *mt = &el->mat;
     vlbe__ale_lay ly;
     vlbe__a3_pt pt;
     vlbe_real Lp[6], L, X[2][3], Xt[2];
     vlbe_real mp = VLBE_R(0.0), ms = VLBE_R(0.0);
+    vlbe_status st;
     int g, i, j, k, l, c, n, pm;
-    vlbe__ale_layout(mode, &ly); /* here, not passed in: with a constant mode
-                                    the compiler folds the layout */
+    VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
+    mode |= el->flags;
+    vlbe__ale_layout(mode, &ly);
+    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
     n = ly.n;
     pm = vlbe__ale_pmask(mode);
     L = q[ly.p[1]] - q[ly.p[0]];
@@ -3283,18 +3286,6 @@ static inline vlbe_status vlbe__a3_mass(const vlbe_ale3_elem *el, unsigned mode,
     return VLBE_OK;
 }
 
-VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                    vlbe_real *VLBE_RESTRICT M)
-{
-    vlbe__ale_lay ly;
-    vlbe_status st;
-    VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
-    mode |= el->flags;
-    vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
-    return vlbe__a3_mass(el, mode, q, M);
-}
-
 /* Mq = d(M a)/dq (zero with both p fixed: M is constant).  With z = rho G a
    per field, d(G^T z)/de_j = G^T dz/de_j + (dG/de_j)^T z, dz/de_j = rho
    sum_k a_pk dN_j/dp_k (the p-columns of G are linear in e), and the
@@ -3320,7 +3311,7 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
     for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
     if (pm) {
         vlbe_real mp, ms, am = VLBE_R(0.0);
-        if ((st = vlbe__a3_mass(el, mode, q, M)) != VLBE_OK) return st;
+        if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
         L = q[ly.p[1]] - q[ly.p[0]];
         ap[0] = (pm & 1) ? a[ly.p[0]] : VLBE_R(0.0);
         ap[1] = (pm & 2) ? a[ly.p[1]] : VLBE_R(0.0);
@@ -3394,7 +3385,7 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
     mode |= el->flags;
     vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
-    if ((st = vlbe__a3_mass(el, mode, q, M)) != VLBE_OK) return st;
+    if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
     n = ly.n;
     for (i = 0; i < n; ++i)
         for (j = 0; j < n; ++j) T += VLBE_R(0.5) * qd[i] * M[i * n + j] * qd[j];
