@@ -2054,27 +2054,35 @@ VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, 
 /* n x n band storage (VLBE_ALE_INV_BW per row): entry (i, j) */
 #define VLBE__ALE_BAND(i, j) ((size_t)(i) * VLBE_ALE_INV_BW + (size_t)((j) - (i) + VLBE_ALE_INV_KD))
 
-/* |x| over the ne + 1 nodes of a chain, per component (4 lanes: the
-   compiler vectorizes it): ok &= finite, m[j] = max |x_j|. */
+/* |x| over the ne + 1 nodes of a chain, per component: m[j] = max |x_j|;
+   0 when some x is NaN or Inf.  On the bits: for |x| the bit patterns
+   (sign cleared) order like the values, and Inf and NaN lie above every
+   finite one, so one integer max per lane (4 lanes, vectorized) gives the
+   maxima and the finiteness. */
 static inline int vlbe__ale_chain_max(int ne, const vlbe_real *x, vlbe_real *m)
 {
-    vlbe_real m0 = VLBE_R(0.0), m1 = VLBE_R(0.0), m2 = VLBE_R(0.0), m3 = VLBE_R(0.0);
-    int i, ok = 1;
+#ifdef VLBE_USE_FLOAT
+    typedef uint32_t vlbe__bits;
+    const vlbe__bits A = 0x7fffffffu, E = 0x7f800000u;
+#else
+    typedef uint64_t vlbe__bits;
+    const vlbe__bits A = 0x7fffffffffffffffu, E = 0x7ff0000000000000u;
+#endif
+    vlbe__bits b[4] = {0, 0, 0, 0}, u[4], t;
+    int i, j;
     for (i = 0; i <= ne; ++i) {
-        const vlbe_real a0 = vlbe_fabs(x[4 * i]), a1 = vlbe_fabs(x[4 * i + 1]);
-        const vlbe_real a2 = vlbe_fabs(x[4 * i + 2]), a3 = vlbe_fabs(x[4 * i + 3]);
-        ok &= (a0 <= VLBE_REAL_MAX) & (a1 <= VLBE_REAL_MAX) & (a2 <= VLBE_REAL_MAX) &
-              (a3 <= VLBE_REAL_MAX);
-        m0 = a0 > m0 ? a0 : m0;
-        m1 = a1 > m1 ? a1 : m1;
-        m2 = a2 > m2 ? a2 : m2;
-        m3 = a3 > m3 ? a3 : m3;
+        memcpy(u, x + 4 * i, sizeof u);
+        for (j = 0; j < 4; ++j) {
+            t = u[j] & A;
+            b[j] = t > b[j] ? t : b[j];
+        }
     }
-    m[0] = m0;
-    m[1] = m1;
-    m[2] = m2;
-    m[3] = m3;
-    return ok;
+    t = b[0] > b[1] ? b[0] : b[1];
+    t = b[2] > t ? b[2] : t;
+    t = b[3] > t ? b[3] : t;
+    if (t >= E) return 0;
+    memcpy(m, b, sizeof b);
+    return 1;
 }
 
 /* Inputs of a chain of ne elements: lengths (L may be NULL), x, v (may be
