@@ -63,10 +63,17 @@ CONVENTIONS
    bending force (default 5; its integrand is rational).  At most
    VLBE_ALE_NGP_MAX points per term.
 
-   Errors: VLBE_ELENGTH when L = p2 - p1 <= 0; VLBE_ENONFINITE for NaN/Inf in
-   q or q'; VLBE_ESINGULAR when the slope vanishes (|r'|^2 <= eps) at a
-   bending point (the curvature is undefined there); VLBE_EBOUND when a
-   point load lies outside [p1, p2].  On failure no output is written.
+   Errors: VLBE_ELENGTH when L = p2 - p1 is out of range: L <= 0, L = Inf
+   (p1, p2 of opposite huge signs) or so small that L^-4, the largest
+   power of 1/L the basis carries, could overflow (double: L < 1.8e-77,
+   float: L < 4.7e-10);
+   VLBE_ENONFINITE for NaN/Inf in q or q', and when finite data overflow
+   (slopes, rates or lengths so large that an output would be Inf or
+   NaN: every output is checked before it is written); VLBE_ESINGULAR
+   when the slope vanishes (|r'|^2 <= eps) at a bending point (the
+   curvature is undefined there); VLBE_EBOUND when a point load lies
+   outside [p1, p2].  On failure no output is written (point loads, which
+   add to Q and K, work on copies).
    Stack: vlbe_ale_force with K, D uses up to about 7 kB (gcc -fstack-usage,
    -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
    e-columns and the point scratch), the other eval calls at most 3 kB.
@@ -314,6 +321,8 @@ typedef struct vlbe_ale_elem {
     vlbe_ale_rule rm, rl, rt; /* mass/inertia/loads, axial, bending */
     vlbe_ale_gp ends[2];
     vlbe_ale_inv inv;
+    vlbe_real bmax; /* largest |basis number| (k = 0, a <= 2) of rm: the
+                       overflow bound of vlbe_ale_mass (set by init) */
 } vlbe_ale_elem;
 
 /* The system invariants of a chain of ne fixed-length elements (see
@@ -324,6 +333,7 @@ typedef struct vlbe_ale_inv_sys {
     const vlbe_real *T; /* assembled quartic invariants, band rows of pairs  */
     const vlbe_real *B; /* assembled quadratic invariants, one per pair      */
     vlbe_real *H;      /* scratch: 8 products per pair, then the slots      */
+    vlbe_real Lmin, Lmax; /* shortest, longest element (overflow bound)    */
 } vlbe_ale_inv_sys;
 
 /* -- API prototypes ----------------------------------------------------- */
@@ -408,6 +418,26 @@ static inline vlbe_status vlbe__ale_rule(vlbe_ale_rule *r, int n, int ndef)
     return VLBE_OK;
 }
 
+/* the largest |b[0][a][j]|, |l[0][a][j]| (a <= 2) of a rule: N and its
+   first p1/p2 partials at L = 1 (vlbe__ale_mass_ok) */
+static inline vlbe_real vlbe__ale_rule_bmax(const vlbe_ale_rule *r)
+{
+    vlbe_real m = VLBE_R(0.0);
+    int g, a, j;
+    for (g = 0; g < r->n; ++g)
+        for (a = 0; a < 3; ++a) {
+            for (j = 0; j < 4; ++j) {
+                const vlbe_real t = vlbe_fabs(r->g[g].b[0][a][j]);
+                m = t > m ? t : m;
+            }
+            for (j = 0; j < 2; ++j) {
+                const vlbe_real t = vlbe_fabs(r->g[g].l[0][a][j]);
+                m = t > m ? t : m;
+            }
+        }
+    return m;
+}
+
 VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *mat,
                                         unsigned flags, int nm, int nl, int nt)
 {
@@ -430,6 +460,7 @@ VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *m
     vlbe__ale_gp_fill(&el->ends[0], VLBE_R(0.0), VLBE_R(0.0));
     vlbe__ale_gp_fill(&el->ends[1], VLBE_R(1.0), VLBE_R(0.0));
     if ((st = vlbe_ale_inv_init(&el->inv)) != VLBE_OK) return st;
+    el->bmax = vlbe__ale_rule_bmax(&el->rm);
     el->mat = *mat;
     el->flags = flags;
     return VLBE_OK;
@@ -490,13 +521,33 @@ static inline void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp,
     }
 }
 
+
+/* Shortest element length: L^-4, the largest power of 1/L the element's
+   basis carries (vlbe__ale_lpow), stays finite, with a little room
+   (double: 1.8e-77 > 2^-255, (1/L)^4 < 2^1020; float: 4.7e-10 > 2^-31,
+   (1/L)^4 < 2^124). */
+#ifdef VLBE_USE_FLOAT
+#define VLBE__ALE_LMIN VLBE_R(4.7e-10)
+#else
+#define VLBE__ALE_LMIN VLBE_R(1.8e-77)
+#endif
+
+/* The element length L = p2 - p1 in range: VLBE__ALE_LMIN <= L <=
+   REAL_MAX; VLBE_ELENGTH otherwise (L <= 0, L^-4 overflows, p2 - p1
+   overflowed).  Two compares, no division: every element call makes it. */
+static inline vlbe_status vlbe__ale_len(vlbe_real p1, vlbe_real p2)
+{
+    const vlbe_real L = p2 - p1;
+    if (!(L >= VLBE__ALE_LMIN && L <= VLBE_REAL_MAX)) return VLBE_ELENGTH;
+    return VLBE_OK;
+}
+
 /* Input checks shared by the eval functions. */
 static inline vlbe_status vlbe__ale_check(const vlbe_real *q, const vlbe_real *qd)
 {
     if (!vlbe_all_finite(q, VLBE_ALE_NQ)) return VLBE_ENONFINITE;
     if (qd && !vlbe_all_finite(qd, VLBE_ALE_NQ)) return VLBE_ENONFINITE;
-    if (!(q[9] - q[4] > VLBE_R(0.0))) return VLBE_ELENGTH;
-    return VLBE_OK;
+    return vlbe__ale_len(q[4], q[9]);
 }
 
 /* Which p's are coordinates: bit k set when p_{k+1} is free. */
@@ -1519,10 +1570,12 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     return VLBE_OK;
 }
 
-/* vlbe_ale_force with the final mode (element flags already ORed in) */
+/* vlbe_ale_force with the final mode (element flags already ORed in);
+   fin = 0 skips the final finiteness check of the outputs (for a caller
+   that bounded them from the data, vlbe_ale_inv_chain_force) */
 static inline vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode,
                                           const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
-                                          vlbe_real *K, vlbe_real *D)
+                                          vlbe_real *K, vlbe_real *D, int fin)
 {
     vlbe_real Qt[10], Kt[100], Dt[100];
     const int jac = K != NULL || D != NULL;
@@ -1534,6 +1587,11 @@ static inline vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode
         for (i = 0; i < 100; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
     st = vlbe__ale_forces(el, mode, q, qd, Qt, jac ? Kt : NULL, jac ? Dt : NULL);
     if (st != VLBE_OK) return st;
+    /* finite inputs can still overflow (huge slopes, rates, L^3 of a huge
+       element): nothing is written then */
+    if (fin && (!vlbe_all_finite(Qt, 10) || (K && !vlbe_all_finite(Kt, 100)) ||
+                (D && !vlbe_all_finite(Dt, 100))))
+        return VLBE_ENONFINITE;
     for (i = 0; i < 10; ++i) Q[i] = Qt[i];
     if (K)
         for (i = 0; i < 100; ++i) K[i] = Kt[i];
@@ -1547,7 +1605,7 @@ VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, cons
                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
 {
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
-    return vlbe__ale_force(el, mode | el->flags, q, qd, Q, K, D);
+    return vlbe__ale_force(el, mode | el->flags, q, qd, Q, K, D, 1);
 }
 
 /* One point's part w G^T G of M (eq. 19): e-e blocks and p1-p2 for
@@ -1592,21 +1650,79 @@ static inline void vlbe__ale_mass_mirror(vlbe_real *M)
         }
 }
 
-/* M(q) = rhoA int G^T G dp (eq. 19). */
-static inline void vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
-                                  vlbe_real *M)
+/* A mass matrix sum_g w_g G^T G (w_g > 0, sum w_g = rho L) is bounded
+   before it is formed, so that it can be accumulated in the caller's M:
+   its entries are w times products of basis values N (|N| <= A = bmax
+   max(1, L)) and components of the p-partials X of r (|X_c| <= Xc =
+   bmax (sum of the position/angle components / L + sum of the slope
+   components) <= 2 bmax (mp / L + ms) for the two nodes' largest
+   components mp, ms; d components: |X.X| <= d Xc^2), so every entry and
+   every partial sum is at most rho L (A + 2 Xc)^2 for d <= 4, and the
+   factors at most (A + 2 Xc)^2.  1 when both stay below REAL_MAX / 4.
+   mp, ms: 0 with both p fixed (X is not formed then). */
+static inline int vlbe__ale_mass_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
+                                    vlbe_real mp, vlbe_real ms)
+{
+    const vlbe_real A = bmax * (L > VLBE_R(1.0) ? L : VLBE_R(1.0));
+    const vlbe_real g = A + VLBE_R(4.0) * bmax * (mp * iL + ms);
+    return g * g <= VLBE_R(0.25) * VLBE_REAL_MAX &&
+           rho * L * (g * g) <= VLBE_R(0.25) * VLBE_REAL_MAX;
+}
+
+/* d(M a)/dq bounded before it is formed (vlbe_ale_mass_jac, 3D too), with
+   g, A, Xc of vlbe__ale_mass_ok (M <= rho L g^2), U = max(1, 1/L) (|p1/p2
+   partial of N| <= bmax U), am the largest |a_i|, ms the largest slope
+   component: |G a| <= 4 am g, the e-columns (w c N, w N_p z, w c X with
+   c = sum ap N_p) at most 8 rho L am bmax U g, M a at most 16 am rho L
+   g^2, and the p-columns of the scaling identity ((dF - ap M_p + sum_slope
+   (J_e q + M_e a)) / L, 6 slope components at most) at most rho L am U
+   (40 g^2 + 48 ms bmax U g); all below 256 rho L (1 + am) U h^2 with h = g
+   + bmax U (1 + ms).  1 when that and its factor without rho L stay below
+   REAL_MAX / 4. */
+static inline int vlbe__ale_mjac_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
+                                    vlbe_real mp, vlbe_real ms, vlbe_real am)
+{
+    const vlbe_real A = bmax * (L > VLBE_R(1.0) ? L : VLBE_R(1.0));
+    const vlbe_real U = iL > VLBE_R(1.0) ? iL : VLBE_R(1.0);
+    const vlbe_real h = A + VLBE_R(4.0) * bmax * (mp * iL + ms) + bmax * U * (VLBE_R(1.0) + ms);
+    const vlbe_real f = VLBE_R(256.0) * (VLBE_R(1.0) + am) * U * h * h;
+    return f <= VLBE_R(0.25) * VLBE_REAL_MAX && rho * L * f <= VLBE_R(0.25) * VLBE_REAL_MAX;
+}
+
+/* largest position and slope component of the two nodes of a planar q */
+static inline void vlbe__ale_qmax(const vlbe_real *q, vlbe_real *mp, vlbe_real *ms)
+{
+    int i;
+    *mp = *ms = VLBE_R(0.0);
+    for (i = 0; i < 2; ++i) { /* node i: r at 5 i, r' at 5 i + 2 */
+        const vlbe_real a = vlbe_fabs(q[5 * i]), b = vlbe_fabs(q[5 * i + 1]);
+        const vlbe_real c = vlbe_fabs(q[5 * i + 2]), d = vlbe_fabs(q[5 * i + 3]);
+        *mp = a > *mp ? a : *mp;
+        *mp = b > *mp ? b : *mp;
+        *ms = c > *ms ? c : *ms;
+        *ms = d > *ms ? d : *ms;
+    }
+}
+
+/* M(q) = rhoA int G^T G dp (eq. 19), bounded first (vlbe__ale_mass_ok):
+   VLBE_ENONFINITE, nothing written, when it could overflow. */
+static inline vlbe_status vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
+                                         vlbe_real *VLBE_RESTRICT M)
 {
     const vlbe_real L = q[9] - q[4];
-    vlbe_real Lp[6];
+    vlbe_real Lp[6], mp = VLBE_R(0.0), ms = VLBE_R(0.0);
     vlbe__ale_pt pt;
     int g, i;
     vlbe__ale_lpow(L, Lp);
+    if (pm) vlbe__ale_qmax(q, &mp, &ms);
+    if (!vlbe__ale_mass_ok(el->bmax, el->mat.rhoA, L, Lp[3], mp, ms)) return VLBE_ENONFINITE;
     for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
     for (g = 0; g < el->rm.n; ++g) {
         vlbe__ale_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, q, NULL, 0, &pt);
         vlbe__ale_mass_pt(&pt, pm, el->mat.rhoA * el->rm.g[g].w * L, M);
     }
     vlbe__ale_mass_mirror(M);
+    return VLBE_OK;
 }
 
 VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -1615,8 +1731,7 @@ VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const
     vlbe_status st;
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    vlbe__ale_mass(el, vlbe__ale_pmask(mode | el->flags), q, M);
-    return VLBE_OK;
+    return vlbe__ale_mass(el, vlbe__ale_pmask(mode | el->flags), q, M);
 }
 
 VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -1631,10 +1746,15 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
     if ((st = vlbe__ale_check(q, a)) != VLBE_OK) return st;
     for (i = 0; i < 100; ++i) J[i] = VLBE_R(0.0);
     if (pm) { /* with both p fixed M is constant and J stays zero */
+        vlbe_real mp, ms, am = VLBE_R(0.0);
         L = q[9] - q[4];
         ap[0] = (pm & 1) ? a[4] : VLBE_R(0.0);
         ap[1] = (pm & 2) ? a[9] : VLBE_R(0.0);
         vlbe__ale_lpow(L, Lp);
+        vlbe__ale_qmax(q, &mp, &ms);
+        for (i = 0; i < 10; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
+        if (!vlbe__ale_mjac_ok(el->bmax, el->mat.rhoA, L, Lp[3], mp, ms, am))
+            return VLBE_ENONFINITE;
         for (i = 0; i < 10; ++i) Ma[i] = VLBE_R(0.0);
         for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
         for (g = 0; g < el->rm.n; ++g) { /* d(M a)/dq and M itself */
@@ -1692,9 +1812,30 @@ VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, con
             if ((st = vlbe__ale_kap(pt.X[1][0], pt.X[2][0], &kap, gy, NULL)) != VLBE_OK) return st;
             U += el->rt.g[g].w * L * VLBE_R(0.5) * mt->EI * kap * kap;
         }
+    if (!isfinite(T) || !isfinite(U) || !isfinite(V)) return VLBE_ENONFINITE;
     E[0] = T;
     E[1] = U;
     E[2] = V;
+    return VLBE_OK;
+}
+
+/* r and r' (either may be NULL) from a basis b evaluated with k <= 1,
+   written only when both are finite (shared with rancf.h). */
+static inline vlbe_status vlbe__ale_point_b(const vlbe_herm_ale *b, const vlbe_real *q,
+                                            vlbe_real *r, vlbe_real *rp)
+{
+    vlbe_real x[4];
+    vlbe__ale_sum(b, 0, 0, q, x);
+    vlbe__ale_sum(b, 1, 0, q, x + 2);
+    if (!vlbe_all_finite(x, 4)) return VLBE_ENONFINITE;
+    if (r) {
+        r[0] = x[0];
+        r[1] = x[1];
+    }
+    if (rp) {
+        rp[0] = x[2];
+        rp[1] = x[3];
+    }
     return VLBE_OK;
 }
 
@@ -1709,9 +1850,7 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[4], q[9], 1, 0, &b);
-    if (r) vlbe__ale_sum(&b, 0, 0, q, r);
-    if (rp) vlbe__ale_sum(&b, 1, 0, q, rp);
-    return VLBE_OK;
+    return vlbe__ale_point_b(&b, q, r, rp);
 }
 
 /* Strain and curvature from a basis b evaluated with k <= 2 (shared with
@@ -1719,12 +1858,14 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
 static inline vlbe_status vlbe__ale_strain_b(const vlbe_herm_ale *b, const vlbe_real *q,
                                              vlbe_real *eps, vlbe_real *kap)
 {
-    vlbe_real r1[2], r2[2], gy[4], k = VLBE_R(0.0);
+    vlbe_real r1[2], r2[2], gy[4], k = VLBE_R(0.0), e;
     vlbe_status st;
     vlbe__ale_sum(b, 1, 0, q, r1);
     vlbe__ale_sum(b, 2, 0, q, r2);
     if (kap && (st = vlbe__ale_kap(r1, r2, &k, gy, NULL)) != VLBE_OK) return st;
-    if (eps) *eps = vlbe__ale_eps(r1, gy, NULL);
+    e = vlbe__ale_eps(r1, gy, NULL);
+    if ((eps && !isfinite(e)) || !isfinite(k)) return VLBE_ENONFINITE;
+    if (eps) *eps = e;
     if (kap) *kap = k;
     return VLBE_OK;
 }
@@ -1782,6 +1923,22 @@ static inline void vlbe__ale_point_force_b(const vlbe_herm_ale *b, const vlbe_re
         }
 }
 
+/* vlbe__ale_point_force_b on copies of Q and K, committed only when the
+   sums are finite (shared with rancf.h). */
+static inline vlbe_status vlbe__ale_point_force_c(const vlbe_herm_ale *b, const vlbe_real *q,
+                                                  const vlbe_real *F, vlbe_real *Q, vlbe_real *K)
+{
+    vlbe_real Qt[10], Kt[100];
+    int i;
+    for (i = 0; i < 10; ++i) Qt[i] = Q[i];
+    for (i = 0; K && i < 100; ++i) Kt[i] = K[i];
+    vlbe__ale_point_force_b(b, q, F, Qt, K ? Kt : NULL);
+    if (!vlbe_all_finite(Qt, 10) || (K && !vlbe_all_finite(Kt, 100))) return VLBE_ENONFINITE;
+    for (i = 0; i < 10; ++i) Q[i] = Qt[i];
+    for (i = 0; K && i < 100; ++i) K[i] = Kt[i];
+    return VLBE_OK;
+}
+
 VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, const vlbe_real *F,
                                           vlbe_real *VLBE_RESTRICT Q, vlbe_real *VLBE_RESTRICT K)
 {
@@ -1792,8 +1949,7 @@ VLBE_API vlbe_status vlbe_ale_point_force(const vlbe_real *q, vlbe_real pf, cons
     if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
     if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
     vlbe_herm_ale_eval(pf, q[4], q[9], 0, 2, &b);
-    vlbe__ale_point_force_b(&b, q, F, Q, K);
-    return VLBE_OK;
+    return vlbe__ale_point_force_c(&b, q, F, Q, K);
 }
 
 /* ===== invariant-matrix forces of fixed-length elements and chains ====== */
@@ -1866,26 +2022,94 @@ VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, 
 {
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
     mode |= el->flags | VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2 | VLBE_ALE_INV_AXIAL;
-    return vlbe__ale_force(el, mode, q, qd, Q, K, D);
+    return vlbe__ale_force(el, mode, q, qd, Q, K, D, 1);
 }
 
 /* n x n band storage (VLBE_ALE_INV_BW per row): entry (i, j) */
 #define VLBE__ALE_BAND(i, j) ((size_t)(i) * VLBE_ALE_INV_BW + (size_t)((j) - (i) + VLBE_ALE_INV_KD))
 
-/* Inputs of a chain of ne elements: lengths (L may be NULL), x, v (may be
-   NULL), n = 4 (ne + 1) coordinates each. */
-static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const vlbe_real *x,
-                                             const vlbe_real *v)
+/* |x| over the ne + 1 nodes of a chain, per component: m[j] = max |x_j|;
+   0 when some x is NaN or Inf.  On the bits: for |x| the bit patterns
+   (sign cleared) order like the values, and Inf and NaN lie above every
+   finite one, so one integer max per lane (4 lanes, vectorized) gives the
+   maxima and the finiteness. */
+static inline int vlbe__ale_chain_max(int ne, const vlbe_real *x, vlbe_real *m)
 {
-    const int n = 4 * (ne + 1);
+    const vlbe__bits A = VLBE__BITS_ABS, E = VLBE__BITS_EXP;
+    vlbe__bits b[4] = {0, 0, 0, 0}, u[4], t;
+    int i, j;
+    for (i = 0; i <= ne; ++i) {
+        memcpy(u, x + 4 * i, sizeof u);
+        for (j = 0; j < 4; ++j) {
+            t = u[j] & A;
+            b[j] = t > b[j] ? t : b[j];
+        }
+    }
+    t = b[0] > b[1] ? b[0] : b[1];
+    t = b[2] > t ? b[2] : t;
+    t = b[3] > t ? b[3] : t;
+    if (t >= E) return 0;
+    memcpy(m, b, sizeof b);
+    return 1;
+}
+
+/* Inputs of a chain of ne elements: lengths (L may be NULL), x, v (may be
+   NULL), n = 4 (ne + 1) coordinates each; mx = the largest position and
+   slope component of x, then of v (0 for v = NULL), for
+   vlbe__ale_cable_ok. */
+static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const vlbe_real *x,
+                                             const vlbe_real *v, vlbe_real *mx)
+{
+    vlbe_real m[4];
+    vlbe_status st;
     int e;
-    if (!vlbe_all_finite(x, n) || (v && !vlbe_all_finite(v, n))) return VLBE_ENONFINITE;
+    if (!vlbe__ale_chain_max(ne, x, m)) return VLBE_ENONFINITE;
+    mx[0] = m[0] > m[1] ? m[0] : m[1];
+    mx[1] = m[2] > m[3] ? m[2] : m[3];
+    mx[2] = mx[3] = VLBE_R(0.0);
+    if (v) {
+        if (!vlbe__ale_chain_max(ne, v, m)) return VLBE_ENONFINITE;
+        mx[2] = m[0] > m[1] ? m[0] : m[1];
+        mx[3] = m[2] > m[3] ? m[2] : m[3];
+    }
     if (L) {
         if (!vlbe_all_finite(L, ne)) return VLBE_ENONFINITE;
         for (e = 0; e < ne; ++e)
-            if (!(L[e] > VLBE_R(0.0))) return VLBE_ELENGTH;
+            if ((st = vlbe__ale_len(VLBE_R(0.0), L[e])) != VLBE_OK) return st;
     }
     return VLBE_OK;
+}
+
+/* The forces of a chain of fixed-length cable elements are accumulated in
+   the caller's Q, K, D, so they are bounded before anything is written:
+   with mx = {xm, sm, vm, wm} the largest position and slope component of
+   x and of v (vlbe__ale_chain_in), every element's |r'| <= A = 2 (3 xm /
+   Lmin + 2 sm) (|h1'|, |h3'| <=
+   1.5 / L, |h2'|, |h4'| <= 1; twice that for the 1-norm of 2-vectors)
+   and |r_v'| <= B likewise; the axial force density is at most EA (1 + c)
+   (1 + A + B)^2 and Q, K, D at most that times (1 + A + B) max(2.25 /
+   Lmin, Lmax^2, 1.5) (the integrals of the basis slopes and their
+   products; Lmax^2: the Gauss route forms w N = L^2 of a slope function
+   for the load rows even when f = 0), times 8 for the two elements of a
+   node and the Gauss route's rounding.  fq bounds the load part (|f|_1 max(L, L^2) of an element,
+   or the stored load vector).  Returns 1 when that bound, and the
+   factor (1 + A + B)^3 max(...) alone, stay below REAL_MAX / 1024 (then
+   no intermediate or sum can overflow); inputs finite, Lmin > 0. */
+static inline int vlbe__ale_cable_ok(vlbe_real EA, vlbe_real c, vlbe_real fq, vlbe_real Lmin,
+                                     vlbe_real Lmax, const vlbe_real *m)
+{
+    vlbe_real A, B, g, z;
+    A = VLBE_R(2.0) * (VLBE_R(3.0) * m[0] / Lmin + VLBE_R(2.0) * m[1]);
+    B = VLBE_R(2.0) * (VLBE_R(3.0) * m[2] / Lmin + VLBE_R(2.0) * m[3]);
+    g = VLBE_R(1.0) + A + B;
+    z = VLBE_R(2.25) / Lmin;
+    if (Lmax * Lmax > z) z = Lmax * Lmax; /* w N of a slope: L^2 (the load rows) */
+    if (VLBE_R(1.5) > z) z = VLBE_R(1.5);
+    /* the data's own factor too: with a tiny EA the strain could still
+       overflow */
+    return g * g * g * z <= VLBE_REAL_MAX / VLBE_R(1024.0) &&
+           VLBE_R(8.0) * (EA * (VLBE_R(1.0) + c) * g * g * g * z + fq) <=
+               VLBE_REAL_MAX / VLBE_R(1024.0);
 }
 
 /* Cable forces (axial + load; NO_BEND, both p fixed implied) of a chain of
@@ -1894,24 +2118,36 @@ static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const v
    VLBE_ALE_INV_AXIAL.  x, v (v may be NULL = 0): n = 4 (ne + 1)
    coordinates (INVARIANTS); Q (n) is overwritten, K, D (n *
    VLBE_ALE_INV_BW, band storage, either may be NULL) too.  Errors (nothing
-   written): VLBE_ENONFINITE for NaN/Inf in L, x, v; VLBE_ELENGTH for
-   L[e] <= 0. */
+   written): VLBE_EARG for ne < 1 or ne so large that n * VLBE_ALE_INV_BW
+   overflows an int; VLBE_ENONFINITE for NaN/Inf in L, x, v, or data so
+   large that the forces could overflow (vlbe__ale_cable_ok: far beyond
+   any physical chain); VLBE_ELENGTH for L[e] out of range (<= 0, or
+   L^-4 overflows, as vlbe_ale_force). */
 VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned mode, int ne,
                                               const vlbe_real *L, const vlbe_real *x,
                                               const vlbe_real *v, vlbe_real *VLBE_RESTRICT Q,
                                               vlbe_real *VLBE_RESTRICT K,
                                               vlbe_real *VLBE_RESTRICT D)
 {
-    const int n = 4 * (ne + 1);
-    vlbe_real qe[10], ve[10], Qe[10], Ke[100], De[100];
+    vlbe_real qe[10], ve[10], Qe[10], Ke[100], De[100], Lmin, Lmax, fq, mx[4];
     vlbe_status st;
-    int e, i, j;
-    VLBE_ASSERT(el != NULL && L != NULL && x != NULL && Q != NULL && ne >= 1);
-    VLBE_ASSERT(ne <= (INT_MAX - 4) / 4 / VLBE_ALE_INV_BW);
+    int n, e, i, j;
+    VLBE_ASSERT(el != NULL && L != NULL && x != NULL && Q != NULL);
+    if (ne < 1 || ne > (INT_MAX - 4) / 4 / VLBE_ALE_INV_BW - 1) return VLBE_EARG;
+    n = 4 * (ne + 1);
     mode |= el->flags | VLBE_ALE_NO_BEND | VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2;
-    if ((st = vlbe__ale_chain_in(ne, L, x, v)) != VLBE_OK) return st;
-    /* nothing fails below: a cable element with p fixed, finite data and
-       L > 0 has no failing case */
+    if ((st = vlbe__ale_chain_in(ne, L, x, v, mx)) != VLBE_OK) return st;
+    Lmin = Lmax = L[0];
+    for (e = 1; e < ne; ++e) {
+        if (L[e] < Lmin) Lmin = L[e];
+        if (L[e] > Lmax) Lmax = L[e];
+    }
+    fq = (vlbe_fabs(el->mat.f[0]) + vlbe_fabs(el->mat.f[1])) * Lmax * (VLBE_R(1.0) + Lmax);
+    if (!vlbe__ale_cable_ok(el->mat.EA, (mode & VLBE_ALE_NO_DAMP) ? VLBE_R(0.0) : el->mat.c_eps,
+                            fq, Lmin, Lmax, mx))
+        return VLBE_ENONFINITE;
+    /* nothing fails below: a cable element with p fixed, finite data, L in
+       range and forces bounded as above has no failing case */
     for (i = 0; i < n; ++i) Q[i] = VLBE_R(0.0);
     for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
     for (i = 0; D && i < n * VLBE_ALE_INV_BW; ++i) D[i] = VLBE_R(0.0);
@@ -1925,10 +2161,13 @@ VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned 
         }
         qe[4] = ve[4] = ve[9] = VLBE_R(0.0);
         qe[9] = L[e];
-        if (K || D) /* K and D come together; the Q-only route without */
-            (void)vlbe_ale_force(el, mode, qe, ve, Qe, Ke, De);
+        /* K and D come together; the Q-only route without; the outputs are
+           bounded above, so the element's own final check is skipped */
+        if (K || D)
+            st = vlbe__ale_force(el, mode, qe, ve, Qe, Ke, De, 0);
         else
-            (void)vlbe_ale_force(el, mode, qe, ve, Qe, NULL, NULL);
+            st = vlbe__ale_force(el, mode, qe, ve, Qe, NULL, NULL, 0);
+        if (st != VLBE_OK) return st; /* excluded by the checks above */
         for (i = 0; i < 8; ++i) {
             const int ri = i + (i >= 4), gi = o + i;
             Q[gi] += Qe[ri];
@@ -2049,8 +2288,9 @@ VLBE_API size_t vlbe_ale_inv_sys_work_len(int ne)
    vlbe_ale_inv_sys_work_len(ne)), which must live as long as sys and is
    also the scratch of vlbe_ale_inv_sys_force (one evaluation at a time per
    buffer).  Errors (sys and work untouched): VLBE_EARG for ne < 1 or too
-   large, VLBE_EWORK for a short buffer, VLBE_ENONFINITE for NaN/Inf in L,
-   VLBE_ELENGTH for L[e] <= 0. */
+   large, VLBE_EWORK for a short buffer, VLBE_ENONFINITE for NaN/Inf in L
+   or a load f L^2 that could overflow, VLBE_ELENGTH for L[e] <= 0 or
+   L[e]^4 or L[e]^-4 (the scaled tables) out of range. */
 VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale_elem *el,
                                            unsigned mode, int ne, const vlbe_real *L,
                                            vlbe_real *work, size_t work_len)
@@ -2058,14 +2298,24 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
     const vlbe_ale_inv *iv;
     const signed char *pa = vlbe__ale_sys_pa();
     const size_t need = vlbe_ale_inv_sys_work_len(ne);
-    vlbe_real *T, *B, *F;
+    vlbe_real *T, *B, *F, fm, Lmin, Lmax;
+    vlbe_status st;
     int np, nnz, e, p, r, i;
     VLBE_ASSERT(sys != NULL && el != NULL && L != NULL && work != NULL);
     if (need == 0) return VLBE_EARG;
     if (work_len < need) return VLBE_EWORK;
     if (!vlbe_all_finite(L, ne)) return VLBE_ENONFINITE;
-    for (e = 0; e < ne; ++e)
-        if (!(L[e] > VLBE_R(0.0))) return VLBE_ELENGTH;
+    fm = vlbe_fabs(el->mat.f[0]) + vlbe_fabs(el->mat.f[1]);
+    Lmin = Lmax = L[0];
+    for (e = 0; e < ne; ++e) {
+        /* the tables carry L^-3 .. L^4 (entries <= 10), the load L^2 f */
+        const vlbe_real L2 = L[e] * L[e];
+        if ((st = vlbe__ale_len(VLBE_R(0.0), L[e])) != VLBE_OK) return st;
+        if (!(L2 * L2 <= VLBE_REAL_MAX / VLBE_R(64.0))) return VLBE_ELENGTH;
+        if (!(fm * (L[e] + L2) <= VLBE_REAL_MAX / VLBE_R(64.0))) return VLBE_ENONFINITE;
+        if (L[e] < Lmin) Lmin = L[e];
+        if (L[e] > Lmax) Lmax = L[e];
+    }
     mode |= el->flags;
     iv = &el->inv;
     np = 5 * ne + 1;
@@ -2106,6 +2356,8 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
     sys->T = T;
     sys->B = B;
     sys->H = F + 4 * ne + 4;
+    sys->Lmin = Lmin;
+    sys->Lmax = Lmax;
     return VLBE_OK;
 }
 
@@ -2117,7 +2369,8 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
    forces and blocks go to the nodal rows and columns by the chain rule.
    v may be NULL (= 0; D is still c dQ/dv).  Same numbers as
    vlbe_ale_inv_chain_force to rounding.  Errors (nothing written):
-   VLBE_ENONFINITE for NaN/Inf in x, v. */
+   VLBE_ENONFINITE for NaN/Inf in x, v, or data so large that the forces
+   could overflow (vlbe__ale_cable_ok). */
 static inline vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
                                               const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                               vlbe_real *D)
@@ -2127,10 +2380,13 @@ static inline vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const
     const signed char *pa = vlbe__ale_sys_pa();
     const vlbe_real *F = sys->B + np, *T = sys->T;
     const vlbe_real EA = sys->EA, EAc = sys->EA * sys->c;
-    vlbe_real *H = sys->H, *rs = sys->H + 8 * np, y[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    vlbe_real *H = sys->H, *rs = sys->H + 8 * np, y[8] = {0, 0, 0, 0, 0, 0, 0, 0}, mx[4];
     vlbe_status st;
     int P, i, j;
-    if ((st = vlbe__ale_chain_in(ne, NULL, x, damp ? v : NULL)) != VLBE_OK) return st;
+    if ((st = vlbe__ale_chain_in(ne, NULL, x, damp ? v : NULL, mx)) != VLBE_OK) return st;
+    /* the stored load is below REAL_MAX / 64 (vlbe_ale_inv_sys_init) */
+    if (!vlbe__ale_cable_ok(EA, sys->c, VLBE_R(0.0), sys->Lmin, sys->Lmax, mx))
+        return VLBE_ENONFINITE;
     for (i = 0; i < n; ++i) Q[i] = F[i];
     for (i = 0; K && i < n * VLBE_ALE_INV_BW; ++i) K[i] = VLBE_R(0.0);
     for (i = 0; D && i < n * VLBE_ALE_INV_BW; ++i) D[i] = VLBE_R(0.0);
@@ -2232,8 +2488,10 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
    (every term is homogeneous under p -> s p, slopes -> slopes / s, p' ->
    s p'; row degrees 1 + m_j for positions and slopes, 1 for theta, 0 for
    p; the axial part 4 and 2 lower, the twist part 2 lower).
-   Errors: VLBE_ELENGTH (p2 <= p1), VLBE_ENONFINITE, VLBE_ESINGULAR (|r'|^2
-   <= eps at a bending point), VLBE_EBOUND (point load outside [p1, p2]),
+   Errors: VLBE_ELENGTH (L = p2 - p1 out of range, as the planar
+   element), VLBE_ENONFINITE (NaN/Inf in the input, or an output that
+   would overflow), VLBE_ESINGULAR (|r'|^2 <= eps at a bending point),
+   VLBE_EBOUND (point load outside [p1, p2]),
    VLBE_EARG for the planar element's VLBE_ALE_CONSERVATIVE and
    VLBE_ALE_INV_AXIAL (not available here: with free p the elastic
    p-forces are the paper's, without the end energy fluxes); no output is
@@ -2259,6 +2517,7 @@ typedef struct vlbe_ale3_elem {
     vlbe_ale3_mat mat;
     unsigned flags;
     vlbe_ale_rule rm, rs; /* mass/inertia/loads; strains (axial, bending, twist) */
+    vlbe_real bmax;       /* as vlbe_ale_elem.bmax (Hermite and linear) */
 } vlbe_ale3_elem;
 
 VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlbe_real E,
@@ -2303,6 +2562,13 @@ VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlb
         return VLBE_EARG;
     A = pi * radius * radius;
     J = VLBE_R(0.25) * A * radius * radius;
+    {
+        /* a radius, density or modulus so large that a section constant
+           overflows: VLBE_ENONFINITE, mat untouched */
+        const vlbe_real m[5] = {rho * A, rho * VLBE_R(2.0) * J, E * A, E * J,
+                                G * VLBE_R(2.0) * J};
+        if (!vlbe_all_finite(m, 5)) return VLBE_ENONFINITE;
+    }
     mat->rhoA = rho * A;
     mat->rhoI = rho * VLBE_R(2.0) * J; /* polar I_p = 2 J */
     mat->EA = E * A;
@@ -2332,6 +2598,7 @@ VLBE_API vlbe_status vlbe_ale3_elem_init(vlbe_ale3_elem *el, const vlbe_ale3_mat
     if (nm < 0 || nm > VLBE_ALE_NGP_MAX || ns < 0 || ns > VLBE_ALE_NGP_MAX) return VLBE_EARG;
     if ((st = vlbe__ale_rule(&el->rm, nm, 4)) != VLBE_OK) return st;
     if ((st = vlbe__ale_rule(&el->rs, ns, 5)) != VLBE_OK) return st;
+    el->bmax = vlbe__ale_rule_bmax(&el->rm);
     el->mat = *mat;
     el->flags = flags;
     return VLBE_OK;
@@ -2365,8 +2632,7 @@ static inline vlbe_status vlbe__a3_check(const vlbe__ale_lay *ly, const vlbe_rea
     if (ly->bad) return VLBE_EARG;
     if (!vlbe_all_finite(q, ly->n)) return VLBE_ENONFINITE;
     if (qd && !vlbe_all_finite(qd, ly->n)) return VLBE_ENONFINITE;
-    if (!(q[ly->p[1]] - q[ly->p[0]] > VLBE_R(0.0))) return VLBE_ELENGTH;
-    return VLBE_OK;
+    return vlbe__ale_len(q[ly->p[0]], q[ly->p[1]]);
 }
 
 /* The basis at one point scaled to the current L: N[k][a][j] = L^(m_j - k
@@ -2899,6 +3165,9 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
         Dp = Dt;
     }
     if ((st = vlbe__a3_forces(el, &ly, mode, q, qd, Qt, Kp, Dp)) != VLBE_OK) return st;
+    if (!vlbe_all_finite(Qt, ly.n) || (K && !vlbe_all_finite(Kt, nn)) ||
+        (D && !vlbe_all_finite(Dt, nn)))
+        return VLBE_ENONFINITE; /* overflow from finite input: nothing written */
     for (i = 0; i < ly.n; ++i) Q[i] = Qt[i];
     if (K)
         for (i = 0; i < nn; ++i) K[i] = Kt[i];
@@ -2907,8 +3176,31 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
     return VLBE_OK;
 }
 
+/* largest position or spin-angle component (they scale with 1/L in the
+   p-partials) and slope component of the two nodes of a 3D q */
+static inline void vlbe__a3_qmax(const vlbe__ale_lay *ly, const vlbe_real *q, vlbe_real *mp,
+                                 vlbe_real *ms)
+{
+    int i, c;
+    *mp = *ms = VLBE_R(0.0);
+    for (i = 0; i < 2; ++i) {
+        for (c = 0; c < 3; ++c) {
+            const vlbe_real a = vlbe_fabs(q[ly->e[2 * i] + c]);
+            const vlbe_real b = vlbe_fabs(q[ly->e[2 * i + 1] + c]);
+            *mp = a > *mp ? a : *mp;
+            *ms = b > *ms ? b : *ms;
+        }
+        if (ly->spin) {
+            const vlbe_real a = vlbe_fabs(q[ly->th[i]]);
+            *mp = a > *mp ? a : *mp;
+        }
+    }
+}
+
 /* M(q) (eq. 28): w rhoA G_r^T G_r + w rhoI G_th^T G_th summed over the
-   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k]. */
+   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k].  Bounded
+   first (vlbe__ale_mass_ok): VLBE_ENONFINITE, nothing written, when it
+   could overflow. */
 VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
                                     vlbe_real *VLBE_RESTRICT M)
 {
@@ -2916,6 +3208,7 @@ VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, con
     vlbe__ale_lay ly;
     vlbe__a3_pt pt;
     vlbe_real Lp[6], L, X[2][3], Xt[2];
+    vlbe_real mp = VLBE_R(0.0), ms = VLBE_R(0.0);
     vlbe_status st;
     int g, i, j, k, l, c, n, pm;
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
@@ -2926,6 +3219,9 @@ VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, con
     pm = vlbe__ale_pmask(mode);
     L = q[ly.p[1]] - q[ly.p[0]];
     vlbe__ale_lpow(L, Lp);
+    if (pm) vlbe__a3_qmax(&ly, q, &mp, &ms);
+    if (!vlbe__ale_mass_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms))
+        return VLBE_ENONFINITE;
     for (i = 0; i < n * n; ++i) M[i] = VLBE_R(0.0);
     for (g = 0; g < el->rm.n; ++g) {
         const vlbe_real w = el->rm.g[g].w * L, wa = w * mt->rhoA, wi = w * mt->rhoI;
@@ -2990,11 +3286,16 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
     pm = vlbe__ale_pmask(mode);
     for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
     if (pm) {
+        vlbe_real mp, ms, am = VLBE_R(0.0);
         if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
         L = q[ly.p[1]] - q[ly.p[0]];
         ap[0] = (pm & 1) ? a[ly.p[0]] : VLBE_R(0.0);
         ap[1] = (pm & 2) ? a[ly.p[1]] : VLBE_R(0.0);
         vlbe__ale_lpow(L, Lp);
+        vlbe__a3_qmax(&ly, q, &mp, &ms);
+        for (i = 0; i < n; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
+        if (!vlbe__ale_mjac_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms, am))
+            return VLBE_ENONFINITE;
         for (i = 0; i < n; ++i) Ma[i] = VLBE_R(0.0);
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_real w = el->rm.g[g].w * L;
@@ -3093,6 +3394,7 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
             U += w * VLBE_R(0.5) * mt->GI * phi * phi;
         }
     }
+    if (!isfinite(T) || !isfinite(U) || !isfinite(V)) return VLBE_ENONFINITE;
     E[0] = T;
     E[1] = U;
     E[2] = V;
@@ -3107,15 +3409,23 @@ VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_rea
 {
     vlbe__ale_lay ly;
     vlbe_herm_ale b;
+    vlbe_real x[7];
     vlbe_status st;
+    int i;
     VLBE_ASSERT(q != NULL);
     vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 1, 0, &b);
-    if (r) vlbe__a3_sum(&ly, b.h[0][0], q, r);
-    if (rp) vlbe__a3_sum(&ly, b.h[1][0], q, rp);
-    if (th) *th = vlbe__a3_tsum(&ly, b.l[0][0], q);
+    vlbe__a3_sum(&ly, b.h[0][0], q, x);
+    vlbe__a3_sum(&ly, b.h[1][0], q, x + 3);
+    x[6] = vlbe__a3_tsum(&ly, b.l[0][0], q);
+    if (!vlbe_all_finite(x, 7)) return VLBE_ENONFINITE;
+    for (i = 0; i < 3; ++i) {
+        if (r) r[i] = x[i];
+        if (rp) rp[i] = x[3 + i];
+    }
+    if (th) *th = x[6];
     return VLBE_OK;
 }
 
@@ -3127,7 +3437,7 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
 {
     vlbe__ale_lay ly;
     vlbe_herm_ale b;
-    vlbe_real a[3], r2[3], G[7] = {0, 0, 0, 0, 0, 0, 0}, kk = VLBE_R(0.0);
+    vlbe_real a[3], r2[3], G[7] = {0, 0, 0, 0, 0, 0, 0}, kk = VLBE_R(0.0), x[3];
     vlbe_status st;
     VLBE_ASSERT(q != NULL);
     vlbe__ale_layout(mode, &ly);
@@ -3140,18 +3450,24 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
         (st = vlbe__a3_bend(a, r2, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL, &kk)) !=
             VLBE_OK)
         return st;
-    if (eps) *eps = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
-    if (kap) *kap = vlbe_sqrt(kk);
-    if (phi) *phi = vlbe__a3_tsum(&ly, b.l[1][0], q);
+    x[0] = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
+    x[1] = vlbe_sqrt(kk);
+    x[2] = vlbe__a3_tsum(&ly, b.l[1][0], q);
+    if ((eps && !isfinite(x[0])) || (kap && !isfinite(x[1])) || (phi && !isfinite(x[2])))
+        return VLBE_ENONFINITE;
+    if (eps) *eps = x[0];
+    if (kap) *kap = x[1];
+    if (phi) *phi = x[2];
     return VLBE_OK;
 }
 
 /* A point load at material point pf in [p1, p2] on the position field
    (F, 3 components: eq. 45) or on the spin field (torque T about the
-   axis: eq. 46): Q += S(pf)^T F, K += d/dq (K may be NULL). */
-static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q, vlbe_real pf,
-                                              const vlbe_real *F, vlbe_real T, int torque,
-                                              vlbe_real *Q, vlbe_real *K)
+   axis: eq. 46): Q += S(pf)^T F, K += d/dq (K may be NULL), on the
+   caller's copies (vlbe__a3_point_load). */
+static inline vlbe_status vlbe__a3_point_add(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                             const vlbe_real *F, vlbe_real T, int torque,
+                                             vlbe_real *Q, vlbe_real *K)
 {
     static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
     vlbe__ale_lay ly;
@@ -3202,6 +3518,25 @@ static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q,
             }
         }
     }
+    return VLBE_OK;
+}
+
+/* vlbe__a3_point_add on copies of Q and K, committed when finite. */
+static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                              const vlbe_real *F, vlbe_real T, int torque,
+                                              vlbe_real *Q, vlbe_real *K)
+{
+    vlbe_real Qt[VLBE_ALE3_NQ], Kt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    vlbe_status st;
+    const int n = vlbe_ale3_nq(mode), nn = n * n;
+    int i;
+    for (i = 0; i < n; ++i) Qt[i] = Q[i];
+    for (i = 0; K && i < nn; ++i) Kt[i] = K[i];
+    if ((st = vlbe__a3_point_add(mode, q, pf, F, T, torque, Qt, K ? Kt : NULL)) != VLBE_OK)
+        return st;
+    if (!vlbe_all_finite(Qt, n) || (K && !vlbe_all_finite(Kt, nn))) return VLBE_ENONFINITE;
+    for (i = 0; i < n; ++i) Q[i] = Qt[i];
+    for (i = 0; K && i < nn; ++i) K[i] = Kt[i];
     return VLBE_OK;
 }
 
@@ -3574,15 +3909,6 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
     return VLBE_OK;
 }
 
-/* 1 when x[0..n-1] are all finite: x - x is 0 for finite x and NaN for
-   NaN and +-Inf; no early exit and an integer AND, so the loop vectorises
-   (the chains' per-call checks of q, v, Q) */
-static inline int vlbe__ale_finite(const vlbe_real *x, int n)
-{
-    int i, ok = 1;
-    for (i = 0; i < n; ++i) ok &= x[i] - x[i] == VLBE_R(0.0);
-    return ok;
-}
 
 /* p, p', p'' of node i at time t (q, v: the state, for free nodes; v may
    be NULL: p' = 0).  i outside [0, nn): VLBE_EARG; a failing pfun:
@@ -3920,7 +4246,7 @@ static inline int vlbe__ale_band_finite(const vlbe_ale_chain *ch, const vlbe_rea
         const int hi = i + 2 < ch->nn ? ch->node[i + 2].ofs : ch->n;
         const int r1 = i + 1 < ch->nn ? ch->node[i + 1].ofs : ch->n;
         for (r = ch->node[i].ofs; r < r1; ++r)
-            ok &= vlbe__ale_finite(A + (size_t)r * n + (size_t)lo, hi - lo);
+            ok &= vlbe_all_finite(A + (size_t)r * n + (size_t)lo, hi - lo);
     }
     return ok;
 }
@@ -3976,8 +4302,8 @@ static inline int vlbe__ale_in_check(vlbe_ale_chain *ch, const vlbe_real *q, con
 {
     int e = ch->nn, k, j;
     const vlbe_real *x[3];
-    if (vlbe__ale_finite(q, ch->n) && (!v || vlbe__ale_finite(v, ch->n)) &&
-        (!a || vlbe__ale_finite(a, ch->n)))
+    if (vlbe_all_finite(q, ch->n) && (!v || vlbe_all_finite(v, ch->n)) &&
+        (!a || vlbe_all_finite(a, ch->n)))
         return 0;
     x[0] = q;
     x[1] = v;
@@ -4080,7 +4406,7 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
     if (Q) {
         for (i = 0; i < ch->nn; ++i)
             for (k = 0; k < ch->d; ++k) Q[ch->node[i].ofs + k] += ch->node[i].mass * ch->g[k];
-        if (!vlbe__ale_finite(Q, ch->n)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+        if (!vlbe_all_finite(Q, ch->n)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
     }
     return 0;
 }
@@ -4404,6 +4730,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
 VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlbe_real ph,
                                     vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd)
 {
+    vlbe_real h[4], hd[4];
     vlbe_herm_ale b;
     vlbe_status st;
     int k;
@@ -4413,11 +4740,17 @@ VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlb
     if (!(ph > q[4] && ph < q[9])) return VLBE_EBOUND;
     vlbe_herm_ale_eval(ph, q[4], q[9], 1, 1, &b);
     for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
-        vlbe__ale_sum(&b, k, 0, q, qh + 2 * k);
-        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, qhd + 2 * k);
+        vlbe__ale_sum(&b, k, 0, q, h + 2 * k);
+        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, hd + 2 * k);
     }
+    if (!vlbe_all_finite(h, 4) || (qd && qhd && !vlbe_all_finite(hd, 4)))
+        return VLBE_ENONFINITE;
+    for (k = 0; k < 4; ++k) qh[k] = h[k];
     qh[4] = ph;
-    if (qd && qhd) qhd[4] = VLBE_R(0.0);
+    if (qd && qhd) {
+        for (k = 0; k < 4; ++k) qhd[k] = hd[k];
+        qhd[4] = VLBE_R(0.0);
+    }
     return VLBE_OK;
 }
 

@@ -118,10 +118,14 @@ CONVENTIONS
 
    Errors: VLBE_ENONFINITE for NaN/Inf in q, q' or an acceleration;
    VLBE_ELENGTH when the chord length l <= L * 1e-6 (the frame is
-   undefined); vlbe_cr2d_elem_init: VLBE_ELENGTH for X1 = X2, VLBE_EARG /
-   VLBE_ENONFINITE for a bad material.  Transition element: VLBE_EBOUND
-   when node 1 is outside the joint by more than L/2 (a.(x1 - C) > L/2:
-   the formulas continue smoothly to a node just outside, as Newton
+   undefined); VLBE_ENONFINITE also when finite input overflows (each
+   output is checked before it is written); vlbe_cr2d_elem_init:
+   VLBE_ELENGTH for X1 = X2 or a length so small that the tabulated
+   stiffness (L^-3) overflows, VLBE_ENONFINITE for one so large that the
+   mass (L^3) does, VLBE_EARG / VLBE_ENONFINITE for a bad material.
+   Transition element: VLBE_EBOUND when node 1 is outside the joint by
+   more than L/2 (a.(x1 - C) > L/2: the formulas continue smoothly to a
+   node just outside, as Newton
    iterates and the step in which it leaves need), node 2 not outside
    (a.(x2 - C) <= 0, or |x2 - C| <= 1e-6 L) or L2 <= 1e-6 L; VLBE_EARG for
    |a| != 1, a non-finite C or the LINEAR mode (no linear transition
@@ -263,10 +267,12 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
 static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L2, vlbe_real *m,
                                    vlbe_real *k0, vlbe_real *dm, vlbe_real *dk0);
 
+
 VLBE_API vlbe_status vlbe_cr2d_elem_init(vlbe_cr2d_elem *el, const vlbe_cr2d_mat *mat,
                                          const vlbe_real *X1, const vlbe_real *X2,
                                          unsigned flags)
 {
+    vlbe_cr2d_elem t;
     vlbe_real d[2], L;
     VLBE_ASSERT(el != NULL && mat != NULL && X1 != NULL && X2 != NULL);
     if (!vlbe_all_finite(&mat->EA, 1) || !vlbe_all_finite(&mat->EI, 1) ||
@@ -282,22 +288,28 @@ VLBE_API vlbe_status vlbe_cr2d_elem_init(vlbe_cr2d_elem *el, const vlbe_cr2d_mat
     L = vlbe_v2_norm(d);
     if (!(L > VLBE_R(0.0))) return VLBE_ELENGTH;
     if (!isfinite(L)) return VLBE_ENONFINITE; /* |X2 - X1|^2 overflowed */
-    el->mat = *mat;
-    el->X[0] = X1[0];
-    el->X[1] = X1[1];
-    el->X[2] = X2[0];
-    el->X[3] = X2[1];
-    el->L = L;
-    el->c0 = d[0] / L;
-    el->s0 = d[1] / L;
-    el->a0 = vlbe_atan2(d[1], d[0]);
-    el->flags = flags;
-    el->key_[0] = -VLBE_R(1.0); /* not yet tabulated: lmat computes them */
-    vlbe__cr2d_lmat(el, 0, L, el->m_, el->k0_, NULL, NULL);
-    el->key_[0] = mat->rhoA;
-    el->key_[1] = mat->rhoI;
-    el->key_[2] = mat->EA;
-    el->key_[3] = mat->EI;
+    t.mat = *mat;
+    t.X[0] = X1[0];
+    t.X[1] = X1[1];
+    t.X[2] = X2[0];
+    t.X[3] = X2[1];
+    t.L = L;
+    t.c0 = d[0] / L;
+    t.s0 = d[1] / L;
+    t.a0 = vlbe_atan2(d[1], d[0]);
+    t.flags = flags;
+    t.key_[0] = -VLBE_R(1.0); /* not yet tabulated: lmat computes them */
+    vlbe__cr2d_lmat(&t, 0, L, t.m_, t.k0_, NULL, NULL);
+    /* powers of L up to L^-3 (k0) and L^3 (m): a length so small or so
+       large that they overflow is out of range, el stays as it was */
+    if (!vlbe_all_finite(t.m_, 36) || !vlbe_all_finite(t.k0_, 36) || !isfinite(t.c0) ||
+        !isfinite(t.s0))
+        return L < VLBE_R(1.0) ? VLBE_ELENGTH : VLBE_ENONFINITE;
+    t.key_[0] = mat->rhoA;
+    t.key_[1] = mat->rhoI;
+    t.key_[2] = mat->EA;
+    t.key_[3] = mat->EI;
+    *el = t;
     return VLBE_OK;
 }
 
@@ -1098,6 +1110,10 @@ static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
             for (i = 0; i < 36; ++i) Kt[i] = G[i];
         }
     }
+    /* finite input can overflow (huge rates, stiffness): nothing written */
+    if (!vlbe_all_finite(F, 6) || (K && !vlbe_all_finite(Kt, 36)) ||
+        (D && !vlbe_all_finite(Dt, 36)))
+        return VLBE_ENONFINITE;
     for (i = 0; i < 6; ++i) Q[i] = -F[i];
     if (K)
         for (i = 0; i < 36; ++i) K[i] = -Kt[i];
@@ -1113,11 +1129,15 @@ static inline vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vl
     vlbe__cr2d_kin k;
     vlbe_real m[36];
     vlbe_status st;
-    int i;
+    int i, ok = 1;
     VLBE_ASSERT(el != NULL && M != NULL);
     mode |= el->flags | VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, NULL, &k)) != VLBE_OK) return st;
     vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
+    /* M = T^T m T, T a rotation per node: every entry and partial sum is at
+       most 4 max |m|, so m bounded means M finite (checked before writing) */
+    for (i = 0; i < 36; ++i) ok &= vlbe_fabs(m[i]) <= VLBE_R(0.125) * VLBE_REAL_MAX;
+    if (!ok) return VLBE_ENONFINITE;
     for (i = 0; i < 36; ++i) M[i] = VLBE_R(0.0);
     vlbe__cr2d_congr(&k.fr, m, M);
     return VLBE_OK;
@@ -1131,24 +1151,27 @@ static inline vlbe_status vlbe__cr2d_mass_jac_any(const vlbe_cr2d_elem *el,
                                                   vlbe_real *VLBE_RESTRICT Mq)
 {
     vlbe__cr2d_kin k;
-    vlbe_real m[36], dm[36], u[6], f[6], g[6];
+    vlbe_real m[36], dm[36], u[6], f[6], g[6], J[36];
     vlbe_status st;
     int i, j;
     VLBE_ASSERT(el != NULL && a != NULL && Mq != NULL);
     mode |= el->flags | VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, a, &k)) != VLBE_OK) return st;
-    for (i = 0; i < 36; ++i) Mq[i] = VLBE_R(0.0);
-    if (mode & VLBE_CR2D_LINEAR) return VLBE_OK; /* M constant */
-    vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, k.tr ? dm : NULL, NULL);
-    vlbe__cr2d_to_loc(&k.fr, a, u);
-    vlbe_mat_vec(6, 6, m, u, f);
-    vlbe__cr2d_frame_col(&k.fr, f, m, u, k.gb, Mq);
-    if (k.tr) {
-        vlbe_mat_vec(6, 6, dm, u, f);
-        vlbe__cr2d_to_glob(&k.fr, f, g);
-        for (i = 0; i < 6; ++i)
-            for (j = 0; j < 6; ++j) Mq[i * 6 + j] += g[i] * k.gL2[j];
+    for (i = 0; i < 36; ++i) J[i] = VLBE_R(0.0);
+    if (!(mode & VLBE_CR2D_LINEAR)) { /* LINEAR: M constant, J = 0 */
+        vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, k.tr ? dm : NULL, NULL);
+        vlbe__cr2d_to_loc(&k.fr, a, u);
+        vlbe_mat_vec(6, 6, m, u, f);
+        vlbe__cr2d_frame_col(&k.fr, f, m, u, k.gb, J);
+        if (k.tr) {
+            vlbe_mat_vec(6, 6, dm, u, f);
+            vlbe__cr2d_to_glob(&k.fr, f, g);
+            for (i = 0; i < 6; ++i)
+                for (j = 0; j < 6; ++j) J[i * 6 + j] += g[i] * k.gL2[j];
+        }
+        if (!vlbe_all_finite(J, 36)) return VLBE_ENONFINITE;
     }
+    for (i = 0; i < 36; ++i) Mq[i] = J[i];
     return VLBE_OK;
 }
 
@@ -1161,7 +1184,7 @@ static inline vlbe_status vlbe__cr2d_energy_any(const vlbe_cr2d_elem *el,
 {
     vlbe__cr2d_kin k;
     vlbe__cr2d_fr fr;
-    vlbe_real m[36], u[6], mu[6], d[6];
+    vlbe_real m[36], u[6], mu[6], d[6], T, U;
     vlbe_status st;
     VLBE_ASSERT(el != NULL && qd != NULL && E != NULL);
     mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
@@ -1174,12 +1197,15 @@ static inline vlbe_status vlbe__cr2d_energy_any(const vlbe_cr2d_elem *el,
     vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
     vlbe__cr2d_rates(&k, qd, u);
     vlbe_mat_vec(6, 6, m, u, mu);
-    E[0] = VLBE_R(0.5) * vlbe_vec_dot(6, u, mu);
+    T = VLBE_R(0.5) * vlbe_vec_dot(6, u, mu);
     /* LINEAR: k.eps, k.th are the linear measures, and U = q^T K0 q / 2 has
        the same form without the quadratic part of eps0 */
-    E[1] = VLBE_R(0.5) * el->mat.EA * el->L * k.eps * k.eps +
-           el->mat.EI / k.L2 * VLBE_R(2.0) *
-               (k.th[0] * k.th[0] + k.th[0] * k.th[1] + k.th[1] * k.th[1]);
+    U = VLBE_R(0.5) * el->mat.EA * el->L * k.eps * k.eps +
+        el->mat.EI / k.L2 * VLBE_R(2.0) *
+            (k.th[0] * k.th[0] + k.th[0] * k.th[1] + k.th[1] * k.th[1]);
+    if (!isfinite(T) || !isfinite(U)) return VLBE_ENONFINITE;
+    E[0] = T;
+    E[1] = U;
     return VLBE_OK;
 }
 
@@ -1248,6 +1274,8 @@ VLBE_API vlbe_status vlbe_cr2d_local_ff(const vlbe_cr2d_elem *el, unsigned mode,
         q = d;
     }
     if ((st = vlbe__cr2d_kin_any(el, NULL, mode, q, NULL, &k)) != VLBE_OK) return st;
+    if (!isfinite(k.l) || !isfinite(k.th[0]) || !isfinite(k.th[1]) || !isfinite(k.eps))
+        return VLBE_ENONFINITE;
     loc[0] = k.l;
     loc[1] = k.th[0];
     loc[2] = k.th[1];
@@ -1298,6 +1326,9 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
     VLBE_ASSERT(el != NULL && jt != NULL && loc != NULL);
     mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, NULL, &k)) != VLBE_OK) return st;
+    if (!isfinite(k.l1) || !isfinite(k.l) || !isfinite(k.th[0]) || !isfinite(k.th[1]) ||
+        !isfinite(k.eps) || !isfinite(k.L1))
+        return VLBE_ENONFINITE;
     loc[0] = k.l1;
     loc[1] = k.l;
     loc[2] = k.th[0];
@@ -1471,14 +1502,6 @@ static inline int vlbe__cr2d_scatter(int n, int e, const vlbe_real *Ae, vlbe_rea
     return ok;
 }
 
-/* 1 when x[0..n-1] are all finite (no early exit, an integer AND: the
-   loop vectorises; the callbacks' checks of q, v, a, Q) */
-static inline int vlbe__cr2d_finite(const vlbe_real *x, int n)
-{
-    int i, ok = 1;
-    for (i = 0; i < n; ++i) ok &= x[i] - x[i] == VLBE_R(0.0);
-    return ok;
-}
 
 /* zero cnt entries (init checked that n * n and nfix * n fit in a size_t) */
 static inline void vlbe__cr2d_zero(size_t cnt, vlbe_real *A)
@@ -1494,8 +1517,8 @@ static inline int vlbe__cr2d_in_check(vlbe_cr2d_beam *b, const vlbe_real *q, con
                                       const vlbe_real *a)
 {
     int e;
-    if (vlbe__cr2d_finite(q, b->n) && (!v || vlbe__cr2d_finite(v, b->n)) &&
-        (!a || vlbe__cr2d_finite(a, b->n)))
+    if (vlbe_all_finite(q, b->n) && (!v || vlbe_all_finite(v, b->n)) &&
+        (!a || vlbe_all_finite(a, b->n)))
         return 0;
     for (e = 0; e < b->ne; ++e)
         if (!vlbe_all_finite(q + 3 * e, 6) || (v && !vlbe_all_finite(v + 3 * e, 6)) ||
@@ -1563,7 +1586,7 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const v
         if ((K && !vlbe__cr2d_scatter(b->n, e, Ke, K)) || (D && !vlbe__cr2d_scatter(b->n, e, De, D)))
             return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
-    if (Q && !vlbe__cr2d_finite(Q, b->n)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
+    if (Q && !vlbe_all_finite(Q, b->n)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
     return 0;
 }
 

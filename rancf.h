@@ -74,7 +74,13 @@ CONVENTIONS
    and weights; element nodal form x = [rA, rA', rB, rB'] (4 d reals) and
    reference length l, related by eqs. 5-6.
    Errors: as ancf_ale.h, plus VLBE_EWEIGHT for a non-positive or
-   non-finite weight.  On failure no output is written.
+   non-finite weight, for weights whose smallest is below REAL_MIN (the
+   smallest normal number) times the largest (their ratios would
+   over/underflow), for weights so uneven that the element's basis
+   tables overflow (vlbe_rancf_elem_init) and for a split whose part
+   would get a weight that underflows to 0.  Every routine checks its
+   outputs before it writes them (VLBE_ENONFINITE when finite input
+   overflows); on failure no output is written.
 
 API
    vlbe_status vlbe_rancf_basis_eval(w, p, p1, p2, kmax, amax, b)  rational basis in
@@ -187,14 +193,72 @@ VLBE_API vlbe_status vlbe_rancf_chain_init(vlbe_ale_chain *ch, vlbe_rancf_elem *
 
 /* ===== implementation =================================================== */
 
-/* Weights: all finite and > 0 (VLBE_EWEIGHT otherwise); k = w / w3. */
+/* smallest normal vlbe_real */
+#ifdef VLBE_USE_FLOAT
+#define VLBE__RANCF_RMIN FLT_MIN
+#else
+#define VLBE__RANCF_RMIN DBL_MIN
+#endif
+
+/* Weights: all finite and > 0, and the smallest at least REAL_MIN (the
+   smallest normal number) times the largest (so that no k_i = w_i / w3
+   and no quotient k_i / k_j overflows or underflows); VLBE_EWEIGHT
+   otherwise.  k = w / w3. */
 static inline vlbe_status vlbe__rancf_wnorm(const vlbe_real *w, vlbe_real *k)
 {
+    vlbe_real lo, hi;
     int i;
     for (i = 0; i < 4; ++i)
         if (!isfinite(w[i]) || !(w[i] > VLBE_R(0.0))) return VLBE_EWEIGHT;
+    lo = hi = w[0];
+    for (i = 1; i < 4; ++i) {
+        if (w[i] < lo) lo = w[i];
+        if (w[i] > hi) hi = w[i];
+    }
+    if (!(lo / hi >= VLBE__RANCF_RMIN)) return VLBE_EWEIGHT;
     for (i = 0; i < 3; ++i) k[i] = w[i] / w[3];
     k[3] = VLBE_R(1.0);
+    return VLBE_OK;
+}
+
+/* The entries of a basis that vlbe__ale_basis_fill wrote for kmax, amax
+   are finite (the rational basis divides by W, which may vanish outside
+   [p1, p2] or overflow); copy them to b then. */
+static inline vlbe_status vlbe__rancf_b_out(const vlbe_herm_ale *t, int kmax, int amax,
+                                            vlbe_herm_ale *b)
+{
+    const int na = amax == 0 ? 1 : (amax == 1 ? 3 : VLBE_DA_N), kl = kmax < 1 ? kmax : 1;
+    int k, a, ok = isfinite(t->L) && isfinite(t->s);
+    if (na == VLBE_DA_N) { /* all partials: the rows k <= kmax are contiguous */
+        const size_t nh = (size_t)(kmax + 1) * VLBE_DA_N * 4, nl = (size_t)(kl + 1) * VLBE_DA_N * 2;
+        if (!ok || !vlbe_all_finite(&t->h[0][0][0], (int)nh) ||
+            !vlbe_all_finite(&t->l[0][0][0], (int)nl))
+            return VLBE_ENONFINITE;
+        b->L = t->L;
+        b->s = t->s;
+        memcpy(&b->h[0][0][0], &t->h[0][0][0], nh * sizeof(vlbe_real));
+        memcpy(&b->l[0][0][0], &t->l[0][0][0], nl * sizeof(vlbe_real));
+        return VLBE_OK;
+    }
+    for (k = 0; k <= kmax; ++k)
+        for (a = 0; a < na; ++a) ok &= vlbe_all_finite(t->h[k][a], 4);
+    for (k = 0; k <= kl; ++k)
+        for (a = 0; a < na; ++a) ok &= vlbe_all_finite(t->l[k][a], 2);
+    if (!ok) return VLBE_ENONFINITE;
+    b->L = t->L;
+    b->s = t->s;
+    for (k = 0; k <= kmax; ++k)
+        for (a = 0; a < na; ++a) {
+            b->h[k][a][0] = t->h[k][a][0];
+            b->h[k][a][1] = t->h[k][a][1];
+            b->h[k][a][2] = t->h[k][a][2];
+            b->h[k][a][3] = t->h[k][a][3];
+        }
+    for (k = 0; k <= kl; ++k)
+        for (a = 0; a < na; ++a) {
+            b->l[k][a][0] = t->l[k][a][0];
+            b->l[k][a][1] = t->l[k][a][1];
+        }
     return VLBE_OK;
 }
 
@@ -235,15 +299,16 @@ VLBE_API vlbe_status vlbe_rancf_basis_eval(const vlbe_real *w, vlbe_real p, vlbe
                                            vlbe_herm_ale *VLBE_RESTRICT b)
 {
     vlbe_real k[4], g[4][6];
+    vlbe_herm_ale t;
     vlbe_status st;
     VLBE_ASSERT(w != NULL && b != NULL);
     VLBE_ASSERT(kmax >= 0 && kmax <= 3 && amax >= 0 && amax <= 2);
     if ((st = vlbe__rancf_wnorm(w, k)) != VLBE_OK) return st;
     if (!isfinite(p) || !isfinite(p1) || !isfinite(p2)) return VLBE_ENONFINITE;
-    if (!(p2 - p1 > VLBE_R(0.0))) return VLBE_ELENGTH;
+    if ((st = vlbe__ale_len(p1, p2)) != VLBE_OK) return st;
     vlbe__rancf_g(k, (p - p1) * (VLBE_R(1.0) / (p2 - p1)), kmax + amax + 1, g);
-    vlbe__ale_basis_fill((const vlbe_real(*)[6])g, p, p1, p2, kmax, amax, b);
-    return VLBE_OK;
+    vlbe__ale_basis_fill((const vlbe_real(*)[6])g, p, p1, p2, kmax, amax, &t);
+    return vlbe__rancf_b_out(&t, kmax, amax, b);
 }
 
 /* The basis of the element at p (weights already checked). */
@@ -263,6 +328,12 @@ static inline void vlbe__rancf_gp(const vlbe_rancf_elem *el, vlbe_ale_gp *gp)
     vlbe__ale_gp_set(gp, gp->xi, gp->w, &b);
 }
 
+/* the rational numbers of one rule point are finite */
+static inline int vlbe__rancf_gp_ok(const vlbe_ale_gp *gp)
+{
+    return vlbe_all_finite(&gp->b[0][0][0], 3 * VLBE_DA_N * 4) & vlbe_all_finite(gp->b3, 4);
+}
+
 VLBE_API vlbe_status vlbe_rancf_elem_init(vlbe_rancf_elem *el, const vlbe_ale_mat *mat,
                                           const vlbe_real *w, unsigned flags, int nm, int nl,
                                           int nt)
@@ -270,7 +341,7 @@ VLBE_API vlbe_status vlbe_rancf_elem_init(vlbe_rancf_elem *el, const vlbe_ale_ma
     vlbe_rancf_elem t;
     vlbe_ale_rule *ru[3];
     vlbe_status st;
-    int r, g;
+    int r, g, ok = 1;
     VLBE_ASSERT(el != NULL && mat != NULL && w != NULL);
     if ((st = vlbe__rancf_wnorm(w, t.k)) != VLBE_OK) return st;
     if (flags & VLBE_ALE_INV_AXIAL) return VLBE_EARG;
@@ -281,9 +352,15 @@ VLBE_API vlbe_status vlbe_rancf_elem_init(vlbe_rancf_elem *el, const vlbe_ale_ma
     ru[1] = &t.ale.rl;
     ru[2] = &t.ale.rt;
     for (r = 0; r < 3; ++r)
-        for (g = 0; g < ru[r]->n; ++g) vlbe__rancf_gp(&t, &ru[r]->g[g]);
+        for (g = 0; g < ru[r]->n; ++g) {
+            vlbe__rancf_gp(&t, &ru[r]->g[g]);
+            ok &= vlbe__rancf_gp_ok(&ru[r]->g[g]);
+        }
     vlbe__rancf_gp(&t, &t.ale.ends[0]);
     vlbe__rancf_gp(&t, &t.ale.ends[1]);
+    ok &= vlbe__rancf_gp_ok(&t.ale.ends[0]) & vlbe__rancf_gp_ok(&t.ale.ends[1]);
+    if (!ok) return VLBE_EWEIGHT; /* weights so uneven that the basis overflows */
+    t.ale.bmax = vlbe__ale_rule_bmax(&t.ale.rm);
     *el = t;
     return VLBE_OK;
 }
@@ -341,9 +418,7 @@ VLBE_API vlbe_status vlbe_rancf_point(const vlbe_rancf_elem *el, const vlbe_real
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe__rancf_eval(el, p, q[4], q[9], 1, 0, &b);
-    if (r) vlbe__ale_sum(&b, 0, 0, q, r);
-    if (rp) vlbe__ale_sum(&b, 1, 0, q, rp);
-    return VLBE_OK;
+    return vlbe__ale_point_b(&b, q, r, rp);
 }
 
 VLBE_API vlbe_status vlbe_rancf_strain(const vlbe_rancf_elem *el, const vlbe_real *q,
@@ -370,8 +445,7 @@ VLBE_API vlbe_status vlbe_rancf_point_force(const vlbe_rancf_elem *el, const vlb
     if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
     if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
     vlbe__rancf_eval(el, pf, q[4], q[9], 0, 2, &b);
-    vlbe__ale_point_force_b(&b, q, F, Q, K);
-    return VLBE_OK;
+    return vlbe__ale_point_force_c(&b, q, F, Q, K);
 }
 
 /* -- Bezier form ---------------------------------------------------------- */
@@ -397,17 +471,19 @@ static inline vlbe_status vlbe__rancf_conv_check(int d, const vlbe_real *w, vlbe
 VLBE_API vlbe_status vlbe_rancf_to_bezier(int d, const vlbe_real *w, vlbe_real l,
                                           const vlbe_real *x, vlbe_real *VLBE_RESTRICT P)
 {
-    vlbe_real k[4];
+    vlbe_real k[4], t[4 * VLBE_RANCF_DMAX];
     vlbe_status st;
     int i;
     VLBE_ASSERT(w != NULL && x != NULL && P != NULL);
     if ((st = vlbe__rancf_conv_check(d, w, l, x, k)) != VLBE_OK) return st;
     for (i = 0; i < d; ++i) {
-        P[i] = x[i];
-        P[d + i] = x[i] + l * k[0] / (VLBE_R(3.0) * k[1]) * x[d + i];
-        P[2 * d + i] = x[2 * d + i] - l * k[3] / (VLBE_R(3.0) * k[2]) * x[3 * d + i];
-        P[3 * d + i] = x[2 * d + i];
+        t[i] = x[i];
+        t[d + i] = x[i] + l * k[0] / (VLBE_R(3.0) * k[1]) * x[d + i];
+        t[2 * d + i] = x[2 * d + i] - l * k[3] / (VLBE_R(3.0) * k[2]) * x[3 * d + i];
+        t[3 * d + i] = x[2 * d + i];
     }
+    if (!vlbe_all_finite(t, 4 * d)) return VLBE_ENONFINITE;
+    for (i = 0; i < 4 * d; ++i) P[i] = t[i];
     return VLBE_OK;
 }
 
@@ -415,17 +491,19 @@ VLBE_API vlbe_status vlbe_rancf_to_bezier(int d, const vlbe_real *w, vlbe_real l
 VLBE_API vlbe_status vlbe_rancf_from_bezier(int d, const vlbe_real *w, vlbe_real l,
                                             const vlbe_real *P, vlbe_real *VLBE_RESTRICT x)
 {
-    vlbe_real k[4];
+    vlbe_real k[4], t[4 * VLBE_RANCF_DMAX];
     vlbe_status st;
     int i;
     VLBE_ASSERT(w != NULL && x != NULL && P != NULL);
     if ((st = vlbe__rancf_conv_check(d, w, l, P, k)) != VLBE_OK) return st;
     for (i = 0; i < d; ++i) {
-        x[i] = P[i];
-        x[d + i] = VLBE_R(3.0) * k[1] / (l * k[0]) * (P[d + i] - P[i]);
-        x[2 * d + i] = P[3 * d + i];
-        x[3 * d + i] = VLBE_R(3.0) * k[2] / (l * k[3]) * (P[3 * d + i] - P[2 * d + i]);
+        t[i] = P[i];
+        t[d + i] = VLBE_R(3.0) * k[1] / (l * k[0]) * (P[d + i] - P[i]);
+        t[2 * d + i] = P[3 * d + i];
+        t[3 * d + i] = VLBE_R(3.0) * k[2] / (l * k[3]) * (P[3 * d + i] - P[2 * d + i]);
     }
+    if (!vlbe_all_finite(t, 4 * d)) return VLBE_ENONFINITE;
+    for (i = 0; i < 4 * d; ++i) x[i] = t[i];
     return VLBE_OK;
 }
 
@@ -448,7 +526,7 @@ static inline void vlbe__rancf_casteljau(int d, const vlbe_real *k, const vlbe_r
 VLBE_API vlbe_status vlbe_rancf_bezier_eval(int d, const vlbe_real *w, const vlbe_real *P,
                                             vlbe_real u, vlbe_real *VLBE_RESTRICT r)
 {
-    vlbe_real k[4], t[4][4][VLBE_RANCF_DMAX + 1];
+    vlbe_real k[4], t[4][4][VLBE_RANCF_DMAX + 1], x[VLBE_RANCF_DMAX];
     vlbe_status st;
     int j;
     VLBE_ASSERT(w != NULL && P != NULL && r != NULL);
@@ -456,7 +534,9 @@ VLBE_API vlbe_status vlbe_rancf_bezier_eval(int d, const vlbe_real *w, const vlb
     if (!isfinite(u) || !vlbe_all_finite(P, 4 * d)) return VLBE_ENONFINITE;
     vlbe__rancf_casteljau(d, k, P, u, t);
     if (!(t[3][0][d] > VLBE_R(0.0))) return VLBE_EWEIGHT; /* W <= 0 outside [0, 1] */
-    for (j = 0; j < d; ++j) r[j] = t[3][0][j] / t[3][0][d];
+    for (j = 0; j < d; ++j) x[j] = t[3][0][j] / t[3][0][d];
+    if (!vlbe_all_finite(x, d)) return VLBE_ENONFINITE;
+    for (j = 0; j < d; ++j) r[j] = x[j];
     return VLBE_OK;
 }
 
@@ -470,9 +550,10 @@ VLBE_API vlbe_status vlbe_rancf_bezier_split(int d, const vlbe_real *w, const vl
                                              vlbe_real *VLBE_RESTRICT wr,
                                              vlbe_real *VLBE_RESTRICT Pr)
 {
-    vlbe_real k[4], t[4][4][VLBE_RANCF_DMAX + 1];
+    vlbe_real k[4], t[4][4][VLBE_RANCF_DMAX + 1], a[2][4], B[2][4 * VLBE_RANCF_DMAX];
+    vlbe_real lo = VLBE_REAL_MAX;
     vlbe_status st;
-    int i, j;
+    int i, j, ok = 1;
     VLBE_ASSERT(w != NULL && P != NULL);
     if ((st = vlbe__rancf_bz_check(d, w, k)) != VLBE_OK) return st;
     if (!isfinite(u) || !vlbe_all_finite(P, 4 * d)) return VLBE_ENONFINITE;
@@ -480,12 +561,30 @@ VLBE_API vlbe_status vlbe_rancf_bezier_split(int d, const vlbe_real *w, const vl
     vlbe__rancf_casteljau(d, k, P, u, t);
     for (i = 0; i < 4; ++i) {
         const vlbe_real *hl = t[i][0], *hr = t[3 - i][i];
-        if (wl) wl[i] = hl[d] / t[3][0][d];
-        if (wr) wr[i] = hr[d] / t[0][3][d];
+        a[0][i] = hl[d] / t[3][0][d];
+        a[1][i] = hr[d] / t[0][3][d];
         for (j = 0; j < d; ++j) {
-            if (Pl) Pl[i * d + j] = hl[j] / hl[d];
-            if (Pr) Pr[i * d + j] = hr[j] / hr[d];
+            B[0][i * d + j] = hl[j] / hl[d];
+            B[1][i * d + j] = hr[j] / hr[d];
         }
+    }
+    /* the parts' weights (those asked for) must be weights (finite, > 0:
+       a homogeneous weight that underflowed gives 0), their points finite */
+    for (i = 0; i < 4; ++i) {
+        if (wl) lo = a[0][i] < lo ? a[0][i] : lo;
+        if (wr) lo = a[1][i] < lo ? a[1][i] : lo;
+        if ((wl && !isfinite(a[0][i])) || (wr && !isfinite(a[1][i]))) ok = 0;
+    }
+    if (!ok || !(lo > VLBE_R(0.0))) return VLBE_EWEIGHT;
+    if ((Pl && !vlbe_all_finite(B[0], 4 * d)) || (Pr && !vlbe_all_finite(B[1], 4 * d)))
+        return VLBE_ENONFINITE;
+    for (i = 0; i < 4; ++i) {
+        if (wl) wl[i] = a[0][i];
+        if (wr) wr[i] = a[1][i];
+    }
+    for (i = 0; i < 4 * d; ++i) {
+        if (Pl) Pl[i] = B[0][i];
+        if (Pr) Pr[i] = B[1][i];
     }
     return VLBE_OK;
 }
@@ -501,7 +600,7 @@ VLBE_API vlbe_status vlbe_rancf_split(const vlbe_rancf_elem *el, const vlbe_real
                                       vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd,
                                       vlbe_real *VLBE_RESTRICT wl, vlbe_real *VLBE_RESTRICT wr)
 {
-    vlbe_real P[8], x[8], wlo[4], wro[4];
+    vlbe_real P[8], x[8], wlo[4], wro[4], h[4], hd[4];
     vlbe_herm_ale b;
     vlbe_status st;
     int k;
@@ -519,11 +618,17 @@ VLBE_API vlbe_status vlbe_rancf_split(const vlbe_rancf_elem *el, const vlbe_real
         return st;
     vlbe__rancf_eval(el, ph, q[4], q[9], 1, 1, &b);
     for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
-        vlbe__ale_sum(&b, k, 0, q, qh + 2 * k);
-        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, qhd + 2 * k);
+        vlbe__ale_sum(&b, k, 0, q, h + 2 * k);
+        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, hd + 2 * k);
     }
+    if (!vlbe_all_finite(h, 4) || (qd && qhd && !vlbe_all_finite(hd, 4)))
+        return VLBE_ENONFINITE;
+    for (k = 0; k < 4; ++k) qh[k] = h[k];
     qh[4] = ph;
-    if (qd && qhd) qhd[4] = VLBE_R(0.0);
+    if (qd && qhd) {
+        for (k = 0; k < 4; ++k) qhd[k] = hd[k];
+        qhd[4] = VLBE_R(0.0);
+    }
     for (k = 0; k < 4; ++k) {
         if (wl) wl[k] = wlo[k];
         if (wr) wr[k] = wro[k];
@@ -662,7 +767,8 @@ VLBE_API vlbe_status vlbe_rancf_arc(const vlbe_real *c, vlbe_real R, vlbe_real a
                                     vlbe_real theta, vlbe_real *VLBE_RESTRICT w,
                                     vlbe_real *VLBE_RESTRICT x)
 {
-    vlbe_real h, ch, sg, f, tA[2], tB[2], a1;
+    vlbe_real h, ch, sg, f, tA[2], tB[2], a1, xt[8];
+    int i;
     VLBE_ASSERT(c != NULL && w != NULL && x != NULL);
     if (!vlbe_all_finite(c, 2) || !isfinite(R) || !isfinite(a0) || !isfinite(theta))
         return VLBE_ENONFINITE;
@@ -672,22 +778,24 @@ VLBE_API vlbe_status vlbe_rancf_arc(const vlbe_real *c, vlbe_real R, vlbe_real a
     ch = vlbe_cos(h);
     sg = theta > VLBE_R(0.0) ? VLBE_R(1.0) : VLBE_R(-1.0);
     a1 = a0 + theta;
-    w[0] = w[3] = VLBE_R(1.0);
-    w[1] = w[2] = (VLBE_R(1.0) + VLBE_R(2.0) * ch) / VLBE_R(3.0);
-    x[0] = c[0] + R * vlbe_cos(a0);
-    x[1] = c[1] + R * vlbe_sin(a0);
-    x[4] = c[0] + R * vlbe_cos(a1);
-    x[5] = c[1] + R * vlbe_sin(a1);
+    xt[0] = c[0] + R * vlbe_cos(a0);
+    xt[1] = c[1] + R * vlbe_sin(a0);
+    xt[4] = c[0] + R * vlbe_cos(a1);
+    xt[5] = c[1] + R * vlbe_sin(a1);
     /* unit tangents in the direction of travel; |rC - rA| = R tan(h) */
     tA[0] = -sg * vlbe_sin(a0);
     tA[1] = sg * vlbe_cos(a0);
     tB[0] = -sg * vlbe_sin(a1);
     tB[1] = sg * vlbe_cos(a1);
     f = vlbe_sin(h) / h; /* 2 cos(h)/(2 h R) R tan(h) */
-    x[2] = f * tA[0];
-    x[3] = f * tA[1];
-    x[6] = f * tB[0];
-    x[7] = f * tB[1];
+    xt[2] = f * tA[0];
+    xt[3] = f * tA[1];
+    xt[6] = f * tB[0];
+    xt[7] = f * tB[1];
+    if (!vlbe_all_finite(xt, 8)) return VLBE_ENONFINITE; /* |c| + R overflowed */
+    w[0] = w[3] = VLBE_R(1.0);
+    w[1] = w[2] = (VLBE_R(1.0) + VLBE_R(2.0) * ch) / VLBE_R(3.0);
+    for (i = 0; i < 8; ++i) x[i] = xt[i];
     return VLBE_OK;
 }
 
@@ -721,11 +829,14 @@ VLBE_API vlbe_status vlbe_rancf_nurbs(int d, int deg, int nc, const vlbe_real *P
         {{3, 0, 0, 0}, {2, 1, 0, 0}, {1, 2, 0, 0}, {0, 3, 0, 0}},
         {{3, 0, 0, 0}, {1, 2, 0, 0}, {0, 2, 1, 0}, {0, 0, 3, 0}},
         {{3, 0, 0, 0}, {0, 3, 0, 0}, {0, 0, 3, 0}, {0, 0, 0, 3}}};
-    const int nk = nc + deg + 1, D = d + 1;
-    vlbe_real S, Pb[4 * VLBE_RANCF_DMAX], wb[4];
-    int i, j, m, r, cnt = 0, e = 0;
+    const int D = d + 1;
+    vlbe_real S, Pb[4 * VLBE_RANCF_DMAX], wb[4], xb[4 * VLBE_RANCF_DMAX], pe;
+    vlbe_status st;
+    int i, j, m, r, nk, pass, cnt = 0, e = 0;
     VLBE_ASSERT(P != NULL && wc != NULL && U != NULL && ne != NULL);
     if (d < 1 || d > VLBE_RANCF_DMAX || deg < 1 || deg > 3 || nc < deg + 1) return VLBE_EARG;
+    if (nc > (INT_MAX - 4) / VLBE_RANCF_DMAX) return VLBE_EARG; /* nc d, nc + deg + 1 */
+    nk = nc + deg + 1;
     if (!vlbe_all_finite(P, nc * d) || !vlbe_all_finite(U, nk) || !isfinite(len))
         return VLBE_ENONFINITE;
     for (i = 0; i < nc; ++i)
@@ -741,45 +852,58 @@ VLBE_API vlbe_status vlbe_rancf_nurbs(int d, int deg, int nc, const vlbe_real *P
     if (cnt > cap) return VLBE_EWORK;
     VLBE_ASSERT(w != NULL && x != NULL && p != NULL);
     S = len / (U[nk - 1] - U[0]);
-    p[0] = VLBE_R(0.0);
-    for (i = deg; i < nc; ++i) { /* span [U_i, U_i+1) with points deg..i */
-        const vlbe_real a = U[i], b = U[i + 1];
-        vlbe_real H[4][VLBE_RANCF_DMAX + 1], Q[4][VLBE_RANCF_DMAX + 1], l;
-        if (!(b > a)) continue;
-        for (j = 0; j <= deg; ++j) { /* blossom f(a^(deg-j), b^j) */
-            vlbe_real t[4][VLBE_RANCF_DMAX + 1];
-            for (m = 0; m <= deg; ++m) {
-                const int c = i - deg + m;
-                for (r = 0; r < d; ++r) t[m][r] = wc[c] * P[c * d + r];
-                t[m][d] = wc[c];
-            }
-            for (r = 1; r <= deg; ++r) {
-                const vlbe_real arg = r <= deg - j ? a : b;
-                for (m = deg; m >= r; --m) {
-                    const int c = i - deg + m; /* knot index of point c */
-                    const vlbe_real al = (arg - U[c]) / (U[c + deg - r + 1] - U[c]);
-                    int q;
-                    for (q = 0; q < D; ++q)
-                        t[m][q] = (VLBE_R(1.0) - al) * t[m - 1][q] + al * t[m][q];
+    if (!isfinite(S) || !(S > VLBE_R(0.0))) return VLBE_ENONFINITE;
+    /* pass 0 computes and validates every element, pass 1 writes them */
+    for (pass = 0; pass < 2; ++pass) {
+        pe = VLBE_R(0.0);
+        e = 0;
+        if (pass) p[0] = VLBE_R(0.0);
+        for (i = deg; i < nc; ++i) { /* span [U_i, U_i+1) with points deg..i */
+            const vlbe_real a = U[i], b = U[i + 1];
+            vlbe_real H[4][VLBE_RANCF_DMAX + 1], Q[4][VLBE_RANCF_DMAX + 1], l;
+            if (!(b > a)) continue;
+            for (j = 0; j <= deg; ++j) { /* blossom f(a^(deg-j), b^j) */
+                vlbe_real t[4][VLBE_RANCF_DMAX + 1];
+                for (m = 0; m <= deg; ++m) {
+                    const int c = i - deg + m;
+                    for (r = 0; r < d; ++r) t[m][r] = wc[c] * P[c * d + r];
+                    t[m][d] = wc[c];
                 }
+                for (r = 1; r <= deg; ++r) {
+                    const vlbe_real arg = r <= deg - j ? a : b;
+                    for (m = deg; m >= r; --m) {
+                        const int c = i - deg + m; /* knot index of point c */
+                        const vlbe_real al = (arg - U[c]) / (U[c + deg - r + 1] - U[c]);
+                        int q;
+                        for (q = 0; q < D; ++q)
+                            t[m][q] = (VLBE_R(1.0) - al) * t[m - 1][q] + al * t[m][q];
+                    }
+                }
+                for (r = 0; r < D; ++r) H[j][r] = t[deg][r];
             }
-            for (r = 0; r < D; ++r) H[j][r] = t[deg][r];
-        }
-        for (j = 0; j < 4; ++j)
-            for (r = 0; r < D; ++r) {
-                vlbe_real s = VLBE_R(0.0);
-                for (m = 0; m <= deg; ++m) s += E[deg - 1][j][m] * H[m][r];
-                Q[j][r] = s / VLBE_R(3.0);
+            for (j = 0; j < 4; ++j)
+                for (r = 0; r < D; ++r) {
+                    vlbe_real s = VLBE_R(0.0);
+                    for (m = 0; m <= deg; ++m) s += E[deg - 1][j][m] * H[m][r];
+                    Q[j][r] = s / VLBE_R(3.0);
+                }
+            for (j = 0; j < 4; ++j) {
+                wb[j] = Q[j][d] / Q[3][d];
+                for (r = 0; r < d; ++r) Pb[j * d + r] = Q[j][r] / Q[j][d];
             }
-        for (j = 0; j < 4; ++j) {
-            wb[j] = Q[j][d] / Q[3][d];
-            for (r = 0; r < d; ++r) Pb[j * d + r] = Q[j][r] / Q[j][d];
+            l = S * (b - a);
+            /* weights and points of extreme data may not convert: VLBE_EWEIGHT,
+               VLBE_ENONFINITE, VLBE_ELENGTH (l underflowed) from pass 0 */
+            if ((st = vlbe_rancf_from_bezier(d, wb, l, Pb, xb)) != VLBE_OK) return st;
+            pe += l;
+            if (!isfinite(pe)) return VLBE_ENONFINITE;
+            if (pass) {
+                for (j = 0; j < 4 * d; ++j) x[4 * d * e + j] = xb[j];
+                for (j = 0; j < 4; ++j) w[4 * e + j] = wb[j];
+                p[e + 1] = p[e] + l;
+            }
+            ++e;
         }
-        l = S * (b - a);
-        (void)vlbe_rancf_from_bezier(d, wb, l, Pb, x + 4 * d * e); /* cannot fail here */
-        for (j = 0; j < 4; ++j) w[4 * e + j] = wb[j];
-        p[e + 1] = p[e] + l;
-        ++e;
     }
     *ne = e;
     return VLBE_OK;

