@@ -298,7 +298,9 @@ VLBE_API vlbe_status vlbe_cr2d_elem_init(vlbe_cr2d_elem *el, const vlbe_cr2d_mat
     t.s0 = d[1] / L;
     t.a0 = vlbe_atan2(d[1], d[0]);
     t.flags = flags;
-    t.key_[0] = -VLBE_R(1.0); /* not yet tabulated: lmat computes them */
+    /* not yet tabulated: lmat computes them (all four set, as gcc -O3
+       cannot see that the first comparison already fails) */
+    t.key_[0] = t.key_[1] = t.key_[2] = t.key_[3] = -VLBE_R(1.0);
     vlbe__cr2d_lmat(&t, 0, L, t.m_, t.k0_, NULL, NULL);
     /* powers of L up to L^-3 (k0) and L^3 (m): a length so small or so
        large that they overflow is out of range, el stays as it was */
