@@ -1113,8 +1113,10 @@ static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
         }
     }
     /* finite input can overflow (huge rates, stiffness): nothing written */
-    if (!vlbe_all_finite(F, 6) || (K && !vlbe_all_finite(Kt, 36)) ||
-        (D && !vlbe_all_finite(Dt, 36)))
+    /* (one scan of the three, no branch between them: Kt, Dt are zero when
+       not asked for) */
+    if ((vlbe__fin_bits(F, 6) | vlbe__fin_bits(Kt, 36) | vlbe__fin_bits(Dt, 36)) &
+        VLBE__BITS_SIGN)
         return VLBE_ENONFINITE;
     for (i = 0; i < 6; ++i) Q[i] = -F[i];
     if (K)
@@ -1131,15 +1133,24 @@ static inline vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vl
     vlbe__cr2d_kin k;
     vlbe_real m[36];
     vlbe_status st;
-    int i, ok = 1;
+    int i;
     VLBE_ASSERT(el != NULL && M != NULL);
     mode |= el->flags | VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, NULL, &k)) != VLBE_OK) return st;
     vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
     /* M = T^T m T, T a rotation per node: every entry and partial sum is at
        most 4 max |m|, so m bounded means M finite (checked before writing) */
-    for (i = 0; i < 36; ++i) ok &= vlbe_fabs(m[i]) <= VLBE_R(0.125) * VLBE_REAL_MAX;
-    if (!ok) return VLBE_ENONFINITE;
+    {   /* on the bits: |x| orders like its pattern with the sign cleared */
+        const vlbe_real lim = VLBE_R(0.125) * VLBE_REAL_MAX;
+        vlbe__bits bl, u, b = 0;
+        memcpy(&bl, &lim, sizeof bl);
+        for (i = 0; i < 36; ++i) {
+            memcpy(&u, &m[i], sizeof u);
+            u &= VLBE__BITS_ABS;
+            b = u > b ? u : b;
+        }
+        if (b > bl) return VLBE_ENONFINITE;
+    }
     for (i = 0; i < 36; ++i) M[i] = VLBE_R(0.0);
     vlbe__cr2d_congr(&k.fr, m, M);
     return VLBE_OK;

@@ -273,16 +273,20 @@ VLBE_API const char *vlbe_status_str(vlbe_status s)
    all ones (Inf, NaN), and an OR of numbers below the sign bit stays below
    it.  About twice as fast as comparing |x| with VLBE_REAL_MAX; the
    element kernels scan their outputs with it before they commit them. */
-VLBE_API int vlbe_all_finite(const vlbe_real *x, int n)
+VLBE_INLINE vlbe__bits vlbe__fin_bits(const vlbe_real *x, int n)
 {
     vlbe__bits b = 0, u;
     int i;
-    VLBE_ASSERT(n >= 0 && (n == 0 || x != NULL));
     for (i = 0; i < n; ++i) {
         memcpy(&u, &x[i], sizeof u);
         b |= (u & VLBE__BITS_EXP) + VLBE__BITS_EXP1;
     }
-    return (b & VLBE__BITS_SIGN) == 0;
+    return b; /* VLBE__BITS_SIGN set iff some x[i] is NaN or Inf */
+}
+VLBE_API int vlbe_all_finite(const vlbe_real *x, int n)
+{
+    VLBE_ASSERT(n >= 0 && (n == 0 || x != NULL));
+    return (vlbe__fin_bits(x, n) & VLBE__BITS_SIGN) == 0;
 }
 
 /* -- small vectors ------------------------------------------------------ */
