@@ -43,6 +43,7 @@
 #include "../rancf.h"
 #include "../corot2d.h"
 #include "ale_fixtures.h"
+#include "rancf_fixtures.h"
 
 #include <limits.h>
 #include <string.h>
@@ -166,28 +167,8 @@ static vlbe_rancf_elem r_els[NNCAP - 1], r_els0[NNCAP - 1];
 
 static void rel_init(vlbe_rancf_elem *dst, const vlbe_ale_mat *mat)
 {
-    static vlbe_rancf_elem tmp;
     static const vlbe_real w[4] = {1, 1, 1, 1};
-    vlbe_ale_rule *rd[3];
-    const vlbe_ale_rule *rs[3];
-    int r;
-    assert_int_equal(vlbe_rancf_elem_init(&tmp, mat, w, 0u, 0, 0, 0), VLBE_OK);
-    memset(dst, 0, sizeof *dst);
-    memcpy(dst->k, tmp.k, sizeof tmp.k);
-    dst->ale.mat = tmp.ale.mat;
-    dst->ale.flags = tmp.ale.flags;
-    rd[0] = &dst->ale.rm;
-    rd[1] = &dst->ale.rl;
-    rd[2] = &dst->ale.rt;
-    rs[0] = &tmp.ale.rm;
-    rs[1] = &tmp.ale.rl;
-    rs[2] = &tmp.ale.rt;
-    for (r = 0; r < 3; ++r) {
-        rd[r]->n = rs[r]->n;
-        memcpy(rd[r]->g, rs[r]->g, (size_t)rs[r]->n * sizeof rs[r]->g[0]);
-    }
-    memcpy(dst->ale.ends, tmp.ale.ends, sizeof tmp.ale.ends);
-    memcpy(&dst->ale.inv, &tmp.ale.inv, sizeof tmp.ale.inv);
+    rancf_el_init(dst, mat, w, 0);
 }
 
 /* A rational chain (unit weights) with nodes at p = 0, 1, 1.3 (sliding,
