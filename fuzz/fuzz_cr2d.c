@@ -23,6 +23,22 @@ static int cr_elem_finite(const vlbe_cr2d_elem *e)
            fz_finite(e->key_, 4);
 }
 
+/* starts the snapshots of the next call of a sequence: the const inputs
+   (jt, fth, a: NULL when the operation has none) are taken again, the
+   outputs of an earlier successful call are not (that call had the right to
+   write them; the next call registers its own outputs) */
+static void cr_next(const vlbe_cr2d_elem *el, const vlbe_real *q, const vlbe_real *qd,
+                    const vlbe_cr2d_joint *jt, const vlbe_real *fth, const vlbe_real *a)
+{
+    fz_snap_reset();
+    fz_in(el, sizeof *el, "el");
+    fz_in(q, 6 * sizeof *q, "q");
+    fz_in(qd, 6 * sizeof *qd, "qd");
+    fz_in(jt, jt ? sizeof *jt : 0, "joint");
+    fz_in(fth, 2 * sizeof *fth, "fth");
+    fz_in(a, 6 * sizeof *a, "a");
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -117,10 +133,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         break;
     case 3:
         fz_out(E, 2, "E");
-        fz_out(loc, 4, "loc");
         fz_note("vlbe_cr2d_energy(mode=%u)", mode);
         st = vlbe_cr2d_energy(&el, mode, q, qd, E);
         fz_post(st);
+        cr_next(&el, q, qd, NULL, NULL, NULL);
+        fz_out(loc, 4, "loc");
         fz_note("vlbe_cr2d_local(mode=%u)", mode);
         st = vlbe_cr2d_local(&el, mode, q, loc);
         break;
@@ -138,16 +155,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fz_note("vlbe_cr2d_trans_mass(mode=%u)", mode);
         st = vlbe_cr2d_trans_mass(&el, &jt, mode, q, K);
         fz_post(st);
+        cr_next(&el, q, qd, &jt, NULL, a);
         fz_out(D, 36, "Mq");
         fz_note("vlbe_cr2d_trans_mass_jac(mode=%u)", mode);
         st = vlbe_cr2d_trans_mass_jac(&el, &jt, mode, q, a, D);
         break;
     case 6:
         fz_out(E, 2, "E");
-        fz_out(loc, 6, "loc");
         fz_note("vlbe_cr2d_trans_energy(mode=%u)", mode);
         st = vlbe_cr2d_trans_energy(&el, &jt, mode, q, qd, E);
         fz_post(st);
+        cr_next(&el, q, qd, &jt, NULL, NULL);
+        fz_out(loc, 6, "loc");
         fz_note("vlbe_cr2d_trans_local(mode=%u)", mode);
         st = vlbe_cr2d_trans_local(&el, &jt, mode, q, loc);
         break;
@@ -155,15 +174,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fz_out(Q, 6, "Q");
         fz_out((kd & 1u) ? K : NULL, 36, "K");
         fz_out((kd & 2u) ? D : NULL, 36, "D");
-        fz_out(E, 2, "E");
-        fz_out(loc, 4, "loc");
         fz_note("vlbe_cr2d_force_ff(mode=%u)", mode | VLBE_CR2D_LINEAR);
         st = vlbe_cr2d_force_ff(&el, mode | ((kd & 4u) ? 0u : VLBE_CR2D_LINEAR), fth, q, qd, Q,
                                 (kd & 1u) ? K : NULL, (kd & 2u) ? D : NULL);
         fz_post(st);
+        cr_next(&el, q, qd, NULL, fth, NULL);
+        fz_out(E, 2, "E");
         fz_note("vlbe_cr2d_energy_ff");
         st = vlbe_cr2d_energy_ff(&el, mode | ((kd & 4u) ? 0u : VLBE_CR2D_LINEAR), fth, q, qd, E);
         fz_post(st);
+        cr_next(&el, q, qd, NULL, fth, NULL);
+        fz_out(loc, 4, "loc");
         fz_note("vlbe_cr2d_local_ff");
         st = vlbe_cr2d_local_ff(&el, mode | ((kd & 4u) ? 0u : VLBE_CR2D_LINEAR), fth, q, loc);
         break;
