@@ -53,6 +53,9 @@ TEST_NAMES := $(basename $(notdir $(TEST_SRCS)))
 # tests/test_fuzz_corpus.c includes the fuzz harnesses
 TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(wildcard $(EXAMPLE_DIR)/*.c $(EXAMPLE_DIR)/*.h) \
             $(wildcard fuzz/*.c fuzz/*.h)
+# the corpus replay marks its snapshots defined for valgrind (fuzz/fuzz_util.h)
+# where valgrind's client-request header is installed
+MEMCHECK_DEF := $(if $(wildcard /usr/include/valgrind/memcheck.h),-DVLBE_FUZZ_MEMCHECK)
 TEST_CFGS := dbl dbl-O0 flt san
 CFG_dbl := -O2
 CFG_dbl-O0 := -O0
@@ -127,7 +130,7 @@ cmocka:
 define TEST_RULE
 $(BUILD)/$(1)/%: $(TEST_DIR)/%.c $(TEST_DEPS) | cmocka
 	@mkdir -p $$(@D)
-	$$(CC) $$(CSTD) $$(WARN) $$(CFG_$(1)) -I. $$(CMOCKA_CFLAGS) $$< -o $$@ $$(CMOCKA_LIBS) -lm
+	$$(CC) $$(CSTD) $$(WARN) $$(CFG_$(1)) $$(MEMCHECK_DEF) -I. $$(CMOCKA_CFLAGS) $$< -o $$@ $$(CMOCKA_LIBS) -lm
 endef
 $(foreach c,$(TEST_CFGS),$(eval $(call TEST_RULE,$(c))))
 
