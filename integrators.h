@@ -1293,8 +1293,10 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
             r[i] = bp * d; /* position increment, for the norm */
         }
         for (j = 0; j < m; ++j) tl[j] -= r[n + j];
-        if (!vlbe_all_finite(tq, n) || !vlbe_all_finite(tv, n) || (m && !vlbe_all_finite(tl, m)))
-            return VLBE_ENONFINITE;
+        /* the whole trial state q, v, q'', a, lambda (contiguous): a and
+           q'' may overflow while q and v stay finite (da/dq'' = (1 -
+           alpha_f)/(1 - alpha_m) can be far larger than dq/dq'' = bp) */
+        if (!vlbe_all_finite(tq, 4 * n + m)) return VLBE_ENONFINITE;
         /* Convergence is judged on the position and velocity increments
            bp dq'', gp dq'' (the
            multipliers are coupled to it through the same linear solve and
@@ -1397,7 +1399,8 @@ VLBE_INLINE vlbe_status vlbe__hht_step_rec(vlbe_hht *st, vlbe_real h, vlbe_real 
    failure when par.max_halvings > 0).  On failure the state is the one before
    the call and the status says why; a step below h / 2^max_halvings that still
    fails returns its Newton status (VLBE_ENOCONV, VLBE_ESINGULAR, ...).
-   h <= 0, NaN or Inf: VLBE_EARG; st->t + h == st->t: VLBE_ESTEP.
+   h <= 0, NaN or Inf: VLBE_EARG; st->t + h == st->t: VLBE_ESTEP; st->t + h
+   overflows: VLBE_ENONFINITE.
    Time: a run of steps of the same h from t_b ends step k at
    t = t_b + k h (one product, no sum of k roundings: |t - (t_b + k h)| is
    a rounding or two of t, whatever k), so a rheonomic constraint is met at
@@ -1422,6 +1425,7 @@ VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
         k = 0;
     }
     t1 = tb + (vlbe_real)(k + 1) * hr;
+    if (!isfinite(t1)) return VLBE_ENONFINITE; /* t + h overflows: nothing evaluated */
     rc = vlbe__hht_step_rec(st, h, t1, st->par.max_halvings);
     if (rc != VLBE_OK) return rc;
     st->t_base_ = tb;

@@ -457,6 +457,78 @@ static void test_hht_step_failure_untouched(void **state)
     assert_hht_same(&st, &st0);
 }
 
+/* Finite parameters at the edge of the accepted range (beta = the
+   smallest normal number, alpha_f = -0.01/beta, gamma = 0: dq/dq'' =
+   h^2 beta (1 - alpha_f) ~ 1e-8 stays moderate, but da/dq'' = (1 -
+   alpha_f) ~ 1e-2/beta) and an initial constraint violation C = 0.5: the
+   first Newton update moves q'' by ~C/bp, which times da/dq'' overflows
+   the trial a while q, v, lambda stay finite.  The step fails with
+   VLBE_ENONFINITE, the state bitwise unchanged.  Fails on bc748ae: the
+   Newton loop checked only q, v, lambda, and vlbe_hht_step returned
+   VLBE_OK with a = -Inf (found by fuzz_step). */
+static int tn_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+{
+    (void)u, (void)t;
+    C[0] = q[0]; /* scleronomic: blind to t */
+    return 0;
+}
+static void test_hht_step_trial_acc_overflow(void **state)
+{
+    static vlbe_real w[RH_LW];
+    int iw[RH_LIW];
+    vlbe_dae sys;
+    rh_user u;
+    vlbe_hht st, st0;
+    static vlbe_real w0[RH_LW];
+    vlbe_hht_params p;
+    const vlbe_real q0[2] = {VLBE_R(0.5), 1}, v0[2] = {0, 0};
+    (void)state;
+    rh_sys(&sys, &u);
+    u.c = 0.0;
+    sys.constr = tn_constr;
+    vlbe_hht_params_newmark(&p, VLBE_REAL_MIN, VLBE_R(0.0));
+    p.alpha_f = -VLBE_R(0.01) / VLBE_REAL_MIN;
+    assert_true(isfinite(p.alpha_f));
+    assert_int_equal(vlbe_hht_init(&st, &sys, &p, 0, q0, v0, w, RH_LW, iw, RH_LIW), VLBE_OK);
+    memcpy(&st0, &st, sizeof st);
+    memcpy(w0, w, sizeof w);
+    assert_int_equal(vlbe_hht_step(&st, VLBE_R(1e-3)), VLBE_ENONFINITE);
+    assert_hht_same(&st, &st0);
+    /* with halvings the smaller steps overflow too: the same */
+    st.par.max_halvings = 3;
+    st0.par.max_halvings = 3;
+    assert_int_equal(vlbe_hht_step(&st, VLBE_R(1e-3)), VLBE_ENONFINITE);
+    assert_hht_same(&st, &st0);
+}
+
+/* A step whose end time overflows (t = 0.75 max, h = 0.5 max, a system
+   blind to t) fails with VLBE_ENONFINITE before any callback, the state
+   bitwise unchanged.  Fails on bc748ae: t + h != t passed the step-size
+   test and the callbacks were evaluated at t = +Inf (the step then failed
+   with VLBE_ENONFINITE only because h^2 overflowed in the predictor). */
+static void test_hht_step_time_overflow(void **state)
+{
+    static vlbe_real w[RH_LW];
+    int iw[RH_LIW];
+    vlbe_dae sys;
+    rh_user u;
+    vlbe_hht st, st0;
+    vlbe_hht_params p;
+    const vlbe_real q0[2] = {0, 1}, v0[2] = {0, 0};
+    (void)state;
+    rh_sys(&sys, &u);
+    u.c = 0.0;
+    sys.constr = tn_constr;
+    vlbe_hht_params_genalpha(&p, VLBE_R(0.8));
+    assert_int_equal(vlbe_hht_init(&st, &sys, &p, VLBE_R(0.75) * VLBE_REAL_MAX, q0, v0, w, RH_LW,
+                                   iw, RH_LIW),
+                     VLBE_OK);
+    memcpy(&st0, &st, sizeof st);
+    assert_int_equal(vlbe_hht_step(&st, VLBE_R(0.5) * VLBE_REAL_MAX), VLBE_ENONFINITE);
+    assert_hht_same(&st, &st0);
+    assert_true(st.stats.mass_calls == st0.stats.mass_calls);
+}
+
 /* ======================================================================= */
 /* BDF                                                                     */
 /* ======================================================================= */
@@ -765,6 +837,8 @@ int main(void)
         cmocka_unit_test(test_hht_init_failure_untouched),
         cmocka_unit_test(test_hht_step_bad_h),
         cmocka_unit_test(test_hht_step_failure_untouched),
+        cmocka_unit_test(test_hht_step_trial_acc_overflow),
+        cmocka_unit_test(test_hht_step_time_overflow),
         cmocka_unit_test(test_bdf_init_failure),
         cmocka_unit_test(test_bdf_step_failure_untouched),
         cmocka_unit_test(test_start_solvers_failure_untouched),
