@@ -2093,8 +2093,10 @@ static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const v
    for the load rows even when f = 0), times 8 for the two elements of a
    node and the Gauss route's rounding.  fq bounds the load part (|f|_1 max(L, L^2) of an element,
    or the stored load vector).  Returns 1 when that bound, and the
-   factor (1 + A + B)^3 max(...) alone, stay below REAL_MAX / 1024 (then
-   no intermediate or sum can overflow); inputs finite, Lmin > 0. */
+   factor (1 + c) (1 + A + B)^3 max(...) alone, stay below REAL_MAX / 1024
+   (then no intermediate or sum can overflow: the invariant products form
+   r' + c r_v' and c (r' . r_v') before EA multiplies them); inputs finite,
+   Lmin > 0, c >= 0. */
 static inline int vlbe__ale_cable_ok(vlbe_real EA, vlbe_real c, vlbe_real fq, vlbe_real Lmin,
                                      vlbe_real Lmax, const vlbe_real *m)
 {
@@ -2105,9 +2107,9 @@ static inline int vlbe__ale_cable_ok(vlbe_real EA, vlbe_real c, vlbe_real fq, vl
     z = VLBE_R(2.25) / Lmin;
     if (Lmax * Lmax > z) z = Lmax * Lmax; /* w N of a slope: L^2 (the load rows) */
     if (VLBE_R(1.5) > z) z = VLBE_R(1.5);
-    /* the data's own factor too: with a tiny EA the strain could still
-       overflow */
-    return g * g * g * z <= VLBE_REAL_MAX / VLBE_R(1024.0) &&
+    /* the data's own factor too: with a tiny EA the strain (and with a
+       huge c its damped part) could still overflow */
+    return (VLBE_R(1.0) + c) * g * g * g * z <= VLBE_REAL_MAX / VLBE_R(1024.0) &&
            VLBE_R(8.0) * (EA * (VLBE_R(1.0) + c) * g * g * g * z + fq) <=
                VLBE_REAL_MAX / VLBE_R(1024.0);
 }

@@ -35,6 +35,8 @@
                              1e-44), huge slopes, bad ne
      inv_sys_overflow        vlbe_ale_inv_sys_init with L = 1e-320, sys_force
                              with huge coordinates
+     inv_chain_huge_damping  chain and system forces with EA = 1e-320 (float
+                             1e-44) and c_eps = REAL_MAX
      rancf_to_bezier_weights w = {1e300, 1e-300, 1, 1} (float 1e30, 1e-30)
      rancf_split_weights     w = {1e-300, 1, 1, 1e300} (float 1e-30, 1e30)
      rancf_elem_init_weights ratio underflow; float: basis overflow at 1e-20
@@ -463,6 +465,57 @@ static void test_inv_sys_overflow(void **state)
                 all_fin(D, NX * VLBE_ALE_INV_BW));
 }
 
+/* fails on bc748ae: VLBE_OK with NaN in Q (and K, D) from the invariant
+   route of vlbe_ale_inv_chain_force and from vlbe_ale_inv_sys_force for a
+   subnormal EA (1e-320, float 1e-44) and c_eps = REAL_MAX: the force bound
+   weighed the damping only through EA (1 + c), but the invariant products
+   form c (r' . v') before EA multiplies it, and that overflows alone.  (The
+   Gauss route forms EA c first and stayed finite; it shares the bound.) */
+static void test_inv_chain_huge_damping(void **state)
+{
+    static R work[88 * NE + 16], K[NX * VLBE_ALE_INV_BW], D[NX * VLBE_ALE_INV_BW];
+    R x[NX], v[NX], Q[NX], L[NE] = {VLBE_R(0.5), VLBE_R(0.5), VLBE_R(0.5)};
+    vlbe_ale_mat m = ale_mat();
+    vlbe_ale_elem el;
+    vlbe_ale_inv_sys sys;
+    int i;
+    (void)state;
+    m.EA = SUBN_L; /* EA c = 1.8e-12 (float 4.8e-6): the product alone is harmless */
+    m.c_eps = VLBE_REAL_MAX;
+    assert_int_equal(vlbe_ale_elem_init(&el, &m, 0, 0, 0, 0), VLBE_OK);
+    chain_x(1, x, v);
+    for (i = 0; i <= NE; ++i) { /* slope rates along the slopes: r' . v' = 1 */
+        v[4 * i] = (R)i;
+        v[4 * i + 2] = 1;
+    }
+    sn_begin();
+    sn_fill(Q, sizeof Q);
+    sn_fill(K, sizeof K);
+    sn_fill(D, sizeof D);
+    EXPECT_FAIL(vlbe_ale_inv_chain_force(&el, VLBE_ALE_INV_AXIAL, NE, L, x, v, Q, NULL, NULL),
+                VLBE_ENONFINITE);
+    EXPECT_FAIL(vlbe_ale_inv_chain_force(&el, VLBE_ALE_INV_AXIAL, NE, L, x, v, Q, K, D),
+                VLBE_ENONFINITE);
+    EXPECT_FAIL(vlbe_ale_inv_chain_force(&el, 0, NE, L, x, v, Q, K, D), VLBE_ENONFINITE);
+    /* undamped: the same data are fine */
+    assert_int_equal(vlbe_ale_inv_chain_force(&el, VLBE_ALE_INV_AXIAL | VLBE_ALE_NO_DAMP, NE, L,
+                                              x, v, Q, K, D),
+                     VLBE_OK);
+    assert_true(all_fin(Q, NX) && all_fin(K, NX * VLBE_ALE_INV_BW) &&
+                all_fin(D, NX * VLBE_ALE_INV_BW));
+    /* the system route shares the bound */
+    assert_true(vlbe_ale_inv_sys_work_len(NE) <= sizeof work / sizeof work[0]);
+    assert_int_equal(vlbe_ale_inv_sys_init(&sys, &el, 0, NE, L, work,
+                                           sizeof work / sizeof work[0]),
+                     VLBE_OK);
+    sn_begin();
+    sn_fill(Q, sizeof Q);
+    sn_fill(K, sizeof K);
+    sn_fill(D, sizeof D);
+    EXPECT_FAIL(vlbe_ale_inv_sys_force(&sys, x, v, Q, NULL, NULL), VLBE_ENONFINITE);
+    EXPECT_FAIL(vlbe_ale_inv_sys_force(&sys, x, v, Q, K, D), VLBE_ENONFINITE);
+}
+
 /* -- rancf.h ----------------------------------------------------------- */
 /* fails on 77b73ad: VLBE_OK with P[2] = Inf (l w0 / (3 w1) overflows) */
 static void test_rancf_to_bezier_weights(void **state)
@@ -778,6 +831,7 @@ int main(void)
         cmocka_unit_test(test_ale3_mat_circle),
         cmocka_unit_test(test_inv_chain_tiny_length),
         cmocka_unit_test(test_inv_sys_overflow),
+        cmocka_unit_test(test_inv_chain_huge_damping),
         cmocka_unit_test(test_rancf_to_bezier_weights),
         cmocka_unit_test(test_rancf_split_weights),
         cmocka_unit_test(test_rancf_elem_init_weights),
