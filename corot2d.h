@@ -949,11 +949,19 @@ static inline vlbe_status vlbe__cr2d_kin_any(const vlbe_cr2d_elem *el, const vlb
     vlbe_status st;
     VLBE_ASSERT(el != NULL && q != NULL);
     if ((st = vlbe__cr2d_check(q, qd)) != VLBE_OK) return st;
-    if (!jt)
-        return vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0,
-                                   (mode & VLBE__CR2D_FRAME_ONLY) != 0, q, k);
-    if (mode & VLBE_CR2D_LINEAR) return VLBE_EARG; /* no linear transition element */
-    return vlbe__cr2d_kin_tr(el, jt, q, k);
+    if (!jt) {
+        st = vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0,
+                                 (mode & VLBE__CR2D_FRAME_ONLY) != 0, q, k);
+    } else {
+        if (mode & VLBE_CR2D_LINEAR) return VLBE_EARG; /* no linear transition element */
+        st = vlbe__cr2d_kin_tr(el, jt, q, k);
+    }
+    /* finite q whose current positions X + q overflow give a NaN frame:
+       every output is built on it (the mass commits on a bound of the
+       local m alone, which holds only for a rotation) */
+    if (st == VLBE_OK && (!vlbe_all_finite(k->fr.c, 2) || !vlbe_all_finite(k->fr.s, 2)))
+        return VLBE_ENONFINITE;
+    return st;
 }
 
 /* Local rates u = T q'; the transition element has no node-1 lateral or

@@ -45,6 +45,7 @@
      cr2d_elem_init_tiny     X2 - X1 = 1e-120 (float 1e-14): k0 overflows
      cr2d_overflow           force, energy, local, transition force with
                              huge rates or coordinates
+     cr2d_position_overflow  X + q overflows: NaN frame; mass, force, energy
      extreme_sweep           every element routine of the planar, rational
                              and 3D elements on a table of extreme inputs:
                              OK implies finite outputs, failure implies
@@ -667,6 +668,32 @@ static void test_cr2d_overflow(void **state)
     EXPECT_FAIL(vlbe_cr2d_force(&el, 0, q, qd, Q, K, D), VLBE_ENONFINITE);
 }
 
+/* Finite X and q whose current positions X + q overflow (both -REAL_MAX):
+   the chord and the frame are NaN.  Fails on ecddd90 (found by make fuzz):
+   vlbe_cr2d_mass returned VLBE_OK with NaN in M (its commit bound looks at
+   the local m only, which is finite); the force, whose outputs are
+   scanned, already failed. */
+static void test_cr2d_position_overflow(void **state)
+{
+    const vlbe_cr2d_mat m = cr_mat();
+    const R X1[2] = {-VLBE_REAL_MAX, 0}, X2[2] = {-VLBE_REAL_MAX, VLBE_R(30.0)};
+    vlbe_cr2d_elem el;
+    const R q[6] = {-VLBE_REAL_MAX, 0, 0, -VLBE_REAL_MAX, VLBE_R(19.0), 0};
+    const R qd[6] = {0, 0, 0, 0, 0, 0};
+    R Q[6], K[36], D[36], M[36], E[2];
+    (void)state;
+    assert_int_equal(vlbe_cr2d_elem_init(&el, &m, X1, X2, 0), VLBE_OK);
+    sn_begin();
+    sn_fill(M, sizeof M);
+    sn_fill(Q, sizeof Q);
+    sn_fill(K, sizeof K);
+    sn_fill(D, sizeof D);
+    sn_fill(E, sizeof E);
+    EXPECT_FAIL(vlbe_cr2d_mass(&el, 0, q, M), VLBE_ENONFINITE);
+    EXPECT_FAIL(vlbe_cr2d_force(&el, 0, q, qd, Q, K, D), VLBE_ENONFINITE);
+    EXPECT_FAIL(vlbe_cr2d_energy(&el, 0, q, qd, E), VLBE_ENONFINITE);
+}
+
 /* -- a sweep over extreme inputs ---------------------------------------- */
 static int sweep_viol_;
 
@@ -838,6 +865,7 @@ int main(void)
         cmocka_unit_test(test_rancf_misc),
         cmocka_unit_test(test_cr2d_elem_init_tiny),
         cmocka_unit_test(test_cr2d_overflow),
+        cmocka_unit_test(test_cr2d_position_overflow),
         cmocka_unit_test(test_extreme_sweep),
     };
     return cmocka_run_group_tests_name("contract_elem", tests, setup, NULL);
