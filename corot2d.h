@@ -949,19 +949,11 @@ static inline vlbe_status vlbe__cr2d_kin_any(const vlbe_cr2d_elem *el, const vlb
     vlbe_status st;
     VLBE_ASSERT(el != NULL && q != NULL);
     if ((st = vlbe__cr2d_check(q, qd)) != VLBE_OK) return st;
-    if (!jt) {
-        st = vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0,
-                                 (mode & VLBE__CR2D_FRAME_ONLY) != 0, q, k);
-    } else {
-        if (mode & VLBE_CR2D_LINEAR) return VLBE_EARG; /* no linear transition element */
-        st = vlbe__cr2d_kin_tr(el, jt, q, k);
-    }
-    /* finite q whose current positions X + q overflow give a NaN frame:
-       every output is built on it (the mass commits on a bound of the
-       local m alone, which holds only for a rotation) */
-    if (st == VLBE_OK && (!vlbe_all_finite(k->fr.c, 2) || !vlbe_all_finite(k->fr.s, 2)))
-        return VLBE_ENONFINITE;
-    return st;
+    if (!jt)
+        return vlbe__cr2d_kin_eval(el, (mode & VLBE_CR2D_LINEAR) != 0,
+                                   (mode & VLBE__CR2D_FRAME_ONLY) != 0, q, k);
+    if (mode & VLBE_CR2D_LINEAR) return VLBE_EARG; /* no linear transition element */
+    return vlbe__cr2d_kin_tr(el, jt, q, k);
 }
 
 /* Local rates u = T q'; the transition element has no node-1 lateral or
@@ -1145,6 +1137,13 @@ static inline vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vl
     VLBE_ASSERT(el != NULL && M != NULL);
     mode |= el->flags | VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, NULL, &k)) != VLBE_OK) return st;
+    /* finite q whose current positions X + q overflow give a NaN frame (the
+       other outputs are scanned; the bound below holds for a rotation
+       only): x - x is NaN exactly for NaN and Inf */
+    if (!(k.fr.c[0] - k.fr.c[0] + k.fr.c[1] - k.fr.c[1] + k.fr.s[0] - k.fr.s[0] + k.fr.s[1] -
+              k.fr.s[1] ==
+          VLBE_R(0.0)))
+        return VLBE_ENONFINITE;
     vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
     /* M = T^T m T, T a rotation per node: every entry and partial sum is at
        most 4 max |m|, so m bounded means M finite (checked before writing) */
