@@ -112,7 +112,7 @@ NOTES (how the Jacobians are formed)
    themselves, as the Jacobian needs them.  The two routes agree to rounding
    (test: 64 EPS of max|Q|).
 
-INVARIANTS (issue 7: invariant-matrix force evaluation)
+INVARIANTS (invariant-matrix force evaluation)
    With both p fixed the Green-strain axial force is a cubic polynomial of
    the nodal data: with B_ab = int s_a' s_b' dp and I_abcd = int s_a' s_b'
    s_c' s_d' dp over the four slots r1, r1', r2, r2' and the Gram matrix

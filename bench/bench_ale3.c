@@ -9,7 +9,7 @@
    run from the repository root:  build/bench/bench_ale3 [tag]
    writes out/bench/ale3_elem[-tag].csv (out/bench must exist).
 
-   Targets of issue 4, ns per element call for the full element (spin,
+   Targets of the 3D beam-shaft, ns per element call for the full element (spin,
    both material coordinates free, bending, twist, Kelvin-Voigt damping,
    default Gauss orders nm/ns = 4/5): forces (K = D = NULL) <= 1000,
    forces with K and D <= 5000; and the element without spin
@@ -478,7 +478,7 @@ int main(int argc, char **argv)
                "Q+K+D %.2f\n",
                res[a].med_ns / res[b].med_ns, res[c].med_ns / res[d].med_ns);
     }
-    printf("targets (issue 4):\n");
+    printf("targets:\n");
     printf("  full element (spin, ALE, bend, twist, damp): force Q %.1f <= %.0f ns %s, "
            "Q+K+D %.1f <= %.0f ns %s\n",
            res[full[OP_Q]].med_ns, op_target[OP_Q], pf(res[full[OP_Q]].med_ns <= op_target[OP_Q]),

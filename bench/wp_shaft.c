@@ -1,4 +1,4 @@
-/* wp_shaft.c -- work-precision of issue 4's scene 3, the spinning shaft
+/* wp_shaft.c -- work-precision of VLBSE scene 4.3, the spinning shaft
    under a moving, turning load (examples/spinning_shaft.c): error against
    CPU time (log-log) over mesh x step, HHT-alpha -0.05, case a = 0.5,
    k_omega = 1 and case a = 1.5, k_omega = 0.5.
@@ -46,7 +46,7 @@ int main(int argc, char **argv)
     int c, i, j, r, f;
     if (benchu_mkdir(dir, "wp_shaft")) return 1;
     benchu_cpu_info(model, sizeof model, &mhz);
-    printf("wp_shaft: spinning shaft (issue 4 scene 3), HHT-alpha -0.05, error = max of the four\n"
+    printf("wp_shaft: spinning shaft (VLBSE scene 4.3), HHT-alpha -0.05, error = max of the four\n"
            "max-over-traverse errors / U_s vs the exact series without rhoJ; %s, %.0f MHz, %s\n",
            model, mhz, VLBE_BENCH_FLAGS);
     snprintf(path, sizeof path, "%s/wp_shaft.csv", dir);

@@ -1,4 +1,4 @@
-/* wp_spin.c -- work-precision of scene 1 of issue 7, the spin-up of a
+/* wp_spin.c -- work-precision of the rotating-beam scene 1, the spin-up of a
    cantilever on a hub at W = 6 rad/s (examples/ex_spin.h,
    examples/spin_up.c): error of the tip deflection in the hub frame
    against CPU time (log-log) over model x mesh x step x integrator.

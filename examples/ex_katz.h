@@ -1,6 +1,6 @@
 /* ex_katz.h -- exact modal-series reference for the spinning simply
    supported shaft under an axially moving, rotating point load (Katz 2001;
-   issue 4, scene 3: paper section 4.3, eqs. 59-63, Table 4).
+   VLBSE scene 4.3: paper section 4.3, eqs. 59-63, Table 4).
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 
    Reference code for the examples and tests: plain double (not vlbe_real),

@@ -36,7 +36,7 @@
    by Richardson (the scheme is second order: the period error is
    c (omega h)^2; the extrapolated value is accurate to O(h^4)).
 
-   The 3D model (issue 4, scene 1 in 3D; `kind` MS_3D): the same window of
+   The 3D model (VLBSE scene 4.1 in 3D; `kind` MS_3D): the same window of
    3D beam-shaft elements (VLBSE, vlbe_ale3_* of ancf_ale.h) in a chain of
    vlbe_ale_chain_init3, nodes [r(3), r'(3), theta], the same prescribed
    p(t), supports holding all three components (VLBE_ALE_CON_POS), the

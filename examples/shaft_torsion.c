@@ -1,5 +1,5 @@
-/* shaft_torsion.c -- free torsional vibration of a fixed-free shaft (issue 4,
-   scene 2; vlbse paper section 4.2, Tables 2 and 3) with the 3D beam-shaft
+/* shaft_torsion.c -- free torsional vibration of a fixed-free shaft (VLBSE
+   scene 4.2; vlbse paper section 4.2, Tables 2 and 3) with the 3D beam-shaft
    element of ancf_ale.h in a Lagrangian chain (every material coordinate
    fixed).           -- part of vlbe              SPDX-License-Identifier: MIT
 

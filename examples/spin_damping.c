@@ -1,4 +1,4 @@
-/* spin_damping.c -- spin-up of a flexible cantilever on a hub (issue 7,
+/* spin_damping.c -- spin-up of a flexible cantilever on a hub (rotating-beam
    scene 3): internal damping computed from the deformation (Kelvin-Voigt on
    the strain rates, frame invariant) against damping on the absolute nodal
    velocities, Q_d = -(abs_a M + abs_b K0) v, for final hub speeds W = 2, 6,

@@ -1,5 +1,5 @@
 /* spin_up.c -- spin-up of a flexible cantilever on a hub (Simo & Vu-Quoc
-   style, issue 7 scenes 1 and 2): the nonlinear co-rotational beam against
+   style, rotating-beam scenes 1 and 2): the nonlinear co-rotational beam against
    the LINEAR element in the floating hub frame (no centrifugal stiffening),
    for final hub speeds W = 2, 4, 6, 10 rad/s.
    -- part of vlbe                                  SPDX-License-Identifier: MIT

@@ -1,4 +1,4 @@
-/* spinning_shaft.c -- issue 4, scene 3 (vlbse paper section 4.3): a simply
+/* spinning_shaft.c -- VLBSE scene 4.3 (paper section 4.3): a simply
    supported shaft spinning at Omega under a constant-magnitude load P that
    travels along the axis at v and turns about it at omega (Katz 2001).
    Four 3D beam-shaft elements (ancf_ale.h, vlbe_ale3_*) in a chain whose

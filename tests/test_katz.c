@@ -1,5 +1,5 @@
 /* test_katz.c -- the analytic reference of the spinning-shaft scene
-   (issue 4, scene 3; examples/ex_katz.h: Katz 2001, paper section 4.3,
+   (VLBSE scene 4.3; examples/ex_katz.h: Katz 2001, paper section 4.3,
    eqs. 59-63) checked against independent facts.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 

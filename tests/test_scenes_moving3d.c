@@ -1,4 +1,4 @@
-/* test_scenes_moving3d.c -- cmocka suite of issue 4, scene 1 in 3D: the
+/* test_scenes_moving3d.c -- cmocka suite of VLBSE scene 4.1 in 3D: the
    axially moving string and beam of examples/moving_string.c (vlbse 4.1,
    Table 1) with the 3D beam-shaft chain (vlbe_ale_chain_init3, VLBSE) in
    the Eulerian window, theta = 0 and nothing driving the spin.

@@ -1,5 +1,5 @@
 /* test_scenes_shaft.c -- chains of 3D beam-shaft elements (ancf_ale.h,
-   vlbe_ale_chain_init3) and the spinning-shaft scene (issue 4, scene 3;
+   vlbe_ale_chain_init3) and the spinning-shaft scene (VLBSE scene 4.3;
    examples/spinning_shaft.c against the modal series of ex_katz.h).
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 

@@ -1,4 +1,4 @@
-/* test_scenes_spin.c -- regression tests of the spin-up scene (issue 7,
+/* test_scenes_spin.c -- regression tests of the spin-up scene (rotating-beam
    scenes 1 and 2; examples/ex_spin.h, examples/spin_up.c): the nonlinear
    co-rotational beam, the nonlinear ANCF beam and the LINEAR element in
    the floating hub frame.

@@ -1,5 +1,5 @@
 /* test_scenes_torsion.c -- cmocka suite of the free torsional vibration of
-   a fixed-free shaft (issue 4, scene 2; vlbse section 4.2, Table 3;
+   a fixed-free shaft (VLBSE scene 4.2; vlbse section 4.2, Table 3;
    examples/shaft_torsion.c): N 3D beam-shaft elements in a Lagrangian chain.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
    cc -std=c99 -Wall -Wextra -Wpedantic ... -O2 tests/test_scenes_torsion.c -lcmocka -lm
