@@ -1070,7 +1070,8 @@ static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
                                                vlbe_real *VLBE_RESTRICT K,
                                                vlbe_real *VLBE_RESTRICT D)
 {
-    vlbe_real F[6], Kt[36], Dt[36], d[6], dd[6];
+    vlbe_real FKD[78], d[6], dd[6];
+    vlbe_real *const F = FKD, *const Kt = FKD + 6, *const Dt = FKD + 42;
     vlbe__cr2d_fr fr;
     vlbe__cr2d_kin k;
     vlbe_status st;
@@ -1112,11 +1113,9 @@ static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
             for (i = 0; i < 36; ++i) Kt[i] = G[i];
         }
     }
-    /* finite input can overflow (huge rates, stiffness): nothing written */
-    /* (one scan of the three, no branch between them: Kt, Dt are zero when
-       not asked for) */
-    if ((vlbe__fin_bits(F, 6) | vlbe__fin_bits(Kt, 36) | vlbe__fin_bits(Dt, 36)) &
-        VLBE__BITS_SIGN)
+    /* finite input can overflow (huge rates, stiffness): nothing written.
+       F, Kt, Dt are one buffer, scanned in one pass (Q only: F alone) */
+    if (vlbe__fin_bits(FKD, K || D ? 78 : 6) & VLBE__BITS_SIGN)
         return VLBE_ENONFINITE;
     for (i = 0; i < 6; ++i) Q[i] = -F[i];
     if (K)
