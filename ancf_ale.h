@@ -4007,6 +4007,8 @@ VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe
     vlbe_status st;
     VLBE_ASSERT(ch != NULL && q != NULL && qe != NULL && idx != NULL && mode != NULL);
     if (e < 0 || e >= ch->nn - 1) return VLBE_EARG;
+    /* vt is written by the gather when ve is given (cppcheck cannot see it) */
+    /* cppcheck-suppress legacyUninitvar */
     if ((st = vlbe__ale_gather(ch, e, t, q, v, qt, ve ? vt : NULL, it, &md)) != VLBE_OK) return st;
     ne = 2 * (2 * ch->d + ch->spin + 1);
     for (k = 0; k < ne; ++k) {
@@ -4340,14 +4342,15 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
                                  vlbe_real *M)
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
-    const size_t n = (size_t)ch->n;
-    const int ne = vlbe__ale_ne(ch);
+    size_t n;
     vlbe_real qe[VLBE_ALE3_NQ], Me[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
-    int e, i, k, rc, idx[VLBE_ALE3_NQ];
+    int e, i, k, rc, ne, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     (void)v;
     VLBE_ASSERT(ch != NULL && q != NULL && M != NULL);
+    n = (size_t)ch->n;
+    ne = vlbe__ale_ne(ch);
     if ((rc = vlbe__ale_in_check(ch, q, NULL, NULL)) != 0) return rc;
     vlbe__ale_zero_nn(ch->n, M);
     for (e = 0; e + 1 < ch->nn; ++e) {
@@ -4369,13 +4372,13 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
                                          const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                          vlbe_real *D)
 {
-    const int ne = vlbe__ale_ne(ch);
     vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ], Qe[VLBE_ALE3_NQ], ae[VLBE_ALE3_NQ];
     vlbe_real Ke[VLBE_ALE3_NQ * VLBE_ALE3_NQ], De[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
-    int e, i, k, rc, idx[VLBE_ALE3_NQ];
+    int e, i, k, rc, ne, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     VLBE_ASSERT(ch != NULL && q != NULL && v != NULL);
+    ne = vlbe__ale_ne(ch);
     if ((rc = vlbe__ale_in_check(ch, q, v, NULL)) != 0) return rc;
     if (Q)
         for (i = 0; i < ch->n; ++i) Q[i] = VLBE_R(0.0);
@@ -4431,13 +4434,13 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
                                      vlbe_real *Mv)
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
-    const int ne = vlbe__ale_ne(ch);
     vlbe_real qe[VLBE_ALE3_NQ], ae[VLBE_ALE3_NQ], Je[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
-    int e, i, rc, idx[VLBE_ALE3_NQ];
+    int e, i, rc, ne, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     (void)v;
     VLBE_ASSERT(ch != NULL && q != NULL && a != NULL && Mq != NULL);
+    ne = vlbe__ale_ne(ch);
     if ((rc = vlbe__ale_in_check(ch, q, NULL, a)) != 0) return rc;
     vlbe__ale_zero_nn(ch->n, Mq);
     if (Mv) vlbe__ale_zero_nn(ch->n, Mv);
@@ -4678,10 +4681,11 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
                                         const vlbe_real *lambda, vlbe_real *H)
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
-    const size_t n = (size_t)ch->n;
+    size_t n;
     int k, r = 0, i, j, s;
     (void)t;
     VLBE_ASSERT(ch != NULL && q != NULL && lambda != NULL && H != NULL);
+    n = (size_t)ch->n;
     if (!vlbe_all_finite(q, ch->n) || !vlbe_all_finite(lambda, ch->m))
         return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
     vlbe__ale_zero_nn(ch->n, H);
