@@ -1,14 +1,18 @@
 # vlbe -- build, test, benchmark.  GNU make + a C99 compiler.
 #
 #   make test           header checks, then every tests/test_*.c in four builds
-#                       (double -O2, double -O0, float -O2, ASan+UBSan) and
-#                       the double -O2 build under valgrind when it is installed
+#                       (double -O2, double -O0, float -O2, ASan+UBSan), the
+#                       measured numbers of the test comments against their
+#                       logs, and the double -O2 build under valgrind when it
+#                       is installed; each binary under a time limit
 #   make demo           build the examples and run the paper scenes (out/demo/),
 #                       then the work-precision charts (out/wp_*.svg, every
 #                       bench/wp_*.c at -O2)
 #   make bench          build and run bench/*.c (-O3 -march=native), out/bench/
 #   make examples       build examples/*.c with the full warning set
 #   make check-headers  each header alone, twice, as C++, in float mode
+#   make measured-update  rerun the tests and rewrite the measured numbers
+#                       quoted in test comments (tests/measured.sh) from them
 #   make lint           cppcheck
 #   make cmocka         make sure cmocka is usable (installs it with apt-get
 #                       when run as root on Debian)
@@ -88,7 +92,7 @@ DEMO_WP_BINS := $(addprefix $(BUILD)/demo/,$(DEMO_WP_NAMES))
 BENCH_DIR_ARG := $(DEMO_WP_NAMES)
 
 .PHONY: all check test check-headers cmocka test-build examples demo bench \
-        bench-portable lint clean fuzz fuzz-build fuzz-clang
+        bench-portable lint clean fuzz fuzz-build fuzz-clang measured-update
 
 all: test examples
 
@@ -136,32 +140,55 @@ $(foreach c,$(TEST_CFGS),$(eval $(call TEST_RULE,$(c))))
 
 test-build: $(TEST_BINS)
 
-# Runs every binary, build by build; each log is kept next to its binary.
-# cmocka's closing lines "[  PASSED  ] N test(s)." / "[  FAILED  ] N test(s)"
-# are summed into the last line.  Stops at the first failing run.
-TEST_SUMMARY = awk '/^\[  PASSED  \] [0-9]+ test/ { p += $$4 } \
-  /^\[  FAILED  \] [0-9]+ test/ { f += $$4 } \
-  END { if (f == 0 && fail != 0) f = 1; printf "tests: %d passed, %d failed\n", p, f }'
+# Runs every binary, build by build, with VLBE_TEST_REPORT=1 (the logs carry
+# the MEASURED lines that tests/measured.sh checks against the comments) and
+# under a time limit: TEST_TIMEOUT seconds per binary (valgrind runs get
+# TEST_VG_TIMEOUT), so a hang fails the run and names the suite.  Each log is
+# kept next to its binary.  cmocka's closing lines "[  PASSED  ] N test(s).",
+# "[  SKIPPED ] N test(s)" and "[  FAILED  ] N test(s)" are summed per build
+# and in total in the last lines.  Stops at the first failing run.
+TEST_TIMEOUT ?= 300
+TEST_VG_TIMEOUT ?= 1200
+TEST_SUMMARY = awk '{ b = FILENAME; sub(/\/[^\/]*$$/, "", b); sub(/.*\//, "", b); \
+    if (FILENAME ~ /\.vg\.log$$/) b = b "+valgrind"; if (!(b in seen)) { seen[b] = 1; order[++nb] = b } } \
+  /^\[  PASSED  \] [0-9]+ test/ { p[b] += $$4; P += $$4 } \
+  /^\[  SKIPPED \] [0-9]+ test/ { s[b] += $$4; S += $$4 } \
+  /^\[  FAILED  \] [0-9]+ test/ { f[b] += $$4; F += $$4 } \
+  END { for (i = 1; i <= nb; ++i) printf "  %-14s %4d passed, %d failed, %d skipped\n", order[i], p[order[i]], f[order[i]], s[order[i]]; \
+    if (F == 0 && fail != 0) F = 1; printf "tests: %d passed, %d failed, %d skipped\n", P, F, S }'
 
 test: check-headers test-build
 	@set -u; fail=0; logs=""; \
 	if [ -z "$(TEST_NAMES)" ]; then echo "test: no $(TEST_DIR)/test_*.c yet"; fi; \
-	run() { log=$$1; shift; logs="$$logs $$log"; rc=0; \
-	  echo "== $$*"; "$$@" > "$$log" 2>&1 || rc=$$?; cat "$$log"; \
-	  if [ $$rc -ne 0 ]; then echo "FAILED (exit $$rc): $$*"; fail=1; fi; }; \
+	run() { lim=$$1; log=$$2; shift 2; logs="$$logs $$log"; rc=0; \
+	  echo "== $$*"; VLBE_TEST_REPORT=1 timeout -k 10 $$lim "$$@" > "$$log" 2>&1 || rc=$$?; \
+	  grep -v '^MEASURED ' "$$log"; \
+	  if [ $$rc -eq 124 ] || [ $$rc -eq 137 ]; then echo "FAILED (time limit $$lim s exceeded): $$*"; fail=1; \
+	  elif [ $$rc -ne 0 ]; then echo "FAILED (exit $$rc): $$*"; fail=1; fi; }; \
 	for c in $(TEST_CFGS); do for t in $(TEST_NAMES); do \
 	  [ $$fail = 0 ] || break 2; \
-	  run $(BUILD)/$$c/$$t.log ./$(BUILD)/$$c/$$t; \
+	  run $(TEST_TIMEOUT) $(BUILD)/$$c/$$t.log ./$(BUILD)/$$c/$$t; \
 	done; done; \
+	if [ $$fail = 0 ]; then echo "== sh $(TEST_DIR)/measured.sh $(BUILD)"; \
+	  sh $(TEST_DIR)/measured.sh $(BUILD) || { echo "FAILED: measured numbers in test comments (make measured-update rewrites them)"; fail=1; }; fi; \
 	if [ $$fail = 0 ] && command -v $(VALGRIND) >/dev/null 2>&1; then \
 	  for t in $(TEST_NAMES); do \
 	    [ $$fail = 0 ] || break; \
-	    run $(BUILD)/dbl/$$t.vg.log $(VALGRIND) -q --error-exitcode=1 --leak-check=full ./$(BUILD)/dbl/$$t; \
+	    run $(TEST_VG_TIMEOUT) $(BUILD)/dbl/$$t.vg.log $(VALGRIND) -q --error-exitcode=1 --leak-check=full ./$(BUILD)/dbl/$$t; \
 	  done; \
 	elif [ $$fail = 0 ]; then echo "test: valgrind not found, valgrind runs skipped"; fi; \
 	if [ -n "$$logs" ]; then $(TEST_SUMMARY) fail=$$fail $$logs; \
-	else echo "tests: 0 passed, 0 failed"; fi; \
+	else echo "tests: 0 passed, 0 failed, 0 skipped"; fi; \
 	exit $$fail
+
+# Runs the double and float builds with VLBE_TEST_REPORT=1 and rewrites every
+# measured number of a test comment that no longer agrees with its log.
+measured-update: test-build
+	@set -u; for c in $(TEST_CFGS); do for t in $(TEST_NAMES); do \
+	  echo "== $(BUILD)/$$c/$$t"; \
+	  VLBE_TEST_REPORT=1 timeout -k 10 $(TEST_TIMEOUT) ./$(BUILD)/$$c/$$t > $(BUILD)/$$c/$$t.log 2>&1 || \
+	    echo "($(BUILD)/$$c/$$t failed: its numbers are left as they are)"; \
+	done; done; sh $(TEST_DIR)/measured.sh --update $(BUILD)
 
 # -- examples and demo ------------------------------------------------------
 $(BUILD)/examples/%: $(EXAMPLE_DIR)/%.c $(EXAMPLE_DEPS)

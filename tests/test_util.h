@@ -20,6 +20,11 @@
    tu_max_abs(n, a)                       max |a_i| of a double array
    tu_report_on(), tu_report(name, err, tol)   with VLBE_TEST_REPORT set, print
                                           each measured error beside its tolerance
+   tu_measured(key, value)                with VLBE_TEST_REPORT set, print the line
+                                          "MEASURED key value" that tests/measured.sh
+                                          checks against the comment tag (m:key)
+   TU_SKIP(reason)                        mark the running test skipped (cmocka's
+                                          skip()), printing why; counted apart
    tu_slow_run()                          1 in slow builds (-O0, sanitizers,
                                           valgrind, VLBE_TEST_QUICK): shorter runs
 
@@ -191,5 +196,31 @@ static inline void tu_report(const char *name, double err, double tol)
         print_message("    %-52s err %.3e  tol %.3e  (ratio %.3f)\n", name, err, tol,
                       tol > 0.0 ? err / tol : 0.0);
 }
+
+/* -- measured numbers in comments --------------------------------------
+   A number a comment quotes as measured carries a tag right after it:
+       the drift is 1.07e-7 (m:energy_drift) of Tmax
+   and the test reports the value it measured under that key with
+   tu_measured("energy_drift", drift).  tests/measured.sh (run by make test on
+   the logs of the VLBE_TEST_REPORT runs) fails when the quoted number does not
+   round to the measurement at the digits it shows, and `make measured-update`
+   rewrites the quoted numbers from the logs.  Tag forms:
+       (m:key)        double -O2 build, agree to the quoted digits
+       (m@flt:key)    another build (dbl, dbl-O0, flt, san: the Makefile's names)
+       (m~:key)       order of magnitude only (within a factor 3), for rounding-
+                      level values that differ between compilers and CPUs
+   Keys are unique within a suite: [A-Za-z0-9_.]+. */
+static inline void tu_measured(const char *key, double value)
+{
+    if (tu_report_on()) print_message("MEASURED %s %.9e\n", key, value);
+}
+
+/* A test that does not apply to this build: print why, then cmocka's skip()
+   (which returns from the test; the closing line counts it as skipped). */
+#define TU_SKIP(reason)                                                                  \
+    do {                                                                                 \
+        print_message("    skipped: %s\n", (reason));                                   \
+        skip();                                                                          \
+    } while (0)
 
 #endif /* VLBE_TEST_UTIL_H */
