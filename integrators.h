@@ -274,6 +274,11 @@ typedef struct vlbe_bdf_params {
                              discounts stiff modes the step does not resolve
                              (see vlbe__bdf_enorm); 0: the plain estimate of
                              DASSL (default 1)                                     */
+    int max_steps;        /* steps one vlbe_bdf_advance call may take; 0: no limit
+                             (default 0).  A cap turns a run whose steps collapse
+                             without reaching h_min (a wrong model, a tolerance
+                             below what the arithmetic resolves) into
+                             VLBE_EBOUND instead of a hang                         */
 } vlbe_bdf_params;
 
 /* BDF integrator state.  q, v, lambda, mu point into the caller's workspace
@@ -1468,6 +1473,7 @@ VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
     p->newton_max = 4;
     p->fixed_step = 0;
     p->stiff_filter = 1;
+    p->max_steps = 0;
 }
 
 /* Scratch shared by the Jacobian helpers (and by vlbe_dae_consistent_acc at
@@ -1543,8 +1549,8 @@ VLBE_INLINE vlbe_real vlbe__bdf_newton_norm(const vlbe_bdf *st, const vlbe_real 
 /* Consistent start at t0 (see vlbe_bdf).  Returns VLBE_EARG (problem,
    parameters: every real finite and >= 0, rtol + atol > 0, max_order
    1..VLBE_BDF_MAXORD, newton_max 1..VLBE_INT_MAX_ITER, fixed_step and
-   stiff_filter 0 or 1, h0 > 0 with fixed_step, h_min <= h_max when h_max >
-   0), VLBE_EWORK, VLBE_ENONFINITE (t0, q0, v0, or the start solve), or the
+   stiff_filter 0 or 1, max_steps >= 0, h0 > 0 with fixed_step, h_min <=
+   h_max when h_max > 0), VLBE_EWORK, VLBE_ENONFINITE (t0, q0, v0, or the start solve), or the
    status of the start solve.  On failure *st is unchanged, and so are work
    and iwork when the argument checks fail; when the start solve fails they
    hold its scratch (unspecified), as for vlbe_hht_init. */
@@ -1571,7 +1577,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
         !isfinite(par->h_min) || !isfinite(par->h_max) || par->max_order < 1 ||
         par->max_order > VLBE_BDF_MAXORD || par->newton_max < 1 ||
         par->newton_max > VLBE_INT_MAX_ITER || par->fixed_step < 0 || par->fixed_step > 1 ||
-        par->stiff_filter < 0 || par->stiff_filter > 1 ||
+        par->stiff_filter < 0 || par->stiff_filter > 1 || par->max_steps < 0 ||
         (par->fixed_step && !(par->h0 > VLBE_R(0.0))) ||
         (par->h_max > VLBE_R(0.0) && par->h_min > par->h_max))
         return VLBE_EARG;
@@ -2196,7 +2202,8 @@ fail:
 
 /* Steps until st->t == t_out exactly (the last step is shortened to land
    there).  t_out == t returns at once; t_out < t or not finite is
-   VLBE_EARG.  On failure the state is the last accepted step, which may lie
+   VLBE_EARG; par.max_steps > 0 steps without reaching t_out is VLBE_EBOUND
+   (call again to go on).  On failure the state is the last accepted step, which may lie
    past the start: a documented exception to the failure contract (the
    steps are vlbe_bdf_step calls, each all or nothing; undoing the accepted
    ones would take a second copy of the whole history and throw away valid
@@ -2204,10 +2211,13 @@ fail:
 VLBE_API vlbe_status vlbe_bdf_advance(vlbe_bdf *st, vlbe_real t_out)
 {
     vlbe_status rc;
+    int k = 0;
     VLBE_ASSERT(st != NULL && st->sys != NULL);
     if (!isfinite(t_out) || t_out < st->t) return VLBE_EARG;
-    while (st->t < t_out)
+    while (st->t < t_out) {
+        if (st->par.max_steps > 0 && k++ == st->par.max_steps) return VLBE_EBOUND;
         if ((rc = vlbe_bdf_step(st, t_out)) != VLBE_OK) return rc;
+    }
     return VLBE_OK;
 }
 

@@ -583,7 +583,7 @@ static void test_bdf_init_failure(void **state)
     memcpy(&st0, &st, sizeof st);
     memcpy(w0, w, sizeof w);
     memcpy(iw0, iw, sizeof iw);
-    for (k = 0; k < 6; ++k) {
+    for (k = 0; k < 7; ++k) {
         bad = p;
         switch (k) {
         case 0: bad.rtol = (vlbe_real)INFINITY; break;
@@ -591,6 +591,7 @@ static void test_bdf_init_failure(void **state)
         case 2: bad.h_min = (vlbe_real)INFINITY; break;
         case 3: bad.newton_max = VLBE_INT_MAX_ITER + 1; break;
         case 4: bad.fixed_step = 2, bad.h0 = VLBE_R(0.01); break;
+        case 5: bad.max_steps = -1; break;
         default: bad.fixed_step = -1, bad.h0 = VLBE_R(0.01); break;
         }
         assert_int_equal(vlbe_bdf_init(&st, &sys, &bad, 0, q0, v0, w, BD_LW, iw, BD_LIW),
@@ -826,6 +827,45 @@ static void test_bdf_fixed_step_time(void **state)
     }
 }
 
+/* max_steps caps the steps of one vlbe_bdf_advance call: with h0 = 0.01
+   fixed, advancing to 1 takes 100 steps; a cap of 30 stops after exactly 30
+   with VLBE_EBOUND at t = 0.3 (the last accepted step, whose history goes
+   on: three more calls reach 1 with the twin run's state bit for bit), and
+   a cap of 100 is not hit. */
+static void test_bdf_advance_max_steps(void **state)
+{
+    static vlbe_real w[BD_LW], w2[BD_LW];
+    int iw[BD_LIW], iw2[BD_LIW], k;
+    vlbe_dae sys, sys2;
+    rh_user u, u2;
+    vlbe_bdf st, st2;
+    vlbe_bdf_params p;
+    const vlbe_real q0[2] = {0, 1}, v0[2] = {1, 0};
+    (void)state;
+    rh_sys(&sys, &u);
+    rh_sys(&sys2, &u2);
+    vlbe_bdf_params_default(&p);
+    p.fixed_step = 1;
+    p.max_order = 2;
+    p.h0 = VLBE_R(0.01);
+    p.max_steps = 30;
+    assert_int_equal(vlbe_bdf_init(&st, &sys, &p, 0, q0, v0, w, BD_LW, iw, BD_LIW), VLBE_OK);
+    p.max_steps = 100;
+    assert_int_equal(vlbe_bdf_init(&st2, &sys2, &p, 0, q0, v0, w2, BD_LW, iw2, BD_LIW), VLBE_OK);
+    assert_int_equal(vlbe_bdf_advance(&st, VLBE_R(1.0)), VLBE_EBOUND);
+    assert_int_equal((int)st.stats.steps, 30);
+    ASSERT_CLOSE((double)st.t, 0.3, 4 * EPS, 0.0);
+    for (k = 0; k < 3; ++k) {
+        const vlbe_status rc = vlbe_bdf_advance(&st, VLBE_R(1.0));
+        assert_int_equal(rc, k < 2 ? VLBE_EBOUND : VLBE_OK);
+    }
+    assert_int_equal(vlbe_bdf_advance(&st2, VLBE_R(1.0)), VLBE_OK);
+    assert_int_equal((int)st2.stats.steps, 100);
+    assert_true(st.t == VLBE_R(1.0) && st2.t == VLBE_R(1.0));
+    assert_memory_equal(st.q, st2.q, 2 * sizeof st.q[0]);
+    assert_memory_equal(st.v, st2.v, 2 * sizeof st.v[0]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -845,6 +885,7 @@ int main(void)
         cmocka_unit_test(test_hht_time_loop),
         cmocka_unit_test(test_hht_time_rheonomic),
         cmocka_unit_test(test_bdf_fixed_step_time),
+        cmocka_unit_test(test_bdf_advance_max_steps),
     };
     return cmocka_run_group_tests_name("test_contract_core", tests, NULL, NULL);
 }
