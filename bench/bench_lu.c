@@ -100,10 +100,12 @@ static double measure(int what, int n, const vlbe_real *A, vlbe_real *LU, int *p
     static double s[MAXS];
     double t1, t;
     int k = 1, ns, i;
-    /* warm-up and calibration: grow k until one batch takes >= 1 ms */
+    /* warm-up and calibration: grow k until one batch takes >= 1 ms (a
+       batch of 2^24 calls of >= 10 flops each takes longer on any machine;
+       the cap only guards against a clock that does not advance) */
     for (;;) {
         t = batch(what, k, n, A, LU, piv, B, B0) * (double)k;
-        if (t >= 1e-3) break;
+        if (t >= 1e-3 || k >= (1 << 24)) break;
         k *= 2;
     }
     t1 = t / (double)k;

@@ -147,6 +147,9 @@ static double bdf_freq_run(int ne, int bend, double rtol, double dt_out, double 
         bp.max_order = BDF_MAX_ORDER;
         bp.rtol = (vlbe_real)rtol;
         bp.atol = (vlbe_real)(BDF_ATOL_SCALE * rtol);
+        /* the sweep steps at 1e-5 .. 4e-5 s, 12..50 steps per output; more
+           than 5000 (steps below 1e-7 s) is a broken run, not a slow one */
+        bp.max_steps = 5000;
         rc = vlbe_bdf_init(&bs, &m->sys, &bp, VLBE_R(0.0), q0, v0, work, lw, iwork, liw);
         if (rc == VLBE_OK) {
             y[0] = (double)bs.q[idx];
