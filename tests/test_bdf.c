@@ -451,8 +451,8 @@ static void test_oscillator_stability(void **state)
    1 and equals the roots' to 1e3 EPS (rounding, as there) plus the
    parasitic root's share at the start of the fit, (|zeta_2| / |zeta_1|)^(n/2)
    relative: BDF2's two roots come close in modulus at large w h (ratio
-   0.76 at 51.2), where the fit sees both.  The largest deviation is 0.10
-   (m:damp_share_max) of its allowance. */
+   0.76 at 51.2), where the fit sees both.  The largest deviation is
+   0.10 (m:damp_share_max) of its allowance. */
 static void test_bdf12_always_damp(void **state)
 {
     double worst = 0.0;
@@ -633,14 +633,14 @@ static void test_fail_work_and_args(void **state)
     /* the exact lengths are enough; the workspace is all that is used
        (canaries around it stay intact) */
     {
+        const long cap = step_cap(0.5, pend_floor((double)p.rtol));
         size_t i;
         for (i = 0; i < WLEN; ++i) g_work[i] = (vlbe_real)-777.0;
         for (i = 0; i < 64; ++i) g_iwork[i] = -777;
         assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), q0, v0, g_work + 1, lw, g_iwork + 1,
                                        liw),
                          VLBE_OK);
-        assert_int_equal(advance_capped(&st, VLBE_R(0.5), step_cap(0.5, pend_floor((double)p.rtol))),
-                         VLBE_OK);
+        assert_int_equal(advance_capped(&st, VLBE_R(0.5), cap), VLBE_OK);
         assert_true(g_work[0] == (vlbe_real)-777.0 && g_work[lw + 1] == (vlbe_real)-777.0);
         assert_true(g_iwork[0] == -777 && g_iwork[liw + 1] == -777);
         /* t_stop / t_out behind t (no step taken) */
@@ -819,7 +819,8 @@ static double rs_rk4(long n)
             y[j] += h / 6.0 * (k[0][j] + 2.0 * k[1][j] + 2.0 * k[2][j] + k[3][j]);
     }
     rs_theta(RS_T, g);
-    return remainder(atan2(y[1] - sin(g[0]), y[0] - cos(g[0])) - g[0], 2.0 * 3.14159265358979323846);
+    return remainder(atan2(y[1] - sin(g[0]), y[0] - cos(g[0])) - g[0],
+                     2.0 * 3.14159265358979323846);
 }
 
 /* RK4 at h = 2e-4 and 1e-4 s (omega h = 0.2, 0.1 for the spring), once:
@@ -928,14 +929,15 @@ static void test_stale_rate(void **state)
 }
 
 /* Variable step, BDF2 (max_order 2: the spring is undamped), rtol = atol
-   1e-3, 1e-4 (and 1e-5 in double).  With the filtered estimate: 729
-   (m:rs_steps0), 1788 (m:rs_steps1), 3841 (m:rs_steps2) steps with 6
-   (m:rs_rej0), 2 (m:rs_rej1), 8 (m:rs_rej2) rejected, angle errors 4.2e-2
-   (m:rs_err0), 6.6e-3 (m:rs_err1), 1.2e-3 (m:rs_err2).  The plain estimate
-   (stiff_filter 0) at 1e-3: 1485 (m:rs_plain_steps) steps, 1123
-   (m:rs_plain_rej) rejected (76 (m:rs_plain_pct) %), error 0.10
-   (m:rs_plain_err); with the stale Newton rate of test_stale_rate as well,
-   the errors are tenths of a radian and do not fall with the tolerance.  Asserted: at most 5 % rejected, errors below 0.1, 0.02, 0.005
+   1e-3, 1e-4 (and 1e-5 in double).  With the filtered estimate:
+   729 (m:rs_steps0), 1788 (m:rs_steps1), 3841 (m:rs_steps2) steps with
+   6 (m:rs_rej0), 2 (m:rs_rej1), 8 (m:rs_rej2) rejected, angle errors
+   4.2e-2 (m:rs_err0), 6.6e-3 (m:rs_err1), 1.2e-3 (m:rs_err2).  The plain
+   estimate (stiff_filter 0) at 1e-3: 1485 (m:rs_plain_steps) steps,
+   1123 (m:rs_plain_rej) rejected (76 (m:rs_plain_pct) %), error
+   0.10 (m:rs_plain_err); with the stale Newton rate of test_stale_rate as
+   well, the errors are tenths of a radian and do not fall with the
+   tolerance.  Asserted: at most 5 % rejected, errors below 0.1, 0.02, 0.005
    rad (float: 0.1, 0.05; 3.9e-2 (m@flt:rs_err0), 1.6e-2 (m@flt:rs_err1):
    the spring length 1 + 1e-4 m carries 2e-7 m of rounding), fewer than
    1200 steps at 1e-3; and the plain estimate's cascade (> 30 % rejected;

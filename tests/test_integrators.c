@@ -184,8 +184,8 @@ static void test_pendulum_period_order(void **state)
         tu_measured(method ? "period_const_ga" : "period_const_hht", err[2] / (T * hs[2] * hs[2]));
         /* second order: halving h divides the error by 4 (1 + O(h^2)); the
            Hermite crossing error O(h^4) and the Newton error 1e-12 are far
-           below 1e-8; the ratios are 3.99 (m:period_ratio_min) .. 4.00
-           (m:period_ratio_max), so +-10% */
+           below 1e-8; the ratios are 3.99 (m:period_ratio_min) ..
+           4.00 (m:period_ratio_max), so +-10% */
         for (k = 0; k < 2; ++k) {
             rmin = fmin(rmin, err[k] / err[k + 1]);
             rmax = fmax(rmax, err[k] / err[k + 1]);
@@ -988,8 +988,8 @@ static double pend_psi_round(const pend_par *p, const vlbe_hht *st)
    both iterate identically, so B needs at least as many iterations; its
    accepted state has ||Psi||/sqrt(N) <= ftol; and ftol binds (A's residual
    exceeds it at some steps: the default modified Newton stops on the
-   increment test with residuals up to 3e-7 (m:psi_a) N in double, 4e-3
-   (m@flt:psi_a) N in float).  ftol: 1e-9 N in double, 1e-4 N in float,
+   increment test with residuals up to 3e-7 (m:psi_a) N in double,
+   4e-3 (m@flt:psi_a) N in float).  ftol: 1e-9 N in double, 1e-4 N in float,
    well above the rounding of Psi (a few eps times m g ~ 10 N): run C, full
    Newton with ftol = 0 on the same steps, ends at 3e-15 (m~:psi_full) N in
    double, 2e-6 (m@flt~:psi_full) N in float, held to ftol / 10.  Psi is
@@ -1131,8 +1131,8 @@ static void test_andrews_consistent_start(void **state)
                                              16),
                      VLBE_OK);
     /* a 13 x 13 saddle-point solve with inertias 1e-7..1e-5 and lengths
-       1e-2: the largest relative error of the nonzero q'' is 6e-16
-       (m~:qdd0_rel) in double, 3e-7 (m@flt~:qdd0_rel) in float (a few eps);
+       1e-2: the largest relative error of the nonzero q'' is
+       6e-16 (m~:qdd0_rel) in double, 3e-7 (m@flt~:qdd0_rel) in float (a few eps);
        1024 eps for the conditioning; the zero ones to 1024 eps of the scale
        (1.4e4 for q'', 1e2 for lambda) */
     {
