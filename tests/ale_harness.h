@@ -130,10 +130,10 @@ static inline void ale_fd_use(ale_fd *c, int which)
 /* J (10 x 10, analytic, d out / d var) against central differences
    (fd_check: step EPS^(1/3) times max(1, |x|)) over the columns j that are
    coordinates (skip: coordinates fixed in mode), rows likewise.  The error
-   of entry (i, j) is measured against the largest entry of the matrix
+   of entry (i, j) is measured against the scale of its row and column
    (analytic or differenced, so that a Jacobian that is wrongly zero cannot
-   pass): max |J_fd - J| / max(|J|, |J_fd|) <= tol.  Returns that measured
-   ratio. */
+   pass; fd_check, with its rounding floor): |J_fd - J| / scale_ij <= tol.
+   Returns the worst measured ratio. */
 static inline double check_jac(ale_fd *c, int which, const vlbe_real *J, unsigned skip,
                                double tol, const char *what)
 {

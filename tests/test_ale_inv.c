@@ -303,8 +303,9 @@ static double inv_eval(const fd_ctx *c, const vlbe_real *q, const vlbe_real *qd,
    of its Q (inv_eval) in every coordinate and rate, the step EPS^(1/3)
    max(1, |x|); rows and columns of a fixed p (c->mode) exactly zero and not
    differenced (a fixed p still sets L but is no coordinate).  The error of
-   an entry is measured against the largest entry of its matrix (analytic
-   or differenced, so that a wrongly zero matrix cannot pass), at most tol;
+   an entry is measured against the scale of its row and column (analytic
+   or differenced, so that a wrongly zero matrix cannot pass; fd_check,
+   with its rounding floor), at most tol;
    worst[0] (K), worst[1] (D): running maxima. */
 static void check_fd(fd_ctx *c, const vlbe_real *K, const vlbe_real *D, double tol,
                      double *worst)
@@ -348,7 +349,7 @@ static void test_inv_jacobians(void **state)
             assert_int_equal(vlbe_ale_inv_force(&el, c.mode, c.q, c.qd, Q, K, D), VLBE_OK);
             check_fd(&c, K, D, tol, worst);
         }
-    tu_report("inv K, D vs differences, / max entry", fmax(worst[0], worst[1]), tol);
+    tu_report("inv K, D vs differences, / entry scale", fmax(worst[0], worst[1]), tol);
 }
 
 /* A random ALE element state: make_state's (length L, stretch, curved,
@@ -517,8 +518,8 @@ static void test_ale_inv_jacobians(void **state)
                     vlbe_ale_force(&el, c.mode | VLBE_ALE_INV_AXIAL, c.q, c.qd, Q, K, D), VLBE_OK);
                 check_fd(&c, K, D, tol, worst);
             }
-    tu_report("ALE inv K vs differences, / max entry", worst[0], tol);
-    tu_report("ALE inv D vs differences, / max entry", worst[1], tol);
+    tu_report("ALE inv K vs differences, / entry scale", worst[0], tol);
+    tu_report("ALE inv D vs differences, / entry scale", worst[1], tol);
 }
 
 /* Bad input on ALE elements with the flag: the status of the Gauss route

@@ -233,16 +233,18 @@ static void fd_use(fd_ctx *c, int which, double h, int nout)
 }
 
 /* A Jacobian check (fd_check).  J (analytic) against central differences
-   of `which` (step h) with the absolute tolerance
-       tol = ct FD_ERR scale + cr EPS fmax / h,
-   scale = max(max|J|, max|Jfd|) (so that a Jacobian that is wrongly zero
-   cannot pass), the first term the truncation error of the difference (ct
-   = 0 where the differenced function is a quadratic: no truncation), the
-   second its rounding (each evaluation rounds outputs of size fmax, the
-   largest met by the differences).  Keeps in w (may be NULL) the check
-   with the worst ratio |Jfd - J| / tol: w[0] that ratio, w[1] its error
-   and w[2] its tolerance, both relative to scale; returns the ratio of
-   this one. */
+   of `which` (step h) with the absolute tolerance of entry (i, j)
+       tol = ct FD_ERR scale_ij + cr EPS fmax / h,
+   scale_ij = the largest |entry| of row i and column j of J and Jfd (so
+   that a Jacobian that is wrongly zero cannot pass), the first term the
+   truncation error of the difference (ct = 0 where the differenced
+   function is a quadratic: no truncation), the second its rounding (each
+   evaluation rounds outputs of size fmax, the largest met by the
+   differences; at least 16 EPS fmax / h, and never above the tolerance
+   with the largest entry of the matrix as scale: fd_harness.h).  Keeps
+   in w (may be NULL) the check with the worst ratio |Jfd - J| / tol: w[0]
+   that ratio, w[1] its error and w[2] its tolerance, both relative to the
+   entry's scale; returns the ratio of this one. */
 static double jac_check(fd_ctx *c, int which, double h, const vlbe_real *J, double ct, double cr,
                         double *w, const char *what)
 {
@@ -258,8 +260,8 @@ static double jac_check(fd_ctx *c, int which, double h, const vlbe_real *J, doub
     return st.ratio;
 }
 
-/* "name: error, tolerance (both relative to the largest entry)" of the
-   check with the worst error / tolerance */
+/* "name: error, tolerance (both relative to the entry's scale, fd_check)"
+   of the check with the worst error / tolerance */
 static void report3(const char *name, const double *w) { tu_report(name, w[1], w[2]); }
 
 /* ======================================================================= */
@@ -343,11 +345,11 @@ static void test_force_jacobians(void **state)
                 }
             }
         }
-        snprintf(buf, sizeof buf, "%s: K = dQ/dq, err / max|K|", names[im]);
+        snprintf(buf, sizeof buf, "%s: K = dQ/dq, err / entry scale", names[im]);
         report3(buf, wk);
-        snprintf(buf, sizeof buf, "%s: D = dQ/dq', err / max|D|", names[im]);
+        snprintf(buf, sizeof buf, "%s: D = dQ/dq', err / entry scale", names[im]);
         report3(buf, wd);
-        if (im == 1) report3("stiff: velocity part of K, err / max|Kv|", wv);
+        if (im == 1) report3("stiff: velocity part of K, err / entry scale", wv);
     }
 }
 
@@ -412,7 +414,7 @@ static void test_mass_jacobian(void **state)
             (void)jac_check(&c, FD_MA_OF_Q, FD_STEP, Mq, 64.0, 16.0, w, "Mq");
         }
     }
-    report3("Mq = d(M a)/dq, err / max|Mq|", w);
+    report3("Mq = d(M a)/dq, err / entry scale", w);
 }
 
 /* ======================================================================= */
