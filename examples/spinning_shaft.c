@@ -399,7 +399,8 @@ static inline double ss_err_at(const ss_scene *s, int k, double z)
    over the run, *zlo the load position z / l of the largest |low|.  The
    coefficients by the trapezoid rule over the samples (m = 1, 2, ..: m/2
    cycles per traverse). */
-static inline void ss_split(const ss_scene *s, int k, double cyc, double *lo, double *hi, double *zlo)
+static inline void ss_split(const ss_scene *s, int k, double cyc, double *lo, double *hi,
+                            double *zlo)
 {
     const double PI = 3.14159265358979323846, ta = s->t[0], tb = s->t[s->ns - 1];
     const double *e = s->e[k];
@@ -478,7 +479,8 @@ static int ss_bending_dofs(const ss_scene *s, int *idx)
 static inline int ss_frozen_freq(ss_scene *s, int ne, double z, int nf, double *w)
 {
     const size_t n = (size_t)(SS_NE_MAX + 1) * 7;
-    vlbe_real *M = (vlbe_real *)malloc(n * n * sizeof *M), *K = (vlbe_real *)malloc(n * n * sizeof *K);
+    vlbe_real *M = (vlbe_real *)malloc(n * n * sizeof *M);
+    vlbe_real *K = (vlbe_real *)malloc(n * n * sizeof *K);
     vlbe_real Mb[4 * SS_NE_MAX * SS_NE_MAX], Kb[4 * SS_NE_MAX * SS_NE_MAX], lam[2 * SS_NE_MAX];
     vlbe_real *wk = NULL;
     int idx[2 * SS_NE_MAX], nb = 0, i, j, info = 0, rc = -1;
@@ -568,9 +570,9 @@ int main(int argc, char **argv)
     ss_scene *s = &ss_main_scene;
     int c, k, ir, i;
     printf("spinning shaft under a moving, turning load (vlbse section 4.3): ALE beam-shaft\n"
-           "elements, the load on a node, the shaft starting at rest.  Largest (U - U_exact) / U_s\n"
-           "over the traverse (load position z / l where it occurs); exact = eq. (59) [without\n"
-           "its rhoJ terms], 30+ modes (series converged to 1e-6 U_s)\n");
+           "elements, the load on a node, the shaft starting at rest.  Largest\n"
+           "(U - U_exact) / U_s over the traverse (load position z / l where it occurs);\n"
+           "exact = eq. (59) [without its rhoJ terms], 30+ modes (series converged to 1e-6 U_s)\n");
     for (c = 0; c < 2; ++c) {
         const double a = ss_case_a[c], kw = ss_case_kw[c];
         ss_err err, err0, paper;
@@ -618,8 +620,8 @@ int main(int argc, char **argv)
                 }
             if (ne == 4 && !fixed && runs[ir].z0 == SS_Z0) {
                 ss_plot(s, c, nm, outdir);
-                printf("   split at %g cycles per traverse: largest |low| (z / l) / largest |high|\n"
-                       "                                ", SS_SPLIT_CYC);
+                printf("   split at %g cycles per traverse: largest |low| (z / l), largest "
+                       "|high|\n                                ", SS_SPLIT_CYC);
                 for (k = 0; k < 4; ++k) {
                     double lo, hi, zlo;
                     ss_split(s, k, SS_SPLIT_CYC, &lo, &hi, &zlo);
@@ -651,9 +653,11 @@ int main(int argc, char **argv)
             return 1;
         }
         printf("   %5.2f  ", zf[i]);
-        for (k = 0; k < 3; ++k) printf("  %+7.3f", 100.0 * (w4[k] / ((k + 1) * (k + 1) * s->ref.w1) - 1.0));
-        printf("    ");
-        for (k = 0; k < 3; ++k) printf("  %+7.3f", 100.0 * (w6[k] / ((k + 1) * (k + 1) * s->ref.w1) - 1.0));
+        for (k = 0; k < 6; ++k) {
+            const double wex = (double)((k % 3 + 1) * (k % 3 + 1)) * s->ref.w1; /* n^2 omega_1 */
+            const double w = k < 3 ? w4[k] : w6[k - 3];
+            printf("%s  %+7.3f", k == 3 ? "    " : "", 100.0 * (w / wex - 1.0));
+        }
         printf("\n");
     }
     return 0;

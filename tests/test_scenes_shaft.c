@@ -611,7 +611,8 @@ static void z0_independent(void **state)
 static void herm_freq(int ne, double z, double EJ, double rhoA, int nf, double *w)
 {
     const int nd = 2 * (ne + 1), nb = nd - 2;
-    double K[(2 * SS_NE_MAX + 2) * (2 * SS_NE_MAX + 2)], M[(2 * SS_NE_MAX + 2) * (2 * SS_NE_MAX + 2)];
+    double K[(2 * SS_NE_MAX + 2) * (2 * SS_NE_MAX + 2)];
+    double M[(2 * SS_NE_MAX + 2) * (2 * SS_NE_MAX + 2)];
     vlbe_real Mb[4 * SS_NE_MAX * SS_NE_MAX], Kb[4 * SS_NE_MAX * SS_NE_MAX], lam[2 * SS_NE_MAX];
     vlbe_real *wk = (vlbe_real *)malloc(ex_eig_work_len(nb) * sizeof *wk);
     int e, i, j, info = 0, map[2 * SS_NE_MAX + 2];
@@ -624,10 +625,15 @@ static void herm_freq(int ne, double z, double EJ, double rhoA, int nf, double *
         ss_mesh(ne, SS_L, z * SS_L, 0.0, e + 1, &pb, &pd);
         L = pb - pa;
         {
-            const double k[16] = {12, 6 * L, -12, 6 * L, 6 * L, 4 * L * L, -6 * L, 2 * L * L,
-                                  -12, -6 * L, 12, -6 * L, 6 * L, 2 * L * L, -6 * L, 4 * L * L};
-            const double m[16] = {156, 22 * L, 54, -13 * L, 22 * L, 4 * L * L, 13 * L, -3 * L * L,
-                                  54, 13 * L, 156, -22 * L, -13 * L, -3 * L * L, -22 * L, 4 * L * L};
+            const double L2 = L * L;
+            const double k[16] = {12,    6 * L,  -12,    6 * L,
+                                  6 * L, 4 * L2, -6 * L, 2 * L2,
+                                  -12,   -6 * L, 12,     -6 * L,
+                                  6 * L, 2 * L2, -6 * L, 4 * L2};
+            const double m[16] = {156,     22 * L, 54,      -13 * L,
+                                  22 * L,  4 * L2, 13 * L,  -3 * L2,
+                                  54,      13 * L, 156,     -22 * L,
+                                  -13 * L, -3 * L2, -22 * L, 4 * L2};
             for (i = 0; i < 4; ++i)
                 for (j = 0; j < 4; ++j) {
                     K[(2 * e + i) * nd + 2 * e + j] += EJ / (L * L * L) * k[4 * i + j];
@@ -719,7 +725,8 @@ static void frozen_frequencies(void **state)
                     tu_report("uniform mesh: rel freq error", e, lead + FR_TOL(k + 1));
                     assert_true(e > -FR_TOL(k + 1) && e <= lead + FR_TOL(k + 1));
                     if (ne == 4) {
-                        static const char *const key[3] = {"uniform4_mode1_lead", "uniform4_mode2_lead",
+                        static const char *const key[3] = {"uniform4_mode1_lead",
+                                                           "uniform4_mode2_lead",
                                                            "uniform4_mode3_lead"};
                         tu_measured(key[k], e / lead);
                     }
