@@ -16,8 +16,11 @@
    max|out| / h as a floor (tests/fd_harness.h: never looser than against
    the largest entry of the matrix).  Set VLBE_TEST_REPORT=1 to
    print each measured error next to its tolerance; "measured" below is
-   the worst of the double and the float build.  Layout per node [r(3),
-   r'(3), theta, p] (16 per element) or [r, r', p] (14, VLBE_ALE3_NO_SPIN);
+   the double -O2 build (tag m:), the float build where it is quoted too
+   (m@flt:), and numbers of a few EPS are orders of magnitude (m~:, they
+   move with the compiler); tests/measured.sh checks them against the
+   report.  Layout per node [r(3), r'(3), theta, p] (16 per element) or
+   [r, r', p] (14, VLBE_ALE3_NO_SPIN);
    "all 64 modes" = every OR of NO_SPIN, NO_BEND, NO_TWIST, NO_DAMP, FIX_P1,
    FIX_P2.  Random states (make_state): chord of length 1.0 .. 1.4 in a
    random 3D direction, stretched +-15 %, slopes turned off it in random 3D
@@ -33,12 +36,13 @@
                           entries reach L^-5 |r'|^-5 terms whose third
                           derivatives (the truncation error) are tens times
                           the entries, as for the planar element; measured
-                          15 FD (K), 2.5 FD (D).
+                          15 (m:fj_K_fd) FD (K), 3.0 (m:fj_D_fd) FD (D; 3.9
+                          (m@flt:fj_D_fd) in float).
      mass_jacobian        d(M a)/dq vs differences of vlbe_ale3_mass (M depends
                           on NO_SPIN, FIX_P1/2 only: the other bits give the
                           same bits); both p fixed: exactly zero.  Tol 64 FD as
                           for K (M polynomial in e, rational in L); measured
-                          2.1 FD.
+                          1.6 (m:mj_fd) FD.
      point_force_jacobian, point_torque_jacobian  K vs differences of Q at
                           interior points (all columns) and at the ends (no
                           p-columns: a p step would leave the element);
@@ -49,8 +53,8 @@
                           p2] (also 4 EPS outside), EARG for the torque
                           without spin, no output written.  Tol 64 FD (third
                           p-derivatives of the basis, ~L^-3 with large
-                          coefficients); measured 14 FD (force), 4.3 FD
-                          (torque).
+                          coefficients); measured 7.9 (m:pf_fd) FD
+                          (force), 4.2 (m:pt_fd) FD (torque).
      energy_gradient      both p fixed, undamped, qd = 0: Q = -d(U + V)/dq by
                           differences of E[1] + E[2], every mode with both p
                           fixed: the string (NO_BEND: axial integrand of
@@ -64,35 +68,40 @@
                           planar element (the 3D element has no CONSERVATIVE
                           mode).  Scale max(|Q|, |grad|, max|K|) (the FD
                           error follows the derivatives of U, not |Q|), tol 16
-                          FD (U quartic in the slopes); measured 2.0 FD.
+                          FD (U quartic in the slopes); measured
+                          2.0 (m:eg_fd) FD.
      kinetic_energy       E[0] = qd^T M qd / 2 to 64 EPS of sum |terms|
-                          (measured 0.7); M symmetric to 4 EPS of max|M| (the
+                          (measured 0 (m:ke_T) in double, 0.7 (m@flt~:ke_T)
+                          in float); M symmetric to 4 EPS of max|M| (the
                           code forms (w N_i) N_j and (w N_j) N_i: not bit for
-                          bit; measured 0.23); total mass of the position
-                          block rhoA L per direction to 16 EPS (measured 1);
-                          theta block rhoI L [1/3 1/6; 1/6 1/3] to 16 EPS
-                          (measured 1.4), no theta-position coupling at fixed
+                          bit; measured 0.23 (m~:ke_sym)); total mass of the
+                          position block rhoA L per direction to 16 EPS
+                          (measured 0.5 (m~:ke_mass)); theta block rhoI L
+                          [1/3 1/6; 1/6 1/3] to 16 EPS (measured
+                          1.4 (m~:ke_theta)), no theta-position coupling at fixed
                           p (exact zeros); both p fixed: the classic ANCF
                           cable matrix (x) I3, 64 EPS per entry (measured
-                          2.7); positive semidefinite: the e/theta block
-                          positive definite (Cholesky), x^T M x > 16 EPS
-                          sum|terms| for random x; a free p_k has the null
-                          vector (r_k', r''(p_k), theta', 1) of the
+                          2.7 (m~:ke_classic)); positive semidefinite: the
+                          e/theta block positive definite (Cholesky), x^T M
+                          x > 16 EPS sum|terms| for random x; a free p_k has
+                          the null vector (r_k', r''(p_k), theta', 1) of the
                           re-parametrization: M x = 0 to 64 EPS max|M| |x|
-                          (measured 1.3).
+                          (measured 1.3 (m~:ke_null)).
      planar_reproduction  theta = 0, z = 0: the 3D element (EJ = EI, the same
                           default Gauss points) against vlbe_ale_force/_mass in
                           plane, free and fixed p, damped and undamped, bending
                           on and off, both layouts: Q, K, D, M to 32 EPS of the
                           largest entry (the same integrals summed in another
-                          order; measured 1.8 EPS, i.e. ~4e-16 in double, far
-                          inside the issue's 1e-10), Q of the planar Q-alone
-                          route to 64 EPS (that route differs from the
-                          planar Jacobian route by up to 64 EPS itself;
-                          measured 7.5); out-of-plane rows of Q (z, z', theta)
-                          exactly zero; K, D, M do not couple the plane to z,
-                          z', theta (reflection symmetry; asserted to 32 EPS,
-                          measured exactly 0).
+                          order; measured 2.0 (m~:pl_QKDM) EPS, i.e.
+                          ~4e-16 in double, far inside the required 1e-10),
+                          Q of the planar Q-alone route to 64 EPS (that
+                          route differs from the planar Jacobian route by up
+                          to 64 EPS itself; measured 4.0 (m~:pl_Qalone),
+                          7.1 (m@flt~:pl_Qalone) in float);
+                          out-of-plane rows of Q (z, z', theta) exactly zero;
+                          K, D, M do not couple the plane to z, z', theta
+                          (reflection symmetry; asserted to 32 EPS, measured
+                          exactly 0 (m:pl_couple)).
      rigid_motion         a straight unstretched element rotated (angles to
                           100 rad about random axes) and translated (|r| to
                           10), uniform spin angle, rigid velocity field (v0 +
@@ -100,13 +109,14 @@
                           load: Q = 0 to 64 EPS S, S = (1 + |r|/L) (EA + EJ/L^2
                           + (c_eps EA + c_kap EJ/L^2) |v|/L) (eps from
                           positions of size |r| cancels to EPS |r|/L, r'' to
-                          EPS |r|/L^2, the rates to EPS |v|/L); measured 0.5.
+                          EPS |r|/L^2, the rates to EPS |v|/L); measured
+                          0.3 (m~:rm_Q).
                           Rotation covariance of a curved, twisted, moving
                           state (the load rotated too): Q(Bq) = B Q(q), K, D
                           -> B K B^T (B rotates the 3-blocks, keeps theta and
                           p), all 64 modes, to 64 EPS (1 + |shift|) of the
                           largest entry (rotated data round differently;
-                          measured 16 EPS).
+                          measured 16 (m~:rm_rot) EPS).
      twist_energy         straight unstretched shaft, theta1 = 0, theta2 = phi
                           L (|phi| 1e-3 .. 5, L 0.4 .. 3): U = GI phi^2 L / 2
                           to 16 EPS plus the strain energy of the rounded eps,
@@ -115,7 +125,7 @@
                           16 EPS; free p: Q_p1 = -GI phi^2, Q_p2 = +GI phi^2
                           (dphi/dp1 = phi/L = -dphi/dp2) to 16 EPS + 64 EPS S;
                           other rows 0 to 64 EPS S; NO_TWIST: all zero.
-                          Measured 0.13 of the tolerance at most.
+                          Measured 0.13 (m:tw_ratio) of the tolerance at most.
      straight_shaft_spin  straight unstretched shaft, uniform spin angle and
                           rate, moving axially at speed v with the nodes at
                           arbitrary p' (r_k rates t (p_k' + v)), all 64 modes:
@@ -127,22 +137,24 @@
                           for this motion's q'' = 0.  Tol 64 EPS S, S as in
                           rigid_motion plus the terms that cancel: rhoA (p'^2
                           + p' |v|) and rhoI (p'^2 |theta|/L + p' |Omega|),
-                          times (1 + |r|/L); measured 0.64.
+                          times (1 + |r|/L); measured 0.69 (m~:ss_Q).
      curvature            vlbe_ale3_strain on a cubic Hermite arc in a tilted
                           plane: |kappa R - 1| <= 1.05 theta^2/12, at the
                           middle theta^2/24 and at the ends theta^2/12 within
                           5 %, ratio 3.5 .. 4.5 per halving (the interpolation
                           error of r'', as in the planar curvature_arc), plus
                           rounding 32 EPS (1 + |c|/R) / theta^2 (float at
-                          theta = 0.1: 1.03 of theta^2/12); phi = 0.5 (linear
-                          theta) to 8 EPS (1 + 1/L).  Straight: kappa exactly
+                          theta = 0.1: 1.03 (m@flt:cv_end) of theta^2/12);
+                          phi = 0.5 (linear theta) to 8 EPS (1 + 1/L).
+                          Straight: kappa exactly
                           0 along a coordinate axis through the origin (the
                           other components are exact zeros), else 32 EPS (1 +
-                          |r|/L)/L (measured 5.0); eps = (s^2-1)/2 to 32 EPS
+                          |r|/L)/L (measured 2.7 (m~:cv_straight), float
+                          5.0 (m@flt~:cv_straight)); eps = (s^2-1)/2 to 32 EPS
                           (1 + |r|/L).  K and D at kappa = 0 (exactly and to
                           rounding), moving and twisting, all 64 modes: finite
                           and equal to the differences, tol 64 FD as in
-                          force_jacobians (measured 14 FD).
+                          force_jacobians (measured 14 (m:cv_KD_fd) FD).
      errors_eval          ELENGTH (p2 = p1, p2 < p1, every mode), ENONFINITE
                           (NaN, +-Inf in every entry of q and qd, also a fixed
                           p's rate; in p, F, T), ESINGULAR (zero slope: force,
@@ -162,8 +174,8 @@
                           Mq, U, V) bit for bit (H1 = 1 - xi and H2 = xi have
                           exactly opposite partials, so the spin terms add
                           exact zeros); T more by rhoI Omega^2 L / 2 to 16 EPS
-                          of T (measured 3.7).  NO_TWIST = GI 0, NO_DAMP =
-                          every c 0, NO_BEND = EJ 0, and each bit given as an
+                          of T (measured 2.8 (m~:rf_T)).  NO_TWIST = GI 0,
+                          NO_DAMP = every c 0, NO_BEND = EJ 0, and each bit given as an
                           element flag = as a mode: bit for bit (the same code
                           runs; a zero Kelvin-Voigt coefficient adds exact
                           zeros).
@@ -171,14 +183,15 @@
                           string force Q, K, D (axial degree 8, twist, inertia,
                           load) with (nm, ns) = (4, 5) vs (8, 8): 64 EPS of the
                           largest entry (Gauss sums of terms a few times the
-                          result); measured 5.4 EPS.
-     transport_inertia_lagrange  (beyond the issue's list) Q_p with spin
+                          result); measured 6.1 (m~:qd_eps) EPS.
+     transport_inertia_lagrange  (beyond the required list) Q_p with spin
                           against Lagrange's equations of T: Mdot qd - dT/dq =
                           Q_p + B, B the end terms rho [p' G^T v] and the
                           kinetic fluxes, for r and for theta (omega_k =
                           theta_k' - theta'(p_k) p_k'); EA = EJ = GI = 0, f =
                           0.  Tol 16 FD of max(|Q|, |Mdot qd|, |dT/dq|) (T
-                          quadratic in qd, rational in L); measured 3.2 FD.
+                          quadratic in qd, rational in L); measured
+                          3.5 (m:lg_fd) FD.
      dissipation          (beyond the list) Kelvin-Voigt power, both p fixed:
                           qd . (Q(q, qd) - Q(q, 0)) = -sum_g w_g L (c_eps EA
                           eps'^2 + c_kap EJ |k'|^2 + c_phi GI phi'^2), rates
@@ -187,7 +200,7 @@
                           at k = 0).  The value check of the twist and the 3D
                           bending damping that K/D consistency cannot give.
                           Tol 16 FD of sum |qd_i| (|dQ_i| + |Q0_i|) +
-                          |reference|; measured 0.6 FD. */
+                          |reference|; measured 0.5 (m:ds_fd) FD. */
 #include "test_util.h"
 #include "../ancf_ale.h"
 #include "ale_fixtures.h"
@@ -524,6 +537,8 @@ static void test_force_jacobians(void **state)
     }
     tu_report("K = dQ/dq (64 modes), err / entry scale", wk, tol);
     tu_report("D = dQ/dq' (64 modes), err / entry scale", wd, tol);
+    tu_measured("fj_K_fd", wk / FD_ERR);
+    tu_measured("fj_D_fd", wd / FD_ERR);
 }
 
 /* ======================================================================= */
@@ -569,6 +584,7 @@ static void test_mass_jacobian(void **state)
         }
     }
     tu_report("Mq = d(M a)/dq, err / entry scale", w, tol);
+    tu_measured("mj_fd", w / FD_ERR);
 }
 
 /* ======================================================================= */
@@ -666,6 +682,7 @@ static void test_point_force_jacobian(void **state)
         }
     }
     tu_report("point force K, err / entry scale", w, tol);
+    tu_measured("pf_fd", w / FD_ERR);
 }
 
 static void test_point_torque_jacobian(void **state)
@@ -720,6 +737,7 @@ static void test_point_torque_jacobian(void **state)
         }
     }
     tu_report("point torque K, err / entry scale", w, tol);
+    tu_measured("pt_fd", w / FD_ERR);
 }
 
 /* ======================================================================= */
@@ -823,6 +841,7 @@ static void test_energy_gradient(void **state)
     tu_report("string: -Q - grad(U + V), p fixed", ws, tol);
     tu_report("bending: -Q - grad(U + V), p fixed, same rule", wb, tol);
     tu_report("string, free p: -Q - grad(U + V) + end fluxes", wf, tol);
+    tu_measured("eg_fd", fmax(fmax(ws, wb), wf) / FD_ERR);
 }
 
 /* ======================================================================= */
@@ -977,6 +996,12 @@ static void test_kinetic_energy(void **state)
     tu_report("theta block rhoI L/3, L/6, in EPS", wth, 16.0);
     tu_report("classic mass (p fixed), in EPS per entry", wc, 64.0);
     tu_report("M x_null (free p), in EPS max|M| |x|", wn, 64.0);
+    tu_measured("ke_T", wt);
+    tu_measured("ke_sym", wsym);
+    tu_measured("ke_mass", wm);
+    tu_measured("ke_theta", wth);
+    tu_measured("ke_classic", wc);
+    tu_measured("ke_null", wn);
 }
 
 /* ======================================================================= */
@@ -1097,6 +1122,9 @@ static void test_planar_reproduction(void **state)
     tu_report("planar vs 3D: D, in EPS max|D|", wd, 32.0);
     tu_report("planar vs 3D: M, in EPS max|M|", wmm, 32.0);
     tu_report("3D: K coupling plane / out of plane, in EPS max|K|", wx, 32.0);
+    tu_measured("pl_QKDM", fmax(fmax(wq, wk), fmax(wd, wmm)));
+    tu_measured("pl_Qalone", wq1);
+    tu_measured("pl_couple", wx);
 }
 
 /* ======================================================================= */
@@ -1175,6 +1203,7 @@ static void test_rigid_motion(void **state)
             }
         }
     tu_report("rigid motion |Q| in EPS (1 + |r|/L) (EA + EJ/L^2 + damping)", w, 64.0);
+    tu_measured("rm_Q", w);
 
     /* Q(B q) = B Q(q), K(B q) = B K(q) B^T, D likewise, for a curved,
        twisted, moving state: B rotates every 3-block (positions, slopes,
@@ -1269,6 +1298,7 @@ static void test_rigid_motion(void **state)
     }
     tu_report("rotated state: Q(Bq) - B Q(q), in EPS max|Q|", wr, 64.0 * 3.0);
     tu_report("rotated state: K, D, in EPS max", wkr, 64.0 * 3.0);
+    tu_measured("rm_rot", fmax(wr, wkr));
 }
 
 /* ======================================================================= */
@@ -1351,6 +1381,7 @@ static void test_twist_energy(void **state)
     tu_report("nodal torques -+GI phi, / 16 EPS", wt, 1.0);
     tu_report("p-rows -+GI phi^2, / (16 EPS |Q| + 64 EPS S)", wp, 1.0);
     tu_report("other rows, in EPS (1 + |r|/L)(EA + EJ/L^2)", wo, 64.0);
+    tu_measured("tw_ratio", fmax(fmax(wu, wt), fmax(wp, wo / 64)));
 }
 
 /* ======================================================================= */
@@ -1423,6 +1454,7 @@ static void test_straight_shaft_spin(void **state)
         }
     }
     tu_report("straight spinning shaft |Q|, in EPS S", w, 64.0);
+    tu_measured("ss_Q", w);
 }
 
 /* ======================================================================= */
@@ -1494,6 +1526,7 @@ static void test_curvature(void **state)
     }
     tu_report("tilted arc: kap err at middle / (theta^2/24)", wm, 1.05);
     tu_report("tilted arc: kap err at ends / (theta^2/12)", we, 1.05);
+    tu_measured("cv_end", we);
 
     /* straight: along a coordinate axis through the origin the other two
        components are exactly zero, so r' x r'' and kappa are exactly 0; in
@@ -1533,6 +1566,7 @@ static void test_curvature(void **state)
         }
     }
     tu_report("straight: kappa, in EPS (1 + |r|/L) / L", ws, 32.0);
+    tu_measured("cv_straight", ws);
 
     /* K and D at kappa = 0 (axis-aligned, kappa exactly 0, unstretched)
        and at a straight stretched state in a general direction: finite and
@@ -1581,6 +1615,7 @@ static void test_curvature(void **state)
     }
     tu_report("straight: K = dQ/dq, err / entry scale", wk, tol);
     tu_report("straight: D = dQ/dq', err / entry scale", wd, tol);
+    tu_measured("cv_KD_fd", fmax(wk, wd) / FD_ERR);
 }
 
 /* ======================================================================= */
@@ -2040,6 +2075,7 @@ static void test_reduced_equals_full(void **state)
         }
     }
     tu_report("T spin - T no spin - rhoI Om^2 L/2, in EPS T", wst, 16.0);
+    tu_measured("rf_T", wst);
 }
 
 /* ======================================================================= */
@@ -2105,6 +2141,7 @@ static void test_quadrature(void **state)
     }
     tu_report("mass, mass_jac nm = 4, 5 vs 8, in EPS of max", wm / EPS, 64.0);
     tu_report("string force (4, 5) vs (8, 8), in EPS of max", wf / EPS, 64.0);
+    tu_measured("qd_eps", fmax(wm, wf) / EPS);
 }
 
 /* ======================================================================= */
@@ -2175,6 +2212,7 @@ static void test_transport_inertia_lagrange(void **state)
         }
     }
     tu_report("Mdot qd - dT/dq - Q_p - B (with spin)", w, tol);
+    tu_measured("lg_fd", w / FD_ERR);
 }
 
 /* ======================================================================= */
@@ -2280,6 +2318,7 @@ static void test_dissipation(void **state)
     }
     tu_report("dissipation, curved string (+ twist)", wa, tol);
     tu_report("dissipation, straight beam (+ twist)", wb, tol);
+    tu_measured("ds_fd", fmax(wa, wb) / FD_ERR);
 }
 
 int main(void)

@@ -827,8 +827,10 @@ static void make_long_chain(tu_rng *g, int ne, double epsn, double th0, double o
    difference (|r'|^2 - 1)/2 ~ eps, so its rounding ~EPS relative to 1 is
    EPS/eps relative to the force on every route (a change of the inputs by
    one ulp moves Q that much: at eps = 1e-4 in double 2.2e-12 of max|Q|,
-   the floor of any route); Q to 8 EPS/eps of max|Q| (measured worst ~2.5
-   against long double, both routes ~1-2 each); K and D are dominated by
+   the floor of any route); Q to 8 EPS/eps of max|Q| (measured worst, in
+   EPS/eps: system route against long double 2.6 (m:lc_sys_ld), Gauss
+   route 2.0 (m:lc_gauss_ld), the two routes apart 2.7 (m:lc_sys_g)); K
+   and D are dominated by
    their O(EA) geometric part EA r r^T (and EA c r r^T), rounded to a few
    EPS: 64 EPS of max|K|, max|D|.  The same bounds in float (EPS/eps =
    1.2e-3).  The element invariants (vlbe_ale_inv_chain_force with the
@@ -853,7 +855,7 @@ static void test_sys_long_chain(void **state)
     vlbe_ale_mat m = mat_std();
     vlbe_ale_elem el;
     tu_rng g = tu_rng_seed(705);
-    double ws[4] = {0.0, 0.0, 0.0, 0.0}, we[4] = {0.0, 0.0, 0.0, 0.0}, wp = 0.0;
+    double ws[4] = {0.0, 0.0, 0.0, 0.0}, we[4] = {0.0, 0.0, 0.0, 0.0}, wp = 0.0, wgl = 0.0;
     int in, ia, io, id, i;
     (void)state;
     m.EA = VLBE_R(2.8e7);
@@ -899,6 +901,7 @@ static void test_sys_long_chain(void **state)
                     ws[1] = fmax(ws[1], rel_diff(n, Q, Ql) / tq);
                     ws[2] = fmax(ws[2], rel_diff(n * n, Kd, Kg) / tk);
                     ws[3] = fmax(ws[3], rel_diff(n * n, Dd, Dg) / tk);
+                    wgl = fmax(wgl, rel_diff(n, Qg, Ql) / tq); /* reported */
                     /* Q alone (its own contraction order) */
                     assert_int_equal(vlbe_ale_inv_sys_force(&sys, x, v, Q, NULL, NULL), VLBE_OK);
                     ASSERT_VEC_CLOSE(Q, Qg, n, 0, tq * qm);
@@ -932,6 +935,9 @@ static void test_sys_long_chain(void **state)
     tu_report("long chain: elem K vs Gauss own frame, / its bound", we[2], 1.0);
     tu_report("long chain: elem D vs Gauss own frame, / (64 EPS)", we[3], 1.0);
     tu_report("long chain: Gauss on nodal values, / (8 EPS/eps)", wp, 1e30);
+    tu_measured("lc_sys_ld", 8 * ws[1]);
+    tu_measured("lc_gauss_ld", 8 * wgl);
+    tu_measured("lc_sys_g", 8 * ws[0]);
 }
 
 /* Straight unstretched chain (r' = t unit everywhere: eps = 0), rotated and

@@ -20,7 +20,9 @@
    L < 4.7e-10, a squared slope of 1e24 times a stiffness overflows, a
    weight ratio of 1e60 is out of float's range); each test says which.
    No tolerance is used: the checks are status codes, finiteness and
-   bitwise equality.
+   bitwise equality.  VLBE_TEST_REPORT=1 prints how many calls the extreme
+   sweep made and how many of them returned VLBE_OK (a sweep whose calls
+   were all refused would check no finite output).
 
    Tests
      ale_force_tiny_length   L = 1e-100 (float 1e-30): L^-4 overflows
@@ -696,12 +698,15 @@ static void test_cr2d_position_overflow(void **state)
 
 /* -- a sweep over extreme inputs ---------------------------------------- */
 static int sweep_viol_;
+static int sweep_calls_, sweep_ok_; /* for the report: how many calls, how many VLBE_OK */
 
 static void sweep_check(const char *what, const char *cs, vlbe_status st, R *const *o,
                         const int *n, int no)
 {
     int i;
+    ++sweep_calls_;
     if (st == VLBE_OK) {
+        ++sweep_ok_;
         for (i = 0; i < no; ++i)
             if (!all_fin(o[i], n[i])) {
                 print_message("%s (%s): VLBE_OK with a non-finite output %d\n", what, cs, i);
@@ -814,7 +819,7 @@ static void test_extreme_sweep(void **state)
     unsigned c;
     int k;
     (void)state;
-    sweep_viol_ = 0;
+    sweep_viol_ = sweep_calls_ = sweep_ok_ = 0;
     for (c = 0; c < sizeof cs_ / sizeof cs_[0]; ++c) {
         const char *cs = cs_[c].nm;
         const R L = cs_[c].L, sl = cs_[c].sl, rt = cs_[c].rate;
@@ -844,6 +849,12 @@ static void test_extreme_sweep(void **state)
         }
         sweep_3d(cs, q3, qd3);
     }
+    if (tu_report_on())
+        print_message("    extreme sweep: %d calls, %d VLBE_OK (outputs finite), %d refused "
+                      "(outputs untouched)\n",
+                      sweep_calls_, sweep_ok_, sweep_calls_ - sweep_ok_);
+    tu_measured("sweep_calls", (double)sweep_calls_);
+    tu_measured("sweep_ok", (double)sweep_ok_);
     assert_int_equal(sweep_viol_, 0);
 }
 

@@ -15,7 +15,9 @@
    the paper by quadrature here, textbook matrices typed from the books,
    closed forms of rigid motion), never from the code under test.  Set
    VLBE_TEST_REPORT=1 in the environment to print the measured error of
-   each check next to its tolerance.
+   each check next to its tolerance ("measured" below: the double -O2
+   build, tag m:, the float build where quoted, m@flt:; tests/measured.sh
+   checks them against the report).
 
    Tests
      force_jacobians        K = dQ/dq, D = dQ/dq' vs central differences, all 8
@@ -280,8 +282,9 @@ static void report3(const char *name, const double *w) { tu_report(name, w[1], w
    number of turns).  Tolerance 64 FD (2.4e-9 double, 1.5e-3 float) of the
    largest entry for the truncation (third derivatives of Q through 1/l^3
    and the rotation of the frame, a few times the entries) plus 16 EPS of
-   max|Q| / h for the rounding of Q.  Measured 5.8 FD (O(1)) and 1 FD
-   (stiff) in double, 3.9 and 1 FD in float.
+   max|Q| / h for the rounding of Q.  Measured 4.9 (m:fj_K0) FD (O(1))
+   and 1 (m:fj_K1) FD (stiff) in double, 3.9 (m@flt:fj_K0) and
+   1 (m@flt:fj_K1) FD in float.
 
    D: Q is exactly quadratic in q' (nonlinear inertia quadratic, damping
    linear), so a central difference has no truncation error whatever the
@@ -290,7 +293,9 @@ static void report3(const char *name, const double *w) { tu_report(name, w[1], w
    max|Q| / h, no truncation term.  Measured relative to the largest entry
    of D, as the brief asks; in the stiff material that keeps D's error at
    ~EPS * 10 of max|D| instead of the FD_ERR * 1e3 a small step would give.
-   Measured at most 0.09 of that tolerance (3.4 EPS of max|D| in double).
+   Measured at most 0.045 (m:fj_Dr) of that tolerance in double,
+   0.09 (m@flt:fj_Dr) in float (21 (m~:fj_D0) EPS of max|D| on the O(1)
+   material, 0.7 (m~:fj_D1) on the stiff one, in double).
 
    Velocity part of K (stiff material, where it is 1e-3 of max|K| and would
    hide below the float tolerance of K): K(mode) - K(mode | NO_NLI |
@@ -308,6 +313,7 @@ static void test_force_jacobians(void **state)
     static const double epsmax[2] = {0.05, 1e-3};
     static const char *names[2] = {"O(1)", "stiff"};
     tu_rng g = tu_rng_seed(11);
+    double wdr = 0.0;
     int im, s, k;
     (void)state;
     mats[0] = cr_mat_unit();
@@ -350,7 +356,11 @@ static void test_force_jacobians(void **state)
         snprintf(buf, sizeof buf, "%s: D = dQ/dq', err / entry scale", names[im]);
         report3(buf, wd);
         if (im == 1) report3("stiff: velocity part of K, err / entry scale", wv);
+        tu_measured(im ? "fj_K1" : "fj_K0", wk[1] / FD_ERR);
+        tu_measured(im ? "fj_D1" : "fj_D0", wd[1] / EPS);
+        wdr = fmax(wdr, wd[0]);
     }
+    tu_measured("fj_Dr", wdr);
 }
 
 /* K and D are optional outputs: any combination gives the same Q, K, D bit
@@ -427,7 +437,8 @@ static void test_mass_jacobian(void **state)
    (polynomial in l, theta; theta through atan2 of the chord), its third
    derivatives a few times the entries of K over the length 1: tolerance
    16 FD of max(max|Q|, max|K|) for the truncation plus 16 EPS max(U) / h
-   for the rounding of U (measured 4.8 FD in double, 7 FD in float).  Both
+   for the rounding of U (measured 4.8 (m:eg_fd) FD in double,
+   7 (m@flt:eg_fd) FD in float).  Both
    materials.  Also: at q' = 0 the mode bits
    NO_NLI and NO_DAMP change nothing, bit for bit (the velocity forces are
    exact zeros). */
@@ -473,6 +484,7 @@ static void test_energy_gradient(void **state)
             }
         }
     tu_report("-Q - grad U, err / max(|Q|, |K|)", w, wt);
+    tu_measured("eg_fd", w / FD_ERR);
 }
 
 /* T = q'^T M q' / 2 (E[0]) in every mode.  Rounding only: 64 EPS of the sum
@@ -899,7 +911,7 @@ static void test_rigid_motion(void **state)
    O(eps0 phi) difference that the consistent second-order theory drops):
    with EA = EI = 0 (inertia only) |Q(e)| / |Q(e/2)| = 2 +- 0.1 at e =
    1e-2 (5 %: the e^2 term moves it by ~e, the rounding by < 2 %;
-   measured 0.009). */
+   measured 0.009 (m:sp_ratio)). */
 static void test_rigid_spin_inertia(void **state)
 {
     tu_rng g = tu_rng_seed(41);
@@ -976,6 +988,7 @@ static void test_rigid_spin_inertia(void **state)
     tu_report("rigid spin (ray_a = 0) |Q| / tol", w0, 1.0);
     tu_report("rigid spin Q + ray_a M q' / tol", wa, 1.0);
     tu_report("stretched spin: |ratio - 2| (first order in e)", wr, 0.1);
+    tu_measured("sp_ratio", wr);
     if (tu_report_on())
         print_message("    stretched spin: min |Q| / (EPS max|D| |q'| (1+R)) = %.3e (> 100)\n", rnd);
 }
@@ -1325,16 +1338,16 @@ static void test_classic_matrices(void **state)
    order in e only (S = 1 - e + ...): on the O(1) material (residual led by
    the bending part, S k0_b S - k0_b ~ 24 EI e/L^3) the residual halves
    with e, ratio 2 +- 0.05 (the e^2 terms move it by ~2e = 0.04 at most;
-   measured 0.014); on the stiff
-   (slender) material N G is more than 30 times the residual (measured
-   ~70), the classic form its leading part, but the e^2 term N (S G S - G)
+   measured 0.014 (m:gs_ratio)); on the stiff (slender) material N G is
+   more than 30 times the residual (measured 62 (m:gs_ng) at least), the
+   classic form its leading part, but the e^2 term N (S G S - G)
    ~ EA e^2 is not small there at e = 1e-3 (ratio only reported). */
 static void test_geometric_stiffness(void **state)
 {
     static const double es[] = {2e-2, 1e-2, -1e-2};
     static const int lat[4] = {1, 2, 4, 5};
     vlbe_cr2d_mat mats[2];
-    double w = 0.0, wr = 0.0;
+    double w = 0.0, wr = 0.0, ngmin = HUGE_VAL;
     int im, ie, i, a, b2;
     (void)state;
     mats[0] = cr_mat_unit();
@@ -1393,6 +1406,7 @@ static void test_geometric_stiffness(void **state)
                               "max|N G| = %.3e\n",
                               im, e, res[ie], tu_max_abs(36, G));
             if (im == 1) assert_true(tu_max_abs(36, G) > 30.0 * res[ie]);
+            if (im == 1) ngmin = fmin(ngmin, tu_max_abs(36, G) / res[ie]);
         }
         if (im == 0) {
             wr = fabs(res[0] / res[1] - 2.0);
@@ -1401,6 +1415,8 @@ static void test_geometric_stiffness(void **state)
     }
     tu_report("stretched K = exact Hessian, in EPS max|K| (1+R)", w, 16.0);
     tu_report("classic -(k0_b + N G): |residual ratio - 2|", wr, 0.05);
+    tu_measured("gs_ratio", wr);
+    tu_measured("gs_ng", ngmin);
 }
 
 /* ======================================================================= */

@@ -17,6 +17,8 @@
    (6n + 6) eps |L||U||x|; the rest are exact: finite / bitwise unchanged).
 
    Tests (one per harness): lu, ale, ale3, rancf, cr2d, chain, step.
+   VLBE_TEST_REPORT=1 prints the number of inputs each replayed (a test
+   fails when its corpus directory is missing or empty).
    Seeds named known_* and found_* reproduce contract violations of 77b73ad
    (fuzz/seeds.py): regression inputs, each failed here on that code;
    good_* passed there too. */
@@ -94,6 +96,12 @@ static void fzt_replay(const char *name, fzt_one one)
     }
     closedir(d);
     if (nrun == 0) fail_msg("corpus %s: no inputs", dir);
+    if (tu_report_on()) {
+        char key[64];
+        print_message("    corpus %s: %d inputs replayed\n", dir, (int)nrun);
+        snprintf(key, sizeof key, "inputs_%s", name);
+        tu_measured(key, (double)nrun);
+    }
     if (nfail) fail_msg("corpus %s: %d of %d inputs violate the contract (listed above)", dir, (int)nfail,
                  (int)nrun);
 }

@@ -13,6 +13,10 @@
    References computed in the test (Bernstein form of the curve, eq. 9 basis,
    Gauss errors) are evaluated in double in both builds.  Set
    VLBE_TEST_REPORT=1 to print each measured error next to its tolerance.
+   "measured" below is the double -O2 build (tag m:), the float build where
+   it is quoted too (m@flt:), and numbers of a few EPS are orders of
+   magnitude (m~:, they move with the compiler); tests/measured.sh checks
+   them against the report.
 
    Tests
      basis_unit_weights     w = {1,1,1,1} and {2.5,2.5,2.5,2.5}: the rational basis
@@ -270,7 +274,8 @@ static const double basis_ints[][2] = {{0.3, 1.45}, {-2.0, 0.8}, {1.0, 1.6}, {10
    each (k, partial) group of the Hermite basis (the entries of a group
    share the power of L): the rational route divides by W and subtracts
    Leibniz terms in W's derivatives, all exact for W = 1, so any difference
-   is a few roundings at most; measured 0 (the same operations). */
+   is a few roundings at most; measured 0 (m:bu_eps) (the same
+   operations). */
 static void test_basis_unit_weights(void **state)
 {
     static const double scl[] = {1.0, 2.5};
@@ -309,6 +314,7 @@ static void test_basis_unit_weights(void **state)
             }
     }
     tu_report("unit weights vs Hermite basis, in EPS of group max", worst, 4.0);
+    tu_measured("bu_eps", worst);
 }
 
 /* Non-unit weights.  Each derivative entry against the central difference
@@ -325,17 +331,19 @@ static void test_basis_unit_weights(void **state)
    function and the truncation brings in the (n + 2)-th, whose growth with
    the order is that of 1/W (weights {1.8, 0.6, 1.2, 0.9}: W varies by a
    factor 2 over the element).  Tolerance 128 n FD of S for a dst entry of
-   order n (measured 25, 76, 132, 178, 232 FD for n = 1 .. 5, the same in
-   float: the truncation error dominates and scales with FD).
+   order n (measured 25 (m:bd_fd1), 76 (m:bd_fd2), 132 (m:bd_fd3),
+   178 (m:bd_fd4), 232 (m:bd_fd5) FD for n = 1 .. 5, the same in float:
+   the truncation error dominates and scales with FD).
    Partition of unity: s1 + s3 = 1 at every point (8 EPS of |s1| + |s3|:
-   two quotients and a sum, measured 2.6 EPS in float) and each of its
-   derivatives is 0 to 64 EPS of the group scale (two entries that cancel,
-   each a Leibniz sum of up to six terms larger than the result; measured
-   8 EPS).
+   two quotients and a sum, measured 2.6 (m@flt~:bd_pu) EPS in float) and
+   each of its derivatives is 0 to 64 EPS of the group scale (two entries
+   that cancel, each a Leibniz sum of up to six terms larger than the
+   result; measured 8 (m~:bd_pud) EPS).
    Scale invariance: weights times 2.5, 1e-3, 7e4 give the same ratios
    w_i / w3 up to one rounding each; the basis moves by that rounding times
    its sensitivity to the ratios, largest for the fifth-order entries:
-   128 EPS of the group scale (measured 44 EPS in double, 12 in float). */
+   128 EPS of the group scale (measured 44 (m~:bd_scl) EPS in double,
+   12 (m@flt~:bd_scl) in float). */
 typedef struct bfd_ctx {
     vlbe_real w[4];
     double x[3]; /* p, p1, p2 */
@@ -482,10 +490,15 @@ static void test_basis_derivatives(void **state)
         char name[64];
         snprintf(name, sizeof name, "basis derivatives of order %d vs differences, in FD", k);
         tu_report(name, wo[k], 128.0 * k);
+        snprintf(name, sizeof name, "bd_fd%d", k);
+        tu_measured(name, wo[k]);
     }
     tu_report("s1 + s3 - 1, in EPS of |s1| + |s3|", wu, 8.0);
     tu_report("derivatives of s1 + s3, in EPS of group scale", wz, 64.0);
     tu_report("scaled weights, in EPS of group scale", ws, 128.0);
+    tu_measured("bd_pu", wu);
+    tu_measured("bd_pud", wz);
+    tu_measured("bd_scl", ws);
 }
 
 /* vlbe_rancf_point against the rational Bezier curve: control points by
@@ -496,11 +509,12 @@ static void test_basis_derivatives(void **state)
    control points 8 EPS S (one product and a sum), positions 32 EPS S (the
    element sums four products of the basis with nodal data, the basis from a
    division and the rounded u = (p - p1)/L, whose rounding moves r by |r'| L
-   EPS <~ S EPS), slopes 32 EPS S / L; measured 5 EPS (r), 13 EPS (r').
+   EPS <~ S EPS), slopes 32 EPS S / L; measured 5 (m~:bz_r) EPS (r),
+   13 (m~:bz_rp) EPS (r').
    Round trips nodal -> Bezier -> nodal and back, d = 1, 2, 3: positions
    are copied (exact), slopes pass through P1 - P0 = l k0/(3 k1) rA' and
    back, whose rounding is EPS |P| relative to the difference: 16 EPS of
-   |slope| + 3 (k1/k0 or k2/k3) |P| / l.  Measured ~1 EPS. */
+   |slope| + 3 (k1/k0 or k2/k3) |P| / l.  Measured 0.2 (m~:bz_trip) EPS. */
 static void test_basis_vs_bezier(void **state)
 {
     tu_rng g = tu_rng_seed(301);
@@ -579,6 +593,9 @@ static void test_basis_vs_bezier(void **state)
     tu_report("bezier_eval vs Bernstein form, in EPS max|P|", wb, 32.0);
     tu_report("rancf_point r' vs Bernstein dr/du / L", wd, 32.0);
     tu_report("nodal -> Bezier -> nodal slopes, in EPS units", wt, 16.0);
+    tu_measured("bz_r", wr);
+    tu_measured("bz_rp", wd);
+    tu_measured("bz_trip", wt);
 }
 
 /* ======================================================================= */
@@ -603,7 +620,7 @@ static double rel_diff(int n, const vlbe_real *a, const vlbe_real *b)
    with W = 1 the tables hold the Hermite numbers (the rational route's
    divisions by W = 1 and Leibniz terms in its zero derivatives are exact)
    and the kernels are the same, so the results agree bit for bit
-   (measured 0). */
+   (measured 0 (m:ua_rel)). */
 static void test_unit_weights_equal_ale(void **state)
 {
     static const int rules[2][4] = {{0, 0, 0, 0}, {(int)VLBE_ALE_CONSERVATIVE, 5, 6, 4}};
@@ -708,6 +725,7 @@ static void test_unit_weights_equal_ale(void **state)
             }
         }
     tu_report("unit weights vs ALE-ANCF, max rel. to largest entry", worst, tol);
+    tu_measured("ua_rel", worst);
 }
 
 /* Non-unit weights (the three sets): K = dQ/dq and D = dQ/dq' against
@@ -718,11 +736,12 @@ static void test_unit_weights_equal_ale(void **state)
    points, and its Q against the virtual work of F on the point of
    vlbe_rancf_point (checked against the Bezier form above): Q_j = F .
    dr(pf)/dq_j by central differences, 16 FD of |F| max|dr/dq| (r is
-   linear in the nodal data, smooth in p1, p2; measured 2 FD).
+   linear in the nodal data, smooth in p1, p2; measured 2 (m:fj_vw) FD).
    Tolerance of the Jacobians 64 FD of the largest entry, as for
    ALE-ANCF: the truncation error involves third derivatives of the
    forces, which carry L^-5 and |r'|^-5 (bending) and now the derivatives
-   of 1/W; measured 23 FD (K), 7 FD (D; 16 in float), 2 FD (Mq), 22 FD
+   of 1/W; measured 23 (m:fj_K) FD (K), 7 (m:fj_D) FD (D;
+   16 (m@flt:fj_D) in float), 2 (m:fj_Mq) FD (Mq), 22 (m:fj_pf) FD
    (point force), each against its row and column (fd_check). */
 static void test_force_jacobians(void **state)
 {
@@ -807,6 +826,11 @@ static void test_force_jacobians(void **state)
     tu_report("Mq = d(M a)/dq, err / entry scale", wm, tol);
     tu_report("point force K, err / entry scale", wp, tol);
     tu_report("point force Q vs F.dr(pf)/dq, in |F| max|dr/dq|", wv, 16.0 * FD_ERR);
+    tu_measured("fj_vw", wv / FD_ERR);
+    tu_measured("fj_K", wk / FD_ERR);
+    tu_measured("fj_D", wd / FD_ERR);
+    tu_measured("fj_Mq", wm / FD_ERR);
+    tu_measured("fj_pf", wp / FD_ERR);
 }
 
 /* r, r', r'', r''' at material point p of an element with weights w, from
@@ -925,20 +949,23 @@ static double gauss_energy(const vlbe_real *w, const vlbe_ale_mat *m, const vlbe
    the flux come from the rational basis at the ends: a flux evaluated
    with the Hermite r'' (ends not refilled) would fail here by EI dkap^2.
    The predicted Gauss part is reported: it is what the comparison would
-   have to absorb without the prediction, measured relative to the scale
-   with the default rules (string): 1e-5 (pi/2 arc weights), 4e-3 ({0.7,
-   1.3, 0.9, 1.1}), 6e-2 ({1.8, 0.6, 1.2, 0.9}: |r'| varies by a factor ~2
-   along the element and the density u ~ eps^2 carries W^-8); beam 1e-4,
-   9e-2, 0.26 (the curvature is rational for ALE-ANCF already).  So with
+   have to absorb without the prediction, relative to the scale with the
+   default rules, measured for the string: 1e-5 (m:eg_gs_arc) (pi/2 arc
+   weights), 4e-3 (m:eg_gs_w0) ({0.7, 1.3, 0.9, 1.1}), 6e-2 (m:eg_gs_w2)
+   ({1.8, 0.6, 1.2, 0.9}: |r'| varies by a factor ~2 along the element
+   and the density u ~ eps^2 carries W^-8); beam 1e-4 (m:eg_gb_arc),
+   9e-2 (m:eg_gb_w0), 0.26 (m:eg_gb_w2) (the curvature is rational for
+   ALE-ANCF already).  So with
    rational weights CONSERVATIVE makes the p-forces the gradient of the
    discrete strain energy only up to that Gauss error (exactly, as for the
    ALE-ANCF string, only in the limit of exact quadrature).
    The energies themselves: U (axial + bending) and V of vlbe_rancf_energy
    against the Gauss sums of the densities here (eq. 9 basis through
    vlbe_rancf_basis_eval, the element's rules): 64 EPS of the sum of
-   |terms| (eps and kap from r', r'' of nodal values, squared; measured 8
-   EPS, 16 in float).  Measured residual - prediction 3 FD (string and
-   beam p-rows), e-rows 2 FD (string) and 5 FD (beam). */
+   |terms| (eps and kap from r', r'' of nodal values, squared; measured
+   8 (m~:eg_UV) EPS, 16 (m@flt~:eg_UV) in float).  Measured residual -
+   prediction 3 (m:eg_p_fd) FD (string and beam p-rows), e-rows
+   2 (m:eg_es_fd) FD (string) and 5 (m:eg_eb_fd) FD (beam). */
 static void test_energy_gradient(void **state)
 {
     static const int rules[2][3] = {{0, 0, 0}, {3, 7, 6}};
@@ -947,6 +974,7 @@ static void test_energy_gradient(void **state)
     vlbe_rancf_elem el;
     tu_rng g = tu_rng_seed(601);
     double we[2] = {0, 0}, wp[2] = {0, 0}, wq[2] = {0, 0}, wu = 0.0;
+    double wqs[N_WSETS][2] = {{0, 0}}; /* wq per weight set, for the report */
     int iw, ir, s, k, i;
     (void)state;
     m.c_eps = m.c_kap = VLBE_R(0.0);
@@ -1001,6 +1029,9 @@ static void test_energy_gradient(void **state)
                         if (is_p(i)) {
                             wp[bend] = fmax(wp[bend], fabs(res[i] - pred[i]) / scale);
                             if (ir == 0) wq[bend] = fmax(wq[bend], fabs(i == 4 ? g1 : g2) / scale);
+                            if (ir == 0)
+                                wqs[iw][bend] =
+                                    fmax(wqs[iw][bend], fabs(i == 4 ? g1 : g2) / scale);
                         } else {
                             we[bend] = fmax(we[bend], fabs(res[i]) / scale);
                         }
@@ -1017,6 +1048,18 @@ static void test_energy_gradient(void **state)
     tu_report("string p-rows: predicted Gauss part (info)", wq[0], 0.0);
     tu_report("beam p-rows: predicted Gauss part (info)", wq[1], 0.0);
     tu_report("U, V vs Gauss sums of the densities, in EPS", wu, 64.0);
+    /* wset 0, 1, 2: the weights w0 {0.7, 1.3, 0.9, 1.1}, the pi/2 arc's
+       and w2 {1.8, 0.6, 1.2, 0.9} */
+    tu_measured("eg_gs_w0", wqs[0][0]);
+    tu_measured("eg_gs_arc", wqs[1][0]);
+    tu_measured("eg_gs_w2", wqs[2][0]);
+    tu_measured("eg_gb_w0", wqs[0][1]);
+    tu_measured("eg_gb_arc", wqs[1][1]);
+    tu_measured("eg_gb_w2", wqs[2][1]);
+    tu_measured("eg_UV", wu);
+    tu_measured("eg_p_fd", fmax(wp[0], wp[1]) / FD_ERR);
+    tu_measured("eg_es_fd", we[0] / FD_ERR);
+    tu_measured("eg_eb_fd", we[1] / FD_ERR);
 }
 
 /* ======================================================================= */
@@ -1075,7 +1118,8 @@ static void rot_mat(const vlbe_real *J, double c, double s, double *out)
    unchanged.  Rounding: r' and r'' come from nodal values of size |r| (the
    shift), so r' errs by ~EPS |r| / L and r'' by ~EPS |r| / L^2: eps to
    32 EPS (1 + |r|/L) max(1, |r'|^2), kap to 64 EPS (1 + |r|/L) (|kap| +
-   1/L) / min(1, |r'|^2) (measured 4.5 and 9.4 EPS of these units).
+   1/L) / min(1, |r'|^2) (measured 4.5 (m~:rm_eps) and 9.4 (m~:rm_kap) EPS
+   of these units).
    (2) Frame invariance of the element: Q(T q, T q') = T Q(q, q'), K and D
    transform as T K T^T, in every mode (load f = 0: a fixed load direction
    is not invariant), damped and moving, general weights.  The rounding of
@@ -1083,8 +1127,8 @@ static void rot_mat(const vlbe_real *J, double c, double s, double *out)
    unstretched state that is far more than EPS |Q|: the Green strain's
    cancellation), K and D by ~EPS (1 + |r|/L) times themselves (products of
    the rounded r', r'').  Tolerances 64 EPS (max|Q| + (L + |r|) max|K|)
-   for Q and 64 EPS (1 + |r|/L) max|K| (max|D|) for K (D); measured 3
-   and 17 EPS.
+   for Q and 64 EPS (1 + |r|/L) max|K| (max|D|) for K (D); measured
+   3 (m~:rm_Q) and 17 (m~:rm_KD) EPS.
    (3) Collinear control points with weights {0.7, 1.3, 0.9, 1.1}: the
    curve is straight, kap = 0 at every point (64 EPS (1 + |r|/L) / L), but
    it is not uniformly parametrized: eps varies along the element (here
@@ -1202,6 +1246,10 @@ static void test_rigid_motion(void **state)
     tu_report("K, D: T K T^T, in EPS (1 + |r|/L) max|K|", wj, 64.0);
     tu_report("collinear control points: kap, in EPS (1 + |r|/L)/L", wc, 64.0);
     tu_report("collinear control points: range of eps (info)", erange, 0.05);
+    tu_measured("rm_eps", we);
+    tu_measured("rm_kap", wk);
+    tu_measured("rm_Q", wq);
+    tu_measured("rm_KD", wj);
 }
 
 /* Exact interpolation error bound of the cubic Hermite interpolant of the
@@ -1217,12 +1265,13 @@ static double hermite_arc_bound(double p, double p1, double p2, double R)
    material length R pi/n each, p from 0).  At 1000 points per element the
    distance from the centre is R to rounding: 64 EPS R (the position is a
    sum of four products of the basis with coordinates of size R + |c|;
-   measured ~2 EPS; the requirement 1e-12 relative is 4500 EPS in double),
-   and the curvature is 1/R at every point although the parametrization is
-   not arc length (kap = r' x r'' / |r'|^3 is invariant): 256 EPS relative
-   (r'' from the second derivatives of the rational basis and coordinates
-   of size R + |c| over L^2, divided by |r'|^3; measured 56 EPS in
-   double, 68 in float, largest for n = 8).  The
+   measured 3 (m~:sc_rad) EPS; the requirement 1e-12 relative is 4500 EPS
+   in double), and the curvature is 1/R at every point although the
+   parametrization is not arc length (kap = r' x r'' / |r'|^3 is
+   invariant): 256 EPS relative (r'' from the second derivatives of the
+   rational basis and coordinates of size R + |c| over L^2, divided by
+   |r'|^3; measured 56 (m~:sc_kap) EPS in double, 68 (m@flt~:sc_kap) in
+   float, largest for n = 8).  The
    strain is not zero: at the nodes |r'| = 2 sin(theta/2) / theta (eq. 43,
    the arc element's slope), eps = (|r'|^2 - 1)/2 there (16 EPS).
    Beside it the ALE-ANCF (Hermite) chain of the same size, nodes on the
@@ -1238,6 +1287,7 @@ static void test_semicircle(void **state)
     const double R = 2.0, cx = 0.3, cy = -0.7;
     const vlbe_real cen[2] = {(vlbe_real)cx, (vlbe_real)cy};
     vlbe_rancf_elem el;
+    double wrr = 0.0, wrk = 0.0;
     int in, e, i;
     (void)state;
     for (in = 0; in < ARRAY_LEN(ns); ++in) {
@@ -1313,7 +1363,11 @@ static void test_semicircle(void **state)
         tu_report(name, hk, 0.0);
         snprintf(name, sizeof name, "n = %d: Hermite position error / exact bound", n);
         tu_report(name, hb, 1.0);
+        wrr = fmax(wrr, rr / EPS);
+        wrk = fmax(wrk, rk / EPS);
     }
+    tu_measured("sc_rad", wrr);
+    tu_measured("sc_kap", wrk);
 }
 
 /* ======================================================================= */
@@ -1376,8 +1430,8 @@ static void split_parts(const vlbe_real *q, const vlbe_real *qh, vlbe_real *ql, 
      material points where the original does, slopes too.  Rounding: the
      points are sums of four basis products of coordinates of size S =
      max(|r_node|, L |r'_node|): 64 EPS S for r, 64 EPS S / L for r'
-     (the requirement 1e-13 is 450 EPS in double; measured 4 EPS for r,
-     19 EPS for r').
+     (the requirement 1e-13 is 450 EPS in double); found
+     4 (m~:sg_r) EPS for r, 19 (m~:sg_rp) EPS for r'.
    - Weights: wl, wr against eq. 21 in double (Bernstein sums of the
      weights at u_H, normalized by their last): 16 EPS relative.
    - bezier_split on the element's control points: the halves evaluated
@@ -1388,7 +1442,8 @@ static void split_parts(const vlbe_real *q, const vlbe_real *qh, vlbe_real *ql, 
      central difference in time of the position and slope of material
      point pH under q + t q' (p1, p2 moving at p1', p2'), step FD_STEP:
      16 FD of max(|r|, |r'|, |qhd|) (the rounding of positions of size |r|
-     over the step; measured 1.6 FD); qhd[4] = 0, qh[4] = pH exactly.
+     over the step; measured 1.2 (m:sg_rate) FD, 1.6 (m@flt:sg_rate) in
+     float); qhd[4] = 0, qh[4] = pH exactly.
    - With p1' = p2' = 0 the parts' material velocity fields equal the
      original's at 101 points (64 EPS of the velocity scale |q'|(1 +
      L)).  With moving ends they do not: the parts' weights are constant
@@ -1404,9 +1459,10 @@ static void split_parts(const vlbe_real *q, const vlbe_real *qh, vlbe_real *ql, 
      estimate (the Gauss error falls 4 to 10 times per point here, so
      that estimate is several times the order-8 error: a self-calibrated
      bound that a missing or wrong piece of energy would exceed; measured
-     0.12 (T, U) and 0.2 (V) of it).  The mismatch of U at n = 8 is still
-     8e-5 relative on this strongly deformed weighted element (2.8e-3 at
-     n = 6): the strain energy density carries W^-8. */
+     0.12 (m:sg_T) (T), 0.12 (m:sg_U) (U) and 0.2 (m:sg_V) (V) of it).
+     The mismatch of U at n = 8 is still 8e-5 (m:sg_U8) relative on this
+     strongly deformed weighted element (2.8e-3 (m:sg_U6) at n = 6): the
+     strain energy density carries W^-8. */
 static void test_segmentation(void **state)
 {
     static const double xhs[] = {0.2, 0.5, 0.77};
@@ -1586,6 +1642,11 @@ static void test_segmentation(void **state)
             }
             snprintf(name, sizeof name, "parts - whole, %s, n = 8 vs 64 EPS + est.", nm[i]);
             tu_report(name, fabs(dE[2][i]), tol);
+            tu_measured(i == 0 ? "sg_T" : i == 1 ? "sg_U" : "sg_V", fabs(dE[2][i]) / tol);
+            if (i == 1) {
+                tu_measured("sg_U8", fabs(dE[2][i]) / fabs(Eo[2][i]));
+                tu_measured("sg_U6", fabs(dE[0][i]) / fabs(Eo[2][i]));
+            }
             ASSERT_CLOSE_CTX(Esum[2][i], Eo[2][i], 0, tol, "energy %s", nm[i]);
 #ifndef VLBE_USE_FLOAT
             /* the quadrature converges (float: below its rounding already) */
@@ -1601,6 +1662,9 @@ static void test_segmentation(void **state)
     tu_report("node rates vs time differences, in FD", wrt, 16.0);
     tu_report("velocity fields, p' = 0, in EPS |q'|(1 + L)", wv0, 64.0);
     tu_report("velocity fields, moving ends, rel. (info)", wvm, 0.0);
+    tu_measured("sg_r", wpos);
+    tu_measured("sg_rp", wslo);
+    tu_measured("sg_rate", wrt);
 }
 
 /* largest material-point deviation between an element (weights w, state q)
@@ -1663,11 +1727,11 @@ static double cond_frob3(const double *A)
    u_H.  In 2D the 2 x 3 system has rank 2 and the minimum-norm solution
    solves it exactly, so only rounding remains: 64 EPS of the element size
    S (the residual of the solved system, ~EPS |A| |x|, over the system's
-   scale; measured ~1 EPS).
+   scale; measured 1 (m~:mg_a) EPS).
    (b) Halves of a uniformly stretched straight element (unit weights):
    unit weights already pass through r_H (the residual B vanishes up to
    rounding) and the minimum-norm correction is x = 0: k = 1 to 64 EPS
-   (B ~ EPS |r| over the singular values ~ L: measured 1 EPS).
+   (B ~ EPS |r| over the singular values ~ L: measured 1 (m~:mg_b) EPS).
    (c) 3D: nodes and r_H (with its slope, from the Bezier derivative) of a
    rational cubic with weights {0.8, 1.4, 0.7, 1.2}: the 3 x 3 system is
    consistent with the unique solution k = w / w3, and the merged curve
@@ -1675,8 +1739,9 @@ static double cond_frob3(const double *A)
    system (~EPS of its entries and of the residual of unit weights) times
    its condition number: tolerance 64 EPS kappa_F max(k), kappa_F =
    |A|_F |A^-1|_F >= cond_2(A) of the system written here from eq. 34
-   (kappa_F = 60 and 40 here; measured 0.7 EPS kappa_F max(k)); the
-   point: 64 EPS of max|P| (measured 0.8 EPS).
+   (kappa_F = 60 (m:mg_kap0) and 40 (m:mg_kap1) here; measured
+   0.7 (m~:mg_k3) EPS kappa_F max(k)); the point: 64 EPS of max|P|
+   (measured 0.8 (m~:mg_p3) EPS).
    (d) eq. 38: nodes A = (0, 0), B = (1, 0) with slopes (1, 0), H = (0.5,
    0.3): every control point of the merged element lies on the x-axis, so
    by the convex-hull property no positive weights reach H; the 2 x 3
@@ -1690,8 +1755,9 @@ static double cond_frob3(const double *A)
    same for the ALE-ANCF chain of the same arc (nodes on the circle, unit
    tangents, arc length) merged into one Hermite element: the rational
    deviation is not larger (asserted), and its radial deviation from the
-   circle neither; both reported (measured 5e-4 vs 7e-4 at theta = 0.3,
-   4e-3 vs 1e-2 at 0.6, 2e-2 vs 8e-2 at 1.0). */
+   circle neither; both reported (measured 5e-4 (m:mg_r03) vs
+   7e-4 (m:mg_h03) at theta = 0.3, 4e-3 (m:mg_r06) vs 1e-2 (m:mg_h06) at
+   0.6, 2e-2 (m:mg_r10) vs 8e-2 (m:mg_h10) at 1.0). */
 static void test_merging(void **state)
 {
     static const double xhs[] = {0.3, 0.55};
@@ -1800,6 +1866,7 @@ static void test_merging(void **state)
                     A[j * 3 + 2] = 3.0 * c2 * dB;
                 }
                 kap = cond_frob3(A);
+                tu_measured(ih ? "mg_kap1" : "mg_kap0", kap);
                 for (i = 1; i < 3; ++i) kmax = fmax(kmax, w3d[i] / w3d[3]);
                 for (i = 0; i < 4; ++i) {
                     const double want = w3d[i] / w3d[3];
@@ -1882,11 +1949,19 @@ static void test_merging(void **state)
         tu_report(name, dr, dh);
         snprintf(name, sizeof name, "arc merge theta %.1f: rational radial dev.", th);
         tu_report(name, radr, radh);
+        snprintf(name, sizeof name, "mg_r%02d", (int)(10.0 * th + 0.5));
+        tu_measured(name, dr);
+        snprintf(name, sizeof name, "mg_h%02d", (int)(10.0 * th + 0.5));
+        tu_measured(name, dh);
     }
     tu_report("(a) merged through r_H, in EPS S", wa, 64.0);
     tu_report("(b) straight: k - 1, in EPS", wb, 64.0);
     tu_report("(c) 3D: k - w/w3, in EPS kappa_F max(k)", wk3, 64.0);
     tu_report("(c) 3D: merged through r_H, in EPS max|P|", wp3, 64.0);
+    tu_measured("mg_a", wa);
+    tu_measured("mg_b", wb);
+    tu_measured("mg_k3", wk3);
+    tu_measured("mg_p3", wp3);
 }
 
 /* ======================================================================= */
@@ -2279,9 +2354,9 @@ static void test_errors(void **state)
    brief's comparison, whose reference carries its own ~1e-8 error).
    Errors relative to the largest entry are reported; asserted: they fall
    with nm while above 64 EPS, and the nm = 8 error is below 1e-7
-   (measured 9e-9; the Gauss error falls ~20x per point here).  The
-   default nm = 4 errs by ~1e-3 relative for this element, not 1e-6 as
-   rancf.h's comment says (1e-6 is reached at nm = 6 .. 7). */
+   (measured 9e-9 (m:qd_nm8); the Gauss error falls ~20x per point here).
+   The default nm = 4 errs by 1e-3 (m:qd_nm4) relative for this element,
+   not 1e-6 as rancf.h's comment says (1e-6 is reached at nm = 6 .. 7). */
 static void test_quadrature(void **state)
 {
     vlbe_ale_mat m = mat_std();
@@ -2342,6 +2417,8 @@ static void test_quadrature(void **state)
         if (n > 1 && n < 8 && err8[n - 1] > 64.0 * EPS) assert_true(err8[n] < err8[n - 1]);
     }
     tu_report("pi/2 arc mass, nm = 8 vs reference", err[8], fmax(1e-7, 64.0 * EPS));
+    tu_measured("qd_nm8", err[8]);
+    tu_measured("qd_nm4", err[4]);
     assert_true(err[8] <= fmax(1e-7, 64.0 * EPS));
 }
 

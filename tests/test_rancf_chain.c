@@ -10,7 +10,9 @@
    with the step h = EPS^(1/3) x (the length over which f varies) use
    multiples of FD_ERR = EPS^(2/3) (truncation h^2 f'''/6 and rounding
    EPS f / h both ~EPS^(2/3) times the size of f and of its derivatives).
-   Set VLBE_TEST_REPORT=1 to print the measured errors.  The suite takes
+   Set VLBE_TEST_REPORT=1 to print the measured errors ("measured" below:
+   the double -O2 build, tag m:, the float build where quoted, m@flt:;
+   tests/measured.sh checks them against the report).  The suite takes
    ~0.01 s at -O2 and ~1 s under valgrind.
 
    Tests
@@ -239,7 +241,8 @@ static void unit_nodes(vlbe_ale_node *nd)
    g = (n - sum C g W^(c-i)) / W subtracts exact zeros and divides by 1;
    both then go through the same vlbe__ale_basis_fill and the same
    kernels.  Only the sign of a zero could differ, which == ignores.
-   Measured: every difference 0 (double and float). */
+   Measured: every difference 0 (m:uw_rel) in double, 0 (m@flt:uw_rel) in
+   float. */
 static void test_unit_weights(void **state)
 {
     static rch c;
@@ -329,6 +332,7 @@ static void test_unit_weights(void **state)
         }
     }
     tu_report("unit weights: M, Q, K, D, Mq, E vs ALE-ANCF (rel)", worst, 0.0);
+    tu_measured("uw_rel", worst);
 }
 
 /* ======================================================================= */
@@ -518,10 +522,11 @@ static double s_r0[2 * NPTS], s_rp0[2 * NPTS], s_r1[2 * NPTS], s_rp1[2 * NPTS];
    largest): tolerance 1e-12 of |T| + |U| + |V| in double.  V is linear
    in r: equal; T and U have rational integrands that no Gauss rule
    integrates exactly, and the parts' rules sample other points: the
-   difference is the rule error, not rounding.  Measured T differences at
-   orders 5, 6, 7, 8: 7e-8, 9e-10, 1.2e-11, 1.5e-13 (falling ~80x per
-   order), U at order 8: 2.1e-12 of U = 0.86 (3.4e-13 of the sum).  Float:
-   64 EPS (the rule error is far below rounding there). */
+   difference is the rule error, not rounding (it falls with the Gauss
+   order).  Measured at order 8: T differs by 1.5e-13 (m:ins_T) of T, U
+   by 2.5e-12 (m:ins_U) of U = 0.86 (m:ins_Uval), 3.4e-13 (m:ins_de) of
+   the sum.  Float: 64 EPS (the rule error is far below rounding
+   there). */
 static void test_insert(void **state)
 {
     static rch c;
@@ -578,6 +583,9 @@ static void test_insert(void **state)
             ASSERT_CLOSE(E1[i], E0[i], 0, tol_e * es);
         }
         assert_true(fabs((double)E0[0]) > 0.1 * es && fabs((double)E0[1]) > 1e-3 * es);
+        tu_measured("ins_T", fabs((double)E1[0] - (double)E0[0]) / fabs((double)E0[0]));
+        tu_measured("ins_U", fabs((double)E1[1] - (double)E0[1]) / fabs((double)E0[1]));
+        tu_measured("ins_Uval", (double)E0[1]);
         /* the composite rule: rounding only */
         composite_TU(&c.ch, els_a, qn, vn, tu1);
         dc = fmax(fabs(tu1[0] - tu0[0]), fabs(tu1[1] - tu0[1])) / (fabs(tu0[0]) + fabs(tu0[1]));
@@ -587,6 +595,7 @@ static void test_insert(void **state)
     tu_report("insert: r(p) at 1000 points (rel)", dr, tol_r);
     tu_report("insert: r'(p) at 1000 points (rel)", drp, tol_r);
     tu_report("insert: T, U, V (rel to |T|+|U|+|V|)", de, tol_e);
+    tu_measured("ins_de", de);
 }
 
 /* ======================================================================= */
@@ -613,7 +622,7 @@ static vlbe_ale_elem rm_el;
    so its minimum-norm solution satisfies eq. 34 up to the rounding of the
    Jacobi rotations and of the right-hand side (a few EPS of |r| times the
    basis sums and 1/W ~ 1); the evaluation at pH adds a few more (measured
-   below 1 EPS).  The arc comparison has no tolerance: both deviations are
+   1 (m~:rm_h) EPS).  The arc comparison has no tolerance: both deviations are
    printed; the rational merge is asserted to be the better one (it is by
    orders of magnitude, the brief's point of eqs. 29-38). */
 static void test_remove(void **state)
@@ -663,6 +672,7 @@ static void test_remove(void **state)
     assert_int_equal(vlbe_ale_chain_point(&c.ch, 0, qn, qa[9], r, NULL), VLBE_OK);
     dh = hypot((double)r[0] - (double)qa[5], (double)r[1] - (double)qa[6]) / R;
     tu_report("remove: merged curve at pH vs r_H (rel R)", dh, tol_h);
+    tu_measured("rm_h", dh / EPS);
     assert_true(dh <= tol_h);
 
     /* an exact arc of two equal elements, merged: rational vs ALE-ANCF */

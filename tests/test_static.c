@@ -17,7 +17,9 @@
               outside), q* = exp(F/k) - 1
      atan     Q = c - atan(q), q* = tan(c): plain Newton from q = 10 diverges
    Every tolerance says why it has its size; with VLBE_TEST_REPORT=1 the
-   measured errors are printed beside them.
+   measured errors are printed beside them ("measured" below: the double
+   -O2 build, tag m:, the float build where quoted, m@flt:;
+   tests/measured.sh checks them against the report).
 
    Tests
      static_params_default     defaults; bad parameters / arguments -> EARG
@@ -259,9 +261,12 @@ static void test_static_params_default(void **state)
    [[300, -200], [-200, 500]] has condition 3.5, so the forward error is a
    few eps |q|max; the second Newton step corrects it to the rounding of Psi
    divided by the stiffness, again a few eps: 16 eps |q|max (absolute) for q,
-   16 eps |lambda| for lambda.  Measured: 0 (double), 0 .. 2 eps (float). */
+   16 eps |lambda| for lambda.  Measured: 0.2 (m:sp_eps) eps in double,
+   0.3 (m@flt:sp_eps) eps in float (q in eps |q|max, lambda in eps
+   |lambda|, the worse of the two). */
 static void test_static_linear_springs(void **state)
 {
+    double wsp = 0.0;
     int fd;
     (void)state;
     for (fd = 0; fd < 2; ++fd) {
@@ -283,6 +288,11 @@ static void test_static_linear_springs(void **state)
                   16 * EPS * 0.05);
         tu_report(fd ? "linear springs lambda (FD K)" : "linear springs lambda",
                   fabs((double)lam[0] - SPR_LAM) / fabs(SPR_LAM), 16 * EPS);
+        wsp = fmax(wsp, fmax(fmax(fabs((double)q[0] - SPR_Q[0]),
+                                  fmax(fabs((double)q[1] - SPR_Q[1]),
+                                       fabs((double)q[2] - SPR_Q[2]))) /
+                                 (EPS * 0.05),
+                             fabs((double)lam[0] - SPR_LAM) / (EPS * fabs(SPR_LAM))));
         /* with analytic K the first step is exact up to rounding; with
            forward differences of a linear Q the columns carry rounding of
            eps |Q| / (sqrt(eps) |q|) ~ sqrt(eps) relative error, so the
@@ -330,6 +340,7 @@ static void test_static_linear_springs(void **state)
         assert_int_equal(solve(&sys, &par, q, lam, &st), VLBE_OK);
         assert_true(st.newton_iters == 0 && st.force_calls == 1);
     }
+    tu_measured("sp_eps", wsp);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -460,16 +471,18 @@ static void test_static_bead_on_circle(void **state)
         }
         if (variant == 0) it_hess = st.newton_iters;
         /* Newton with the exact Hessian from the bottom of the circle, 77
-           degrees away, lambda = 0: measured 9 iterations (8 in float; one
-           backtrack),
-           bounded by 12; FD Hessian (error sqrt(eps) relative): within one
-           of it */
+           degrees away, lambda = 0: measured 9 (m:bead_it) iterations
+           (8 (m@flt:bead_it) in float; 1 (m:bead_rej) backtrack), bounded
+           by 12; FD Hessian (error sqrt(eps) relative): within one of it */
+        if (variant == 0) tu_measured("bead_it", (double)st.newton_iters);
+        if (variant == 0) tu_measured("bead_rej", (double)st.rejected);
         if (variant == 0) assert_true(st.newton_iters <= 12);
         if (variant == 1) assert_true(st.newton_iters <= it_hess + 1);
         /* without it: linear, factor 0.33 per iteration, so more
-           iterations than with it: measured 23 vs 9 in double (to the
-           1e-10 increment test), 13 vs 8 in float (to the rounding floor
-           8 eps, reached sooner) */
+           iterations than with it: measured 23 (m:bead_it_nc) vs 9 in
+           double (to the 1e-10 increment test), 13 (m@flt:bead_it_nc) vs 8
+           in float (to the rounding floor 8 eps, reached sooner) */
+        if (variant == 2) tu_measured("bead_it_nc", (double)st.newton_iters);
         if (variant == 2) assert_true(st.newton_iters > it_hess + 3);
         /* the FD Hessian costs n + 1 = 3 constr_jac calls per Jacobian,
            the analytic one 1 constr_hess call */
@@ -595,7 +608,7 @@ static void test_static_truss_snapthrough(void **state)
     vlbe_real q[2], lam[1] = {VLBE_R(0.0)};
     double worst = 0.0, lmax = -1.0, lmin = 1.0, tol;
     int k, kmax = -1, kmin = -1;
-    long iters = 0;
+    long iters = 0, it_min = 1000, it_max = 0;
     (void)state;
     truss_setup(&sys, &tr);
     vlbe_static_params_default(&par);
@@ -607,6 +620,8 @@ static void test_static_truss_snapthrough(void **state)
         tr.w = (vlbe_real)w;
         assert_int_equal(solve(&sys, &par, q, lam, &st), VLBE_OK);
         iters += st.newton_iters;
+        if (st.newton_iters < it_min) it_min = st.newton_iters;
+        if (st.newton_iters > it_max) it_max = st.newton_iters;
         le = truss_lambda(&tr, (double)tr.w);
         ASSERT_CLOSE_CTX(lam[0], le, 0.0, tol, "k = %d, w = %g", k, w);
         worst = fmax(worst, fabs((double)lam[0] - le));
@@ -624,7 +639,9 @@ static void test_static_truss_snapthrough(void **state)
     assert_true(kmin > 20 && kmin < 40 && lmin < 0.0);
     ASSERT_CLOSE(lmin, -lmax, 0.0, 2 * tol); /* P(-w) = -P(w) */
     /* Newton from the last solution: a few iterations per height (measured
-       3..4); 6 bounds them */
+       2 (m:tr_it_min) to 3 (m:tr_it_max)); 6 bounds them */
+    tu_measured("tr_it_min", (double)it_min);
+    tu_measured("tr_it_max", (double)it_max);
     assert_true(iters <= 6 * 41);
 }
 
@@ -660,7 +677,7 @@ static void test_static_fd_jacobian(void **state)
     vlbe_dae sys, sfd;
     vlbe_static_params par;
     static const double ws[5] = {0.19, 0.1155, 0.0, -0.05, -0.15};
-    double worst_q = 0.0, worst_l = 0.0, tq, tl;
+    double worst_q = 0.0, worst_l = 0.0, tq, tl, extra = -1e9;
     int k, i, j;
     (void)state;
     truss_setup(&sys, &tr);
@@ -698,14 +715,17 @@ static void test_static_fd_jacobian(void **state)
         worst_l = fmax(worst_l, fabs((double)lf[0] - (double)la[0]));
         /* FD: n = 2 extra force calls per Jacobian instead of one force_jac
            call; K's sqrt(eps) error costs at most one more iteration
-           (measured: none), and the line search is never needed (a
-           path start 0.01 m off the symmetric line) */
+           (measured: 0 (m:tr_fd_extra) more in double, 1 (m@flt:tr_fd_extra)
+           in float), and the line search is never
+           needed (a path start 0.01 m off the symmetric line) */
+        extra = fmax(extra, (double)(sf.newton_iters - sa.newton_iters));
         assert_true(sf.newton_iters <= sa.newton_iters + 1);
         assert_true(sf.force_calls == 1 + sf.newton_iters * 3 + sf.rejected);
         assert_true(sa.force_calls == 1 + sa.newton_iters * 2 + sa.rejected);
     }
     tu_report("truss FD-K vs analytic-K q [m]", worst_q, tq);
     tu_report("truss FD-K vs analytic-K lambda [N]", worst_l, tl);
+    tu_measured("tr_fd_extra", extra);
 }
 
 /* ------------------------------------------------------------------------ */

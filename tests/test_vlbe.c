@@ -10,6 +10,10 @@
    twice its unit roundoff); each carries a one-line reason.  Reference values
    are computed in double (long double for LU residuals), so in the float
    build their own rounding is negligible next to the code under test's.
+   Set VLBE_TEST_REPORT=1 to print the worst error of the checks with a
+   rounding or difference tolerance next to that tolerance; "measured"
+   below is the double -O2 build (tag m:; tests/measured.sh checks it
+   against the report).
 
    Groups: status codes and finite checks | small vector ops | Gauss-Legendre
    | ALE Hermite / linear basis | dense LU. */
@@ -223,7 +227,7 @@ static double monomial_integral(int k) { return k % 2 ? 0.0 : 2.0 / (k + 1); }
    relative), so w x^k is off by <= (k + 1) eps/2 relative, and sum |w x^k|
    <= sum w = 2; the double arithmetic adds n + k more roundings (far smaller
    in the float build).  A bound, not an estimate: the worst case measured
-   uses 1/16 of it. */
+   (test_gl_exactness) uses 0.06 (m:gl_ratio) of it. */
 static double gl_tol(int n, int k) { return 2.0 * (double)(n + k + 1) * EPS; }
 
 /* Error of the n-point rule on x^(2n): 2^(2n+1) (n!)^4 / ((2n+1) ((2n)!)^2)
@@ -238,12 +242,17 @@ static double gl_remainder_x2n(int n)
 
 static void test_gl_exactness(void **state)
 {
+    double worst = 0.0;
     int n, k;
     (void)state;
     for (n = 1; n <= VLBE_GL_MAX; ++n)
-        for (k = 0; k <= 2 * n - 1; ++k)
+        for (k = 0; k <= 2 * n - 1; ++k) {
             ASSERT_CLOSE_CTX(gl_sum(n, k), monomial_integral(k), 0, gl_tol(n, k),
                              "rule n = %d, x^%d", n, k);
+            worst = fmax(worst, fabs(gl_sum(n, k) - monomial_integral(k)) / gl_tol(n, k));
+        }
+    tu_report("Gauss rules on x^k, k < 2n: err / bound", worst, 1.0);
+    tu_measured("gl_ratio", worst);
 }
 
 /* Degree 2n is not integrated exactly: the error equals the Gauss remainder
@@ -252,18 +261,21 @@ static void test_gl_exactness(void **state)
    exact. */
 static void test_gl_not_exact_2n(void **state)
 {
+    double worst = 0.0;
     int n, visible = 0;
     (void)state;
     for (n = 1; n <= VLBE_GL_MAX; ++n) {
         const double err = monomial_integral(2 * n) - gl_sum(n, 2 * n);
         const double rem = gl_remainder_x2n(n), tol = gl_tol(n, 2 * n);
         ASSERT_CLOSE_CTX(err, rem, 0, tol, "rule n = %d, x^%d", n, 2 * n);
+        worst = fmax(worst, fabs(err - rem) / tol);
         if (rem > 20.0 * tol) {
             assert_true(fabs(err) > 10.0 * tol); /* clearly above rounding */
             ++visible;
         }
     }
     assert_true(visible >= (EPS < 1e-12 ? VLBE_GL_MAX : 7)); /* see above */
+    tu_report("Gauss rules on x^2n: err - remainder / bound", worst, 1.0);
 }
 
 static void test_gl_nodes_weights(void **state)
@@ -397,6 +409,7 @@ static double elem_point(int el, int ix, vlbe_real *p, vlbe_real *p1, vlbe_real 
    independently of the library's polynomial-in-xi form. */
 static void test_herm_s_form(void **state)
 {
+    double ws = 0.0, wb = 0.0;
     int el, fam, i, t;
     (void)state;
     for (el = 0; el < ARRAY_LEN(elems); ++el)
@@ -421,9 +434,10 @@ static void test_herm_s_form(void **state)
             /* library: p - p1, 1/L, a product (1.5 eps relative in xi), then
                2 xi - 1: <= 3.5 eps; the reference adds ~1.5 eps of its own */
             ASSERT_CLOSE_CTX(b.s, s, 0, 8 * EPS, "element %d, t %d", el, t);
+            ws = fmax(ws, fabs((double)b.s - s) / EPS);
             ASSERT_CLOSE(b.L, L, 0, 0); /* p2 - p1 of the same two numbers */
             for (fam = HERM; fam <= LIN; ++fam)
-                for (i = 0; i < fam_nb[fam]; ++i)
+                for (i = 0; i < fam_nb[fam]; ++i) {
                     /* s error (<= 8 eps, above) times |dN/ds| <= 3/4 L^u, plus
                        the roundings of the terms 1, 3 xi^2, 2 xi^3 (<= 6 eps):
                        16 eps of the natural size */
@@ -431,7 +445,12 @@ static void test_herm_s_form(void **state)
                                      16 * EPS * herm_unit(fam, i, 0, L),
                                      "element %d, t %d, %s%d", el, t, fam == HERM ? "N" : "H",
                                      i + 1);
+                    wb = fmax(wb, fabs(herm_get(&b, fam, 0, 0, i) - ref[fam][i]) /
+                                      (EPS * herm_unit(fam, i, 0, L)));
+                }
         }
+    tu_report("s = (2p - p1 - p2)/L, in eps", ws, 8.0);
+    tu_report("N1..N4, H1, H2 vs the s form, in eps of natural size", wb, 16.0);
 }
 
 /* (b) interpolation conditions at the nodes: value and slope (d/dp) of N1..N4
@@ -501,6 +520,8 @@ static double nodal_deriv(int fam, int i, int j1, int j2, const poly3 *f, double
    others check the p1/p2 partials exactly, mixed and second order included.
    Rounding: each basis entry is off by a few tens of eps of its natural
    size (herm_unit), so the sum is off by that times sum |C C q_i|. */
+static double herm_interp_worst; /* worst error / (eps scale) of check_interpolant */
+
 static void check_interpolant(const vlbe_herm_ale *b, int fam, const poly3 *f, double p,
                               double p1, double p2)
 {
@@ -524,7 +545,11 @@ static void check_interpolant(const vlbe_herm_ale *b, int fam, const poly3 *f, d
                 }
             /* 32 eps of the natural sizes: the coefficients of the second
                partials at k = 3 reach a few hundred but the rounding spreads
-               over many terms (measured worst: 7 eps of scale) */
+               over many terms (measured worst: 0.8 (m:herm_interp) eps of
+               scale) */
+            herm_interp_worst =
+                fmax(herm_interp_worst,
+                     fabs(sum - (a == VLBE_DA_0 ? poly3_deriv(f, k, p) : 0.0)) / (EPS * scale));
             ASSERT_CLOSE_CTX(sum, a == VLBE_DA_0 ? poly3_deriv(f, k, p) : 0.0, 0,
                              32 * EPS * scale,
                              "%s, p = %.9g, p1 = %.9g, p2 = %.9g, k = %d, (k1,k2) = (%d,%d)",
@@ -543,6 +568,7 @@ static void test_herm_reproduction_and_partials(void **state)
     static const double gam[4] = {0.7, -1.3, 0.9, 0.45};
     int el, ix, fi, fam, j;
     (void)state;
+    herm_interp_worst = 0.0;
     for (el = 0; el < ARRAY_LEN(elems); ++el)
         for (ix = 0; ix < ARRAY_LEN(xis); ++ix) {
             vlbe_real p, p1, p2;
@@ -565,6 +591,8 @@ static void test_herm_reproduction_and_partials(void **state)
                         check_interpolant(&b, fam, &f, (double)p, (double)p1, (double)p2);
             }
         }
+    tu_report("reproduction and p1/p2 partials, in eps of scale", herm_interp_worst, 32.0);
+    tu_measured("herm_interp", herm_interp_worst);
 }
 
 /* -- finite differences ------------------------------------------------- */
@@ -609,14 +637,15 @@ static void test_herm_fd(void **state)
        (herm_unit), the rounding error is ~c eps / hrel, c = a few tens (the
        coefficients of the entries), and the truncation error is hrel^2/6
        times the growth of the coefficients over three more derivatives
-       (hundreds at the highest orders): measured ~2 eps/hrel at this step,
-       growing as h^3 relative to rounding (8x at twice the step), while
-       rounding reaches ~24 eps/hrel. */
+       (hundreds at the highest orders).  Measured 4 (m:herm_fd) eps/hrel
+       at this step in double, 17 (m@flt:herm_fd) in float (relative to
+       |exact| + the natural size); the truncation part grows as h^3
+       relative to the rounding part (8x at twice the step). */
     const double hrel = tu_fd_step(EPS, 0.25);
     /* 64 eps/hrel (9e-9 in double, 6e-3 in float) covers both with a
-       margin of 2.5; relative to |exact| and to the natural size */
+       margin (above); relative to |exact| and to the natural size */
     const double tol = 64 * EPS / hrel;
-    double full[HERM_NV], d[HERM_NV], work[HERM_NV];
+    double full[HERM_NV], d[HERM_NV], work[HERM_NV], worst = 0.0;
     int el, ix, dir, idx;
     (void)state;
     for (el = 0; el < ARRAY_LEN(fd_elems); ++el)
@@ -638,6 +667,10 @@ static void test_herm_fd(void **state)
                     const int tgt = fd_target(dir, e);
                     const int m = e.k + da_order(e.a) + 1; /* level of the derivative */
                     if (tgt < 0) continue;
+                    worst = fmax(worst, fabs(d[idx] - (tgt == HERM_NV ? 0.0 : full[tgt])) /
+                                            (EPS / hrel *
+                                             (fabs(tgt == HERM_NV ? 0.0 : full[tgt]) +
+                                              herm_unit(e.fam, e.i, m, L))));
                     ASSERT_CLOSE_CTX(d[idx], tgt == HERM_NV ? 0.0 : full[tgt], tol,
                                      tol * herm_unit(e.fam, e.i, m, L),
                                      "FD in %s of %s%d, k = %d, selector %d at p = %.9g, "
@@ -648,6 +681,8 @@ static void test_herm_fd(void **state)
                 }
             }
         }
+    tu_report("basis derivatives vs differences, in eps/hrel", worst, 64.0);
+    tu_measured("herm_fd", worst);
 }
 
 /* (f) kmax/amax subsets: the requested entries equal the full evaluation bit
@@ -717,6 +752,8 @@ static void mat_mul_ref(int n, int nrhs, const vlbe_real *A, const vlbe_real *X,
    backward stable (|dA| <= ~3n eps |L||U|, small growth here); the residual
    is summed in long double so that, in the double build, its own rounding
    stays well below the bound. */
+static double lu_res_worst; /* worst residual / (n eps ||A|| ||x||) of check_residual */
+
 static void check_residual(int n, int nrhs, int r, const vlbe_real *A, const vlbe_real *X,
                            const vlbe_real *B)
 {
@@ -735,6 +772,8 @@ static void check_residual(int n, int nrhs, int r, const vlbe_real *A, const vlb
     }
     ASSERT_CLOSE_CTX((double)res, 0.0, 0, 10.0 * n * EPS * (double)(anorm * xnorm),
                      "n = %d, right-hand side %d", n, r);
+    if (anorm * xnorm > 0.0L)
+        lu_res_worst = fmax(lu_res_worst, (double)res / (n * EPS * (double)(anorm * xnorm)));
 }
 
 /* Factors A out of place (A must not change), solves for nrhs right-hand
@@ -780,6 +819,7 @@ static void test_lu_random_dominant(void **state)
     tu_rng g = tu_rng_seed(12345);
     int s;
     (void)state;
+    lu_res_worst = 0.0;
     for (s = 0; s < ARRAY_LEN(lu_sizes); ++s) {
         const int n = lu_sizes[s];
         vlbe_real *A = alloc_real((size_t)n * (size_t)n);
@@ -788,6 +828,7 @@ static void test_lu_random_dominant(void **state)
         lu_solve_check(n, 3, A, &g);
         test_free(A);
     }
+    tu_report("LU, dominant: residual in n eps ||A|| ||x||", lu_res_worst, 10.0);
 }
 
 /* plain random matrices: pivoting happens at almost every step */
@@ -796,6 +837,7 @@ static void test_lu_random_general(void **state)
     tu_rng g = tu_rng_seed(777);
     int s;
     (void)state;
+    lu_res_worst = 0.0;
     for (s = 0; s < ARRAY_LEN(lu_sizes); ++s) {
         const int n = lu_sizes[s];
         vlbe_real *A = alloc_real((size_t)n * (size_t)n);
@@ -803,6 +845,7 @@ static void test_lu_random_general(void **state)
         lu_solve_check(n, 3, A, &g);
         test_free(A);
     }
+    tu_report("LU, general: residual in n eps ||A|| ||x||", lu_res_worst, 10.0);
 }
 
 /* Matrices with zeros on the diagonal, which only pivoting can factor, and
