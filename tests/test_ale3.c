@@ -9,7 +9,7 @@
    FD = EPS^(2/3) for central differences with the step h = EPS^(1/3)
    (times max(1, |x|); the step balances the truncation error h^2 f'''/6
    against the rounding error EPS f / h, both then ~EPS^(2/3)): FD =
-   3.7e-11 in double, 2.4e-5 in float.  A Jacobian error is measured
+   3.7e-11 in double, 2.4e-5 in float.  A Jacobian error is taken
    against the scale of its entry's row and column, the largest entry
    there of the analytic or the differenced matrix (a Jacobian that is
    wrongly zero cannot pass), with the differences' rounding 16 EPS

@@ -282,9 +282,10 @@ static void report3(const char *name, const double *w) { tu_report(name, w[1], w
    number of turns).  Tolerance 64 FD (2.4e-9 double, 1.5e-3 float) of the
    largest entry for the truncation (third derivatives of Q through 1/l^3
    and the rotation of the frame, a few times the entries) plus 16 EPS of
-   max|Q| / h for the rounding of Q.  Measured 4.9 (m:fj_K0) FD (O(1))
-   and 1 (m:fj_K1) FD (stiff) in double, 3.9 (m@flt:fj_K0) and
-   1 (m@flt:fj_K1) FD in float.
+   max|Q| / h for the rounding of Q.  Measured 1.5 (m:fj_K0) FD (O(1))
+   and 1.6 (m:fj_K1) FD (stiff) in double, 1.7 (m@flt:fj_K0) and
+   1.7 (m@flt:fj_K1) FD in float, each entry against the largest of its
+   row and column.
 
    D: Q is exactly quadratic in q' (nonlinear inertia quadratic, damping
    linear), so a central difference has no truncation error whatever the

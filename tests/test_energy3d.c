@@ -258,10 +258,12 @@ static double thd_sin(double x)
    most of theirs).  The trapezoidal rule carries an O(h^2) error in the
    integration and in the quadrature of the power alike, so the residual
    of the time-discrete balance is O(h^2): it must fall by at least 2.5
-   when h halves (measured 3.5 undamped, 4.0 damped, 320 -> 640 steps;
+   when h halves (measured 3.5 (m:ratio0) undamped, 4.0 (m:ratio1) damped,
+   320 -> 640 steps;
    checked where the residual is above the rounding floor 1e3 EPS scale,
    i.e. in double) and at 640 steps stay within 1e-4 of the scale
-   (measured 7.5e-7 undamped, 9.5e-6 damped, in both precisions: the bound
+   (measured 7.5e-7 (m:res0) undamped, 9.5e-6 (m:res1) damped; float
+   7.2e-7 (m@flt:res0) and 9.6e-6 (m@flt:res1): the bound
    is 10 times the larger).  Not blind: undamped, the energy carried
    through the ends and the work of the mesh drive are 22 and 60 times
    the bound; damped, the dissipation 460 times.
@@ -293,6 +295,9 @@ static void test_window_balance(void **state)
                           "+ res %.3e (320 steps: %.3e), scale %.3e\n",
                           cphi, b2.dE, b2.flux, b2.mesh, b2.diss, b2.res, b1.res, b2.scale);
         assert_true(b2.scale > 0.0);
+        tu_measured(d ? "res1" : "res0", fabs(b2.res) / b2.scale);
+        if (fabs(b2.res) > 1e3 * EPS * b2.scale)
+            tu_measured(d ? "ratio1" : "ratio0", fabs(b1.res) / fabs(b2.res));
         worst = fmax(worst, fabs(b2.res) / b2.scale);
         ASSERT_CLOSE_CTX(b2.res, 0.0, 0, tol * b2.scale, "c_phi %g, 640 steps", cphi);
         if (fabs(b2.res) > 1e3 * EPS * b2.scale) {
@@ -329,7 +334,8 @@ static double thd_end(double x) { return x >= 1.0 ? 1.0 : 0.0; }
    amplitude falls to 0.34).  Trapezoidal Newmark at h = 1 ms: its
    relative frequency error is (w h)^2/12, so the phase drifts by at most
    w t (w h)^2/12 = 5.4e-5 rad by the end; the bound 1.1e-4 of the
-   amplitude 1/wd (twice that; measured 1.8e-5 in both precisions).
+   amplitude 1/wd (twice that; measured 1.8e-5 (m:decay), float
+   1.8e-5 (m@flt:decay)).
    Catches (verified, in both precisions): the twist damping with the
    wrong sign (cT = -c_phi GI in vlbe__a3_strain_gp, Q, K and D alike):
    the oscillation grows as exp(+s t) and leaves the bound at the 6th
@@ -360,6 +366,7 @@ static void test_twist_decay(void **state)
     free(w);
     free(iw);
     tu_report("twist decay vs closed form, of the amplitude", err / amp, tol / amp);
+    tu_measured("decay", err / amp);
 }
 
 int main(void)

@@ -19,8 +19,9 @@
                      wrongly zero, fail at their own scale while the
                      whole-matrix criterion |Jfd - J| <= 64 FD max|J| (the
                      harness before) passes them (errors 1-4 FD, the zero
-                     block's up to 8 FD; measured own-scale ratios 4.3-125,
-                     whole-matrix 0.008-0.063, in both precisions);
+                     block's up to 8 FD; own-scale ratios from
+                     16 (m~:own_min) to 125 (m~:own_max), whole-matrix
+                     0.008 (m~:whole_min) to 0.063 (m~:whole_max));
                    - a large entry off by 1e3 FD fails both ways;
                    - no entry's tolerance exceeds the whole-matrix one
                      (fd_compare's ratio >= the whole-matrix ratio). */
@@ -85,7 +86,7 @@ static void test_small_block(void **state)
     const vlbe_real q0[4] = {VLBE_R(1e-3), VLBE_R(-2e-3), VLBE_R(1.5e-3), VLBE_R(0.7e-3)};
     fd_ctx c;
     vlbe_real J[16], Jb[16];
-    double Jfd[16], r, w;
+    double Jfd[16], r, w, own_min = HUGE_VAL, own_max = 0.0, whole_min = HUGE_VAL, whole_max = 0.0;
     fd_stats st;
     int k, i;
     (void)state;
@@ -112,11 +113,17 @@ static void test_small_block(void **state)
         if (tu_report_on())
             print_message("    small block %s: own scale %.3g, whole matrix %.3g (entry %d, %d)\n",
                           k < 4 ? "entry 50 % off" : "zero", r, w, st.i, st.j);
+        own_min = fmin(own_min, r), own_max = fmax(own_max, r);
+        whole_min = fmin(whole_min, w), whole_max = fmax(whole_max, w);
         assert_true(w <= 1.0); /* the whole-matrix check let it pass */
         assert_true(r > 1.0);  /* at its own scale it fails */
         assert_true(st.i >= 2 && st.j >= 2);
         assert_true(r >= w);
     }
+    tu_measured("own_min", own_min);
+    tu_measured("own_max", own_max);
+    tu_measured("whole_min", whole_min);
+    tu_measured("whole_max", whole_max);
     /* a large entry off by 1e3 FD (relative): both fail */
     memcpy(Jb, J, sizeof Jb);
     Jb[1] = (vlbe_real)((double)J[1] * (1.0 + 1e3 * FD_ERR));
