@@ -13,6 +13,8 @@
 
 #include "../integrators.h"
 
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
 
@@ -22,6 +24,14 @@
    the state that the caller sets), the state of that step kept. */
 typedef vlbe_status (*ex_observer)(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
                                    const vlbe_real *lambda);
+
+/* BDF: the smallest step an example's run may average, relative to t_end,
+   when bdf->h_min does not set one.  The examples' stiffest BDF run, the
+   undamped ANCF beam of examples/ex_spin.h at order 5, steps at 2e-5 s over
+   20 s, 1e-6 of the run; ten times below that a run is stuck, not resolving
+   anything.  ex_run stops a BDF run after t_end / h_floor accepted steps
+   (plus one per mark and two) with VLBE_ESTEP and a message. */
+#define EX_RUN_BDF_HREL 1e-7
 
 /* The integrator: hht != NULL: that generalized-alpha scheme with the fixed
    step h (t_end - t0 rounded to a whole number of steps); else BDF with bdf,
@@ -167,12 +177,23 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
             out->stats = hs.stats;
         }
     } else {
+        /* accepted steps at most: t_end / h_floor, one per mark, two more */
+        const double h_floor = m->bdf->h_min > VLBE_R(0.0) ? (double)m->bdf->h_min
+                                                            : EX_RUN_BDF_HREL * t_end;
+        const double max_steps = ceil(t_end / h_floor) + m->n_marks + 2.0;
+        long k = 0;
         rc = vlbe_bdf_init(&bs, sys, m->bdf, VLBE_R(0.0), q0, v0, w, lw, iw, liw);
         if (rc == VLBE_OK) {
             q = bs.q, v = bs.v, lam = bs.lambda;
             if (obs) rc = obs(ctx, 0.0, q, v, lam);
             while (rc == VLBE_OK && (double)bs.t < t_end) {
                 double t_stop = t_end;
+                if (++k > max_steps) {
+                    fprintf(stderr, "ex_run: %ld BDF steps reached only t = %g s of %g s (steps "
+                            "averaging below %g s); stopped\n", k - 1, (double)bs.t, t_end, h_floor);
+                    rc = VLBE_ESTEP;
+                    break;
+                }
                 while (mk < m->n_marks && m->marks[mk] <= (double)bs.t) ++mk;
                 if (mk < m->n_marks && m->marks[mk] < t_end) t_stop = m->marks[mk];
                 if ((rc = vlbe_bdf_step(&bs, (vlbe_real)t_stop)) != VLBE_OK) break;

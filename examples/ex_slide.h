@@ -42,8 +42,9 @@
    the free end: the element ahead of it, the last one, shorter than
    stop L_std (there is no node left to remove there, the element shrinks
    to nothing and its bending frequency grows as 1/L^2); the leaving time is
-   p(t) extrapolated to p = L with p' and p''.  Examples may allocate; the
-   run mallocs its workspace. */
+   p(t) extrapolated to p = L with p' and p''.  A run that would need more
+   than ceil(t_end / h) + 2 steps stops with VLBE_ESTEP and a message on
+   stderr.  Examples may allocate; the run mallocs its workspace. */
 #ifndef VLBE_EX_SLIDE_H
 #define VLBE_EX_SLIDE_H
 
@@ -470,6 +471,10 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
     size_t lw = vlbe_hht_work_len(nmax, 2), liw = vlbe_hht_iwork_len(nmax, 2);
     vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
     int *iw = (int *)malloc(liw * sizeof *iw);
+    /* every step advances t by h (the halvings stay inside it), so
+       round(t_end / h) steps reach t_end: more than ceil(t_end / h) + 2
+       mean that time has stopped advancing as it should */
+    const double max_steps = ceil(c->t_end / c->h) + 2.0;
     double t = 0.0, Eref;
     clock_t c0 = clock();
     memset(&res, 0, sizeof res);
@@ -485,6 +490,12 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
         const int ps = m->node[m->slider].ofs + 4;
         double ps_now, E, T = 0.0;
         int changed = 0;
+        if ((double)res.steps >= max_steps) {
+            fprintf(stderr, "ex_slide_run: %ld steps of h = %g s reached only t = %g s of %g s; "
+                    "stopped\n", res.steps, c->h, t, c->t_end);
+            res.status = VLBE_ESTEP;
+            break;
+        }
         if ((res.status = vlbe_hht_step(&st, (vlbe_real)c->h)) != VLBE_OK) break;
         t = (double)st.t;
         res.steps++;

@@ -83,8 +83,9 @@ static void arc_state(ex_slide *m, double R, double s, vlbe_real *q)
    th^4 / 720 relative, to O(th^6) (series expansion, checked numerically:
    1/720.2 at th = 0.2, 1/731 at 0.6), so the chain is shorter than
    (1 + s) L by sum_e L_e th_e^4 / 720 / L, th_e = L_e / R: 7.56e-5 for the
-   elements 0.1, 0.3, 0.2, 0.2, 0.2 m; measured 7.46e-5.  Asserted within
-   5 % of that (the th^6 term of the 0.3 m element, th = 0.6: ~1.5 %).
+   elements 0.1, 0.3, 0.2, 0.2, 0.2 m; measured 7.46e-5 (m:circle_deficit).
+   Asserted within 5 % of that (the th^6 term of the 0.3 m element, th =
+   0.6: ~1.5 %).
    (b) The rate: on the circle, velocities of every coordinate set to a
    fixed pseudo-random pattern (the sliding node's p' = 0.3 m/s, so the
    transport terms dS/dp e p' enter), the ends' p fixed; then a chain with
@@ -119,6 +120,7 @@ static void test_chain_length(void **state)
             pred += Le * th * th * th * th / 720.0;
         }
         tu_report("circle: length deficit vs sum L th^4/720", fabs(dev - pred) / pred, 0.05);
+        tu_measured("circle_deficit", dev);
         ASSERT_CLOSE(dev, pred, 0.05, 0.0);
     }
 #ifndef VLBE_USE_FLOAT
@@ -171,13 +173,16 @@ static void test_chain_length(void **state)
    - the conservative element does not gain energy between the events: HHT
      with alpha < 0 dissipates, an energy-consistent force model can only
      lose; the gain allowed is the Newton tolerance's share, 1e-6 of the
-     peak kinetic energy (measured 1.3e-8).  The paper form is reported
-     (it gains 3.5e-3 J here, 0.19 J with 40 elements: the missing flux of
-     strain energy through the moving nodes). */
+     peak kinetic energy (measured 1.3e-8 (m:fb_gain_rel)).  The paper form
+     is reported (it gains 3.5e-3 J (m:fb_paper_gain) here, more with more
+     elements, examples/falling_beam.c: the missing flux of strain energy
+     through the moving nodes). */
 static void test_falling_beam(void **state)
 {
     (void)state;
-#ifndef VLBE_USE_FLOAT
+#ifdef VLBE_USE_FLOAT
+    TU_SKIP("the length control's short elements do not converge in float (header)");
+#else
     {
         int f;
         for (f = 0; f < 2; ++f) {
@@ -190,6 +195,13 @@ static void test_falling_beam(void **state)
                               "energy within steps [%.3g, %.3g] J, peak kinetic %.3g J\n",
                               f ? "conservative" : "paper form", vlbe_status_str(r.status),
                               r.t_leave, r.lc_events, r.dE_loss, r.dE_gain, r.T_max);
+            if (f) {
+                tu_measured("fb_gain_rel", r.dE_gain / r.T_max);
+            } else {
+                tu_measured("fb_paper_gain", r.dE_gain);
+                tu_measured("fb_t_leave", r.t_leave);
+                if (r.nev > 0) tu_measured("fb_first_event", r.ev[0].t);
+            }
             assert_int_equal(r.status, VLBE_OK);
             assert_true(r.t_leave > 0.0);
             assert_true(r.lc_events >= 3);
@@ -209,27 +221,34 @@ static void test_falling_beam(void **state)
      velocities (exact segmentation), so the energy changes only by the
      quadrature error of the bending energy (kappa^2 is rational in p; the
      5-point Gauss rule is exact for the kinetic and axial integrands,
-     polynomials of degree 6 and 8, not for it): measured 5e-20 J and
-     4e-9 J (1e-9 of the peak kinetic energy), asserted below 1e-7 of it;
-     the arc length (8-point Gauss of |r'|) to 1e-12 m (measured 1e-15 m);
+     polynomials of degree 6 and 8, not for it): measured at most
+     5e-9 (m:split_dE_max) J over the splits of the three runs, 1e-9
+     (m:split_dE_rel) of the peak kinetic energy (the split at the first
+     step, on the straight beam, changes it by rounding only), asserted
+     below 1e-7 of it; the arc length (8-point Gauss of |r'|) to 1e-12 m
+     (measured 1e-15 (m~:split_dlen) m);
    - conservative form: no energy gain between events (1e-6 of the peak
      kinetic energy, as for the falling beam) and the loss, HHT's
      dissipation, falls with the step: h = 1e-3 -> 2.5e-4 divides it by at
      least 8 (the dissipation of HHT is O(h^2) for resolved motion, a ratio
-     of 16; measured 21 over this 1 s; 8 leaves room for the unresolved
-     axial modes);
+     of 16; measured 21 (m:loss_ratio) over this 1 s; 8 leaves room for
+     the unresolved axial modes);
    - paper form: it gains energy between events, more than 1e-2 of the peak
-     kinetic energy (measured 3.3e-2): the flux the paper's virtual work
-     leaves out (ancf_ale.h, VLBE_ALE_CONSERVATIVE); if this ever fails the
-     paper form has become conservative and the README's finding is stale. */
+     kinetic energy (measured 3.4e-2 (m:sb_paper_gain_rel)): the flux the
+     paper's virtual work leaves out (ancf_ale.h, VLBE_ALE_CONSERVATIVE); if
+     this ever fails the paper form has become conservative and the
+     README's finding is stale. */
 static void test_suspended_beam(void **state)
 {
     (void)state;
-#ifndef VLBE_USE_FLOAT
+#ifdef VLBE_USE_FLOAT
+    TU_SKIP("the length control's short elements do not converge in float (header)");
+#else
     {
         ex_slide_cfg cfg;
         ex_slide_out r[3];
         static const double hs[3] = {1e-3, 2.5e-4, 1e-3};
+        double dE_max = 0.0, dE_rel = 0.0, dlen = 0.0;
         int j, k, splits = 0;
         for (j = 0; j < 3; ++j) {
             sb_cfg(&cfg, j < 2 ? VLBE_ALE_CONSERVATIVE : 0u, hs[j], 1.0);
@@ -245,10 +264,18 @@ static void test_suspended_beam(void **state)
             for (k = 0; k < r[j].nev; ++k)
                 if (r[j].ev[k].changed == 1) {
                     ++splits;
+                    dE_max = fmax(dE_max, fabs(r[j].ev[k].dE));
+                    dE_rel = fmax(dE_rel, fabs(r[j].ev[k].dE) / r[j].T_max);
+                    dlen = fmax(dlen, fabs(r[j].ev[k].dlen));
                     assert_true(fabs(r[j].ev[k].dE) <= 1e-7 * r[j].T_max);
                     assert_true(fabs(r[j].ev[k].dlen) <= 1e-12);
                 }
         }
+        tu_measured("split_dE_max", dE_max);
+        tu_measured("split_dE_rel", dE_rel);
+        tu_measured("split_dlen", dlen);
+        tu_measured("loss_ratio", r[0].dE_loss / r[1].dE_loss);
+        tu_measured("sb_paper_gain_rel", r[2].dE_gain / r[2].T_max);
         assert_true(splits >= 1);
         assert_true(r[0].dE_gain <= 1e-6 * r[0].T_max);
         assert_true(r[1].dE_gain <= 1e-6 * r[1].T_max);
@@ -265,8 +292,9 @@ static void test_suspended_beam(void **state)
 /* (a) Unit weights: the rational element's basis is the Hermite one (the
    weighting function sum w_i N_i is 1 identically, eq. 9), so up to the
    first length-control event the ALE-RANCF run is the ALE-ANCF run.  The
-   falling beam with 5 elements has its first event at t = 0.261 s (both
-   models); t_end = 0.2 s leaves it out (asserted: no event in either run).
+   falling beam with 5 elements has its first event at t = 0.261 s
+   (m:fb_first_event) (the ALE-ANCF run of test_falling_beam); t_end = 0.2 s
+   leaves it out (asserted: no event in either run).
    The histories (tip y, mass x, y, p, energy, arc length) are compared
    row by row.  Tolerance: the two are different code paths (rancf.h
    divides by the weighting function and adds the terms of its derivatives,
@@ -274,8 +302,9 @@ static void test_suspended_beam(void **state)
    evaluation, propagated over 200 steps by a Newton iteration whose
    tolerance is far above rounding (a rounding difference that changes one
    iteration count leaves a difference of the order of that tolerance, not
-   of EPS).  Measured: 0, bit for bit, in the dbl and dbl-O0 builds (and
-   under the sanitizers); reported with VLBE_TEST_REPORT=1.  Asserted, so
+   of EPS).  Measured: 0 (m~:rancf_unit_diff), bit for bit, in the dbl
+   build, 0 (m@dbl-O0~:rancf_unit_diff) in dbl-O0 and 0
+   (m@san~:rancf_unit_diff) under the sanitizers.  Asserted, so
    that a compiler contracting the two paths differently (FMA) does not
    fail it: 1e-9 relative to each history's largest magnitude (1e-9 stands
    for "the same trajectory": the rounding
@@ -297,7 +326,9 @@ static inline double hist_reldiff(const double *a, const double *b, int n)
 static void test_rancf_unit_equals_ancf(void **state)
 {
     (void)state;
-#ifndef VLBE_USE_FLOAT
+#ifdef VLBE_USE_FLOAT
+    TU_SKIP("the dynamic scenes do not converge in float (header)");
+#else
     {
         ex_slide_cfg cfg;
         ex_slide_out r[2];
@@ -332,6 +363,7 @@ static void test_rancf_unit_equals_ancf(void **state)
             }
         }
         tu_report("rancf unit weights vs ancf, largest relative history difference", worst, 1e-9);
+        tu_measured("rancf_unit_diff", worst);
         assert_true(worst <= 1e-9);
         ex_slide_hist_free(&hi[0]);
         ex_slide_hist_free(&hi[1]);
@@ -340,16 +372,19 @@ static void test_rancf_unit_equals_ancf(void **state)
 }
 
 /* (b) Scene 6.1 with 20 ALE-RANCF elements: the mass leaves the beam
-   (measured t_leave 0.731 s; ALE-ANCF 0.566 s, the paper's figures 0.6 to
+   (measured t_leave 0.731 (m:fbr_t_leave) s; the 5-element ALE-ANCF run
+   of test_falling_beam 0.5655 (m:fb_t_leave) s, the paper's figures 0.6 to
    0.7 s; asserted in [0.55, 0.8], the paper's range widened by the spread
    of our meshes), the weights made by merges exist (the paper's Table 2:
-   57 for 20 elements; measured 57), are all positive (a weight <= 0 makes
-   the element singular, eq. 9) and their sigma (eq. 42) is finite; no
-   merge needed the unit-weight fallback of eq. 38 (measured 0). */
+   57 for 20 elements; measured 57 (m:fbr_nmerge)), are all positive (a
+   weight <= 0 makes the element singular, eq. 9) and their sigma (eq. 42)
+   is finite; no merge needed the unit-weight fallback of eq. 38. */
 static void test_falling_beam_rancf(void **state)
 {
     (void)state;
-#ifndef VLBE_USE_FLOAT
+#ifdef VLBE_USE_FLOAT
+    TU_SKIP("the dynamic scenes do not converge in float (header)");
+#else
     {
         ex_slide_cfg cfg;
         ex_slide_out r;
@@ -362,6 +397,8 @@ static void test_falling_beam_rancf(void **state)
                           "%ld\n", vlbe_status_str(r.status), r.t_leave, r.lc_events, r.wmerge.n,
                           r.wmerge.kmin, r.wmerge.kmax, ex_slide_sigma(&r.wmerge),
                           r.merge_fallbacks);
+        tu_measured("fbr_t_leave", r.t_leave);
+        tu_measured("fbr_nmerge", (double)r.wmerge.n);
         assert_int_equal(r.status, VLBE_OK);
         assert_true(r.t_leave >= 0.55 && r.t_leave <= 0.8);
         assert_true(r.wmerge.n > 0);
@@ -373,29 +410,36 @@ static void test_falling_beam_rancf(void **state)
 }
 
 /* (c) Scene 6.2, ALE-RANCF, 1 s (events: a split at the start, a merge at
-   0.216 s, a split + merge at 0.602 s).  Asserted:
+   0.216 s (m:sbr_t_ev2), a split + merge at 0.602 s (m:sbr_t_ev3)).
+   Asserted:
    - status OK;
    - a split (kind 1) changes the arc length by rounding only: 1e-12 m, as
      for ALE-ANCF above (exact segmentation, eqs. 21-28);
    - every event's |dlen| <= 1 mm = 3e-3 L_std.  Why this bound: the
      merged element keeps the end nodes' positions and slopes and fits the
      two pieces by least squares, so its length differs from theirs by the
-     second-order shape error of that fit; measured 0.134 mm (0.13 mm at
-     both merges).  The ALE-ANCF merge from the very same state (both
-     models are identical up to the first merge, test (a)) jumps by
-     1.63 mm: the bound, 7.5 x the measured rational jump and 0.6 x the
-     ALE-ANCF one, fails if the rational merge degrades to the Hermite one;
+     second-order shape error of that fit; measured at most
+     0.133 (m:sbr_dlen_max) mm, 0.13 (m:sbr_dlen_min) mm at the other merge.
+     The ALE-ANCF merge from the very same state (both models are identical
+     up to the first merge, test (a)) jumps by 1.63 (m:sba_dlen_first) mm:
+     the bound, 7.5 (m:sbr_bound_ratio) x the measured rational jump and 0.6
+     (m:sba_bound_ratio) x the ALE-ANCF one, fails if the rational merge
+     degrades to the Hermite one;
    - the paper's claim, at the first merge (same state before): |dE| and
      |dlen| of ALE-RANCF below those of ALE-ANCF (paper form); measured
-     0.019 J vs 0.349 J and 0.13 mm vs 1.63 mm. */
+     0.019 (m:sbr_dE_first) J vs 0.349 (m:sba_dE_first) J and
+     0.13 (m:sbr_dlen_first) mm vs 1.63 (m:sba_dlen_first) mm. */
 static void test_suspended_beam_rancf(void **state)
 {
     (void)state;
-#ifndef VLBE_USE_FLOAT
+#ifdef VLBE_USE_FLOAT
+    TU_SKIP("the dynamic scenes do not converge in float (header)");
+#else
     {
         ex_slide_cfg cfg;
         ex_slide_out r[2];
         const ex_slide_event *fm[2] = {NULL, NULL};
+        double dlen_max = 0.0, dlen_min = INFINITY; /* ALE-RANCF events, merges [mm] */
         int f, k;
         for (f = 0; f < 2; ++f) {
             sb_cfg(&cfg, 0u, 1e-3, 1.0);
@@ -412,11 +456,26 @@ static void test_suspended_beam_rancf(void **state)
                 if (!f) continue;
                 if (ev->changed == 1) assert_true(fabs(ev->dlen) <= 1e-12);
                 assert_true(fabs(ev->dlen) <= 1e-3);
+                dlen_max = fmax(dlen_max, 1e3 * fabs(ev->dlen));
+                if (ev->changed >= 2) dlen_min = fmin(dlen_min, 1e3 * fabs(ev->dlen));
+                if (k == 1 || k == 2) tu_measured(k == 1 ? "sbr_t_ev2" : "sbr_t_ev3", ev->t);
             }
         }
         assert_true(r[1].lc_events >= 2);
         assert_non_null(fm[0]);
         assert_non_null(fm[1]);
+        {
+            /* the first merges' arc-length jumps [mm]; the bound is 1 mm */
+            const double da = 1e3 * fabs(fm[0]->dlen), dr = 1e3 * fabs(fm[1]->dlen);
+            tu_measured("sbr_dlen_max", dlen_max);
+            tu_measured("sbr_dlen_min", dlen_min);
+            tu_measured("sbr_bound_ratio", 1 / dlen_max);
+            tu_measured("sba_bound_ratio", 1 / da);
+            tu_measured("sba_dlen_first", da);
+            tu_measured("sbr_dlen_first", dr);
+            tu_measured("sba_dE_first", fabs(fm[0]->dE));
+            tu_measured("sbr_dE_first", fabs(fm[1]->dE));
+        }
         assert_true(fm[0]->t == fm[1]->t); /* the same state before it */
         assert_true(fabs(fm[1]->dE) < fabs(fm[0]->dE));
         assert_true(fabs(fm[1]->dlen) < fabs(fm[0]->dlen));

@@ -30,7 +30,7 @@
    EA/h_in = 1.7e8 N/m and the rotational EI/h_out = 14 N m, a ratio of
    1e7 beyond the pivot test of vlbe_lu_factor in float (n eps_f max|A| =
    1.3e-5 max|A|): static_start asserts that this is reported as
-   VLBE_ESINGULAR, and the dynamic tests run in double only. */
+   VLBE_ESINGULAR, and the dynamic tests skip in float. */
 #include "test_util.h"
 #define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/sliding_beam.c"
@@ -69,7 +69,9 @@ static void test_static_start(void **state)
     assert_int_equal(g_m.sys.m, 1 + 2 * (c.n_in + 1));
 }
 
-#ifndef VLBE_USE_FLOAT
+/* the dynamic tests in the float build */
+#define SLIDE_SKIP_FLOAT() TU_SKIP("the static start is singular in float (header)")
+
 /* period collector */
 typedef struct per {
     double tl, yl, tc[64];
@@ -111,6 +113,9 @@ static void test_fixed_joint(void **state)
     per p;
     double T, Tex;
     (void)state;
+#ifdef VLBE_USE_FLOAT
+    SLIDE_SKIP_FLOAT();
+#endif
     sb_cfg_paper(&c, 'a');
     c.v0 = c.a0 = 0.0;
     c.damping = 0;
@@ -142,6 +147,9 @@ static void test_retraction(void **state)
     double worst = 0.0;
     int k;
     (void)state;
+#ifdef VLBE_USE_FLOAT
+    SLIDE_SKIP_FLOAT();
+#endif
     sb_cfg_paper(&c, 'a');
     c.t_end = 0.8;
     memset(&p, 0, sizeof p);
@@ -171,6 +179,9 @@ static void test_crossings(void **state)
     double g[3];
     int i, inside = 0, left;
     (void)state;
+#ifdef VLBE_USE_FLOAT
+    SLIDE_SKIP_FLOAT();
+#endif
     sb_cfg_paper(&c, 'b');
     c.t_end = 0.45;
     sb_run(&g_m, &c, NULL, NULL, &out);
@@ -209,6 +220,9 @@ static void test_release_rule(void **state)
     sb_cfg c;
     sb_out out;
     (void)state;
+#ifdef VLBE_USE_FLOAT
+    SLIDE_SKIP_FLOAT();
+#endif
     sb_cfg_paper(&c, 'b');
     c.h = 4e-3;
     c.t_end = 0.1;
@@ -227,18 +241,14 @@ static void test_release_rule(void **state)
     assert_true(fabs(g_last_t - c.t_end) < 1e-9);
 }
 
-#endif
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_static_start),
-#ifndef VLBE_USE_FLOAT
         cmocka_unit_test(test_fixed_joint),
         cmocka_unit_test(test_retraction),
         cmocka_unit_test(test_crossings),
         cmocka_unit_test(test_release_rule),
-#endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
