@@ -8,7 +8,7 @@
    run from the repository root:  build/bench/bench_ale [tag]
    writes out/bench/ale_elem[-tag].csv (out/bench must exist).
 
-   Targets of the issue, ns per element call for the full element (bending,
+   Performance targets, ns per element call for the full element (bending,
    Kelvin-Voigt damping, both material coordinates free, default Gauss
    orders nm/nl/nt = 4/5/5): forces (K = D = NULL) <= 300, forces with K and
    D <= 1500, mass matrix <= 500.  The other rows carry the same target for

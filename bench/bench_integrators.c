@@ -16,7 +16,7 @@
    then the variants: Newton tolerance 1e-12 (the example's), finite-difference
    Jacobians (force_jac, constr_hess, constr_acc left NULL), full Newton
    (modified = 0), generalized-alpha rho_inf = 0.8, BDF orders 1..5 at rtol
-   1e-6 and 1e-8 (atol = rtol / 100, as pend_run_bdf).  Target of the issue:
+   1e-6 and 1e-8 (atol = rtol / 100, as pend_run_bdf).  Performance target:
    <= 2 us per step for HHT-alpha at h = 1e-3.
    Andrews: t in [0, 0.03] s, HHT-alpha and generalized-alpha at h = 1e-5 ..
    1e-6 (Newton tolerances of andr_params_for: rtol 1e-12, atol 1e-14) and BDF

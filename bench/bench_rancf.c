@@ -10,7 +10,7 @@
    run from the repository root:  build/bench/bench_rancf [tag]
    writes out/bench/rancf_elem[-tag].csv (out/bench must exist).
 
-   Target of the issue: one ALE-RANCF element, forces + Jacobians (force
+   Performance target: one ALE-RANCF element, forces + Jacobians (force
    with K and D, default Gauss orders nm/nl/nt = 4/5/5), at most 1.3 times
    the ALE-ANCF element.  Checked for both weight sets (last lines:
    PASS/MISS); a missed target is reported, not an error: the exit status is

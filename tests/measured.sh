@@ -14,8 +14,8 @@
 #
 # Checks, each a failure:
 #   - a quoted number that does not round to the measurement at the digits
-#     it shows (3.3e-5 accepts [3.25e-5, 3.35e-5]); ~ tags: within a factor 3
-#     and of the same sign;
+#     it shows (3.3e-5 accepts [3.25e-5, 3.35e-5]; a plain 0 only 0); ~ tags:
+#     within a factor 3 and of the same sign (0: exactly 0);
 #   - a tag whose key the log does not report (or reports twice, differently);
 #   - a line that says "measured" beside a decimal number and carries no tag.
 # --update rewrites each quoted number that fails from the log, with the same
@@ -84,6 +84,7 @@ for src in $srcs; do
             if ((c > 0) != (v > 0)) return 0
             return v / c <= 3 && c / v <= 3
         }
+        if (c == 0 && s !~ /[.eE]/) return v == 0 # a plain 0: exactly zero
         return (v - c <= half_unit(s) * (1 + 1e-9) + 1e-300) && (c - v <= half_unit(s) * (1 + 1e-9) + 1e-300)
     }
     BEGIN {
@@ -142,7 +143,7 @@ for src in $srcs; do
             newline = newline pre tok
         }
         newline = newline rest
-        if (!tagged && tolower(line) ~ /measured/ &&
+        if (!tagged && tolower(line) ~ /measured/ && line !~ /tu_measured[(]/ &&
             line ~ /[0-9][.][0-9]|[0-9][eE][-+]?[0-9]/) {
             printf "%s:%d: says measured beside a number without a (m:key) tag\n", src, FNR
             bad++

@@ -10,7 +10,7 @@
      planar_agreement   3D vs planar chain on the same scene (same h, same
                         integrator), every node's position at every step:
                         axial to a few EPS, transverse to 1e-10 of its
-                        amplitude (the issue's number; it is rounding times
+                        amplitude (the required bound; it is rounding times
                         the Green strain's conditioning 1/eps), out-of-plane
                         positions, slopes and theta exactly 0, the two
                         histories' frequencies equal; without the spin
@@ -61,7 +61,7 @@ static double prestretch(void)
    becomes a phase error that the history accumulates.  Measured 3D vs
    planar, 0.5 s, 4 elements: 2.7 (m~:ps_hist_epsr) (string) and
    1.2 (m~:pb_hist_epsr) (beam) EPS/eps in double, 3.4 (m@flt~:ps_hist_epsr)
-   and 1.3 (m@flt~:pb_hist_epsr) EPS/eps in float.  The issue's 1e-10 is 82
+   and 1.3 (m@flt~:pb_hist_epsr) EPS/eps in float.  The required 1e-10 is 82
    EPS/eps in double; the same multiple in float is 5.4e-2. */
 static double tol_hist(void) { return 82.0 * EPS / prestretch(); }
 
