@@ -23,6 +23,9 @@
 #                       files go to build/fuzz/ (FUZZ_SEEDS=<dir pattern>,
 #                       % = harness name, to start from other seeds)
 #   make fuzz-build     build them only; make fuzz-clang: the clang check
+#   make mutate         apply each edit of tests/mutations.txt to a copy of the
+#                       tree and run its suites; MUTATIONS=<ids> for a subset
+#                       (report: build/mutate/report.txt)
 #   make clean
 #
 # cmocka from somewhere else: make test CMOCKA_CFLAGS=-I/opt/cmocka/include \
@@ -92,7 +95,7 @@ DEMO_WP_BINS := $(addprefix $(BUILD)/demo/,$(DEMO_WP_NAMES))
 BENCH_DIR_ARG := $(DEMO_WP_NAMES)
 
 .PHONY: all check test check-headers cmocka test-build examples demo bench \
-        bench-portable lint clean fuzz fuzz-build fuzz-clang measured-update
+        bench-portable lint clean fuzz fuzz-build fuzz-clang measured-update mutate
 
 all: test examples
 
@@ -316,6 +319,17 @@ fuzz: fuzz-build
 	done; \
 	echo "fuzz: $$total executions, $$crashes crashes, $$viol contract violations"; \
 	[ $$crashes -eq 0 ] && [ $$viol -eq 0 ]
+
+# -- mutation testing ------------------------------------------------------
+# tests/mutate.sh: every entry of tests/mutations.txt (or the ids in
+# MUTATIONS) applied alone to a copy of the tree in build/mutate/tree, the
+# suites it names built there by this Makefile (build/dbl/test_x) and run;
+# the table goes to build/mutate/report.txt.  Fails on a survivor that
+# mutations.txt does not explain, a stale or a non-compiling entry.
+MUTATIONS ?=
+
+mutate: cmocka
+	@MAKE='$(MAKE)' sh tests/mutate.sh $(MUTATIONS)
 
 # -- lint ---------------------------------------------------------------------
 LINT_OPTS = --enable=warning,performance,portability --error-exitcode=1 --inline-suppr -q \

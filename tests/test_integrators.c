@@ -31,6 +31,9 @@
                                step, ||Psi||/sqrt(N) <= ftol after each step, one
                                more residual evaluation per step; presets ftol = 0;
                                ftol < 0, NaN -> EARG; unreachable ftol -> ENOCONV
+     consistent_acc_fd_gamma   vlbe_dae_consistent_acc with gamma by differences
+                               (constr_acc NULL) vs exact q'', lambda: moving
+                               pendulum, rheonomic bead
      andrews_consistent_start  vlbe_dae_consistent_acc vs the Test Set values
      andrews_jacobians         analytic Jacobians of the example vs differences
      andrews_reference         HHT and gen-alpha reach the Test Set at 1e-6 */
@@ -1108,6 +1111,137 @@ static void test_hht_residual_test(void **state)
 }
 
 /* ------------------------------------------------------------------------ */
+/* The consistent start with gamma from the integrator's central difference
+   (constr_acc = NULL) against exact values, at states where gamma is not
+   zero: the pendulum moving (gamma = -|v|^2 from the velocity term (C_q
+   v)_q v), and a rheonomic bead x = A sin(w t) (gamma = -C_tt = A w^2
+   sin(w t), from the time terms).  Exact: pendulum lambda = m (|v|^2 - g
+   y) / L^2 and q'' = (0, -g) - lambda q / m (pendulum.c); bead x'' = -A
+   w^2 sin(w t), lambda = -m x'' (its row m x'' + lambda = 0), y'' = -g.
+   The difference quotient of step e = eps^(1/3) s / (1 + |v|) (s =
+   max(|t|, |q|, 1) = 1 here) is exact for the pendulum's g(e) = (q + e
+   v).v but for rounding, at most ~4 eps |q| |v| / (2 e) = 20 eps^(2/3) at
+   |v| = 3 m/s, 1.1 eps^(2/3) of the scale sc = |v|^2 + g of q''; for the
+   bead its truncation e^2 A w^4 / 6 < 0.7 eps^(2/3), 0.06 eps^(2/3) of sc =
+   A w^2 + g.  Tolerance 16 eps^(2/3) of sc (lambda: of m sc), ten times
+   the larger bound; measured 0.12 eps^(2/3) in double, 0.03 in float
+   (there the solve's rounding, ~5 eps, dominates).  A wrong sign of
+   gamma is an error of 2 |v|^2 / sc (pendulum), 2 A w^2 / sc (bead). */
+typedef struct bead_par {
+    vlbe_real m, g, A, w;
+} bead_par;
+
+static int bead_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+{
+    const bead_par *b = (const bead_par *)user;
+    C[0] = q[0] - b->A * vlbe_sin(b->w * t);
+    return 0;
+}
+
+static int bead_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq,
+                           vlbe_real *Ct)
+{
+    const bead_par *b = (const bead_par *)user;
+    (void)q;
+    Cq[0] = VLBE_R(1.0);
+    Cq[1] = VLBE_R(0.0);
+    if (Ct) Ct[0] = -b->A * b->w * vlbe_cos(b->w * t);
+    return 0;
+}
+
+static int bead_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+{
+    const bead_par *b = (const bead_par *)user;
+    (void)t;
+    (void)q;
+    (void)v;
+    M[0] = M[3] = b->m;
+    M[1] = M[2] = VLBE_R(0.0);
+    return 0;
+}
+
+static int bead_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+{
+    const bead_par *b = (const bead_par *)user;
+    (void)t;
+    (void)q;
+    (void)v;
+    Q[0] = VLBE_R(0.0);
+    Q[1] = -b->m * b->g;
+    return 0;
+}
+
+static void test_consistent_acc_fd_gamma(void **state)
+{
+    const double tol = 16.0 * pow(EPS, 2.0 / 3.0);
+    pend_par p = pend_default();
+    bead_par b;
+    vlbe_dae sys;
+    vlbe_real q[2], v[2], qdd[2] = {0, 0}, lam[1] = {0}, w[64];
+    int iw[8];
+    double th, om, ex[2], el, sc, e = 0.0;
+    (void)state;
+    assert_true(vlbe_dae_work_len(2, 1) <= 64 && vlbe_dae_iwork_len(2, 1) <= 8);
+    /* pendulum 50 degrees below the horizontal, swinging at 3 rad/s */
+    pend_setup(&sys, &p);
+    sys.constr_acc = NULL;
+    th = -50.0 * 3.14159265358979323846 / 180.0;
+    om = 3.0;
+    q[0] = (vlbe_real)((double)p.L * cos(th));
+    q[1] = (vlbe_real)((double)p.L * sin(th));
+    v[0] = (vlbe_real)(-om * (double)q[1]);
+    v[1] = (vlbe_real)(om * (double)q[0]);
+    assert_int_equal(vlbe_dae_consistent_acc(&sys, VLBE_R(0.0), q, v, qdd, lam, NULL, w, 64, iw, 8),
+                     VLBE_OK);
+    {
+        const double x = (double)q[0], y = (double)q[1], vx = (double)v[0], vy = (double)v[1];
+        const double L2 = (double)p.L * (double)p.L, m = (double)p.m;
+        el = m * (vx * vx + vy * vy - (double)p.g * y) / L2;
+        ex[0] = -el * x / m;
+        ex[1] = -(double)p.g - el * y / m;
+        sc = vx * vx + vy * vy + (double)p.g;
+    }
+    e = fmax(fmax(fabs((double)qdd[0] - ex[0]), fabs((double)qdd[1] - ex[1])) / sc,
+             fabs((double)lam[0] - el) / ((double)p.m * sc));
+    ASSERT_VEC_CLOSE(qdd, ex, 2, 0.0, tol * sc);
+    ASSERT_CLOSE(lam[0], el, 0.0, tol * (double)p.m * sc);
+    /* rheonomic bead at t = 0.7 s, A = 0.5 m, w = 2 rad/s */
+    {
+        vlbe_dae z = {0};
+        const double t = 0.7;
+        b.m = VLBE_R(2.0);
+        b.g = VLBE_R(9.81);
+        b.A = VLBE_R(0.5);
+        b.w = VLBE_R(2.0);
+        sys = z;
+        sys.n = 2;
+        sys.m = 1;
+        sys.flags = VLBE_DAE_MASS_CONST;
+        sys.user = &b;
+        sys.mass = bead_mass;
+        sys.force = bead_force;
+        sys.constr = bead_constr;
+        sys.constr_jac = bead_constr_jac;
+        q[0] = (vlbe_real)(0.5 * sin(2.0 * t));
+        q[1] = VLBE_R(0.3);
+        v[0] = (vlbe_real)(0.5 * 2.0 * cos(2.0 * t));
+        v[1] = VLBE_R(-0.4);
+        assert_int_equal(vlbe_dae_consistent_acc(&sys, (vlbe_real)t, q, v, qdd, lam, NULL, w, 64,
+                                                 iw, 8),
+                         VLBE_OK);
+        ex[0] = -0.5 * 4.0 * sin(2.0 * (double)(vlbe_real)t);
+        ex[1] = -(double)b.g;
+        el = -(double)b.m * ex[0];
+        sc = 0.5 * 4.0 + (double)b.g;
+        e = fmax(e, fmax(fmax(fabs((double)qdd[0] - ex[0]), fabs((double)qdd[1] - ex[1])) / sc,
+                         fabs((double)lam[0] - el) / ((double)b.m * sc)));
+        ASSERT_VEC_CLOSE(qdd, ex, 2, 0.0, tol * sc);
+        ASSERT_CLOSE(lam[0], el, 0.0, tol * (double)b.m * sc);
+    }
+    tu_report("consistent start, gamma by differences", e, tol);
+}
+
+/* ------------------------------------------------------------------------ */
 /* Andrews' mechanism. */
 static void test_andrews_consistent_start(void **state)
 {
@@ -1328,6 +1462,7 @@ int main(void)
         cmocka_unit_test(test_fail_args),
         cmocka_unit_test(test_counters),
         cmocka_unit_test(test_hht_residual_test),
+        cmocka_unit_test(test_consistent_acc_fd_gamma),
         cmocka_unit_test(test_andrews_consistent_start),
         cmocka_unit_test(test_andrews_jacobians),
         cmocka_unit_test(test_andrews_reference),
