@@ -1124,8 +1124,9 @@ static void test_hht_residual_test(void **state)
    |v| = 3 m/s, 1.1 eps^(2/3) of the scale sc = |v|^2 + g of q''; for the
    bead its truncation e^2 A w^4 / 6 < 0.7 eps^(2/3), 0.06 eps^(2/3) of sc =
    A w^2 + g.  Tolerance 16 eps^(2/3) of sc (lambda: of m sc), ten times
-   the larger bound; measured 0.12 eps^(2/3) in double, 0.03 in float
-   (there the solve's rounding, ~5 eps, dominates).  A wrong sign of
+   the larger bound; measured 0.12 (m:gamma_fd) eps^(2/3) in double,
+   0.03 (m@flt:gamma_fd) in float (there the solve's rounding, ~5 eps,
+   dominates).  A wrong sign of
    gamma is an error of 2 |v|^2 / sc (pendulum), 2 A w^2 / sc (bead). */
 typedef struct bead_par {
     vlbe_real m, g, A, w;
@@ -1239,6 +1240,7 @@ static void test_consistent_acc_fd_gamma(void **state)
         ASSERT_CLOSE(lam[0], el, 0.0, tol * (double)b.m * sc);
     }
     tu_report("consistent start, gamma by differences", e, tol);
+    tu_measured("gamma_fd", e / pow(EPS, 2.0 / 3.0));
 }
 
 /* ------------------------------------------------------------------------ */
