@@ -1550,8 +1550,8 @@ VLBE_INLINE vlbe_real vlbe__bdf_newton_norm(const vlbe_bdf *st, const vlbe_real 
    parameters: every real finite and >= 0, rtol + atol > 0, max_order
    1..VLBE_BDF_MAXORD, newton_max 1..VLBE_INT_MAX_ITER, fixed_step and
    stiff_filter 0 or 1, max_steps >= 0, h0 > 0 with fixed_step, h_min <=
-   h_max when h_max > 0), VLBE_EWORK, VLBE_ENONFINITE (t0, q0, v0, or the start solve), or the
-   status of the start solve.  On failure *st is unchanged, and so are work
+   h_max when h_max > 0), VLBE_EWORK, VLBE_ENONFINITE (t0, q0, v0, or the
+   start solve), or the status of the start solve.  On failure *st is unchanged, and so are work
    and iwork when the argument checks fail; when the start solve fails they
    hold its scratch (unspecified), as for vlbe_hht_init. */
 VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe_bdf_params *par,
@@ -2203,11 +2203,11 @@ fail:
 /* Steps until st->t == t_out exactly (the last step is shortened to land
    there).  t_out == t returns at once; t_out < t or not finite is
    VLBE_EARG; par.max_steps > 0 steps without reaching t_out is VLBE_EBOUND
-   (call again to go on).  On failure the state is the last accepted step, which may lie
-   past the start: a documented exception to the failure contract (the
-   steps are vlbe_bdf_step calls, each all or nothing; undoing the accepted
-   ones would take a second copy of the whole history and throw away valid
-   work -- st->t says how far the run got). */
+   (call again to go on).  On failure the state is the last accepted step,
+   which may lie past the start: a documented exception to the failure
+   contract (the steps are vlbe_bdf_step calls, each all or nothing;
+   undoing the accepted ones would take a second copy of the whole history
+   and throw away valid work -- st->t says how far the run got). */
 VLBE_API vlbe_status vlbe_bdf_advance(vlbe_bdf *st, vlbe_real t_out)
 {
     vlbe_status rc;
