@@ -86,7 +86,7 @@
        U_s = P l^3 / (48 E J): static midspan deflection under P at midspan
    Table 4: l = 1 m, beta1 = 0.02, E = 206e9 Pa, rho = 7700 kg/m^3,
    Omega = 1 rad/s; cases (a, k_omega) = (0.5, 1) and (1.5, 0.5); one
-   traverse t in [0, l / v].  With these, omega_1 = 324.98 rad/s,
+   traverse t in [0, l / v].  With these, omega_1 = 324.99 rad/s,
    v_cr = 103.45 m/s.  U/U_s is independent of P, and for rot = 0 of
    beta1 (and Omega) too.
 
