@@ -293,7 +293,7 @@ fuzz-clang:
 	echo "which brings libclang_rt.fuzzer; or set FUZZ_CC to such a clang)" >&2; \
 	exit 1
 
-$(BUILD)/fuzz/fuzz_%: fuzz/fuzz_%.c $(HEADERS) $(wildcard fuzz/*.h) | fuzz-clang
+$(BUILD)/fuzz/fuzz_%: fuzz/fuzz_%.c $(HEADERS) $(wildcard fuzz/*.h) tests/ale_material.h | fuzz-clang
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -I. $< -o $@ -lm
 

@@ -27,6 +27,7 @@
        the element calls) must not crash; 0 => K finite. */
 #include "fuzz_util.h"
 #include "../ancf_ale.h"
+#include "../tests/ale_material.h"
 
 #define CH_NMAX 8 /* node buffer */
 #define CH_CMAX 3
@@ -49,14 +50,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_rd rd;
     fz_begin("chain", &rd, data, size);
     if (!el_ready) {
-        vlbe_ale_mat m;
-        m.rhoA = VLBE_R(1.3);
-        m.EA = VLBE_R(5.0);
-        m.EI = VLBE_R(0.7);
-        m.c_eps = VLBE_R(0.15);
-        m.c_kap = VLBE_R(0.25);
-        m.f[0] = VLBE_R(0.4);
-        m.f[1] = VLBE_R(-2.1);
+        const vlbe_ale_mat m = mat_std();
         if (vlbe_ale_elem_init(&el, &m, 0, 0, 0, 0) != VLBE_OK) abort();
         el_ready = 1;
     }

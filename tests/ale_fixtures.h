@@ -6,23 +6,9 @@
 #define VLBE_TEST_ALE_FIXTURES_H
 
 #include "fixtures_common.h"
+#include "ale_material.h"
 
 #include <string.h>
-
-/* Material of the random tests: every term O(1) so that no contribution
-   hides below the rounding of another. */
-static inline vlbe_ale_mat mat_std(void)
-{
-    vlbe_ale_mat m;
-    m.rhoA = VLBE_R(1.3);
-    m.EA = VLBE_R(5.0);
-    m.EI = VLBE_R(0.7);
-    m.c_eps = VLBE_R(0.15);
-    m.c_kap = VLBE_R(0.25);
-    m.f[0] = VLBE_R(0.4);
-    m.f[1] = VLBE_R(-2.1);
-    return m;
-}
 
 /* Element coordinates of a chord from (x1, y1) at angle th, stretch s,
    material length L from p1, nodal slopes at angles a1, a2 with magnitudes

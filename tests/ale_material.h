@@ -1,0 +1,24 @@
+/* ale_material.h -- the O(1) planar ALE-ANCF material of the random tests,
+   shared by the cmocka suites (through ale_fixtures.h) and the fuzz
+   harnesses (no cmocka here).
+   -- part of vlbe                                  SPDX-License-Identifier: MIT
+   Include after ../ancf_ale.h. */
+#ifndef VLBE_TEST_ALE_MATERIAL_H
+#define VLBE_TEST_ALE_MATERIAL_H
+
+/* Material of the random tests: every term O(1) so that no contribution
+   hides below the rounding of another. */
+static inline vlbe_ale_mat mat_std(void)
+{
+    vlbe_ale_mat m;
+    m.rhoA = VLBE_R(1.3);
+    m.EA = VLBE_R(5.0);
+    m.EI = VLBE_R(0.7);
+    m.c_eps = VLBE_R(0.15);
+    m.c_kap = VLBE_R(0.25);
+    m.f[0] = VLBE_R(0.4);
+    m.f[1] = VLBE_R(-2.1);
+    return m;
+}
+
+#endif /* VLBE_TEST_ALE_MATERIAL_H */
