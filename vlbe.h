@@ -59,6 +59,13 @@ CONVENTIONS
    vlbe__ale_from_xi), so one routine serves every basis of that form: the
    rational ones of rancf.h use it too.
 
+   Band storage.  An N x N matrix with kl sub- and ku super-diagonals is
+   stored by rows of its band, row-major like every vlbe matrix: entry
+   (i, j), i - kl <= j <= i + ku, at B[i*ld + (j - i + kl)], leading
+   dimension ld >= kl + ku + 1 (VLBE_BAND_IDX(ld, kl, i, j)).  Slots that
+   fall outside the matrix (j < 0 or j >= N in the first and last rows)
+   exist and are never read.  Storage N ld reals instead of N^2.
+
 API (one line each)
    const char *vlbe_status_str(vlbe_status s)          name of a status code
    int   vlbe_all_finite(const vlbe_real *x, int n)    1 if no NaN/Inf in x
@@ -97,6 +104,10 @@ REFERENCES
 #include <assert.h>
 #define VLBE_ASSERT(x) assert(x)
 #endif
+
+/* index of entry (i, j) of a band-stored matrix (see Band storage above) */
+#define VLBE_BAND_IDX(ld, kl, i, j) \
+    ((size_t)(i) * (size_t)(ld) + (size_t)((j) - (i) + (kl)))
 
 /* -- configuration ------------------------------------------------------ */
 #ifndef VLBE_INLINE
