@@ -77,6 +77,8 @@ CONVENTIONS
 API
    vlbe_status vlbe_dae_check(sys)                        validate a problem
    size_t vlbe_dae_work_len(n, m), vlbe_dae_iwork_len(n, m)   workspace of the next one
+   size_t vlbe_*_work_len_sys(sys), vlbe_*_iwork_len_sys(sys)   the same for the problem's
+                                                          storage (dae, static, hht, bdf)
    vlbe_status vlbe_dae_consistent_acc(sys,t,q,v,a,lam,st,w,lw,iw,liw)  q'', lambda at start
    void vlbe_dae_stats_add(a, b)                          a += b, counter by counter (restarts)
    void vlbe_static_params_default(p)                     static solver defaults
@@ -128,6 +130,10 @@ REFERENCES
 #define VLBE_DAE_MASS_V 2u     /* M depends on v too (FD of M a in v)          */
 #define VLBE_DAE_NO_CHESS 4u   /* drop d(C_q^T lambda)/dq from the iteration matrix */
 
+/* vlbe_dae.storage: how the matrix callbacks store their matrices */
+#define VLBE_DAE_DENSE 0  /* n x n and m x n row-major (the default)            */
+#define VLBE_DAE_BANDED 1 /* (n+m) x (n+m) bands in the augmented order          */
+
 /* Upper bounds of the iteration parameters (VLBE_EARG above them) */
 #define VLBE_HHT_MAX_HALVINGS 30 /* vlbe_hht_params.max_halvings: steps down to h / 2^30,
                                     recursion depth 30                          */
@@ -162,6 +168,37 @@ typedef struct vlbe_dae {
     /* optional: H = d(C_q^T lambda)/dq, n*n */
     int (*constr_hess)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
                        vlbe_real *H);
+    /* Storage of the matrices (0 = VLBE_DAE_DENSE in a zeroed struct).
+       VLBE_DAE_BANDED: the model orders the augmented unknowns (q, lambda)
+       so that every constraint row sits next to the coordinates it touches:
+       order[i] (i < n) is the row and column of q_i in the augmented matrix
+       [M*, C_q^T; C_q, 0] of size NA = n + m, order[n + k] that of
+       lambda_k (a permutation of 0..NA-1), and every entry of M, K, D,
+       d(Ma)/dq, d(Ma)/dv, d(C_q^T lambda)/dq, d(C_q v)/dq at (order[i],
+       order[j]) and of C_q at (order[n+k], order[j]) and (order[j],
+       order[n+k]) lies within kl sub- and ku super-diagonals.  Then mass,
+       force_jac, mass_jac, constr_jac and constr_hess write NA x NA bands
+       (vlbe.h band storage, ld = kl + ku + 1) in that order, zeros
+       included: M(i, j) at VLBE_BAND_IDX(ld, kl, order[i], order[j]),
+       C_q(k, j) at VLBE_BAND_IDX(ld, kl, order[n+k], order[j]) (C_q only,
+       not its transpose); vectors stay in the natural order.  The
+       integrators then never form an n x n matrix: workspace and work per
+       step O(NA (kl + ku)). */
+    int storage;
+    int kl, ku;
+    const int *order;
+    /* optional, any storage: the caller's own linear solver for the
+       iteration matrices.  lin_factor receives the assembled matrix A of
+       size N (dense: N x N row-major, lda = N; banded: band storage with
+       kl, ku, lda, rows and columns in the integrator's order) and returns
+       0, > 0 if A is singular (VLBE_ESINGULAR), < 0 on a fatal error
+       (VLBE_ECALLBACK); lin_solve then overwrites B (N x nrhs row-major)
+       with A^-1 B and cannot fail.  One factorization is live at a time:
+       every lin_solve uses the last successful lin_factor.  Both or
+       neither. */
+    int (*lin_factor)(void *user, int storage, int N, int kl, int ku, const vlbe_real *A,
+                      int lda);
+    void (*lin_solve)(void *user, int N, int nrhs, vlbe_real *B);
 } vlbe_dae;
 
 /* Counters of one run (cumulative from init). */
@@ -314,6 +351,8 @@ typedef struct vlbe_bdf {
 VLBE_API vlbe_status vlbe_dae_check(const vlbe_dae *sys);
 VLBE_API size_t vlbe_dae_work_len(int n, int m);
 VLBE_API size_t vlbe_dae_iwork_len(int n, int m);
+VLBE_API size_t vlbe_dae_work_len_sys(const vlbe_dae *sys);
+VLBE_API size_t vlbe_dae_iwork_len_sys(const vlbe_dae *sys);
 VLBE_API void vlbe_dae_stats_add(vlbe_dae_stats *a, const vlbe_dae_stats *b);
 VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, const vlbe_real *q,
                                              const vlbe_real *v, vlbe_real *qdd,
@@ -324,6 +363,8 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
 VLBE_API void vlbe_static_params_default(vlbe_static_params *p);
 VLBE_API size_t vlbe_static_work_len(int n, int m);
 VLBE_API size_t vlbe_static_iwork_len(int n, int m);
+VLBE_API size_t vlbe_static_work_len_sys(const vlbe_dae *sys);
+VLBE_API size_t vlbe_static_iwork_len_sys(const vlbe_dae *sys);
 VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_params *par,
                                      vlbe_real t, vlbe_real *q, vlbe_real *lambda,
                                      vlbe_dae_stats *stats, vlbe_real *work, size_t work_len,
@@ -334,6 +375,8 @@ VLBE_API vlbe_status vlbe_hht_params_hht(vlbe_hht_params *p, vlbe_real alpha);
 VLBE_API vlbe_status vlbe_hht_params_genalpha(vlbe_hht_params *p, vlbe_real rho_inf);
 VLBE_API size_t vlbe_hht_work_len(int n, int m);
 VLBE_API size_t vlbe_hht_iwork_len(int n, int m);
+VLBE_API size_t vlbe_hht_work_len_sys(const vlbe_dae *sys);
+VLBE_API size_t vlbe_hht_iwork_len_sys(const vlbe_dae *sys);
 VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe_hht_params *par,
                                    vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
                                    vlbe_real *work, size_t work_len, int *iwork,
@@ -343,6 +386,8 @@ VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h);
 VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p);
 VLBE_API size_t vlbe_bdf_work_len(int n, int m);
 VLBE_API size_t vlbe_bdf_iwork_len(int n, int m);
+VLBE_API size_t vlbe_bdf_work_len_sys(const vlbe_dae *sys);
+VLBE_API size_t vlbe_bdf_iwork_len_sys(const vlbe_dae *sys);
 VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe_bdf_params *par,
                                    vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
                                    vlbe_real *work, size_t work_len, int *iwork,
@@ -409,16 +454,187 @@ VLBE_INLINE vlbe_real vlbe__int_fd_step(vlbe_real x)
     return vlbe_sqrt(VLBE_EPS) * (ax > VLBE_R(1.0) ? ax : VLBE_R(1.0));
 }
 
+/* -- storage of the matrices -------------------------------------------- */
+/* Dense problems: model matrices n x n (M, K, D, Mq, Mv, H) and m x n
+   (C_q), iteration matrices N x N.  Banded problems (vlbe_dae.storage):
+   every model matrix is an NA x NA band, NA = n + m, in the augmented order
+   (ld = kl + ku + 1); an iteration matrix whose unknowns come in f blocks
+   -- f = 1: (q, lambda) of HHT, the static solver and the start; f = 2:
+   (q, v, lambda, mu) of BDF -- is an (f NA) band in which unknown u of
+   block b sits at f order[u] + b, half-bandwidths f kl + f - 1 and
+   f ku + f - 1, stored with the kl extra super-diagonals of the banded LU.
+   inv[] (NA ints, from vlbe__int_inv) maps an augmented position back to
+   its unknown (< n: q_i, else lambda_{i-n}). */
+VLBE_INLINE int vlbe__int_banded(const vlbe_dae *s) { return s->storage == VLBE_DAE_BANDED; }
+VLBE_INLINE int vlbe__int_bld(const vlbe_dae *s) { return s->kl + s->ku + 1; }
+/* reals of one model matrix: n x n (cq = 0) or m x n (cq = 1), or a band */
+VLBE_INLINE size_t vlbe__int_mlen(const vlbe_dae *s, int cq)
+{
+    if (vlbe__int_banded(s)) return ((size_t)s->n + (size_t)s->m) * (size_t)vlbe__int_bld(s);
+    return (size_t)(cq ? s->m : s->n) * (size_t)s->n;
+}
+/* half-bandwidths of an iteration matrix of f blocks */
+VLBE_INLINE int vlbe__int_fkl(const vlbe_dae *s, int f) { return f * s->kl + f - 1; }
+VLBE_INLINE int vlbe__int_fku(const vlbe_dae *s, int f) { return f * s->ku + f - 1; }
+/* reals of an iteration matrix of f blocks (N = f (n + m)) and its LU */
+VLBE_INLINE size_t vlbe__int_alen(const vlbe_dae *s, int f)
+{
+    size_t N = (size_t)f * ((size_t)s->n + (size_t)s->m);
+    if (vlbe__int_banded(s))
+        return N * vlbe_band_lu_ld(vlbe__int_fkl(s, f), vlbe__int_fku(s, f));
+    return N * N;
+}
+/* leading dimension of that matrix */
+VLBE_INLINE size_t vlbe__int_ald(const vlbe_dae *s, int f)
+{
+    if (vlbe__int_banded(s)) return vlbe_band_lu_ld(vlbe__int_fkl(s, f), vlbe__int_fku(s, f));
+    return (size_t)f * ((size_t)s->n + (size_t)s->m);
+}
+/* ints after the pivots: inv[] of a banded problem */
+VLBE_INLINE size_t vlbe__int_ilen(const vlbe_dae *s)
+{
+    return vlbe__int_banded(s) ? (size_t)s->n + (size_t)s->m : 0;
+}
+
+/* inv[] from sys->order; VLBE_EARG when order is not a permutation of
+   0..n+m-1 (inv is then scratch). */
+VLBE_INLINE vlbe_status vlbe__int_inv(const vlbe_dae *s, int *inv)
+{
+    int NA = s->n + s->m, u;
+    for (u = 0; u < NA; ++u) inv[u] = -1;
+    for (u = 0; u < NA; ++u) {
+        int p = s->order[u];
+        if (p < 0 || p >= NA || inv[p] != -1) return VLBE_EARG;
+        inv[p] = u;
+    }
+    return VLBE_OK;
+}
+
+/* X (f NA, the iteration matrix's order) <-> x (natural: f blocks of n,
+   then f blocks of m): unknown u of block b at X[f order[u] + b]. */
+VLBE_INLINE void vlbe__int_perm(const vlbe_dae *s, int f, const vlbe_real *x, vlbe_real *X)
+{
+    int n = s->n, m = s->m, i, b;
+    for (b = 0; b < f; ++b) {
+        for (i = 0; i < n; ++i) X[f * s->order[i] + b] = x[b * n + i];
+        for (i = 0; i < m; ++i) X[f * s->order[n + i] + b] = x[f * n + b * m + i];
+    }
+}
+VLBE_INLINE void vlbe__int_unperm(const vlbe_dae *s, int f, const vlbe_real *X, vlbe_real *x)
+{
+    int n = s->n, m = s->m, i, b;
+    for (b = 0; b < f; ++b) {
+        for (i = 0; i < n; ++i) x[b * n + i] = X[f * s->order[i] + b];
+        for (i = 0; i < m; ++i) x[f * n + b * m + i] = X[f * s->order[n + i] + b];
+    }
+}
+
+/* Products with a model matrix of a banded problem through augmented
+   vectors (w: 2 NA reals of scratch):
+     kind 0: y (n) = A x (n)          (M, or any n x n matrix)
+     kind 1: y (m) = C_q x (n)
+     kind 2: y (n) = C_q^T x (m)                                        */
+VLBE_INLINE void vlbe__int_bprod(const vlbe_dae *s, int kind, const vlbe_real *A,
+                                 const vlbe_real *x, vlbe_real *y, vlbe_real *w)
+{
+    int n = s->n, m = s->m, NA = n + m, i;
+    vlbe_real *X = w, *Y = w + NA;
+    const int *o = s->order;
+    vlbe_vec_zero(NA, X);
+    if (kind == 2)
+        for (i = 0; i < m; ++i) X[o[n + i]] = x[i];
+    else
+        for (i = 0; i < n; ++i) X[o[i]] = x[i];
+    if (kind == 2) vlbe_band_mat_tvec(NA, s->kl, s->ku, A, vlbe__int_bld(s), X, Y);
+    else vlbe_band_mat_vec(NA, s->kl, s->ku, A, vlbe__int_bld(s), X, Y);
+    if (kind == 1)
+        for (i = 0; i < m; ++i) y[i] = Y[o[n + i]];
+    else
+        for (i = 0; i < n; ++i) y[i] = Y[o[i]];
+}
+
+/* A block of an iteration matrix that Jacobian terms are added to.  Dense:
+   A points at the block's first entry, ld its leading dimension, model
+   entry (i, j) at A[i ld + j].  Banded: A is the whole band (leading
+   dimension ld, kl sub-diagonals), model entry at augmented (r, c) lands at
+   (f r + ro, f c + co). */
+typedef struct vlbe__int_blk {
+    vlbe_real *A;
+    size_t ld;
+    int kl, f, ro, co;
+} vlbe__int_blk;
+VLBE_INLINE vlbe_real *vlbe__int_blk_at(const vlbe__int_blk *b, int r, int c)
+{
+    return b->A + VLBE_BAND_IDX(b->ld, b->kl, b->f * r + b->ro, b->f * c + b->co);
+}
+/* Adds c X (trans = 0) or c X^T (trans = 1) to block b, X a model band. */
+VLBE_INLINE void vlbe__int_badd(const vlbe_dae *s, const vlbe__int_blk *b, vlbe_real c,
+                                const vlbe_real *X, int trans)
+{
+    int NA = s->n + s->m, kl = s->kl, ld = vlbe__int_bld(s), r, o;
+    for (r = 0; r < NA; ++r) {
+        const vlbe_real *xr = X + (size_t)r * (size_t)ld;
+        int o0 = kl - r > 0 ? kl - r : 0, o1 = NA - 1 - r + kl;
+        if (o1 > ld - 1) o1 = ld - 1;
+        for (o = o0; o <= o1; ++o) {
+            int col = r - kl + o;
+            if (xr[o] == VLBE_R(0.0)) continue;
+            if (trans) *vlbe__int_blk_at(b, col, r) += c * xr[o];
+            else *vlbe__int_blk_at(b, r, col) += c * xr[o];
+        }
+    }
+}
+/* Adds c to the diagonal of the block (u, u), u < n (BDF's identity blocks). */
+VLBE_INLINE void vlbe__int_bdiag(const vlbe_dae *s, const vlbe__int_blk *b, vlbe_real c)
+{
+    int i;
+    for (i = 0; i < s->n; ++i) *vlbe__int_blk_at(b, s->order[i], s->order[i]) += c;
+}
+
+/* The rows of augmented column c that a Jacobian may fill: [c - ku, c + kl]
+   within 0..NA-1. */
+VLBE_INLINE void vlbe__int_rows(const vlbe_dae *s, int c, int *r0, int *r1)
+{
+    int NA = s->n + s->m;
+    *r0 = c - s->ku < 0 ? 0 : c - s->ku;
+    *r1 = c + s->kl > NA - 1 ? NA - 1 : c + s->kl;
+}
+
+/* Forward-difference steps of the coordinates of group g (Curtis, Powell,
+   Reid: columns kl + ku + 1 apart in the augmented order have disjoint
+   rows, so one evaluation serves them all): x[j] = base[j] + d[j] for the
+   q_j of the group (others base[j]); returns 0 if the group is empty.  d
+   receives the exactly representable steps. */
+VLBE_INLINE int vlbe__int_group(const vlbe_dae *s, const int *inv, int g, const vlbe_real *base,
+                                vlbe_real *x, vlbe_real *d)
+{
+    int n = s->n, NA = n + s->m, w = vlbe__int_bld(s), c, any = 0;
+    vlbe_vec_copy(n, base, x);
+    for (c = g; c < NA; c += w) {
+        int j = inv[c];
+        if (j >= n) continue;
+        x[j] = base[j] + vlbe__int_fd_step(base[j]);
+        d[j] = x[j] - base[j];
+        any = 1;
+    }
+    return any;
+}
+
 /* gamma = -( (C_q v)_q v + 2 C_qt v + C_tt ) (m).  From the callback if given,
    else as minus the central difference of g(e) = C_q(t+e, q+e v) v + C_t(t+e, q+e v)
    at e = 0 (g'(0) = (C_q v)_q v + 2 C_qt v + C_tt), step eps^(1/3) scaled.
-   w: m*n + 2m + n reals. */
+   w: vlbe__int_gamma_len(s) reals. */
+VLBE_INLINE size_t vlbe__int_gamma_len(const vlbe_dae *s)
+{
+    size_t r = vlbe__int_mlen(s, 1) + 2 * (size_t)s->m + (size_t)s->n;
+    return vlbe__int_banded(s) ? r + (size_t)s->m + 2 * ((size_t)s->n + (size_t)s->m) : r;
+}
 VLBE_INLINE vlbe_status vlbe__int_gamma(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                         const vlbe_real *q, const vlbe_real *v, vlbe_real *g,
                                         vlbe_real *w)
 {
     int n = s->n, m = s->m, i, k;
-    vlbe_real *Cq = w, *Ct = w + (size_t)m * n, *gp = Ct + m, *qe = gp + m;
+    vlbe_real *Cq = w, *Ct = w + vlbe__int_mlen(s, 1), *gp = Ct + m, *qe = gp + m;
     vlbe_real scale = vlbe_fabs(t), e;
     vlbe_status rc;
     if (m == 0) return VLBE_OK;
@@ -437,8 +653,13 @@ VLBE_INLINE vlbe_status vlbe__int_gamma(const vlbe_dae *s, vlbe_dae_stats *c, vl
         vlbe_real sg = k == 0 ? e : -e;
         for (i = 0; i < n; ++i) qe[i] = q[i] + sg * v[i];
         if ((rc = vlbe__int_cjac(s, c, t + sg, qe, Cq, Ct)) != VLBE_OK) return rc;
+        if (vlbe__int_banded(s)) { /* C_q v into Ct (+= below) */
+            vlbe_real *cv = qe + n;
+            vlbe__int_bprod(s, 1, Cq, v, cv, cv + m);
+            for (i = 0; i < m; ++i) Ct[i] += cv[i];
+        }
         for (i = 0; i < m; ++i) {
-            vlbe_real gi = vlbe_vec_dot(n, Cq + (size_t)i * n, v) + Ct[i];
+            vlbe_real gi = vlbe__int_banded(s) ? Ct[i] : vlbe_vec_dot(n, Cq + (size_t)i * n, v) + Ct[i];
             if (k == 0) gp[i] = gi;
             else g[i] = -(gp[i] - gi) / (VLBE_R(2.0) * e);
         }
@@ -634,6 +855,179 @@ VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, 
     return vlbe__int_tangent2(s, c, t, q, v, a, lam, Qbase, Mbase, cq, J, ld, cv, J, ld, w);
 }
 
+/* Banded counterparts of vlbe__int_constr_q and vlbe__int_tangent2 (same
+   terms, same callbacks; blocks instead of leading dimensions, a NULL block
+   is left out; missing Jacobians by forward differences over column groups,
+   vlbe__int_group: kl + ku + 1 evaluations instead of n).  inv: from
+   vlbe__int_inv.  w: vlbe__int_btangent_len(s) reals. */
+VLBE_INLINE size_t vlbe__int_bcq_len(const vlbe_dae *s)
+{
+    size_t n = (size_t)s->n, m = (size_t)s->m;
+    return vlbe__int_mlen(s, 0) + vlbe__int_mlen(s, 1) + m + 2 * n + 2 * (2 * n + m) +
+           2 * (n + m);
+}
+VLBE_INLINE size_t vlbe__int_btangent_len(const vlbe_dae *s)
+{
+    size_t n = (size_t)s->n, a = 3 * vlbe__int_mlen(s, 0) + 6 * n + 2 * ((size_t)s->m + n),
+           b = vlbe__int_bcq_len(s);
+    return a > b ? a : b;
+}
+/* f = [C_q^T u_0; ..; C_q^T u_{nu-1}; C_q v + C_t] (the last if v) of a
+   banded C_q; pw: 2 NA scratch */
+VLBE_INLINE void vlbe__int_bconstr_vals(const vlbe_dae *s, const vlbe_real *Cq,
+                                        const vlbe_real *Ct, int nu, const vlbe_real *const *u,
+                                        const vlbe_real *v, vlbe_real *f, vlbe_real *pw)
+{
+    int n = s->n, m = s->m, k, i;
+    for (k = 0; k < nu; ++k) vlbe__int_bprod(s, 2, Cq, u[k], f + (size_t)k * n, pw);
+    if (v) {
+        vlbe__int_bprod(s, 1, Cq, v, f + (size_t)nu * n, pw);
+        for (i = 0; i < m; ++i) f[(size_t)nu * n + i] += Ct[i];
+    }
+}
+VLBE_INLINE vlbe_status vlbe__int_bconstr_q(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                            const vlbe_real *q, const vlbe_real *lam,
+                                            vlbe_real cl, const vlbe__int_blk *Jl,
+                                            const vlbe_real *mu, vlbe_real cu,
+                                            const vlbe__int_blk *Ju, const vlbe_real *v,
+                                            const vlbe__int_blk *Jg, const int *inv, vlbe_real *w)
+{
+    int n = s->n, m = s->m, NA = n + m, wd = vlbe__int_bld(s), k, g, col, nu = 0;
+    vlbe_real *H = w, *Cq = H + vlbe__int_mlen(s, 0), *Ct = Cq + vlbe__int_mlen(s, 1),
+              *x = Ct + m, *d = x + n, *f0 = d + n, *f = f0 + 2 * n + m, *pw = f + 2 * n + m;
+    const vlbe_real *u[2];
+    vlbe_real cu_[2];
+    const vlbe__int_blk *Ju_[2];
+    vlbe_status rc;
+    if ((s->flags & VLBE_DAE_NO_CHESS) || cl == VLBE_R(0.0)) lam = NULL;
+    if ((s->flags & VLBE_DAE_NO_CHESS) || cu == VLBE_R(0.0)) mu = NULL;
+    for (k = 0; k < 2; ++k) {
+        const vlbe_real *uk = k == 0 ? lam : mu;
+        if (!uk) continue;
+        u[nu] = uk;
+        cu_[nu] = k == 0 ? cl : cu;
+        Ju_[nu] = k == 0 ? Jl : Ju;
+        ++nu;
+    }
+    if (s->constr_hess && nu > 0) {
+        for (k = 0; k < nu; ++k) {
+            ++c->constr_calls;
+            if ((rc = vlbe__int_cb(c, s->constr_hess(s->user, t, q, u[k], H))) != VLBE_OK) return rc;
+            vlbe__int_badd(s, Ju_[k], cu_[k], H, 0);
+        }
+        nu = 0;
+    }
+    if (nu == 0 && !Jg) return VLBE_OK;
+    if (!Jg) v = NULL;
+    if ((rc = vlbe__int_cjac(s, c, t, q, Cq, v ? Ct : NULL)) != VLBE_OK) return rc;
+    vlbe__int_bconstr_vals(s, Cq, Ct, nu, u, v, f0, pw);
+    for (g = 0; g < wd; ++g) {
+        if (!vlbe__int_group(s, inv, g, q, x, d)) continue;
+        if ((rc = vlbe__int_cjac(s, c, t, x, Cq, v ? Ct : NULL)) != VLBE_OK) return rc;
+        vlbe__int_bconstr_vals(s, Cq, Ct, nu, u, v, f, pw);
+        for (col = g; col < NA; col += wd) {
+            int j = inv[col], r, r0, r1;
+            if (j >= n) continue;
+            vlbe__int_rows(s, col, &r0, &r1);
+            for (r = r0; r <= r1; ++r) {
+                int i = inv[r];
+                if (i < n) {
+                    for (k = 0; k < nu; ++k)
+                        *vlbe__int_blk_at(Ju_[k], r, col) +=
+                            cu_[k] * (f[(size_t)k * n + i] - f0[(size_t)k * n + i]) / d[j];
+                } else if (v) {
+                    size_t e = (size_t)nu * n + (size_t)(i - n);
+                    *vlbe__int_blk_at(Jg, r, col) += (f[e] - f0[e]) / d[j];
+                }
+            }
+        }
+    }
+    return VLBE_OK;
+}
+VLBE_INLINE vlbe_status vlbe__int_btangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v,
+                                           const vlbe_real *a, const vlbe_real *lam,
+                                           const vlbe_real *Qbase, const vlbe_real *Mbase,
+                                           vlbe_real cq, const vlbe__int_blk *Jq, vlbe_real cv,
+                                           const vlbe__int_blk *Jv, const int *inv, vlbe_real *w)
+{
+    int n = s->n, NA = n + s->m, wd = vlbe__int_bld(s), g, col, pass;
+    size_t ml = vlbe__int_mlen(s, 0);
+    vlbe_real *K = w, *D = K + ml, *T = D + ml, *x = T + ml, *f = x + n, *f0 = f + n, *d = f0 + n,
+              *pw = d + n;
+    vlbe_status rc;
+    ++c->jac_evals;
+    if (!Jv) cv = VLBE_R(0.0);
+    /* -K and -D */
+    if (s->force_jac) {
+        ++c->force_calls;
+        if ((rc = vlbe__int_cb(c, s->force_jac(s->user, t, q, v, K, D))) != VLBE_OK) return rc;
+        if (cq != VLBE_R(0.0)) vlbe__int_badd(s, Jq, -cq, K, 0);
+        if (cv != VLBE_R(0.0)) vlbe__int_badd(s, Jv, -cv, D, 0);
+    } else {
+        for (pass = 0; pass < 2; ++pass) {
+            vlbe_real cc = pass == 0 ? cq : cv;
+            const vlbe_real *base = pass == 0 ? q : v;
+            const vlbe__int_blk *J = pass == 0 ? Jq : Jv;
+            if (cc == VLBE_R(0.0)) continue;
+            for (g = 0; g < wd; ++g) {
+                if (!vlbe__int_group(s, inv, g, base, x, d)) continue;
+                rc = pass == 0 ? vlbe__int_force(s, c, t, x, v, f) : vlbe__int_force(s, c, t, q, x, f);
+                if (rc != VLBE_OK) return rc;
+                for (col = g; col < NA; col += wd) {
+                    int j = inv[col], r, r0, r1;
+                    if (j >= n) continue;
+                    vlbe__int_rows(s, col, &r0, &r1);
+                    for (r = r0; r <= r1; ++r)
+                        if (inv[r] < n)
+                            *vlbe__int_blk_at(J, r, col) -=
+                                cc * (f[inv[r]] - Qbase[inv[r]]) / d[j];
+                }
+            }
+        }
+    }
+    /* d(M a)/dq, d(M a)/dv */
+    if (!(s->flags & VLBE_DAE_MASS_CONST)) {
+        int mv = (s->flags & VLBE_DAE_MASS_V) != 0;
+        if (s->mass_jac) {
+            ++c->mass_calls;
+            rc = vlbe__int_cb(c, s->mass_jac(s->user, t, q, v, a, K, mv ? D : NULL));
+            if (rc != VLBE_OK) return rc;
+            if (cq != VLBE_R(0.0)) vlbe__int_badd(s, Jq, cq, K, 0);
+            if (mv && cv != VLBE_R(0.0)) vlbe__int_badd(s, Jv, cv, D, 0);
+        } else {
+            vlbe__int_bprod(s, 0, Mbase, a, f0, pw);
+            for (pass = 0; pass < 2; ++pass) {
+                vlbe_real cc = pass == 0 ? cq : cv;
+                const vlbe_real *base = pass == 0 ? q : v;
+                const vlbe__int_blk *J = pass == 0 ? Jq : Jv;
+                if (pass == 1 && !mv) break;
+                if (cc == VLBE_R(0.0)) continue;
+                for (g = 0; g < wd; ++g) {
+                    if (!vlbe__int_group(s, inv, g, base, x, d)) continue;
+                    rc = pass == 0 ? vlbe__int_mass(s, c, t, x, v, T) : vlbe__int_mass(s, c, t, q, x, T);
+                    if (rc != VLBE_OK) return rc;
+                    vlbe__int_bprod(s, 0, T, a, f, pw);
+                    for (col = g; col < NA; col += wd) {
+                        int j = inv[col], r, r0, r1;
+                        if (j >= n) continue;
+                        vlbe__int_rows(s, col, &r0, &r1);
+                        for (r = r0; r <= r1; ++r)
+                            if (inv[r] < n)
+                                *vlbe__int_blk_at(J, r, col) +=
+                                    cc * (f[inv[r]] - f0[inv[r]]) / d[j];
+                    }
+                }
+            }
+        }
+    }
+    /* d(C_q^T lambda)/dq (scratch: w, the K D T area is free again) */
+    if (s->m > 0 && lam && cq != VLBE_R(0.0))
+        return vlbe__int_bconstr_q(s, c, t, q, lam, cq, Jq, NULL, VLBE_R(0.0), NULL, NULL, NULL,
+                                   inv, w);
+    return VLBE_OK;
+}
+
 /* -- problem checks and consistent start -------------------------------- */
 /* need_mass = 0: a problem for the static solver, which never calls mass */
 VLBE_INLINE vlbe_status vlbe__dae_check(const vlbe_dae *sys, int need_mass)
@@ -642,6 +1036,15 @@ VLBE_INLINE vlbe_status vlbe__dae_check(const vlbe_dae *sys, int need_mass)
         !sys->force)
         return VLBE_EARG;
     if (sys->m > 0 && (!sys->constr || !sys->constr_jac)) return VLBE_EARG;
+    if ((sys->lin_factor == NULL) != (sys->lin_solve == NULL)) return VLBE_EARG;
+    if (sys->storage == VLBE_DAE_BANDED) {
+        /* 2 (n+m) rows of BDF must fit an int, bands must fit the matrix */
+        if ((size_t)sys->n > (size_t)0x10000000 || !sys->order || sys->kl < 0 || sys->ku < 0 ||
+            sys->kl >= sys->n + sys->m || sys->ku >= sys->n + sys->m)
+            return VLBE_EARG;
+        return VLBE_OK;
+    }
+    if (sys->storage != VLBE_DAE_DENSE) return VLBE_EARG;
     if ((size_t)sys->n > (size_t)46340) return VLBE_EARG; /* (n+m)^2 must fit an int index */
     return VLBE_OK;
 }
@@ -654,6 +1057,21 @@ VLBE_API size_t vlbe_dae_work_len(int n, int m)
     return N * N + N + (size_t)n * n + (size_t)n + 2 * (size_t)m * n + 2 * (size_t)m + (size_t)n;
 }
 VLBE_API size_t vlbe_dae_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
+/* the same for the problem's storage (= the (n, m) queries when dense) */
+VLBE_API size_t vlbe_dae_work_len_sys(const vlbe_dae *sys)
+{
+    size_t NA;
+    VLBE_ASSERT(sys != NULL);
+    if (!vlbe__int_banded(sys)) return vlbe_dae_work_len(sys->n, sys->m);
+    NA = (size_t)sys->n + (size_t)sys->m;
+    return vlbe__int_alen(sys, 1) + 2 * NA + vlbe__int_mlen(sys, 0) + (size_t)sys->n +
+           vlbe__int_mlen(sys, 1) + vlbe__int_gamma_len(sys);
+}
+VLBE_API size_t vlbe_dae_iwork_len_sys(const vlbe_dae *sys)
+{
+    VLBE_ASSERT(sys != NULL);
+    return vlbe_dae_iwork_len(sys->n, sys->m) + vlbe__int_ilen(sys);
+}
 
 /* Row equilibration before an LU (vlbe_lu_factor's pivot test is relative
    to the largest entry of the whole matrix, so a row of small but regular
@@ -665,21 +1083,57 @@ VLBE_API size_t vlbe_dae_iwork_len(int n, int m) { return (size_t)n + (size_t)m;
    scales change the choice of pivots (scaled partial pivoting).  A zero,
    subnormal or non-finite row keeps s_i = 1 (vlbe_lu_factor reports it).
    s (N, may be NULL) receives the scales, which the right sides of later
-   solves need; b (N, may be NULL) is scaled along. */
-VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, vlbe_real *s, vlbe_real *b)
+   solves need; b (N, may be NULL) is scaled along.  width: the entries
+   of a row, N for a dense matrix, ld for a band (whose slots outside the
+   matrix hold zeros). */
+VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, int width, vlbe_real *s,
+                                 vlbe_real *b)
 {
     int i, e;
     for (i = 0; i < N; ++i) {
-        vlbe_real *ai = A + (size_t)i * ld, r = vlbe_vec_norm_inf(N, ai), si = VLBE_R(1.0);
+        vlbe_real *ai = A + (size_t)i * ld, r = vlbe_vec_norm_inf(width, ai), si = VLBE_R(1.0);
         if (r > VLBE_R(0.0) && isfinite(r)) {
             (void)frexp((double)r, &e);
             si = (vlbe_real)ldexp(1.0, -e);
             if (!isfinite(si)) si = VLBE_R(1.0); /* a subnormal row: 2^-e overflows */
-            vlbe_vec_scale(N, si, ai);
+            vlbe_vec_scale(width, si, ai);
             if (b) b[i] *= si;
         }
         if (s) s[i] = si;
     }
+}
+
+/* Factors the iteration matrix A of f blocks (N = f (n + m), in the
+   problem's storage) in place: the dense or banded LU, or the caller's
+   lin_factor. */
+VLBE_INLINE vlbe_status vlbe__int_factor(const vlbe_dae *s, vlbe_dae_stats *c, int f,
+                                         vlbe_real *A, int *piv)
+{
+    int N = f * (s->n + s->m), band = vlbe__int_banded(s), kl = N - 1, ku = N - 1, rc;
+    if (band) {
+        kl = vlbe__int_fkl(s, f);
+        ku = vlbe__int_fku(s, f);
+    }
+    if (s->lin_factor) {
+        if (!vlbe_all_finite(A, (int)vlbe__int_alen(s, f))) return VLBE_ENONFINITE;
+        rc = s->lin_factor(s->user, s->storage, N, kl, ku, A, (int)vlbe__int_ald(s, f));
+        if (rc == 0) return VLBE_OK;
+        if (rc > 0) return VLBE_ESINGULAR;
+        c->callback_rc = rc;
+        return VLBE_ECALLBACK;
+    }
+    if (band) return vlbe_band_lu_factor(N, kl, ku, A, (int)vlbe__int_ald(s, f), A, piv, NULL);
+    return vlbe_lu_factor(N, A, A, piv, NULL);
+}
+/* b <- A^-1 b with the factor of vlbe__int_factor (b in A's order). */
+VLBE_INLINE void vlbe__int_solve(const vlbe_dae *s, int f, const vlbe_real *A, const int *piv,
+                                 vlbe_real *b)
+{
+    int N = f * (s->n + s->m);
+    if (s->lin_solve) s->lin_solve(s->user, N, 1, b);
+    else if (vlbe__int_banded(s))
+        vlbe_band_lu_solve(N, vlbe__int_fkl(s, f), vlbe__int_fku(s, f), A, piv, 1, b);
+    else vlbe_lu_solve(N, A, piv, 1, b);
 }
 
 /* Solves [M C_q^T; C_q 0] [qdd; lambda] = [Q; gamma] at (t, q, v). */
@@ -707,45 +1161,66 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
                                              vlbe_real *work, size_t work_len, int *iwork,
                                              size_t iwork_len)
 {
-    int n, m, N, i, j;
-    vlbe_real *A, *b, *M, *Q, *Cq, *sc;
+    int n, m, N, i, j, band;
+    vlbe_real *A, *b, *M, *Q, *Cq, *sc, *X;
     vlbe_dae_stats dummy;
     vlbe_status rc;
     if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
     n = sys->n;
     m = sys->m;
     N = n + m;
-    if (work_len < vlbe_dae_work_len(n, m) || iwork_len < vlbe_dae_iwork_len(n, m))
+    band = vlbe__int_banded(sys);
+    if (work_len < vlbe_dae_work_len_sys(sys) || iwork_len < vlbe_dae_iwork_len_sys(sys))
         return VLBE_EWORK;
+    if (band && (rc = vlbe__int_inv(sys, iwork + N)) != VLBE_OK) return rc;
     if (!stats) {
         stats = &dummy;
         vlbe__int_stats_zero(&dummy);
     }
     A = work;
-    b = A + (size_t)N * N;
+    b = A + vlbe__int_alen(sys, 1);
     M = b + N;
-    Q = M + (size_t)n * n;
+    Q = M + vlbe__int_mlen(sys, 0);
     Cq = Q + n;
-    sc = Cq + (size_t)m * n;
+    sc = Cq + vlbe__int_mlen(sys, 1);
+    X = sc + vlbe__int_gamma_len(sys); /* banded: the right side in A's order */
     if ((rc = vlbe__int_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_force(sys, stats, t, q, v, Q)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_cjac(sys, stats, t, q, Cq, NULL)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_gamma(sys, stats, t, q, v, b + n, sc)) != VLBE_OK) return rc;
-    for (i = 0; i < N; ++i)
-        for (j = 0; j < N; ++j) {
-            vlbe_real x = VLBE_R(0.0);
-            if (i < n && j < n) x = M[(size_t)i * n + j];
-            else if (i < n && j >= n) x = Cq[(size_t)(j - n) * n + i];
-            else if (i >= n && j < n) x = Cq[(size_t)(i - n) * n + j];
-            A[(size_t)i * N + j] = x;
+    if (band) {
+        vlbe__int_blk B;
+        B.A = A;
+        B.ld = vlbe__int_ald(sys, 1);
+        B.kl = sys->kl;
+        B.f = 1;
+        B.ro = B.co = 0;
+        vlbe_vec_zero((int)vlbe__int_alen(sys, 1), A);
+        vlbe__int_badd(sys, &B, VLBE_R(1.0), M, 0);
+        if (m > 0) {
+            vlbe__int_badd(sys, &B, VLBE_R(1.0), Cq, 0);
+            vlbe__int_badd(sys, &B, VLBE_R(1.0), Cq, 1);
         }
+    } else {
+        for (i = 0; i < N; ++i)
+            for (j = 0; j < N; ++j) {
+                vlbe_real x = VLBE_R(0.0);
+                if (i < n && j < n) x = M[(size_t)i * n + j];
+                else if (i < n && j >= n) x = Cq[(size_t)(j - n) * n + i];
+                else if (i >= n && j < n) x = Cq[(size_t)(i - n) * n + j];
+                A[(size_t)i * N + j] = x;
+            }
+    }
     vlbe_vec_copy(n, Q, b);
     if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
-    vlbe__int_equil(N, A, (size_t)N, NULL, b);
+    if (band) vlbe__int_perm(sys, 1, b, X);
+    else X = b;
+    vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), band ? (int)vlbe__int_ald(sys, 1) : N, NULL, X);
     ++stats->lu_factors;
-    if ((rc = vlbe_lu_factor(N, A, A, iwork, NULL)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_factor(sys, stats, 1, A, iwork)) != VLBE_OK) return rc;
     ++stats->lu_solves;
-    vlbe_lu_solve(N, A, iwork, 1, b);
+    vlbe__int_solve(sys, 1, A, iwork, X);
+    if (band) vlbe__int_unperm(sys, 1, X, b);
     if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
     vlbe_vec_copy(n, b, qdd);
     if (m > 0) vlbe_vec_copy(m, b + n, lambda);
@@ -808,19 +1283,34 @@ VLBE_API size_t vlbe_static_work_len(int n, int m)
     return 5 * N + 3 * (size_t)n + 2 * mn + N * N + nn + vlbe__int_tangent_len(n, m);
 }
 VLBE_API size_t vlbe_static_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
+VLBE_API size_t vlbe_static_work_len_sys(const vlbe_dae *sys)
+{
+    size_t N;
+    VLBE_ASSERT(sys != NULL);
+    if (!vlbe__int_banded(sys)) return vlbe_static_work_len(sys->n, sys->m);
+    N = (size_t)sys->n + (size_t)sys->m;
+    return 5 * N + 3 * (size_t)sys->n + 2 * vlbe__int_mlen(sys, 1) + vlbe__int_alen(sys, 1) +
+           vlbe__int_btangent_len(sys) + 3 * N;
+}
+VLBE_API size_t vlbe_static_iwork_len_sys(const vlbe_dae *sys)
+{
+    VLBE_ASSERT(sys != NULL);
+    return vlbe_static_iwork_len(sys->n, sys->m) + vlbe__int_ilen(sys);
+}
 
 /* Psi = (C_q^T lambda - Q, C) at x = (q, lambda), v = z = 0; leaves Q(t,q,0)
-   in Q and C_q in Cq. */
+   in Q and C_q in Cq.  pw: scratch of a banded problem (2 (n + m)). */
 VLBE_INLINE vlbe_status vlbe__sta_resid(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                         const vlbe_real *x, const vlbe_real *z, vlbe_real *Q,
-                                        vlbe_real *Cq, vlbe_real *F)
+                                        vlbe_real *Cq, vlbe_real *F, vlbe_real *pw)
 {
     int n = s->n, m = s->m, i;
     vlbe_status rc;
     if ((rc = vlbe__int_force(s, c, t, x, z, Q)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_cjac(s, c, t, x, Cq, NULL)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_constr(s, c, t, x, F + n)) != VLBE_OK) return rc;
-    vlbe_mat_tvec(m, n, Cq, x + n, F);
+    if (vlbe__int_banded(s)) vlbe__int_bprod(s, 2, Cq, x + n, F, pw); /* pw: 2 (n+m) */
+    else vlbe_mat_tvec(m, n, Cq, x + n, F);
     for (i = 0; i < n; ++i) F[i] -= Q[i];
     return VLBE_OK;
 }
@@ -863,9 +1353,11 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
                                      vlbe_dae_stats *stats, vlbe_real *work, size_t work_len,
                                      int *iwork, size_t iwork_len)
 {
-    int n, m, N, i, j, it, k, inc_on, inc_ok;
+    int n, m, N, i, j, it, k, inc_on, inc_ok, band;
     size_t NN, e;
-    vlbe_real *x, *xt, *F, *Ft, *d, *z, *Q, *Qt, *Cq, *Cqt, *A, *sink, *scr, *tmp;
+    vlbe_real *x, *xt, *F, *Ft, *d, *z, *Q, *Qt, *Cq, *Cqt, *A, *sink, *scr, *tmp, *pw = NULL,
+              *X = NULL;
+    int *inv = NULL;
     vlbe_real fnorm, sc, kmax, cmax, merit;
     vlbe_dae sl;
     vlbe_dae_stats dummy;
@@ -882,10 +1374,16 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
         par->max_iter < 1 || par->max_iter > VLBE_INT_MAX_ITER || par->max_halvings < 0 ||
         par->max_halvings > 50)
         return VLBE_EARG;
-    if (!work || !iwork || work_len < vlbe_static_work_len(n, m) ||
-        iwork_len < vlbe_static_iwork_len(n, m))
+    if (!work || !iwork || work_len < vlbe_static_work_len_sys(sys) ||
+        iwork_len < vlbe_static_iwork_len_sys(sys))
         return VLBE_EWORK;
     if (!vlbe_all_finite(q, n) || (m > 0 && !vlbe_all_finite(lambda, m))) return VLBE_ENONFINITE;
+    band = vlbe__int_banded(sys);
+    if (band) {
+        inv = iwork + N;
+        if ((rc = vlbe__int_inv(sys, inv)) != VLBE_OK) return rc;
+        NN = vlbe__int_alen(sys, 1);
+    }
     if (!stats) {
         stats = &dummy;
         vlbe__int_stats_zero(&dummy);
@@ -899,19 +1397,23 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     Q = z + n;
     Qt = Q + n;
     Cq = Qt + n;
-    Cqt = Cq + (size_t)m * n;
-    A = Cqt + (size_t)m * n;
+    Cqt = Cq + vlbe__int_mlen(sys, 1);
+    A = Cqt + vlbe__int_mlen(sys, 1);
     sink = A + NN;
-    scr = sink + (size_t)n * n;
+    scr = sink + (band ? 0 : (size_t)n * n); /* banded: no sink, D is left out */
+    if (band) {
+        X = scr + vlbe__int_btangent_len(sys); /* the step in A's order */
+        pw = X + N;
+    }
     /* M never enters: no dM/dq terms in the tangent */
     sl = *sys;
     sl.flags |= VLBE_DAE_MASS_CONST;
     vlbe_vec_zero(n, z);
-    vlbe_vec_zero(n * n, sink);
+    if (!band) vlbe_vec_zero(n * n, sink);
     vlbe_vec_copy(n, q, x);
     if (m > 0) vlbe_vec_copy(m, lambda, x + n);
     /* the start is the caller's point: no backtracking from it */
-    if ((rc = vlbe__sta_resid(&sl, stats, t, x, z, Q, Cq, F)) != VLBE_OK) return rc;
+    if ((rc = vlbe__sta_resid(&sl, stats, t, x, z, Q, Cq, F, pw)) != VLBE_OK) return rc;
     if (!vlbe_all_finite(F, N)) return VLBE_ENONFINITE;
     fnorm = vlbe__int_psi_norm(n, F, m, F + n); /* residual test, eq. 53 */
     inc_on = par->rtol + par->atol > VLBE_R(0.0);
@@ -927,38 +1429,73 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
         }
         /* iteration matrix [-K + H, s C_q^T; s C_q, 0] */
         for (e = 0; e < NN; ++e) A[e] = VLBE_R(0.0);
-        rc = vlbe__int_tangent2(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), A, N,
-                                VLBE_R(0.0), sink, n, scr);
-        if (rc != VLBE_OK) return rc;
-        kmax = cmax = VLBE_R(0.0);
-        for (i = 0; i < n; ++i)
-            for (j = 0; j < n; ++j) {
-                vlbe_real a = vlbe_fabs(A[(size_t)i * N + j]);
-                if (a > kmax) kmax = a;
-            }
-        cmax = vlbe_vec_norm_inf(m * n, Cq);
+        if (band) {
+            vlbe__int_blk B;
+            B.A = A;
+            B.ld = vlbe__int_ald(sys, 1);
+            B.kl = sys->kl;
+            B.f = 1;
+            B.ro = B.co = 0;
+            rc = vlbe__int_btangent(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), &B,
+                                    VLBE_R(0.0), NULL, inv, scr);
+            if (rc != VLBE_OK) return rc;
+            kmax = vlbe_vec_norm_inf((int)NN, A); /* only the q block is filled yet */
+            cmax = vlbe_vec_norm_inf((int)vlbe__int_mlen(sys, 1), Cq);
+        } else {
+            rc = vlbe__int_tangent2(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), A, N,
+                                    VLBE_R(0.0), sink, n, scr);
+            if (rc != VLBE_OK) return rc;
+            kmax = cmax = VLBE_R(0.0);
+            for (i = 0; i < n; ++i)
+                for (j = 0; j < n; ++j) {
+                    vlbe_real a = vlbe_fabs(A[(size_t)i * N + j]);
+                    if (a > kmax) kmax = a;
+                }
+            cmax = vlbe_vec_norm_inf(m * n, Cq);
+        }
         sc = (kmax > VLBE_R(0.0) && cmax > VLBE_R(0.0) && isfinite(kmax) && isfinite(cmax))
                  ? kmax / cmax
                  : VLBE_R(1.0);
-        for (i = 0; i < m; ++i)
-            for (j = 0; j < n; ++j) {
-                vlbe_real c = sc * Cq[(size_t)i * n + j];
-                A[(size_t)(n + i) * N + j] = c;
-                A[(size_t)j * N + n + i] = c;
-            }
+        if (band && m > 0) {
+            vlbe__int_blk B;
+            B.A = A;
+            B.ld = vlbe__int_ald(sys, 1);
+            B.kl = sys->kl;
+            B.f = 1;
+            B.ro = B.co = 0;
+            vlbe__int_badd(sys, &B, sc, Cq, 0);
+            vlbe__int_badd(sys, &B, sc, Cq, 1);
+        } else if (!band) {
+            for (i = 0; i < m; ++i)
+                for (j = 0; j < n; ++j) {
+                    vlbe_real c = sc * Cq[(size_t)i * n + j];
+                    A[(size_t)(n + i) * N + j] = c;
+                    A[(size_t)j * N + n + i] = c;
+                }
+        }
         /* the line search's merit function: ||(Psi_q, s Psi_c)||, the
            constraint rows in the units of force like the iteration matrix
            (with C in its own units a metre of gap would weigh as a newton) */
         merit = vlbe__int_hypot(vlbe_vec_norm2(n, F), sc * vlbe_vec_norm2(m, F + n));
         for (i = 0; i < n; ++i) d[i] = -F[i];
         for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
-        vlbe__int_equil(N, A, (size_t)N, NULL, d);
+        if (band) {
+            vlbe__int_perm(sys, 1, d, X);
+            vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), (int)vlbe__int_ald(sys, 1), NULL, X);
+        } else {
+            vlbe__int_equil(N, A, (size_t)N, N, NULL, d);
+        }
         ++stats->lu_factors;
         /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
-        if ((rc = vlbe_lu_factor(N, A, A, iwork, NULL)) != VLBE_OK) return rc;
+        if ((rc = vlbe__int_factor(sys, stats, 1, A, iwork)) != VLBE_OK) return rc;
         ++stats->lu_solves;
         ++stats->newton_iters;
-        vlbe_lu_solve(N, A, iwork, 1, d);
+        if (band) {
+            vlbe__int_solve(sys, 1, A, iwork, X);
+            vlbe__int_unperm(sys, 1, X, d);
+        } else {
+            vlbe__int_solve(sys, 1, A, iwork, d);
+        }
         for (i = 0; i < m; ++i) d[n + i] *= sc;
         if (!vlbe_all_finite(d, N)) return VLBE_ENONFINITE;
         /* increment test on the full step, at the new point */
@@ -978,7 +1515,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             for (i = 0; i < N; ++i) xt[i] = x[i] + alpha * d[i];
             if (!vlbe_all_finite(xt, N)) {
                 last = VLBE_ENONFINITE;
-            } else if ((rc = vlbe__sta_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft)) != VLBE_OK) {
+            } else if ((rc = vlbe__sta_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft, pw)) != VLBE_OK) {
                 if (rc != VLBE_ECALLBACK || stats->callback_rc < 0) return rc; /* fatal */
                 last = VLBE_ECALLBACK; /* outside the domain: as no decrease */
             } else if (!vlbe_all_finite(Ft, N)) {
@@ -999,7 +1536,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             /* every trial was inside the domain but none lowered the
                merit: take the full step (see above) */
             for (i = 0; i < N; ++i) xt[i] = x[i] + d[i];
-            if ((rc = vlbe__sta_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft)) != VLBE_OK) return rc;
+            if ((rc = vlbe__sta_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft, pw)) != VLBE_OK) return rc;
             accepted = 1;
             k = 0;
         }
@@ -1083,6 +1620,24 @@ VLBE_API size_t vlbe_hht_work_len(int n, int m)
            vlbe__int_tangent_len(n, m) + N;
 }
 VLBE_API size_t vlbe_hht_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
+VLBE_API size_t vlbe_hht_work_len_sys(const vlbe_dae *sys)
+{
+    size_t n, m, N, a, d;
+    VLBE_ASSERT(sys != NULL);
+    if (!vlbe__int_banded(sys)) return vlbe_hht_work_len(sys->n, sys->m);
+    n = (size_t)sys->n;
+    m = (size_t)sys->m;
+    N = n + m;
+    a = 3 * (4 * n + m) + vlbe__int_alen(sys, 1) + N + vlbe__int_mlen(sys, 0) + n +
+        vlbe__int_mlen(sys, 1) + m + vlbe__int_btangent_len(sys) + N + 3 * N + n;
+    d = 3 * (4 * n + m) + vlbe_dae_work_len_sys(sys); /* the consistent start */
+    return a > d ? a : d;
+}
+VLBE_API size_t vlbe_hht_iwork_len_sys(const vlbe_dae *sys)
+{
+    VLBE_ASSERT(sys != NULL);
+    return vlbe_hht_iwork_len(sys->n, sys->m) + vlbe__int_ilen(sys);
+}
 
 VLBE_INLINE vlbe_real *vlbe__hht_trial(const vlbe_hht *st) { return st->w_; }
 VLBE_INLINE vlbe_real *vlbe__hht_backup(const vlbe_hht *st)
@@ -1131,8 +1686,8 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
     if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
     n = sys->n;
     m = sys->m;
-    if (!work || !iwork || work_len < vlbe_hht_work_len(n, m) ||
-        iwork_len < vlbe_hht_iwork_len(n, m))
+    if (!work || !iwork || work_len < vlbe_hht_work_len_sys(sys) ||
+        iwork_len < vlbe_hht_iwork_len_sys(sys))
         return VLBE_EWORK;
     if (!vlbe__hht_params_ok(par)) return VLBE_EARG;
     if (!isfinite(t0) || !vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n))
@@ -1204,9 +1759,12 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
     int n = st->n, m = st->m, N = n + m, i, j, it, fresh;
     size_t NN = (size_t)N * (size_t)N;
     vlbe_real *tq = vlbe__hht_trial(st), *tv = tq + n, *tqdd = tv + n, *ta = tqdd + n, *tl = ta + n;
-    vlbe_real *LU = vlbe__hht_lu(st), *r = LU + NN, *M = r + N, *Q = M + (size_t)n * n,
-              *Cq = Q + n, *C = Cq + (size_t)m * n, *scr = C + m,
-              *rs = scr + vlbe__int_tangent_len(n, m);
+    int band = vlbe__int_banded(s);
+    vlbe_real *LU = vlbe__hht_lu(st), *r = LU + (band ? vlbe__int_alen(s, 1) : NN), *M = r + N,
+              *Q = M + vlbe__int_mlen(s, 0), *Cq = Q + n, *C = Cq + vlbe__int_mlen(s, 1),
+              *scr = C + m,
+              *rs = scr + (band ? vlbe__int_btangent_len(s) : vlbe__int_tangent_len(n, m)),
+              *X = rs + N, *pw = X + N, *tmp = pw + 2 * N; /* banded only */
     vlbe_real am = p->alpha_m, af = p->alpha_f;
     vlbe_real bp = h * h * p->beta * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am); /* dq/dq''  */
     vlbe_real gp = h * p->gamma * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);    /* dv/dq''  */
@@ -1234,11 +1792,21 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
         if ((rc = vlbe__int_force(s, &st->stats, t1, tq, tv, Q)) != VLBE_OK) return rc;
         if ((rc = vlbe__int_cjac(s, &st->stats, t1, tq, Cq, NULL)) != VLBE_OK) return rc;
         if ((rc = vlbe__int_constr(s, &st->stats, t1, tq, C)) != VLBE_OK) return rc;
-        vlbe_mat_vec(n, n, M, tqdd, r);
-        for (i = 0; i < n; ++i) r[i] -= Q[i];
-        for (j = 0; j < m; ++j) {
-            vlbe_vec_axpy(n, tl[j], Cq + (size_t)j * n, r);
-            r[n + j] = C[j] / bp;
+        if (band) {
+            vlbe__int_bprod(s, 0, M, tqdd, r, pw);
+            for (i = 0; i < n; ++i) r[i] -= Q[i];
+            if (m > 0) {
+                vlbe__int_bprod(s, 2, Cq, tl, tmp, pw);
+                for (i = 0; i < n; ++i) r[i] += tmp[i];
+            }
+            for (j = 0; j < m; ++j) r[n + j] = C[j] / bp;
+        } else {
+            vlbe_mat_vec(n, n, M, tqdd, r);
+            for (i = 0; i < n; ++i) r[i] -= Q[i];
+            for (j = 0; j < m; ++j) {
+                vlbe_vec_axpy(n, tl[j], Cq + (size_t)j * n, r);
+                r[n + j] = C[j] / bp;
+            }
         }
         if (!vlbe_all_finite(r, N)) return VLBE_ENONFINITE;
         /* residual test (ftol > 0, eq. 53) at an iterate that passed the
@@ -1260,7 +1828,34 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
             }
         }
         /* iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v, C_q^T; C_q, 0] */
-        if (!st->have_lu_ || !p->modified) {
+        if ((!st->have_lu_ || !p->modified) && band) {
+            vlbe__int_blk B;
+            B.A = LU;
+            B.ld = vlbe__int_ald(s, 1);
+            B.kl = s->kl;
+            B.f = 1;
+            B.ro = B.co = 0;
+            vlbe_vec_zero((int)vlbe__int_alen(s, 1), LU);
+            vlbe__int_badd(s, &B, VLBE_R(1.0), M, 0);
+            if (m > 0) {
+                vlbe__int_badd(s, &B, VLBE_R(1.0), Cq, 0);
+                vlbe__int_badd(s, &B, VLBE_R(1.0), Cq, 1);
+            }
+            rc = vlbe__int_btangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, &B, gp, &B,
+                                    st->piv_ + N, scr);
+            if (rc != VLBE_OK) return rc;
+            vlbe__int_equil(N, LU, B.ld, (int)B.ld, rs, NULL);
+            ++st->stats.lu_factors;
+            rc = vlbe__int_factor(s, &st->stats, 1, LU, st->piv_);
+            if (rc != VLBE_OK) {
+                st->have_lu_ = 0;
+                return rc;
+            }
+            st->have_lu_ = 1;
+            st->h_lu_ = h;
+            fresh = 1;
+            prev = VLBE_R(0.0);
+        } else if (!st->have_lu_ || !p->modified) {
             for (i = 0; i < n; ++i) {
                 for (j = 0; j < n; ++j) LU[(size_t)i * N + j] = M[(size_t)i * n + j];
                 for (j = 0; j < m; ++j) LU[(size_t)i * N + n + j] = Cq[(size_t)j * n + i];
@@ -1271,10 +1866,10 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
             }
             rc = vlbe__int_tangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, gp, LU, N, scr);
             if (rc != VLBE_OK) return rc;
-            vlbe__int_equil(N, LU, (size_t)N, rs, NULL);
+            vlbe__int_equil(N, LU, (size_t)N, N, rs, NULL);
             ++st->stats.lu_factors;
             /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
-            rc = vlbe_lu_factor(N, LU, LU, st->piv_, NULL);
+            rc = vlbe__int_factor(s, &st->stats, 1, LU, st->piv_);
             if (rc != VLBE_OK) {
                 st->have_lu_ = 0;
                 return rc;
@@ -1286,8 +1881,15 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
         }
         ++st->stats.lu_solves;
         ++st->stats.newton_iters;
-        for (i = 0; i < N; ++i) r[i] *= rs[i];
-        vlbe_lu_solve(N, LU, st->piv_, 1, r);
+        if (band) {
+            vlbe__int_perm(s, 1, r, X);
+            for (i = 0; i < N; ++i) X[i] *= rs[i];
+            vlbe__int_solve(s, 1, LU, st->piv_, X);
+            vlbe__int_unperm(s, 1, X, r);
+        } else {
+            for (i = 0; i < N; ++i) r[i] *= rs[i];
+            vlbe__int_solve(s, 1, LU, st->piv_, r);
+        }
         /* update: q'' -= dx, lambda -= dl, and a, q, v along */
         for (i = 0; i < n; ++i) {
             vlbe_real d = r[i];
@@ -1508,6 +2110,28 @@ VLBE_API size_t vlbe_bdf_work_len(int n, int m)
            (tail > dae ? tail : dae);
 }
 VLBE_API size_t vlbe_bdf_iwork_len(int n, int m) { return 2 * (size_t)n + 2 * (size_t)m; }
+/* banded: the tail holds A (band of 2 (n+m) rows), M, Q, Cq, Ct, row
+   scales, scratch, and the vectors of the products in A's order (2 (n+m)
+   + 2 (n+m) + n) */
+VLBE_API size_t vlbe_bdf_work_len_sys(const vlbe_dae *sys)
+{
+    size_t n, m, N2, tail, dae;
+    VLBE_ASSERT(sys != NULL);
+    if (!vlbe__int_banded(sys)) return vlbe_bdf_work_len(sys->n, sys->m);
+    n = (size_t)sys->n;
+    m = (size_t)sys->m;
+    N2 = 2 * n + 2 * m;
+    tail = vlbe__int_alen(sys, 2) + vlbe__int_mlen(sys, 0) + n + vlbe__int_mlen(sys, 1) + m + N2 +
+           vlbe__int_btangent_len(sys) + 2 * N2 + n;
+    dae = vlbe_dae_work_len_sys(sys);
+    return N2 * (size_t)(VLBE_BDF_MAXORD + 1 + 5) + vlbe__bdf_backup_len(sys->n, sys->m) +
+           (tail > dae ? tail : dae);
+}
+VLBE_API size_t vlbe_bdf_iwork_len_sys(const vlbe_dae *sys)
+{
+    VLBE_ASSERT(sys != NULL);
+    return vlbe_bdf_iwork_len(sys->n, sys->m) + vlbe__int_ilen(sys);
+}
 
 VLBE_INLINE int vlbe__bdf_n2(const vlbe_bdf *st) { return 2 * st->n + 2 * st->m; }
 VLBE_INLINE vlbe_real *vlbe__bdf_phi(const vlbe_bdf *st, int j) /* 1-based column */
@@ -1523,6 +2147,21 @@ VLBE_INLINE vlbe_real *vlbe__bdf_backup(const vlbe_bdf *st) { return vlbe__bdf_v
 VLBE_INLINE vlbe_real *vlbe__bdf_tail(const vlbe_bdf *st)
 {
     return vlbe__bdf_backup(st) + vlbe__bdf_backup_len(st->n, st->m);
+}
+/* the tail: iteration matrix, then M, Q, Cq, Ct, row scales, scratch, and
+   (banded) the vectors in the matrix's order */
+VLBE_INLINE vlbe_real *vlbe__bdf_M(const vlbe_bdf *st)
+{
+    return vlbe__bdf_tail(st) + vlbe__int_alen(st->sys, 2);
+}
+VLBE_INLINE vlbe_real *vlbe__bdf_rs(const vlbe_bdf *st)
+{
+    return vlbe__bdf_M(st) + vlbe__int_mlen(st->sys, 0) + (size_t)st->n +
+           vlbe__int_mlen(st->sys, 1) + (size_t)st->m;
+}
+VLBE_INLINE vlbe_real *vlbe__bdf_ext(const vlbe_bdf *st)
+{
+    return vlbe__bdf_rs(st) + (size_t)vlbe__bdf_n2(st) + vlbe__int_btangent_len(st->sys);
 }
 
 /* Weighted RMS norm of the q and v parts of x (error test); weights from
@@ -1567,8 +2206,8 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
     n = sys->n;
     m = sys->m;
-    if (!work || !iwork || work_len < vlbe_bdf_work_len(n, m) ||
-        iwork_len < vlbe_bdf_iwork_len(n, m))
+    if (!work || !iwork || work_len < vlbe_bdf_work_len_sys(sys) ||
+        iwork_len < vlbe_bdf_iwork_len_sys(sys))
         return VLBE_EWORK;
     if (!(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
         !(par->rtol + par->atol > VLBE_R(0.0)) || !(par->h0 >= VLBE_R(0.0)) ||
@@ -1609,6 +2248,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, tq, tq + n, &st->stats, tail,
                                  (size_t)(work + work_len - tail), iwork, iwork_len);
     if (rc != VLBE_OK) return rc;
+    if (vlbe__int_banded(sys)) (void)vlbe__int_inv(sys, iwork + N2); /* checked by the start */
     if (q0 != st->q) vlbe_vec_copy(n, q0, st->q); /* a restart may pass the old state */
     if (v0 != st->v) vlbe_vec_copy(n, v0, st->v);
     vlbe_vec_copy(n, tq, phi2 + n);
@@ -1663,13 +2303,30 @@ VLBE_INLINE vlbe_status vlbe__bdf_res(vlbe_bdf *st, vlbe_real t, const vlbe_real
     const vlbe_dae *s = st->sys;
     int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i;
     const vlbe_real *q = y, *v = y + n, *lam = v + n, *mu = lam + m;
-    vlbe_real *M = vlbe__bdf_tail(st) + (size_t)N2 * N2, *Q = M + (size_t)n * n,
-              *Cq = Q + n, *Ct = Cq + (size_t)m * n;
+    vlbe_real *M = vlbe__bdf_M(st), *Q = M + vlbe__int_mlen(s, 0), *Cq = Q + n,
+              *Ct = Cq + vlbe__int_mlen(s, 1);
     vlbe_status rc;
     if ((rc = vlbe__int_mass(s, &st->stats, t, q, v, M)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_force(s, &st->stats, t, q, v, Q)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_cjac(s, &st->stats, t, q, Cq, Ct)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_constr(s, &st->stats, t, q, G + 2 * n + m)) != VLBE_OK) return rc;
+    if (vlbe__int_banded(s)) {
+        vlbe_real *pw = vlbe__bdf_ext(st) + N2, *tmp = pw + N2;
+        vlbe__int_bprod(s, 0, M, yp + n, G + n, pw);
+        for (i = 0; i < n; ++i) {
+            G[i] = yp[i] - v[i];
+            G[n + i] -= Q[i];
+        }
+        if (m > 0) {
+            vlbe__int_bprod(s, 2, Cq, mu, tmp, pw);
+            vlbe_vec_axpy(n, VLBE_R(1.0), tmp, G);
+            vlbe__int_bprod(s, 2, Cq, lam, tmp, pw);
+            vlbe_vec_axpy(n, VLBE_R(1.0), tmp, G + n);
+            vlbe__int_bprod(s, 1, Cq, v, G + 2 * n, pw);
+            vlbe_vec_axpy(m, VLBE_R(1.0), Ct, G + 2 * n);
+        }
+        return vlbe_all_finite(G, N2) ? VLBE_OK : VLBE_ENONFINITE;
+    }
     vlbe_mat_vec(n, n, M, yp + n, G + n);
     for (i = 0; i < n; ++i) {
         G[i] = yp[i] - v[i];
@@ -1703,10 +2360,55 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
     const vlbe_dae *s = st->sys;
     int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i, j;
     size_t NN = (size_t)N2 * (size_t)N2, ld = (size_t)N2;
-    vlbe_real *A = vlbe__bdf_tail(st), *M = A + NN, *Q = M + (size_t)n * n, *Cq = Q + n,
-              *Ct = Cq + (size_t)m * n, *rs = Ct + m, *scr = rs + N2, ic = VLBE_R(1.0) / cj;
+    vlbe_real *A = vlbe__bdf_tail(st), *M = vlbe__bdf_M(st), *Q = M + vlbe__int_mlen(s, 0),
+              *Cq = Q + n, *rs = vlbe__bdf_rs(st), *scr = rs + N2, ic = VLBE_R(1.0) / cj;
     vlbe_status rc;
     st->jcalc_ = -1;
+    if (vlbe__int_banded(s)) {
+        vlbe__int_blk Bqq, Bqv, Bvq, Bvv;
+        const int *inv = st->piv_ + N2;
+        int b;
+        NN = vlbe__int_alen(s, 2);
+        ld = vlbe__int_ald(s, 2);
+        vlbe_vec_zero((int)NN, A);
+        Bqq.A = A;
+        Bqq.ld = ld;
+        Bqq.kl = vlbe__int_fkl(s, 2);
+        Bqq.f = 2;
+        Bqq.ro = Bqq.co = 0;
+        Bqv = Bvq = Bvv = Bqq;
+        Bqv.co = 1;
+        Bvq.ro = 1;
+        Bvv.ro = Bvv.co = 1;
+        vlbe__int_bdiag(s, &Bqq, VLBE_R(1.0));
+        vlbe__int_bdiag(s, &Bqv, -ic);
+        vlbe__int_badd(s, &Bvv, VLBE_R(1.0), M, 0);
+        if (m > 0) {
+            vlbe__int_badd(s, &Bqv, VLBE_R(1.0), Cq, 1); /* (q, mu)     */
+            vlbe__int_badd(s, &Bvq, VLBE_R(1.0), Cq, 1); /* (v, lambda) */
+            vlbe__int_badd(s, &Bqv, VLBE_R(1.0), Cq, 0); /* (lambda, v) */
+            vlbe__int_badd(s, &Bvq, VLBE_R(1.0), Cq, 0); /* (mu, q)     */
+        }
+        rc = vlbe__int_btangent(s, &st->stats, t, y, y + n, yp + n, NULL, Q, M, ic, &Bvq, ic,
+                                &Bvv, inv, scr);
+        if (rc != VLBE_OK) return rc;
+        if (m > 0) {
+            /* (v, q) += d(C_q^T lambda)/dq / cj, (q, q) += d(C_q^T mu)/dq / cj,
+               (lambda, q) += d(C_q v + C_t)/dq: lambda rows sit at 2 order + 0 */
+            rc = vlbe__int_bconstr_q(s, &st->stats, t, y, y + 2 * n, ic, &Bvq, y + 2 * n + m, ic,
+                                     &Bqq, y + n, &Bqq, inv, scr);
+            if (rc != VLBE_OK) return rc;
+        }
+        if (!vlbe_all_finite(A, (int)NN)) return VLBE_ENONFINITE;
+        vlbe__int_equil(N2, A, ld, (int)ld, rs, NULL);
+        for (i = 0; i < n; ++i) /* the 1/cj of the q and v rows, for the solve */
+            for (b = 0; b < 2; ++b) rs[2 * s->order[i] + b] *= ic;
+        ++st->stats.lu_factors;
+        if ((rc = vlbe__int_factor(s, &st->stats, 2, A, st->piv_)) != VLBE_OK) return rc;
+        st->cj_lu_ = cj;
+        st->jcalc_ = 0;
+        return VLBE_OK;
+    }
     for (i = 0; i < (int)NN; ++i) A[i] = VLBE_R(0.0);
     for (i = 0; i < n; ++i) {
         A[(size_t)i * ld + (size_t)i] = VLBE_R(1.0);
@@ -1730,10 +2432,10 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
         if (rc != VLBE_OK) return rc;
     }
     if (!vlbe_all_finite(A, (int)NN)) return VLBE_ENONFINITE;
-    vlbe__int_equil(N2, A, ld, rs, NULL);
+    vlbe__int_equil(N2, A, ld, N2, rs, NULL);
     for (i = 0; i < 2 * n; ++i) rs[i] *= ic; /* the 1/cj of the q and v rows, for the solve */
     ++st->stats.lu_factors;
-    if ((rc = vlbe_lu_factor(N2, A, A, st->piv_, NULL)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_factor(s, &st->stats, 2, A, st->piv_)) != VLBE_OK) return rc;
     st->cj_lu_ = cj;
     st->jcalc_ = 0;
     return VLBE_OK;
@@ -1743,12 +2445,19 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
 VLBE_INLINE void vlbe__bdf_solve(vlbe_bdf *st, vlbe_real *d)
 {
     int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i;
-    const vlbe_real *rs = vlbe__bdf_tail(st) + (size_t)N2 * N2 + (size_t)n * n + (size_t)n +
-                          (size_t)m * n + (size_t)m;
+    const vlbe_real *rs = vlbe__bdf_rs(st);
     vlbe_real c = st->cj_lu_;
-    for (i = 0; i < N2; ++i) d[i] *= rs[i];
     ++st->stats.lu_solves;
-    vlbe_lu_solve(N2, vlbe__bdf_tail(st), st->piv_, 1, d);
+    if (vlbe__int_banded(st->sys)) {
+        vlbe_real *X = vlbe__bdf_ext(st);
+        vlbe__int_perm(st->sys, 2, d, X);
+        for (i = 0; i < N2; ++i) X[i] *= rs[i];
+        vlbe__int_solve(st->sys, 2, vlbe__bdf_tail(st), st->piv_, X);
+        vlbe__int_unperm(st->sys, 2, X, d);
+    } else {
+        for (i = 0; i < N2; ++i) d[i] *= rs[i];
+        vlbe__int_solve(st->sys, 2, vlbe__bdf_tail(st), st->piv_, d);
+    }
     for (i = 2 * n; i < 2 * n + 2 * m; ++i) d[i] *= c;
 }
 
@@ -1787,15 +2496,19 @@ VLBE_INLINE void vlbe__bdf_solve(vlbe_bdf *st, vlbe_real *d)
    is scratch. */
 VLBE_INLINE vlbe_real vlbe__bdf_enorm(vlbe_bdf *st, const vlbe_real *x, vlbe_real *f)
 {
-    int n = st->n, m = st->m;
-    const vlbe_real *M = vlbe__bdf_tail(st) + (size_t)vlbe__bdf_n2(st) * (size_t)vlbe__bdf_n2(st),
-                    *Cq = M + (size_t)n * (size_t)n + (size_t)n;
+    int n = st->n, m = st->m, band = vlbe__int_banded(st->sys);
+    const vlbe_real *M = vlbe__bdf_M(st), *Cq = M + vlbe__int_mlen(st->sys, 0) + (size_t)n;
+    vlbe_real *pw = vlbe__bdf_ext(st) + vlbe__bdf_n2(st);
     if (!st->par.stiff_filter) return vlbe__bdf_norm(st, x);
     vlbe_vec_copy(n, x, f);
     vlbe_vec_scale(n, st->cj_lu_, f);
-    vlbe_mat_vec(n, n, M, x + n, f + n);
+    if (band) vlbe__int_bprod(st->sys, 0, M, x + n, f + n, pw);
+    else vlbe_mat_vec(n, n, M, x + n, f + n);
     vlbe_vec_scale(n, st->cj_lu_, f + n);
-    if (m > 0) {
+    if (m > 0 && band) {
+        vlbe__int_bprod(st->sys, 1, Cq, x + n, f + 2 * n, pw);
+        vlbe__int_bprod(st->sys, 1, Cq, x, f + 2 * n + m, pw);
+    } else if (m > 0) {
         vlbe_mat_vec(m, n, Cq, x + n, f + 2 * n);
         vlbe_mat_vec(m, n, Cq, x, f + 2 * n + m);
     }
