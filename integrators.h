@@ -35,6 +35,17 @@ USAGE
          if (vlbe_dae_static(&sys, &sp, t, q, lambda, NULL, work, lw, iwork, liw)) break;
      }
 
+     Long chains: matrices in band form (vlbe_dae.storage).  The model orders
+     q and lambda so that each constraint row sits next to the coordinates
+     it touches, its callbacks write bands, and the integrators never form
+     an n x n matrix: workspace and work per step O((n + m)(kl + ku)).
+     Size the workspaces with the _sys queries, which know the storage:
+     sys.storage = VLBE_DAE_BANDED;  sys.kl = kl;  sys.ku = ku;  sys.order = order;
+     size_t lw = vlbe_hht_work_len_sys(&sys), liw = vlbe_hht_iwork_len_sys(&sys);
+     (chains: vlbe_ale_chain_band and vlbe_cr2d_beam_band fill order, kl, ku.)
+     A legacy code with its own sparse solver sets sys.lin_factor and
+     sys.lin_solve: the integrators hand it the assembled iteration matrix.
+
 CONFIG
    Nothing beyond vlbe.h.
 
@@ -126,7 +137,8 @@ REFERENCES
 
 /* -- constants ---------------------------------------------------------- */
 /* vlbe_dae.flags */
-#define VLBE_DAE_MASS_CONST 1u /* M does not depend on q or v: no dM/dq terms   */
+#define VLBE_DAE_MASS_CONST 1u /* M does not depend on t, q or v: no dM/dq terms, and
+                                  HHT and BDF evaluate M once per init and keep it */
 #define VLBE_DAE_MASS_V 2u     /* M depends on v too (FD of M a in v)          */
 #define VLBE_DAE_NO_CHESS 4u   /* drop d(C_q^T lambda)/dq from the iteration matrix */
 
@@ -273,6 +285,7 @@ typedef struct vlbe_hht {
     int *piv_;
     vlbe_real h_lu_;   /* step size of the stored LU (0 = none) */
     int have_lu_;
+    int have_m_;       /* VLBE_DAE_MASS_CONST: M is in the workspace */
     /* time without drift: t = t_base_ + k_run_ h_run_ over a run of equal steps */
     vlbe_real t_base_, h_run_;
     long k_run_;
@@ -343,6 +356,7 @@ typedef struct vlbe_bdf {
     vlbe_real cj_lu_;   /* cj of the stored iteration matrix               */
     vlbe_real rate_;    /* last Newton rate estimate s (diagnostic only)   */
     int kold_, ns_, phase_, jcalc_; /* jcalc_: -1 matrix needed, 0 fresh, 1 old */
+    int have_m_;        /* VLBE_DAE_MASS_CONST: M is in the workspace       */
     vlbe_real t_base_;  /* fixed_step: t = t_base_ + k_run_ h0 (no drift)     */
     long k_run_;
 } vlbe_bdf;
@@ -1705,6 +1719,7 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
     s.w_ = s.lambda + m;
     s.piv_ = iwork;
     s.have_lu_ = 0;
+    s.have_m_ = 0;
     s.h_lu_ = VLBE_R(0.0);
     s.t_base_ = t0;
     s.h_run_ = VLBE_R(0.0);
@@ -1788,7 +1803,10 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
         vlbe_real nrm = VLBE_R(0.0), nv;
         int conv = 0;
         /* residual: r_q = M q'' + C_q^T lambda - Q, r_c = C / bp (scaled) */
-        if ((rc = vlbe__int_mass(s, &st->stats, t1, tq, tv, M)) != VLBE_OK) return rc;
+        if (!st->have_m_) {
+            if ((rc = vlbe__int_mass(s, &st->stats, t1, tq, tv, M)) != VLBE_OK) return rc;
+            st->have_m_ = (s->flags & VLBE_DAE_MASS_CONST) != 0; /* constant: kept */
+        }
         if ((rc = vlbe__int_force(s, &st->stats, t1, tq, tv, Q)) != VLBE_OK) return rc;
         if ((rc = vlbe__int_cjac(s, &st->stats, t1, tq, Cq, NULL)) != VLBE_OK) return rc;
         if ((rc = vlbe__int_constr(s, &st->stats, t1, tq, C)) != VLBE_OK) return rc;
@@ -2291,6 +2309,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     st->ns_ = 0;
     st->phase_ = 0;
     st->jcalc_ = -1;
+    st->have_m_ = 0;
     *st_out = s;
     return VLBE_OK;
 }
@@ -2306,7 +2325,10 @@ VLBE_INLINE vlbe_status vlbe__bdf_res(vlbe_bdf *st, vlbe_real t, const vlbe_real
     vlbe_real *M = vlbe__bdf_M(st), *Q = M + vlbe__int_mlen(s, 0), *Cq = Q + n,
               *Ct = Cq + vlbe__int_mlen(s, 1);
     vlbe_status rc;
-    if ((rc = vlbe__int_mass(s, &st->stats, t, q, v, M)) != VLBE_OK) return rc;
+    if (!st->have_m_) {
+        if ((rc = vlbe__int_mass(s, &st->stats, t, q, v, M)) != VLBE_OK) return rc;
+        st->have_m_ = (s->flags & VLBE_DAE_MASS_CONST) != 0; /* constant: kept */
+    }
     if ((rc = vlbe__int_force(s, &st->stats, t, q, v, Q)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_cjac(s, &st->stats, t, q, Cq, Ct)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_constr(s, &st->stats, t, q, G + 2 * n + m)) != VLBE_OK) return rc;

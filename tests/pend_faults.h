@@ -71,6 +71,10 @@ static void faulty_setup(vlbe_dae *sys, faulty *f, int mode)
     sys->force = faulty_force;
     sys->mass = faulty_mass;
     sys->constr = faulty_constr;
+    /* M constant but not declared so: the integrators then call mass at
+       every iteration (a declared constant M is evaluated once and kept),
+       where a mass fault can hit */
+    sys->flags &= ~VLBE_DAE_MASS_CONST;
     (void)mode;
 }
 
