@@ -1,6 +1,6 @@
 /* vlbe.h -- core of vlbe: configuration, status codes, small vector ops,
-   Gauss-Legendre rules, the cubic Hermite / linear basis in ALE form, dense LU
-   -- part of vlbe v0.1.0                          SPDX-License-Identifier: MIT
+   Gauss-Legendre rules, the cubic Hermite / linear basis in ALE form, dense
+   and banded LU -- part of vlbe v0.1.0            SPDX-License-Identifier: MIT
 
 USAGE
    #include "vlbe.h"        (every vlbe module includes it; keep the files
@@ -64,7 +64,9 @@ CONVENTIONS
    (i, j), i - kl <= j <= i + ku, at B[i*ld + (j - i + kl)], leading
    dimension ld >= kl + ku + 1 (VLBE_BAND_IDX(ld, kl, i, j)).  Slots that
    fall outside the matrix (j < 0 or j >= N in the first and last rows)
-   exist and are never read.  Storage N ld reals instead of N^2.
+   exist and are never read.  Storage N ld reals instead of N^2.  A band
+   LU factor (vlbe_band_lu_factor) has kl + ku super-diagonals (the fill of
+   the row interchanges): ld = vlbe_band_lu_ld(kl, ku) = 2 kl + ku + 1.
 
 API (one line each)
    const char *vlbe_status_str(vlbe_status s)          name of a status code
@@ -78,6 +80,11 @@ API (one line each)
    vlbe_status vlbe_lu_factor(n, A, LU, piv, info)      LU with partial pivoting
    void  vlbe_lu_solve(n, LU, piv, nrhs, B)            solve with a factor, never fails
    vlbe_real vlbe_lu_flops(n)                          2/3 n^3 (for benchmarks)
+   size_t vlbe_band_lu_ld(kl, ku)                      2 kl + ku + 1: ld of a band factor
+   vlbe_status vlbe_band_lu_factor(n, kl, ku, A, lda, LU, piv, info)  band LU, partial pivoting
+   void  vlbe_band_lu_solve(n, kl, ku, LU, piv, nrhs, B)  solve with a band factor
+   void  vlbe_band_mat_vec(n, kl, ku, A, lda, x, y) / vlbe_band_mat_tvec  y = A x, A^T x (band)
+   vlbe_real vlbe_band_lu_flops(n, kl, ku)             ~ n kl (2 ku + 1) (for benchmarks)
 
 REFERENCES
    [V] S. Yang et al., A variable-length beam element incorporating the effect
@@ -85,7 +92,9 @@ REFERENCES
    [R] ALE-RANCF variable-length rational element, Machines 10 (2022) 174:
        eqs. 12-15.
    Golub & Van Loan, Matrix Computations, 4th ed., alg. 3.4.1 (LU, partial
-   pivoting).
+   pivoting); sec. 4.3, banded systems: alg. 4.3.1 (band Gaussian
+   elimination), the band forward and back substitutions, and band
+   elimination with partial pivoting (U gains kl super-diagonals).
 */
 #ifndef VLBE_H
 #define VLBE_H
@@ -257,6 +266,17 @@ VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, in
 VLBE_API void vlbe_lu_solve(int n, const vlbe_real *LU, const int *piv, int nrhs,
                             vlbe_real *B);
 VLBE_API vlbe_real vlbe_lu_flops(int n);
+
+VLBE_API size_t vlbe_band_lu_ld(int kl, int ku);
+VLBE_API vlbe_status vlbe_band_lu_factor(int n, int kl, int ku, const vlbe_real *A, int lda,
+                                         vlbe_real *LU, int *piv, int *info);
+VLBE_API void vlbe_band_lu_solve(int n, int kl, int ku, const vlbe_real *LU, const int *piv,
+                                 int nrhs, vlbe_real *B);
+VLBE_API void vlbe_band_mat_vec(int n, int kl, int ku, const vlbe_real *A, int lda,
+                                const vlbe_real *x, vlbe_real *VLBE_RESTRICT y);
+VLBE_API void vlbe_band_mat_tvec(int n, int kl, int ku, const vlbe_real *A, int lda,
+                                 const vlbe_real *x, vlbe_real *VLBE_RESTRICT y);
+VLBE_API vlbe_real vlbe_band_lu_flops(int n, int kl, int ku);
 
 /* ===== implementation =================================================== */
 
@@ -562,6 +582,60 @@ VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int km
 }
 
 /* -- dense LU ----------------------------------------------------------- */
+/* The pieces the dense and the band LU share.  vlbe__lu_tol: the pivot
+   threshold tol = max(n eps amax, VLBE_REAL_MIN) (a pivot must be above it)
+   and whether the overflow scan of the factor is needed: 1 when amax 2^h
+   may pass VLBE_REAL_MAX, h the log2 of the growth bound (halvings are
+   exact, no libm call, no double in a float build). */
+VLBE_INLINE int vlbe__lu_tol(int n, int h, vlbe_real amax, vlbe_real *tol)
+{
+    vlbe_real t = (vlbe_real)n * VLBE_EPS * amax, lim = VLBE_REAL_MAX;
+    int k;
+    if (!(t >= VLBE_REAL_MIN)) t = VLBE_REAL_MIN; /* underflow: 1/pivot must stay finite */
+    *tol = t;
+    for (k = 0; k < h && lim > amax; ++k) lim *= VLBE_R(0.5);
+    return !(lim > amax);
+}
+
+/* Pivot of one elimination step: r = 0..m maximising |c[r*stride]| (the
+   first on ties), c = the diagonal entry, stride = the distance from an
+   entry of the column to the one below.  VLBE_OK with *p = r;
+   VLBE_ESINGULAR when that maximum is not above tol; VLBE_ENONFINITE when
+   it is NaN (only after an overflow of the elimination). */
+VLBE_INLINE vlbe_status vlbe__lu_pivot(const vlbe_real *c, size_t stride, int m, vlbe_real tol,
+                                       int *p)
+{
+    vlbe_real pmax = vlbe_fabs(c[0]);
+    int r, q = 0;
+    for (r = 1; r <= m; ++r) {
+        vlbe_real t = vlbe_fabs(c[(size_t)r * stride]);
+        if (t > pmax) {
+            pmax = t;
+            q = r;
+        }
+    }
+    *p = q;
+    if (!(pmax > tol)) return pmax != pmax ? VLBE_ENONFINITE : VLBE_ESINGULAR;
+    return VLBE_OK;
+}
+
+/* Elimination of one step, after the swap: the pivot row at c (c[0] the
+   pivot, c[1..len] the columns to its right), rows r = 1..m at c +
+   r*stride: l = c_r[0] / c[0] (as c_r[0] times the reciprocal) stored in
+   c_r[0], then c_r[1..len] -= l c[1..len], contiguous rows (vectorised). */
+VLBE_INLINE void vlbe__lu_eliminate(vlbe_real *c, size_t stride, int m, int len)
+{
+    const vlbe_real inv = VLBE_R(1.0) / c[0];
+    int r, j;
+    for (r = 1; r <= m; ++r) {
+        vlbe_real *VLBE_RESTRICT ri = c + (size_t)r * stride;
+        vlbe_real l = ri[0] * inv;
+        ri[0] = l;
+        if (l != VLBE_R(0.0))
+            for (j = 1; j <= len; ++j) ri[j] -= l * c[j];
+    }
+}
+
 /* LU = P A with partial pivoting (Golub & Van Loan alg. 3.4.1), right-looking,
    row-major so the rank-1 update runs along contiguous rows.
    A, LU: n*n row-major.  LU may equal A (in-place); otherwise A is untouched.
@@ -597,8 +671,8 @@ VLBE_API void vlbe_herm_ale_eval(vlbe_real p, vlbe_real p1, vlbe_real p2, int km
 VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, int *piv, int *info)
 {
     size_t nn, N, e;
-    vlbe_real amax = VLBE_R(0.0), tol, lim;
-    int i, j, k, scan;
+    vlbe_real amax = VLBE_R(0.0), tol;
+    int j, k, scan;
     VLBE_ASSERT(n >= 1 && A != NULL && LU != NULL && piv != NULL);
     N = (size_t)n;
     nn = N * N;
@@ -609,29 +683,18 @@ VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, in
     }
     if (LU != A)
         for (e = 0; e < nn; ++e) LU[e] = A[e];
-    tol = (vlbe_real)n * VLBE_EPS * amax;
-    if (!(tol >= VLBE_REAL_MIN)) tol = VLBE_REAL_MIN; /* underflow: 1/pivot must stay finite */
     /* growth <= 2^(n-1) (1 + eps)^(4(n-1)) < 2^n: scan when amax 2^n may
-       pass VLBE_REAL_MAX (halvings are exact, no libm call, no double in a
-       float build) */
-    lim = VLBE_REAL_MAX;
-    for (k = 0; k < n && lim > amax; ++k) lim *= VLBE_R(0.5);
-    scan = !(lim > amax);
+       pass VLBE_REAL_MAX */
+    scan = vlbe__lu_tol(n, n, amax, &tol);
     for (k = 0; k < n; ++k) {
-        vlbe_real *rk = LU + (size_t)k * N, pmax = vlbe_fabs(rk[k]), inv;
-        int p = k;
-        for (i = k + 1; i < n; ++i) {
-            vlbe_real t = vlbe_fabs(LU[(size_t)i * N + (size_t)k]);
-            if (t > pmax) {
-                pmax = t;
-                p = i;
-            }
-        }
+        vlbe_real *rk = LU + (size_t)k * N;
+        int p;
+        vlbe_status st = vlbe__lu_pivot(rk + k, N, n - 1 - k, tol, &p);
+        p += k;
         piv[k] = p;
-        if (!(pmax > tol)) {
-            if (pmax != pmax) return VLBE_ENONFINITE; /* only after an overflow */
-            if (info) *info = k + 1;
-            return VLBE_ESINGULAR;
+        if (st != VLBE_OK) {
+            if (st == VLBE_ESINGULAR && info) *info = k + 1;
+            return st;
         }
         if (p != k) {
             vlbe_real *rp = LU + (size_t)p * N;
@@ -641,14 +704,7 @@ VLBE_API vlbe_status vlbe_lu_factor(int n, const vlbe_real *A, vlbe_real *LU, in
                 rp[j] = t;
             }
         }
-        inv = VLBE_R(1.0) / rk[k];
-        for (i = k + 1; i < n; ++i) {
-            vlbe_real *VLBE_RESTRICT ri = LU + (size_t)i * N;
-            vlbe_real lik = ri[k] * inv;
-            ri[k] = lik;
-            if (lik != VLBE_R(0.0))
-                for (j = k + 1; j < n; ++j) ri[j] -= lik * rk[j];
-        }
+        vlbe__lu_eliminate(rk + k, N, n - 1 - k, n - 1 - k);
     }
     if (scan) {
         vlbe_real z = VLBE_R(0.0);
@@ -704,6 +760,225 @@ VLBE_API vlbe_real vlbe_lu_flops(int n)
 {
     vlbe_real x = (vlbe_real)n;
     return VLBE_R(2.0) / VLBE_R(3.0) * x * x * x;
+}
+
+/* -- banded LU ---------------------------------------------------------- */
+/* min(cap, i + a) for 0 <= i <= cap, a >= 0, without overflow */
+VLBE_INLINE int vlbe__min_add(int i, int a, int cap) { return a > cap - i ? cap : i + a; }
+
+/* the argument check of the band routines: n >= 1, kl, ku >= 0 with
+   2 kl + ku + 1 representable in size_t, lda >= kl + ku + 1 */
+VLBE_INLINE int vlbe__band_args_ok(int n, int kl, int ku, int lda)
+{
+    const size_t big = ((size_t)-1 - 1) / 3;
+    return n >= 1 && kl >= 0 && ku >= 0 && (size_t)kl <= big && (size_t)ku <= big &&
+           lda >= 1 && (size_t)lda >= (size_t)kl + (size_t)ku + 1;
+}
+
+VLBE_API size_t vlbe_band_lu_ld(int kl, int ku)
+{
+    VLBE_ASSERT(kl >= 0 && ku >= 0);
+    return 2 * (size_t)kl + (size_t)ku + 1;
+}
+
+/* LU = P A of a band matrix with kl sub- and ku super-diagonals: band
+   Gaussian elimination with partial pivoting, the row interchanges kept
+   inside the band (Golub & Van Loan sec. 4.3: alg. 4.3.1 with partial
+   pivoting; the layout of LAPACK's xGBTRF, transposed to rows).  Swapping
+   row k with a row p <= k + kl brings entries up to column p + ku into
+   row k, so U has kl + ku super-diagonals and LU is a band with kl sub-
+   and kl + ku super-diagonals: ld = vlbe_band_lu_ld(kl, ku) = 2 kl + ku +
+   1, entry (i, j) at LU[i*ld + j - i + kl] (VLBE_BAND_IDX(ld, kl, i, j)).
+   A: band storage (see "Band storage"), lda >= kl + ku + 1; only the
+   slots inside the matrix are read.  LU may equal A when lda == ld (in
+   place: the last kl slots of each row, columns i+ku+1 .. i+kl+ku, are
+   ignored on input and zeroed); otherwise A is untouched.  Slots of LU
+   outside the matrix are neither read nor written.  kl, ku >= n are
+   allowed (the storage follows them, the elimination stops at the
+   matrix).
+   Row i of LU holds U(i, i .. i+kl+ku) and, in columns i-kl .. i-1, the
+   multipliers of the steps that eliminated those columns from the row
+   standing at position i at that step: unlike vlbe_lu_factor, whose L is
+   the one of P A, earlier multipliers are not swapped with later rows
+   (vlbe_band_lu_solve applies interchanges and multipliers step by step).
+   piv[k] = the 0-based row swapped with row k at step k (k <= piv[k] <=
+   k + kl), as in vlbe_lu_factor.  Pivots, U and the solution are bitwise
+   those of vlbe_lu_factor / vlbe_lu_solve on the full matrix (the same
+   operations on the entries inside the band, the zero ones skipped).
+   Status, *info, the pivot test and the failure contract are those of
+   vlbe_lu_factor: VLBE_ENONFINITE for NaN or Inf in the band of A (found
+   before anything is written) or an overflow in the elimination;
+   VLBE_ESINGULAR for a pivot not above tol = max(n eps max|A|,
+   VLBE_REAL_MIN), its 1-based column in *info; after a failed elimination
+   LU and piv hold unspecified partial results.  VLBE_EARG (nothing
+   written) for n < 1, kl < 0, ku < 0, lda < kl + ku + 1, and LU == A with
+   lda != ld.
+   Growth: column j is changed only by the steps k = j-kl-ku .. j-1 (the
+   pivot row of step k ends at column k + kl + ku at most), and each of
+   them at most doubles the largest active entry of the column (|l| <= 1),
+   so max|U| <= 2^s (1 + eps)^(4s) max|A| < 2^(s+1) max|A|, s = min(n - 1,
+   kl + ku): the overflow scan of the factor runs only when max|A|
+   2^(s+1) may pass VLBE_REAL_MAX.
+   Cost: n kl (2 ku + 1) flops without interchanges (vlbe_band_lu_flops),
+   up to n kl (2 (kl + ku) + 1) with them; storage n ld reals. */
+VLBE_API vlbe_status vlbe_band_lu_factor(int n, int kl, int ku, const vlbe_real *A, int lda,
+                                         vlbe_real *LU, int *piv, int *info)
+{
+    size_t ld, la;
+    vlbe_real amax = VLBE_R(0.0), tol;
+    int i, j, k, ju, scan;
+    VLBE_ASSERT(A != NULL && LU != NULL && piv != NULL);
+    if (!vlbe__band_args_ok(n, kl, ku, lda)) return VLBE_EARG;
+    ld = vlbe_band_lu_ld(kl, ku);
+    la = (size_t)lda;
+    if (LU == A && la != ld) return VLBE_EARG;
+    for (i = 0; i < n; ++i) { /* the band of A inside the matrix */
+        const int j0 = i > kl ? i - kl : 0, j1 = vlbe__min_add(i, ku, n - 1);
+        const vlbe_real m =
+            vlbe_vec_norm_inf(j1 - j0 + 1, A + (size_t)i * la + (size_t)(j0 - i + kl));
+        if (!isfinite(m)) return VLBE_ENONFINITE; /* NaN or Inf propagate to m */
+        if (m > amax) amax = m;
+    }
+    for (i = 0; i < n; ++i) { /* copy, zero the fill columns i+ku+1 .. i+kl+ku */
+        const int j0 = i > kl ? i - kl : 0, j1 = vlbe__min_add(i, ku, n - 1);
+        const int j2 = vlbe__min_add(j1, kl, n - 1);
+        vlbe_real *li = LU + (size_t)i * ld + (size_t)(j0 - i + kl);
+        if (LU != A) vlbe_vec_copy(j1 - j0 + 1, A + (size_t)i * la + (size_t)(j0 - i + kl), li);
+        vlbe_vec_zero(j2 - j1, li + (j1 - j0 + 1));
+    }
+    /* growth < 2^(s+1), s = min(n - 1, kl + ku) (see above) */
+    scan = vlbe__lu_tol(n, vlbe__min_add(kl < n ? kl : n - 1, ku, n - 1) + 1, amax, &tol);
+    ju = 0; /* the last column the rows of U reach so far */
+    for (k = 0; k < n; ++k) {
+        const int m = vlbe__min_add(k, kl, n - 1) - k; /* rows k+1 .. k+m below */
+        vlbe_real *rk = LU + (size_t)k * ld + (size_t)kl; /* (k, k) */
+        int p;
+        vlbe_status st = vlbe__lu_pivot(rk, ld - 1, m, tol, &p); /* (k+r, k) at rk + r(ld-1) */
+        p += k;
+        piv[k] = p;
+        if (st != VLBE_OK) {
+            if (st == VLBE_ESINGULAR && info) *info = k + 1;
+            return st;
+        }
+        j = vlbe__min_add(p, ku, n - 1); /* row p ends at column p + ku or at ju */
+        if (j > ju) ju = j;
+        if (p != k) { /* columns k .. ju of rows k and p */
+            vlbe_real *rp = LU + (size_t)p * ld + (size_t)(k - p + kl);
+            for (j = 0; j <= ju - k; ++j) {
+                vlbe_real t = rk[j];
+                rk[j] = rp[j];
+                rp[j] = t;
+            }
+        }
+        vlbe__lu_eliminate(rk, ld - 1, m, ju - k);
+    }
+    if (scan) {
+        vlbe__bits b = 0;
+        for (i = 0; i < n; ++i) {
+            const int j0 = i > kl ? i - kl : 0;
+            const int j2 = vlbe__min_add(vlbe__min_add(i, ku, n - 1), kl, n - 1);
+            b |= vlbe__fin_bits(LU + (size_t)i * ld + (size_t)(j0 - i + kl), j2 - j0 + 1);
+        }
+        if (b & VLBE__BITS_SIGN) return VLBE_ENONFINITE;
+    }
+    if (info) *info = 0;
+    return VLBE_OK;
+}
+
+/* Solve A X = B with the factor of vlbe_band_lu_factor (same n, kl, ku).
+   B: n x nrhs row-major, overwritten by X.  Forward: the interchange and
+   the multipliers of each step in turn (L y = P b in the order of the
+   elimination: band forward substitution with the swaps, GvL sec. 4.3);
+   backward: U x = y, U with kl + ku super-diagonals.  The numbers are
+   those of vlbe_lu_solve on the full factor.  Cannot fail after a
+   successful factor. */
+VLBE_API void vlbe_band_lu_solve(int n, int kl, int ku, const vlbe_real *LU, const int *piv,
+                                 int nrhs, vlbe_real *B)
+{
+    size_t ld, R = (size_t)nrhs;
+    int i, k, r;
+    VLBE_ASSERT(n >= 1 && kl >= 0 && ku >= 0 && nrhs >= 1);
+    VLBE_ASSERT(LU != NULL && piv != NULL && B != NULL);
+    ld = vlbe_band_lu_ld(kl, ku);
+    for (k = 0; k < n; ++k) {
+        const int iend = vlbe__min_add(k, kl, n - 1);
+        vlbe_real *bk = B + (size_t)k * R;
+        if (piv[k] != k) {
+            vlbe_real *bp = B + (size_t)piv[k] * R;
+            for (r = 0; r < nrhs; ++r) {
+                vlbe_real t = bk[r];
+                bk[r] = bp[r];
+                bp[r] = t;
+            }
+        }
+        for (i = k + 1; i <= iend; ++i) {
+            vlbe_real l = LU[(size_t)i * ld + (size_t)(k - i + kl)];
+            vlbe_real *VLBE_RESTRICT bi = B + (size_t)i * R;
+            if (l != VLBE_R(0.0))
+                for (r = 0; r < nrhs; ++r) bi[r] -= l * bk[r];
+        }
+    }
+    for (i = n - 1; i >= 0; --i) {
+        const int kend = vlbe__min_add(vlbe__min_add(i, ku, n - 1), kl, n - 1);
+        const vlbe_real *ui = LU + (size_t)i * ld + (size_t)kl; /* (i, i) */
+        vlbe_real *VLBE_RESTRICT bi = B + (size_t)i * R, inv = VLBE_R(1.0) / ui[0];
+        for (k = i + 1; k <= kend; ++k) {
+            vlbe_real u = ui[k - i];
+            const vlbe_real *bk = B + (size_t)k * R;
+            if (u != VLBE_R(0.0))
+                for (r = 0; r < nrhs; ++r) bi[r] -= u * bk[r];
+        }
+        for (r = 0; r < nrhs; ++r) bi[r] *= inv;
+    }
+}
+
+/* y = A x and y = A^T x, A n x n in band storage (lda >= kl + ku + 1,
+   slots outside the matrix not read).  Row i of A x is vlbe_vec_dot over
+   its band, A^T x accumulates vlbe_vec_axpy of the band rows: for finite x
+   the results are bitwise those of vlbe_mat_vec / vlbe_mat_tvec on the
+   full matrix (the same sums in the same order, without the zero terms). */
+VLBE_API void vlbe_band_mat_vec(int n, int kl, int ku, const vlbe_real *A, int lda,
+                                const vlbe_real *x, vlbe_real *VLBE_RESTRICT y)
+{
+    int i;
+    VLBE_ASSERT(vlbe__band_args_ok(n, kl, ku, lda) && A != NULL && x != NULL && y != NULL);
+    for (i = 0; i < n; ++i) {
+        const int j0 = i > kl ? i - kl : 0, j1 = vlbe__min_add(i, ku, n - 1);
+        y[i] = vlbe_vec_dot(j1 - j0 + 1, A + (size_t)i * (size_t)lda + (size_t)(j0 - i + kl),
+                            x + j0);
+    }
+}
+VLBE_API void vlbe_band_mat_tvec(int n, int kl, int ku, const vlbe_real *A, int lda,
+                                 const vlbe_real *x, vlbe_real *VLBE_RESTRICT y)
+{
+    int i;
+    VLBE_ASSERT(vlbe__band_args_ok(n, kl, ku, lda) && A != NULL && x != NULL && y != NULL);
+    vlbe_vec_zero(n, y);
+    for (i = 0; i < n; ++i) {
+        const int j0 = i > kl ? i - kl : 0, j1 = vlbe__min_add(i, ku, n - 1);
+        vlbe_vec_axpy(j1 - j0 + 1, x[i], A + (size_t)i * (size_t)lda + (size_t)(j0 - i + kl),
+                      y + j0);
+    }
+}
+
+/* Flops of vlbe_band_lu_factor without interchanges: step k makes
+   m = min(kl, n-1-k) multipliers (one product each) and updates m rows in
+   u = min(ku, n-1-k) columns (a product and a difference each): the sum
+   over k of m (2u + 1), about n kl (2 ku + 1); 2/3 n^3 + O(n^2) for a
+   full band, as vlbe_lu_flops.  Interchanges add up to 2 kl^2 per step
+   (the fill). */
+VLBE_API vlbe_real vlbe_band_lu_flops(int n, int kl, int ku)
+{
+    vlbe_real f = VLBE_R(0.0);
+    int t, tmax;
+    VLBE_ASSERT(n >= 1 && kl >= 0 && ku >= 0);
+    tmax = kl > ku ? kl : ku; /* t = n-1-k; from t = max(kl, ku) on, m = kl, u = ku */
+    if (tmax > n) tmax = n;
+    for (t = 0; t < tmax; ++t) {
+        const vlbe_real m = (vlbe_real)(t < kl ? t : kl), u = (vlbe_real)(t < ku ? t : ku);
+        f += m * (VLBE_R(2.0) * u + VLBE_R(1.0));
+    }
+    return f + (vlbe_real)(n - tmax) * (vlbe_real)kl * (VLBE_R(2.0) * (vlbe_real)ku + VLBE_R(1.0));
 }
 
 #endif /* VLBE_H */
