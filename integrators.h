@@ -127,6 +127,9 @@ REFERENCES
 #define VLBE_DAE_MASS_CONST 1u /* M does not depend on q or v: no dM/dq terms   */
 #define VLBE_DAE_MASS_V 2u     /* M depends on v too (FD of M a in v)          */
 #define VLBE_DAE_NO_CHESS 4u   /* drop d(C_q^T lambda)/dq from the iteration matrix */
+/* vlbe_dae.storage */
+#define VLBE_DAE_DENSE 0
+#define VLBE_DAE_BANDED 1
 
 /* Upper bounds of the iteration parameters (VLBE_EARG above them) */
 #define VLBE_HHT_MAX_HALVINGS 30 /* vlbe_hht_params.max_halvings: steps down to h / 2^30,
@@ -162,6 +165,10 @@ typedef struct vlbe_dae {
     /* optional: H = d(C_q^T lambda)/dq, n*n */
     int (*constr_hess)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
                        vlbe_real *H);
+    /* storage of the matrices */
+    int storage;
+    int kl, ku;
+    const int *order;
 } vlbe_dae;
 
 /* Counters of one run (cumulative from init). */

@@ -40,6 +40,7 @@
 #include "../corot2d.h"
 #include "../integrators.h"
 #include "ex_cant.h"
+#include "ex_cr2d.h"
 #include "ex_run.h"
 
 #include <math.h>
@@ -272,6 +273,7 @@ static inline int sb_layout(sb_model *m, const vlbe_real *q, double t, int first
        the beam dense as init made it) */
     if (order) (void)vlbe_cr2d_beam_band(&m->beam, order, order_cap);
     m->sys.m = nf;
+    ex_cr2d_storage(&m->sys, &m->beam);
     return 1;
 }
 

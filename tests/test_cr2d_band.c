@@ -43,7 +43,10 @@
                       Cq NULL, or writes n ld zeros
      band_relayout    the sliding beam (examples/ex_sbeam.h) keeps its
                       banded mode across the re-layout when nodes cross the
-                      exit: the order of the new fixes, kl = 8
+                      exit: the order of the new fixes, kl = 8, copied
+                      into its vlbe_dae
+     band_wiring      ex_cr2d_dae copies the beam's storage (dense or its
+                      order, kl, ku) into the vlbe_dae
    All comparisons are exact (tolerance 0): the banded and the dense
    callbacks compute the same sums in the same order, so the float build
    runs the same checks. */
@@ -527,6 +530,31 @@ static void test_band_relayout(void **state)
     assert_int_equal(m.beam.kl, 8);
     assert_int_equal(m.beam.ku, 8);
     assert_int_equal(m.beam.kl, ref_width(m.ne, m.n, m.fix, m.beam.nfix, ref));
+    /* the system follows the beam (ex_cr2d_storage) */
+    assert_int_equal(m.sys.m, m.beam.nfix);
+    assert_int_equal(m.sys.storage, VLBE_DAE_BANDED);
+    assert_true(m.sys.order == order && m.sys.kl == 8 && m.sys.ku == 8);
+}
+
+/* ex_cr2d_dae (examples/ex_cr2d.h): a dense beam gives a dense system
+   (kl = ku = 0, order NULL), a banded one its order and half-bandwidths. */
+static void test_band_wiring(void **state)
+{
+    static bcase c;
+    vlbe_dae sys;
+    int order[MAXNM];
+    tu_rng g = tu_rng_seed(29);
+    (void)state;
+    bcase_make(&c, 3, KIND_PLAIN, LAY_CLAMP, &g);
+    memset(&sys, 0xff, sizeof sys);
+    ex_cr2d_dae(&sys, &c.bm, c.n, c.m);
+    assert_int_equal(sys.storage, VLBE_DAE_DENSE);
+    assert_true(sys.kl == 0 && sys.ku == 0 && sys.order == NULL);
+    assert_int_equal(vlbe_cr2d_beam_band(&c.bm, order, MAXNM), VLBE_OK);
+    ex_cr2d_dae(&sys, &c.bm, c.n, c.m);
+    assert_int_equal(sys.storage, VLBE_DAE_BANDED);
+    assert_true(sys.kl == 8 && sys.ku == 8 && sys.order == order);
+    assert_true(sys.n == c.n && sys.m == c.m && sys.user == &c.bm);
 }
 
 int main(void)
@@ -536,6 +564,7 @@ int main(void)
         cmocka_unit_test(test_band_width),
         cmocka_unit_test(test_band_errors),
         cmocka_unit_test(test_band_relayout),
+        cmocka_unit_test(test_band_wiring),
     };
     return cmocka_run_group_tests_name("cr2d_band", tests, NULL, NULL);
 }
