@@ -152,6 +152,8 @@ API
    vlbe_status vlbe_cr2d_trans_local(el, jt, mode, q, loc)   loc = {l1, l2, theta3, theta2, eps0, L1}
    beams (element e joins nodes e, e + 1; loads P; prescribed coordinates):
    vlbe_status vlbe_cr2d_beam_init(b, el, ne, fix, nfix)     n = 3 (ne + 1), m = nfix
+   vlbe_status vlbe_cr2d_beam_band(b, order, order_cap)      banded callbacks (order: n + m
+                                                             of the caller) or dense (NULL)
    void vlbe_cr2d_fix_eval(f, t, g3)                         g, g', g'' of a prescribed coordinate
    int vlbe_cr2d_beam_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc (user = beam, ...)                      vlbe_dae callbacks
@@ -1381,7 +1383,26 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
    assembled in place (n x n; the beam has no room for a copy) and an
    element's failure shows only after the earlier elements were added.  The
    integrators treat them as scratch after a failure.  K or D of force_jac,
-   Mv of mass_jac, Ct of constr_jac may be NULL. */
+   Mv of mass_jac, Ct of constr_jac may be NULL.
+   Storage of the matrices: dense (order NULL, what vlbe_cr2d_beam_init
+   sets): M, K, D, Mq, Mv n x n, Cq m x n, row-major.  Banded
+   (vlbe_cr2d_beam_band): the matrix callbacks write (n + m) x (n + m)
+   band arrays, ld = kl + ku + 1, in the augmented order of vlbe.h's Band
+   storage and integrators.h: M(i, j) at VLBE_BAND_IDX(ld, kl, order[i],
+   order[j]) (K, D, Mq, Mv alike), Cq(k, j) at VLBE_BAND_IDX(ld, kl,
+   order[n + k], order[j]) (not its transpose), every (n + m) ld slot
+   written (zeros where there is no entry); the vectors (Q, C, Ct, gamma)
+   keep the natural order.  The order is node by node: the node's u, v,
+   phi, then the rows of the fixes on that node in the order of fix[];
+   kl = ku = the largest |order[a] - order[b]| over the pairs an element
+   or a fix couples: 5 + (fixes on node e) for element e, 3 + (earlier
+   fixes on the node) - dof % 3 for a fix -- 5 for a beam without fixes,
+   8 for one clamped at node 0, whatever ne.  The order is made from the
+   fixes: after a new layout (vlbe_cr2d_beam_init, which restarts in
+   dense mode, or fixes moved or added) call vlbe_cr2d_beam_band again; a
+   banded matrix callback whose nfix is not the one the order was made
+   for, or (constr_jac) whose fix lies outside the band, fails with
+   VLBE_EARG (-1) before writing. */
 typedef struct vlbe_cr2d_fix {
     int dof;          /* index in q                                        */
     vlbe_real g[3];   /* g(t) = g0 + g1 t + g2 t^2/2 when fun is NULL      */
@@ -1405,10 +1426,17 @@ typedef struct vlbe_cr2d_beam {
                                  coordinate (dof not used); NULL: none    */
     vlbe_status err;          /* last failure of a callback               */
     int err_elem;
+    /* storage of the matrices, set by vlbe_cr2d_beam_band: */
+    int *order;               /* augmented order (n + m, caller storage);
+                                 NULL: dense mode                         */
+    int order_cap;            /* length of order                          */
+    int kl, ku;               /* half-bandwidths of the banded mode       */
+    int band_m_;              /* private: the nfix order was made for     */
 } vlbe_cr2d_beam;
 
 VLBE_API vlbe_status vlbe_cr2d_beam_init(vlbe_cr2d_beam *b, const vlbe_cr2d_elem *el, int ne,
                                          const vlbe_cr2d_fix *fix, int nfix);
+VLBE_API vlbe_status vlbe_cr2d_beam_band(vlbe_cr2d_beam *b, int *order, int order_cap);
 VLBE_API void vlbe_cr2d_fix_eval(const vlbe_cr2d_fix *f, vlbe_real t, vlbe_real *g3);
 VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                                  vlbe_real *M);
@@ -1434,7 +1462,8 @@ VLBE_API vlbe_status vlbe_cr2d_beam_energy_t(const vlbe_cr2d_beam *b, vlbe_real 
    (NULL when nfix = 0), each dof in [0, n): else VLBE_EARG, also when n =
    3 (ne + 1) would exceed INT_MAX or n * n, nfix * n the range of size_t
    (the callbacks' matrices); a non-finite g of a fix without fun:
-   VLBE_ENONFINITE.  On failure b is not written. */
+   VLBE_ENONFINITE.  On failure b is not written.  The beam starts in
+   dense mode. */
 VLBE_API vlbe_status vlbe_cr2d_beam_init(vlbe_cr2d_beam *b, const vlbe_cr2d_elem *el, int ne,
                                          const vlbe_cr2d_fix *fix, int nfix)
 {
@@ -1461,6 +1490,81 @@ VLBE_API vlbe_status vlbe_cr2d_beam_init(vlbe_cr2d_beam *b, const vlbe_cr2d_elem
     b->frame = NULL;
     b->err = VLBE_OK;
     b->err_elem = -1;
+    b->order = NULL;
+    b->order_cap = 0;
+    b->kl = b->ku = 0;
+    b->band_m_ = 0;
+    return VLBE_OK;
+}
+
+/* order != NULL: banded mode with the augmented order of the beam's
+   current fixes (type comment) in order[0 .. n + nfix - 1] and kl = ku;
+   order_cap < n + nfix: VLBE_EWORK; a fix's dof outside [0, n) or nfix < 0
+   (the caller may change them after init), n + nfix above INT_MAX:
+   VLBE_EARG; on these failures neither b nor order is written.  A band of
+   (n + m) ld entries beyond the range of size_t (possible only with a
+   32-bit size_t): VLBE_EARG with b unchanged, order scratch.  order NULL:
+   dense mode (order_cap ignored).  O(n + nfix), no other storage. */
+VLBE_API vlbe_status vlbe_cr2d_beam_band(vlbe_cr2d_beam *b, int *order, int order_cap)
+{
+    int n, m, nn, p, k, e, i, s, w;
+    VLBE_ASSERT(b != NULL);
+    if (!order) {
+        b->order = NULL;
+        b->order_cap = 0;
+        b->kl = b->ku = 0;
+        b->band_m_ = 0;
+        return VLBE_OK;
+    }
+    n = b->n;
+    m = b->nfix;
+    nn = n / 3;
+    if (m < 0 || (m > 0 && b->fix == NULL) || m > INT_MAX - n) return VLBE_EARG;
+    for (k = 0; k < m; ++k)
+        if (b->fix[k].dof < 0 || b->fix[k].dof >= n) return VLBE_EARG;
+    if (order_cap < n + m) return VLBE_EWORK;
+    /* a counting sort of the fixes by node, in order itself: order[p]
+       (p < nn <= n, apart from the rows n + k) counts node p's fixes, then
+       is the next free row slot of node p (its coordinates come first),
+       then, once every row is placed, the end of node p's block */
+    for (p = 0; p < nn; ++p) order[p] = 0;
+    for (k = 0; k < m; ++k) ++order[b->fix[k].dof / 3];
+    for (p = 0, s = 0; p < nn; ++p) {
+        const int c = order[p];
+        order[p] = s + 3;
+        s += 3 + c;
+    }
+    for (k = 0; k < m; ++k) order[n + k] = order[b->fix[k].dof / 3]++;
+    /* node p starts where node p - 1 ends (order[p - 1]); from the last
+       node down, so that order[p - 1] is read before 3 (p - 1) .. 3 p - 1
+       are written (3 q >= 3 p + 3 > p - 1 for the nodes q > p done) */
+    for (p = nn - 1; p >= 0; --p) {
+        const int s0 = p > 0 ? order[p - 1] : 0;
+        order[3 * p] = s0;
+        order[3 * p + 1] = s0 + 1;
+        order[3 * p + 2] = s0 + 2;
+    }
+    /* the half-bandwidth: the largest distance an element's 6 coordinates
+       or a fix's row and coordinate are apart */
+    w = 0;
+    for (e = 0; e < b->ne; ++e) {
+        int lo = order[3 * e], hi = lo;
+        for (i = 1; i < 6; ++i) {
+            const int o = order[3 * e + i];
+            lo = o < lo ? o : lo;
+            hi = o > hi ? o : hi;
+        }
+        w = hi - lo > w ? hi - lo : w;
+    }
+    for (k = 0; k < m; ++k) {
+        const int d = order[n + k] - order[b->fix[k].dof];
+        w = d > w ? d : (-d > w ? -d : w);
+    }
+    if ((size_t)w > ((size_t)-1 / (size_t)(n + m) - 1u) / 2u) return VLBE_EARG; /* (n + m) ld */
+    b->order = order;
+    b->order_cap = order_cap;
+    b->kl = b->ku = w;
+    b->band_m_ = m;
     return VLBE_OK;
 }
 
@@ -1504,21 +1608,58 @@ static inline int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
                : -1;
 }
 
-/* A[3e.., 3e..] += Ae (6x6) in the n x n matrix; 1 when the entries added
+/* The index map of element e: its entry (i, j), i, j < 6, is the beam
+   matrix's A[map[i] + map[6 + j]].  Dense: row offsets (3e + i) n, columns
+   3e + j.  Banded: entry (order[3e + i], order[3e + j]) of the band, at
+   VLBE_BAND_IDX(ld, kl, r, c) = r ld + c - r + kl = (r (ld - 1) + kl) + c. */
+static inline void vlbe__cr2d_map(const vlbe_cr2d_beam *b, int e, size_t *map)
+{
+    int i;
+    for (i = 0; i < 6; ++i) {
+        const int g = 3 * e + i;
+        if (b->order) {
+            map[i] = (size_t)b->order[g] * (size_t)(b->kl + b->ku) + (size_t)b->kl;
+            map[6 + i] = (size_t)b->order[g];
+        } else {
+            map[i] = (size_t)g * (size_t)b->n;
+            map[6 + i] = (size_t)g;
+        }
+    }
+}
+
+/* A += Ae (6x6) at the places of the index map; 1 when the entries added
    to are finite afterwards (a NaN/Inf entry stays so under later
    additions; x - x == 0 only for finite x: no branch in the loop) */
-static inline int vlbe__cr2d_scatter(int n, int e, const vlbe_real *Ae, vlbe_real *A)
+static inline int vlbe__cr2d_scatter(const size_t *map, const vlbe_real *Ae, vlbe_real *A)
 {
-    const size_t o = (size_t)(3 * e), N = (size_t)n;
     size_t i, j;
     int ok = 1;
     for (i = 0; i < 6; ++i)
         for (j = 0; j < 6; ++j) {
-            const vlbe_real x = A[(o + i) * N + o + j] + Ae[i * 6 + j];
-            A[(o + i) * N + o + j] = x;
+            const vlbe_real x = A[map[i] + map[6 + j]] + Ae[i * 6 + j];
+            A[map[i] + map[6 + j]] = x;
             ok &= x - x == VLBE_R(0.0);
         }
     return ok;
+}
+
+/* entries of an n x n matrix of the beam (rows m = nfix for Cq): dense n
+   rows (m) of n, banded (n + m) ld (init and _band checked that they fit
+   in a size_t) */
+static inline size_t vlbe__cr2d_len(const vlbe_cr2d_beam *b, int rows)
+{
+    if (b->order)
+        return ((size_t)b->n + (size_t)b->nfix) * (size_t)(b->kl + b->ku + 1);
+    return (size_t)rows * (size_t)b->n;
+}
+
+/* a banded matrix callback: the beam's nfix still the one its order was
+   made for (else VLBE_EARG: vlbe_cr2d_beam_band was not called again after
+   a new layout); 0 or the callback's value */
+static inline int vlbe__cr2d_band_check(vlbe_cr2d_beam *b)
+{
+    if (b->order && b->nfix != b->band_m_) return vlbe__cr2d_fail(b, VLBE_EARG, -1);
+    return 0;
 }
 
 
@@ -1563,18 +1704,21 @@ VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, co
 {
     vlbe_cr2d_beam *b = (vlbe_cr2d_beam *)user;
     vlbe_real Me[36];
+    size_t map[12];
     vlbe_status st;
     int e, rc;
     (void)t;
     (void)v;
     VLBE_ASSERT(b != NULL && q != NULL && M != NULL);
+    if ((rc = vlbe__cr2d_band_check(b)) != 0) return rc;
     if ((rc = vlbe__cr2d_in_check(b, q, NULL, NULL)) != 0) return rc;
-    vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, M);
+    vlbe__cr2d_zero(vlbe__cr2d_len(b, b->n), M);
     for (e = 0; e < b->ne; ++e) {
         if ((st = vlbe__cr2d_mass_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e, Me)) !=
             VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
-        if (!vlbe__cr2d_scatter(b->n, e, Me, M)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
+        vlbe__cr2d_map(b, e, map);
+        if (!vlbe__cr2d_scatter(map, Me, M)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
 }
@@ -1584,17 +1728,19 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const v
                                          vlbe_real *D)
 {
     vlbe_real Qe[6], Ke[36], De[36], fth[2];
+    size_t map[12];
     vlbe_status st;
     int e, i, rc;
     VLBE_ASSERT(b != NULL && q != NULL && v != NULL);
+    if ((K || D) && (rc = vlbe__cr2d_band_check(b)) != 0) return rc;
     if ((rc = vlbe__cr2d_in_check(b, q, v, NULL)) != 0) return rc;
     if (Q) {
         vlbe_vec_zero(b->n, Q);
         if (b->P)
             for (i = 0; i < b->n; ++i) Q[i] = b->load * b->P[i];
     }
-    if (K) vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, K);
-    if (D) vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, D);
+    if (K) vlbe__cr2d_zero(vlbe__cr2d_len(b, b->n), K);
+    if (D) vlbe__cr2d_zero(vlbe__cr2d_len(b, b->n), D);
     for (e = 0; e < b->ne; ++e) {
         if ((st = vlbe__cr2d_force_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode,
                                        vlbe__cr2d_bframe(b, e, t, fth), q + 3 * e, v + 3 * e,
@@ -1602,7 +1748,8 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const v
             return vlbe__cr2d_fail(b, st, e);
         if (Q)
             for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
-        if ((K && !vlbe__cr2d_scatter(b->n, e, Ke, K)) || (D && !vlbe__cr2d_scatter(b->n, e, De, D)))
+        if (K || D) vlbe__cr2d_map(b, e, map);
+        if ((K && !vlbe__cr2d_scatter(map, Ke, K)) || (D && !vlbe__cr2d_scatter(map, De, D)))
             return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     if (Q && !vlbe_all_finite(Q, b->n)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
@@ -1628,19 +1775,22 @@ VLBE_API int vlbe_cr2d_beam_mass_jac(void *user, vlbe_real t, const vlbe_real *q
 {
     vlbe_cr2d_beam *b = (vlbe_cr2d_beam *)user;
     vlbe_real Me[36];
+    size_t map[12];
     vlbe_status st;
     int e, rc;
     (void)t;
     (void)v;
     VLBE_ASSERT(b != NULL && q != NULL && a != NULL && Mq != NULL);
+    if ((rc = vlbe__cr2d_band_check(b)) != 0) return rc;
     if ((rc = vlbe__cr2d_in_check(b, q, NULL, a)) != 0) return rc;
-    vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, Mq);
-    if (Mv) vlbe__cr2d_zero((size_t)b->n * (size_t)b->n, Mv);
+    vlbe__cr2d_zero(vlbe__cr2d_len(b, b->n), Mq);
+    if (Mv) vlbe__cr2d_zero(vlbe__cr2d_len(b, b->n), Mv);
     for (e = 0; e < b->ne; ++e) {
         if ((st = vlbe__cr2d_mass_jac_any(&b->el[e], vlbe__cr2d_jt(b, e), b->mode, q + 3 * e,
                                           a + 3 * e, Me)) != VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
-        if (!vlbe__cr2d_scatter(b->n, e, Me, Mq)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
+        vlbe__cr2d_map(b, e, map);
+        if (!vlbe__cr2d_scatter(map, Me, Mq)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
 }
@@ -1668,9 +1818,20 @@ VLBE_API int vlbe_cr2d_beam_constr_jac(void *user, vlbe_real t, const vlbe_real 
     (void)q;
     VLBE_ASSERT(b != NULL && (b->nfix == 0 || Cq != NULL));
     if ((rc = vlbe__cr2d_fix_check(b, NULL, NULL)) != 0) return rc;
-    vlbe__cr2d_zero((size_t)b->nfix * (size_t)b->n, Cq);
+    if ((rc = vlbe__cr2d_band_check(b)) != 0) return rc;
+    if (b->order)
+        for (k = 0; k < b->nfix; ++k) {
+            const int d = b->order[b->n + k] - b->order[b->fix[k].dof];
+            if (d > b->kl || -d > b->kl) /* moved out of the band (kl = ku) */
+                return vlbe__cr2d_fail(b, VLBE_EARG, -1);
+        }
+    if (Cq) vlbe__cr2d_zero(vlbe__cr2d_len(b, b->nfix), Cq); /* NULL: nfix = 0 */
     for (k = 0; k < b->nfix; ++k) {
-        Cq[(size_t)k * (size_t)b->n + (size_t)b->fix[k].dof] = VLBE_R(1.0);
+        if (b->order)
+            Cq[VLBE_BAND_IDX(b->kl + b->ku + 1, b->kl, b->order[b->n + k],
+                             b->order[b->fix[k].dof])] = VLBE_R(1.0);
+        else
+            Cq[(size_t)k * (size_t)b->n + (size_t)b->fix[k].dof] = VLBE_R(1.0);
         if (Ct) {
             vlbe_cr2d_fix_eval(&b->fix[k], t, g);
             Ct[k] = -g[1];

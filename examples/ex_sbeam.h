@@ -40,6 +40,7 @@
 #include "../corot2d.h"
 #include "../integrators.h"
 #include "ex_cant.h"
+#include "ex_cr2d.h"
 #include "ex_run.h"
 
 #include <math.h>
@@ -227,6 +228,8 @@ static inline double sb_x(const sb_model *m, const vlbe_real *q, int i)
    element; returns 1 when something changed. */
 static inline int sb_layout(sb_model *m, const vlbe_real *q, double t, int first)
 {
+    int *const order = m->beam.order; /* a banded beam's order (NULL: dense) */
+    const int order_cap = m->beam.order_cap;
     double g[3], din, dout;
     int i, nf = 0, changed = 0, trans = -1;
     sb_ua(&m->cfg, t, g);
@@ -264,7 +267,13 @@ static inline int sb_layout(sb_model *m, const vlbe_real *q, double t, int first
     m->beam.mode = m->cfg.mode;
     m->beam.joint = &m->joint;
     m->beam.trans = trans;
+    /* a banded beam stays banded, with the band of the new constraints
+       (order_cap >= n + 1 + 2 nn holds every layout: node 0 has u, v, phi
+       prescribed, the others at most v, phi; with less, VLBE_EWORK leaves
+       the beam dense as init made it) */
+    if (order) (void)vlbe_cr2d_beam_band(&m->beam, order, order_cap);
     m->sys.m = nf;
+    ex_cr2d_storage(&m->sys, &m->beam);
     return 1;
 }
 
