@@ -487,27 +487,25 @@ static int band_sweep(const char *tag)
             fprintf(stderr, "bench_lu: cannot write %s\n", csv);
         printf("\nwrote %s\n", csv);
 #else
-        char svg[256], title[256];
-        svgp_chart ch;
-        double dx[NBAND], dy[NBAND];
+        char svg[256], title[256], names[NBW][64];
+        svgp_chart ch; /* keeps pointers to the names and data below */
+        double bx[NBW][NBAND], by[NBW][NBAND], dx[NBAND], dy[NBAND];
         int nd = 0;
         snprintf(csv, sizeof csv, "out/bench/lu_band%s%s.csv", tag ? "-" : "", tag ? tag : "");
         snprintf(svg, sizeof svg, "out/bench/lu_band%s%s.svg", tag ? "-" : "", tag ? tag : "");
-        if (svgp_csv_write(csv, "n,kl,ku,factor_s,gflops,solve_s,residual,dense_factor_s,unused",
+        if (svgp_csv_write(csv, "n,kl,ku,factor_s,gflops,solve_s,residual,dense_factor_s",
                            NCOL - 1, NR, cols) != 0)
             fprintf(stderr, "bench_lu: cannot write %s\n", csv);
         snprintf(title, sizeof title, "banded LU, %s, %s",
                  sizeof(vlbe_real) == sizeof(double) ? "double" : "float", VLBE_BENCH_FLAGS);
         svgp_init(&ch, title, "matrix size n", "factor time [us] (median)", 1, 1);
         for (bi = 0; bi < NBW; ++bi) {
-            double x[NBAND], y[NBAND];
-            char name[64];
             for (si = 0; si < NBAND; ++si) {
-                x[si] = col[0][bi * NBAND + si];
-                y[si] = col[3][bi * NBAND + si] * 1e6;
+                bx[bi][si] = col[0][bi * NBAND + si];
+                by[bi][si] = col[3][bi * NBAND + si] * 1e6;
             }
-            snprintf(name, sizeof name, "vlbe_band_lu_factor, kl = ku = %d", bws[bi]);
-            svgp_series(&ch, name, NBAND, x, y, SVGP_MARKERS);
+            snprintf(names[bi], sizeof names[bi], "vlbe_band_lu_factor, kl = ku = %d", bws[bi]);
+            svgp_series(&ch, names[bi], NBAND, bx[bi], by[bi], SVGP_MARKERS);
         }
         for (si = 0; si < NBAND; ++si) /* the dense LU on the kl = 7 matrices */
             if (col[7][si] > 0.0) {
