@@ -14,9 +14,8 @@
    agree bit for bit (tolerance 0; both run in the same build, with the
    compiler's default of no FMA contraction under -std=c99).  Independent of
    that, residuals are checked against the backward-error bound of partial
-   pivoting (check_residual).  Every band array is filled with NaN in the
-   slots outside the matrix (a read of one shows up as a NaN or a failed
-   call) and, under valgrind, left undefined where the suite says so.
+   pivoting (check_residual).  Every band array holds NaN in the slots
+   outside the matrix (a read of one shows up as a NaN or a failed call).
    Tolerances are multiples of VLBE_EPS; references in double (long double
    for residuals).  VLBE_TEST_REPORT=1 prints the worst measured ratios.
 
