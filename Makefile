@@ -8,7 +8,9 @@
 #   make demo           build the examples and run the paper scenes (out/demo/),
 #                       then the work-precision charts (out/wp_*.svg, every
 #                       bench/wp_*.c at -O2)
-#   make bench          build and run bench/*.c (-O3 -march=native), out/bench/
+#   make bench          build and run bench/*.c (-O3 -march=native), out/bench/;
+#                       where LAPACKE is installed also bench_lu beside
+#                       LAPACK's band LU (build/bench/bench_lu_lapacke)
 #   make examples       build examples/*.c with the full warning set
 #   make check-headers  each header alone, twice, as C++, in float mode
 #   make measured-update  rerun the tests and rewrite the measured numbers
@@ -93,6 +95,10 @@ DEMO_WP_FLAGS = -O2
 DEMO_WP_BINS := $(addprefix $(BUILD)/demo/,$(DEMO_WP_NAMES))
 # benchmarks that take an output directory rather than a file tag: the wp_*
 BENCH_DIR_ARG := $(DEMO_WP_NAMES)
+# bench_lu side by side with LAPACK's band LU, built only where LAPACKE is
+# installed (Debian: liblapacke-dev); never required
+LAPACKE_H := $(wildcard /usr/include/lapacke.h)
+BENCH_LAPACKE_BINS := $(if $(LAPACKE_H),$(BUILD)/bench/bench_lu_lapacke)
 
 .PHONY: all check test check-headers cmocka test-build examples demo bench \
         bench-portable lint clean fuzz fuzz-build fuzz-clang measured-update mutate
@@ -247,11 +253,16 @@ $(BUILD)/bench/portable/%: bench/%.c $(BENCH_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(CSTD) $(WARN) $(BENCH_PORTABLE_FLAGS) -DVLBE_BENCH_FLAGS='"$(BENCH_PORTABLE_FLAGS)"' -I. $< -o $@ -lm
 
-bench: $(BENCH_BINS)
+$(BUILD)/bench/bench_lu_lapacke: bench/bench_lu.c $(BENCH_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(WARN) $(BENCH_FLAGS) -DVLBE_BENCH_FLAGS='"$(BENCH_FLAGS)"' -DVLBE_BENCH_LAPACKE -I. $< -o $@ -llapacke -lm
+
+bench: $(BENCH_BINS) $(BENCH_LAPACKE_BINS)
 	@mkdir -p $(OUT)/bench
 	@set -e; for b in $(BENCH_NAMES); do echo "== $$b ($(BENCH_FLAGS))"; \
 	  case " $(BENCH_DIR_ARG) " in *" $$b "*) $(BUILD)/bench/$$b $(OUT)/bench;; *) $(BUILD)/bench/$$b;; esac; \
 	done
+	@set -e; for b in $(BENCH_LAPACKE_BINS); do echo "== $$b ($(BENCH_FLAGS), LAPACKE)"; $$b; done
 
 # the same benchmarks built without -march=native; files get the tag "portable"
 bench-portable: $(BENCH_PORTABLE_BINS)

@@ -775,6 +775,22 @@ VLBE_INLINE int vlbe__band_args_ok(int n, int kl, int ku, int lda)
            lda >= 1 && (size_t)lda >= (size_t)kl + (size_t)ku + 1;
 }
 
+/* the largest bit pattern of |x[i]|, i < n: for reals >= 0 the order of the
+   patterns (as unsigned integers) is the order of the values, and Inf and
+   NaN lie above every finite value (>= VLBE__BITS_EXP); integer max, no
+   dependence on floating-point compares, so the loop vectorises */
+VLBE_INLINE vlbe__bits vlbe__absmax_bits(const vlbe_real *x, size_t n)
+{
+    vlbe__bits m = 0, u;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        memcpy(&u, &x[i], sizeof u);
+        u &= VLBE__BITS_ABS;
+        m = u > m ? u : m;
+    }
+    return m;
+}
+
 VLBE_API size_t vlbe_band_lu_ld(int kl, int ku)
 {
     VLBE_ASSERT(kl >= 0 && ku >= 0);
@@ -825,20 +841,32 @@ VLBE_API vlbe_status vlbe_band_lu_factor(int n, int kl, int ku, const vlbe_real 
                                          vlbe_real *LU, int *piv, int *info)
 {
     size_t ld, la;
-    vlbe_real amax = VLBE_R(0.0), tol;
+    vlbe_real amax, tol;
+    vlbe__bits bmax = 0;
     int i, j, k, ju, scan;
     VLBE_ASSERT(A != NULL && LU != NULL && piv != NULL);
     if (!vlbe__band_args_ok(n, kl, ku, lda)) return VLBE_EARG;
     ld = vlbe_band_lu_ld(kl, ku);
     la = (size_t)lda;
     if (LU == A && la != ld) return VLBE_EARG;
-    for (i = 0; i < n; ++i) { /* the band of A inside the matrix */
+    /* max |a_ij| and finiteness in one pass over the bits; the rows
+       kl .. n-1-ku lie inside the matrix, with lda = kl + ku + 1 they are
+       one block */
+    for (i = 0; i < n; ++i) {
         const int j0 = i > kl ? i - kl : 0, j1 = vlbe__min_add(i, ku, n - 1);
-        const vlbe_real m =
-            vlbe_vec_norm_inf(j1 - j0 + 1, A + (size_t)i * la + (size_t)(j0 - i + kl));
-        if (!isfinite(m)) return VLBE_ENONFINITE; /* NaN or Inf propagate to m */
-        if (m > amax) amax = m;
+        const vlbe_real *ai = A + (size_t)i * la + (size_t)(j0 - i + kl);
+        if (i == kl && la == (size_t)kl + (size_t)ku + 1 && n - 1 - ku > kl) {
+            const int nb = n - ku - kl; /* rows kl .. n-1-ku */
+            vlbe__bits t = vlbe__absmax_bits(ai, (size_t)nb * la);
+            if (t > bmax) bmax = t;
+            i += nb - 1;
+        } else {
+            vlbe__bits t = vlbe__absmax_bits(ai, (size_t)(j1 - j0 + 1));
+            if (t > bmax) bmax = t;
+        }
     }
+    if (bmax >= VLBE__BITS_EXP) return VLBE_ENONFINITE; /* Inf or NaN */
+    memcpy(&amax, &bmax, sizeof amax);
     for (i = 0; i < n; ++i) { /* copy, zero the fill columns i+ku+1 .. i+kl+ku */
         const int j0 = i > kl ? i - kl : 0, j1 = vlbe__min_add(i, ku, n - 1);
         const int j2 = vlbe__min_add(j1, kl, n - 1);

@@ -14,9 +14,8 @@
    agree bit for bit (tolerance 0; both run in the same build, with the
    compiler's default of no FMA contraction under -std=c99).  Independent of
    that, residuals are checked against the backward-error bound of partial
-   pivoting (check_residual).  Every band array is filled with NaN in the
-   slots outside the matrix (a read of one shows up as a NaN or a failed
-   call) and, under valgrind, left undefined where the suite says so.
+   pivoting (check_residual).  Every band array holds NaN in the slots
+   outside the matrix (a read of one shows up as a NaN or a failed call).
    Tolerances are multiples of VLBE_EPS; references in double (long double
    for residuals).  VLBE_TEST_REPORT=1 prints the worst measured ratios.
 
@@ -335,6 +334,12 @@ static void test_band_singular(void **state)
         vlbe_band_lu_solve(2, 1, 1, LU, piv, 1, R); /* x = (1, 0) exactly */
         ASSERT_CLOSE(R[0], 1.0, 0, 0);
         ASSERT_CLOSE(R[1], 0.0, 0, 0);
+        /* the test is relative to max|A|: scaled by 2^-40 (exact), 4 eps is
+           still accepted and eps still rejected */
+        for (i = 1; i <= 4; ++i) A[i] = (vlbe_real)ldexp((double)A[i], -40);
+        assert_int_equal(vlbe_band_lu_factor(2, 1, 1, A, 3, LU, piv, &info), VLBE_OK);
+        A[4] = (vlbe_real)ldexp(1.0 + EPS, -40);
+        check_singular(2, 1, 1, A, 2);
     }
 }
 
