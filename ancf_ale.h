@@ -218,6 +218,8 @@ API
    vlbe_status vlbe_ale_chain_types(ch, et, els)            per-element types (rancf.h)
    vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint
    vlbe_status vlbe_ale_chain_layout(ch)                    coordinates n, equations m
+   vlbe_status vlbe_ale_chain_band(ch, order, cap)          banded callbacks in the augmented
+                                                            order (order NULL: dense)
    vlbe_status vlbe_ale_chain_pnode(ch, i, t, q, v, p3)     p, p', p'' of a node
    vlbe_status vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, mode)  element view
    void vlbe_ale_chain_straight(ch, r0, dir, q)             straight start state
@@ -3640,7 +3642,28 @@ typedef struct vlbe_ale_etype {
    planar  [x, y, x', y' (, x'(2), y'(2) if sliding) (, p if free)],
    3D      [r(3), r'(3) (, theta with spin) (, p if free)]
    (vlbe_ale_chain_init3: a chain of vlbe_ale3_elem).  The arrays are the
-   caller's; the chain never allocates. */
+   caller's; the chain never allocates.
+   Banded mode (vlbe_ale_chain_band, then vlbe_ale_chain_layout): the
+   matrix callbacks write (n + m) x (n + m) band matrices (vlbe.h, Band
+   storage, ld = kl + ku + 1) in the augmented order of the system
+   [M*, C_q^T; C_q, 0]: entry (i, j) of M, K, D, Mq, Mv, H at
+   VLBE_BAND_IDX(ld, kl, order[i], order[j]), entry (k, j) of C_q at
+   VLBE_BAND_IDX(ld, kl, order[n + k], order[j]) (C_q only, not its
+   transpose); each writes all (n + m) ld slots, zeros where there is no
+   entry.  Vectors (Q, C, Ct, gamma, and q, v, a, lambda) keep the natural
+   order.  Layout writes order[0 .. n+m-1]: node by node, node i's
+   coordinates in q order, then the constraint rows whose highest touched
+   coordinate belongs to node i, in row order.  kl = ku = the largest
+   |order[a] - order[b]| over the coupled pairs (two coordinates of one
+   element; a constraint row and a coordinate it touches), read from the
+   structure, not bounded: an element couples the coordinates of its two
+   nodes, up to 9 apart for planar ALE nodes (5 coordinates each; 7 with
+   fixed p's, 15 for 3D ALE nodes with spin), and the rows of a node's
+   constraints sit between them, widening the band by their number (a
+   clamped Lagrangian end: 4 + 4 rows + 4 - 1 = 11).  It does not grow
+   with the number of elements, except that an equal-length group ending
+   at a free p couples all its rows to that end.  Storage: (n + m)(kl + ku
+   + 1) reals a matrix instead of n^2. */
 typedef struct vlbe_ale_chain {
     const vlbe_ale_elem *el;    /* planar element type (NULL in a 3D chain)      */
     const vlbe_ale_etype *et;   /* per-element types (NULL: el for every element) */
@@ -3663,6 +3686,11 @@ typedef struct vlbe_ale_chain {
     void *user;
     vlbe_status err;     /* status of the last failed callback (VLBE_OK if none)   */
     int err_elem;        /* element (or node) where it happened                    */
+    /* banded mode (vlbe_ale_chain_band; NULL = dense, the default) */
+    int *order;          /* caller storage of the augmented order, order_cap ints  */
+    int order_cap;
+    int kl, ku;          /* set by layout in banded mode: half-bandwidths of the
+                            augmented matrix (kl == ku)                            */
 } vlbe_ale_chain;
 
 /* -- API prototypes ----------------------------------------------------- */
@@ -3675,6 +3703,7 @@ VLBE_API vlbe_status vlbe_ale_chain_init3(vlbe_ale_chain *ch, const vlbe_ale3_el
 VLBE_API vlbe_status vlbe_ale_chain_types(vlbe_ale_chain *ch, const vlbe_ale_etype *et, void *els);
 VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c);
 VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch);
+VLBE_API vlbe_status vlbe_ale_chain_band(vlbe_ale_chain *ch, int *order, int order_cap);
 VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_real t,
                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *p3);
 VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
@@ -3703,11 +3732,11 @@ VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t
    domain or failing, a failing or NaN pfun / afun, a zero slope of
    SLIDE_D, a sum that overflows (VLBE_ENONFINITE) -- leaves M, Q, K, D, Mq,
    Mv, C, Cq, Ct, gamma, H unspecified: they are assembled in place (n x n,
-   the chain has no room for a copy) and an element's failure shows only
-   after the earlier elements were added.  The integrators treat them as
-   scratch after a failure.  force_jac: K or D may be NULL;
-   mass_jac: Mv may be NULL (it is zero: M does not depend on v); constr_jac:
-   Ct may be NULL. */
+   or band arrays in banded mode; the chain has no room for a copy) and an
+   element's failure shows only after the earlier elements were added.  The
+   integrators treat them as scratch after a failure.  force_jac: K or D
+   may be NULL; mass_jac: Mv may be NULL (it is zero: M does not depend on
+   v); constr_jac: Ct may be NULL. */
 VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                                  vlbe_real *M);
 VLBE_API int vlbe_ale_chain_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
@@ -3754,6 +3783,9 @@ static inline vlbe_status vlbe__ale_chain_init(vlbe_ale_chain *ch, const vlbe_al
     ch->user = NULL;
     ch->err = VLBE_OK;
     ch->err_elem = -1;
+    ch->order = NULL;
+    ch->order_cap = 0;
+    ch->kl = ch->ku = 0;
     return VLBE_OK;
 }
 
@@ -3855,13 +3887,158 @@ static inline int vlbe__ale_sidx(const vlbe_ale_chain *ch, int i, int which)
     return ch->node[i].ofs + ch->d * (1 + (ch->node[i].slide && which ? 1 : 0));
 }
 
+/* element e's index map into q: its coordinates node by node (position,
+   the slope on the element's side, spin, p), -1 for a p that is not a
+   coordinate (the layout of vlbe_ale_chain_gather) */
+static inline void vlbe__ale_eidx(const vlbe_ale_chain *ch, int e, int *idx)
+{
+    const int d = ch->d, nb = 2 * d + ch->spin + 1; /* element block per node */
+    int s, k;
+    for (s = 0; s < 2; ++s) {
+        const int i = e + s, b = nb * s;
+        const int o = ch->node[i].ofs, sl = vlbe__ale_sidx(ch, i, s == 0);
+        for (k = 0; k < d; ++k) {
+            idx[b + k] = o + k;
+            idx[b + d + k] = sl + k;
+        }
+        if (ch->spin) idx[b + 2 * d] = vlbe__ale_tidx(ch, i);
+        idx[b + nb - 1] = vlbe__ale_pidx(ch, i);
+    }
+}
+
+/* Row j of constraint c of a laid-out chain: the lowest coordinate of q
+   the row touches in *lo and, returned, the node of the highest (the
+   row's place in the augmented order).  The columns are those that
+   vlbe__ale_chain_con writes. */
+static inline int vlbe__ale_con_row(const vlbe_ale_chain *ch, const vlbe_ale_con *c, int j,
+                                    int *lo)
+{
+    const int o = ch->node[c->node].ofs;
+    int b, h = -1;
+    switch (c->type) {
+    case VLBE_ALE_CON_POS: /* the j-th held component */
+        for (b = 0; b + 1 < ch->d; ++b)
+            if ((!c->which || ((c->which >> b) & 1)) && ++h == j) break;
+        *lo = o + b;
+        return c->node;
+    case VLBE_ALE_CON_SLOPE: *lo = vlbe__ale_sidx(ch, c->node, c->which) + j; return c->node;
+    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLOPE_ANGLE:
+        *lo = vlbe__ale_sidx(ch, c->node, c->which);
+        return c->node;
+    case VLBE_ALE_CON_P: *lo = vlbe__ale_pidx(ch, c->node); return c->node;
+    case VLBE_ALE_CON_SPIN: *lo = vlbe__ale_tidx(ch, c->node); return c->node;
+    case VLBE_ALE_CON_EQUAL_LEN: { /* p of node i, and of the ends when free */
+        const int i = c->node + 1 + j, ca = vlbe__ale_pidx(ch, c->node);
+        *lo = ca >= 0 ? ca : vlbe__ale_pidx(ch, i);
+        return vlbe__ale_pidx(ch, c->node2) >= 0 ? c->node2 : i;
+    }
+    case VLBE_ALE_CON_SLIDE_C: *lo = o + 2 + j; return c->node; /* and o + 4 + j */
+    default: *lo = o + 2; return c->node; /* SLIDE_D: both slopes, o + 2 .. o + 5 */
+    }
+}
+
+/* Do the callbacks' matrices of a chain of n coordinates, m equations (in
+   dimension d, with the constraints of ch) fit?  Dense: n * n and m * n in
+   a size_t (else VLBE_EARG).  Banded: n + m <= INT_MAX (VLBE_EARG), <=
+   ch->order_cap (VLBE_EWORK), and (n + m) ld in a size_t for the largest
+   ld the structure allows (VLBE_EARG): a coupled pair lies within s
+   consecutive nodes (an element: 2; an equal-length group: node2 - node
+   + 1) of at most 3 d + 2 coordinates each, and the m rows, so kl < s (3 d
+   + 2) + m and ld <= 2 kl + 1. */
+static inline vlbe_status vlbe__ale_size_ok(const vlbe_ale_chain *ch, int d, int n, int m)
+{
+    const size_t big = (size_t)-1 / 4, nc = (size_t)(3 * d + 2);
+    size_t span = 2, klb;
+    int k;
+    if (!ch->order) {
+        if ((size_t)n > (size_t)-1 / (size_t)n || (size_t)m > (size_t)-1 / (size_t)n)
+            return VLBE_EARG;
+        return VLBE_OK;
+    }
+    if (n > INT_MAX - m) return VLBE_EARG;
+    if (n + m > ch->order_cap) return VLBE_EWORK;
+    for (k = 0; k < ch->ncon; ++k) {
+        const vlbe_ale_con *c = &ch->con[k];
+        if (c->type == VLBE_ALE_CON_EQUAL_LEN && (size_t)(c->node2 - c->node) + 1 > span)
+            span = (size_t)(c->node2 - c->node) + 1;
+    }
+    if ((size_t)m > big || span > (big - (size_t)m) / nc) return VLBE_EARG;
+    klb = span * nc + (size_t)m; /* <= big: 2 klb + 1 does not wrap */
+    return (size_t)(n + m) > (size_t)-1 / (2 * klb + 1) ? VLBE_EARG : VLBE_OK;
+}
+
+/* The augmented order and half-bandwidth of a laid-out chain in banded mode
+   (see vlbe_ale_chain).  order[] serves as its own scratch: the node of
+   each constraint row goes to order[n + r], the rows per node to
+   order[0 .. nn-1] (n >= 4 nn), turned into the rows before each node,
+   then the rows' places; the coordinates come last, node by node from the
+   last, node i's overwriting order[ofs_i ..] (ofs_i >= 4 i) after
+   order[i - 1], the rows before node i, was read. */
+static inline void vlbe__ale_band_order(vlbe_ale_chain *ch)
+{
+    int *ord = ch->order;
+    const int n = ch->n, nn = ch->nn, ne = 2 * (2 * ch->d + ch->spin + 1);
+    int i, k, j, r, s, kl = 0;
+    for (i = 0; i < nn; ++i) ord[i] = 0;
+    for (k = 0, r = 0; k < ch->ncon; ++k) {
+        const int rows = vlbe__ale_con_rows(ch, &ch->con[k]);
+        for (j = 0; j < rows; ++j, ++r) {
+            int lo;
+            ord[n + r] = vlbe__ale_con_row(ch, &ch->con[k], j, &lo);
+            ord[ord[n + r]]++;
+        }
+    }
+    for (i = 0, s = 0; i < nn; ++i) { /* rows of the nodes before i */
+        const int c = ord[i];
+        ord[i] = s;
+        s += c;
+    }
+    for (r = 0; r < ch->m; ++r) { /* after its node's coordinates, in row order */
+        const int nd = ord[n + r], end = nd + 1 < nn ? ch->node[nd + 1].ofs : n;
+        ord[n + r] = end + ord[nd]++;
+    }
+    for (i = nn - 1; i >= 0; --i) { /* ord[i - 1]: now the rows of the nodes before i */
+        const int before = i > 0 ? ord[i - 1] : 0, end = i + 1 < nn ? ch->node[i + 1].ofs : n;
+        for (k = ch->node[i].ofs; k < end; ++k) ord[k] = k + before;
+    }
+    /* the bandwidth: the coordinates keep their order, so an element's
+       widest pair is its first and last coordinate, and a row (placed after
+       every coordinate it touches) is farthest from its lowest one.  The
+       Hessian's pairs (SLIDE_D: the slopes of one node) lie inside that
+       row's, the point masses on the diagonal. */
+    for (k = 0; k + 1 < nn; ++k) {
+        int idx[VLBE_ALE3_NQ], a = INT_MAX, b = -1;
+        vlbe__ale_eidx(ch, k, idx);
+        for (j = 0; j < ne; ++j)
+            if (idx[j] >= 0) {
+                if (ord[idx[j]] < a) a = ord[idx[j]];
+                if (ord[idx[j]] > b) b = ord[idx[j]];
+            }
+        if (b - a > kl) kl = b - a;
+    }
+    for (k = 0, r = 0; k < ch->ncon; ++k) {
+        const int rows = vlbe__ale_con_rows(ch, &ch->con[k]);
+        for (j = 0; j < rows; ++j, ++r) {
+            int lo;
+            (void)vlbe__ale_con_row(ch, &ch->con[k], j, &lo);
+            if (ord[n + r] - ord[lo] > kl) kl = ord[n + r] - ord[lo];
+        }
+    }
+    ch->kl = ch->ku = kl;
+}
+
 /* Assign coordinates (node.ofs, n) and count constraint rows (m); checks
-   the nodes and constraints.  Call after any change of nodes or constraints.
-   VLBE_EARG also when n or m would exceed INT_MAX or n * n, m * n the
-   range of size_t (the callbacks' matrices).  On failure the chain is unchanged. */
+   the nodes and constraints.  Call after any change of nodes or constraints
+   and after vlbe_ale_chain_band.  In banded mode it writes the augmented
+   order to order[0 .. n+m-1] and sets kl, ku.  VLBE_EARG also when n or m
+   would exceed INT_MAX or the callbacks' matrices the range of size_t
+   (dense: n * n, m * n; banded: n + m > INT_MAX, (n + m) ld, see
+   vlbe__ale_size_ok); VLBE_EWORK in banded mode when order_cap < n + m.
+   On failure the chain is unchanged (order included). */
 VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
 {
     int i, k, n = 0, m = 0, d, spin;
+    vlbe_status st;
     VLBE_ASSERT(ch != NULL);
     d = ch->el3 ? 3 : 2;
     spin = ch->el3 && !((ch->el3->flags | ch->mode) & VLBE_ALE3_NO_SPIN);
@@ -3898,8 +4075,7 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
         if (n > INT_MAX - nc) return VLBE_EARG;
         n += nc;
     }
-    if ((size_t)n > (size_t)-1 / (size_t)n || (size_t)m > (size_t)-1 / (size_t)n)
-        return VLBE_EARG;
+    if ((st = vlbe__ale_size_ok(ch, d, n, m)) != VLBE_OK) return st;
     for (i = 0, n = 0; i < ch->nn; ++i) {
         ch->node[i].ofs = n;
         n += d * (2 + ch->node[i].slide) + spin + (ch->node[i].pmode == VLBE_ALE_PFREE);
@@ -3908,9 +4084,27 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
     ch->spin = spin;
     ch->n = n;
     ch->m = m;
+    if (ch->order) vlbe__ale_band_order(ch);
     return VLBE_OK;
 }
 
+/* Switches the matrix callbacks to band storage in the augmented order
+   (order != NULL: the caller's array of order_cap ints, kept by the chain)
+   or back to dense n x n ones (order == NULL, the default).  Call
+   vlbe_ale_chain_layout next, either way: it fills order and kl, ku (until
+   then kl = ku = -1 in banded mode, and the matrix callbacks must not be
+   called); insertion, removal and length control run it themselves, an
+   insertion needing order_cap >= n + m + 4.  order_cap < 0 with an order:
+   VLBE_EARG, nothing changed. */
+VLBE_API vlbe_status vlbe_ale_chain_band(vlbe_ale_chain *ch, int *order, int order_cap)
+{
+    VLBE_ASSERT(ch != NULL);
+    if (order && order_cap < 0) return VLBE_EARG;
+    ch->order = order;
+    ch->order_cap = order ? order_cap : 0;
+    ch->kl = ch->ku = order ? -1 : 0;
+    return VLBE_OK;
+}
 
 /* p, p', p'' of node i at time t (q, v: the state, for free nodes; v may
    be NULL: p' = 0).  i outside [0, nn): VLBE_EARG; a failing pfun:
@@ -3960,21 +4154,15 @@ static inline vlbe_status vlbe__ale_gather(const vlbe_ale_chain *ch, int e, vlbe
                                            const vlbe_real *q, const vlbe_real *v, vlbe_real *qe,
                                            vlbe_real *ve, int *idx, unsigned *mode)
 {
-    const int d = ch->d, nb = 2 * d + ch->spin + 1; /* element block per node */
+    const int nb = 2 * ch->d + ch->spin + 1; /* element block per node */
     const int rates = v != NULL && ve != NULL;
     int s, k;
     vlbe_status st;
     *mode = ch->mode;
+    vlbe__ale_eidx(ch, e, idx);
     for (s = 0; s < 2; ++s) {
         const int i = e + s, b = nb * s;
-        const int o = ch->node[i].ofs, sl = vlbe__ale_sidx(ch, i, s == 0);
         vlbe_real p3[3];
-        for (k = 0; k < d; ++k) {
-            idx[b + k] = o + k;
-            idx[b + d + k] = sl + k;
-        }
-        if (ch->spin) idx[b + 2 * d] = vlbe__ale_tidx(ch, i);
-        idx[b + nb - 1] = vlbe__ale_pidx(ch, i);
         if ((st = vlbe_ale_chain_pnode(ch, i, t, q, v, p3)) != VLBE_OK) return st;
         for (k = 0; k < nb - 1; ++k) {
             qe[b + k] = q[idx[b + k]];
@@ -4223,28 +4411,59 @@ static inline vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, int e, un
                    : vlbe_ale_force(vlbe__ale_el(ch, e), md, qe, ve, Qe, Ke, De);
 }
 
-/* scatter an ne x ne element matrix */
-static inline void vlbe__ale_scatter(int n, int ne, const int *idx, const vlbe_real *Ae,
-                                     vlbe_real *A)
+/* The index map of the chain's matrices: entry (i, j) -- i, j < n
+   coordinates, or n + k for constraint row k in banded mode -- at
+   A[vlbe__ale_at(ch, i, j)]: dense i n + j, banded VLBE_BAND_IDX(ld, kl,
+   order[i], order[j]) with ld = kl + ku + 1 (see vlbe_ale_chain).  Every
+   assembly below goes through it. */
+static inline size_t vlbe__ale_at(const vlbe_ale_chain *ch, int i, int j)
+{
+    if (!ch->order) return (size_t)i * (size_t)ch->n + (size_t)j;
+    return VLBE_BAND_IDX(ch->kl + ch->ku + 1, ch->kl, ch->order[i], ch->order[j]);
+}
+
+/* entry (k, j) of C_q: row k of the dense m x n matrix, or the row of
+   constraint k in the augmented order */
+static inline size_t vlbe__ale_cq_at(const vlbe_ale_chain *ch, int k, int j)
+{
+    return vlbe__ale_at(ch, ch->order ? ch->n + k : k, j);
+}
+
+/* reals of one of the chain's matrices: n * n dense, (n + m) ld banded (the
+   layout checked that it fits in a size_t) */
+static inline size_t vlbe__ale_mat_len(const vlbe_ale_chain *ch)
+{
+    if (!ch->order) return (size_t)ch->n * (size_t)ch->n;
+    VLBE_ASSERT(ch->kl >= 0); /* vlbe_ale_chain_band is followed by a layout */
+    return (size_t)(ch->n + ch->m) * (size_t)(ch->kl + ch->ku + 1);
+}
+
+/* scatter an ne x ne element matrix into the chain's matrix A */
+static inline void vlbe__ale_scatter(const vlbe_ale_chain *ch, int ne, const int *idx,
+                                     const vlbe_real *Ae, vlbe_real *A)
 {
     int i, j;
     for (i = 0; i < ne; ++i) {
-        vlbe_real *row;
         if (idx[i] < 0) continue;
-        row = A + (size_t)idx[i] * (size_t)n;
         for (j = 0; j < ne; ++j)
-            if (idx[j] >= 0) row[idx[j]] += Ae[i * ne + j];
+            if (idx[j] >= 0) A[vlbe__ale_at(ch, idx[i], idx[j])] += Ae[i * ne + j];
     }
 }
 
-/* 1 when every entry an element can touch in the assembled n x n matrix A
-   is finite: rows of node i, columns of nodes i-1 .. i+1 (contiguous in
-   q), checked after the assembly (an entry that overflowed while being
-   summed stays Inf or NaN); one vectorised pass over the band */
+/* 1 when every entry an element can touch in the assembled matrix A is
+   finite, checked after the assembly (an entry that overflowed while being
+   summed stays Inf or NaN).  Dense: rows of node i, columns of nodes i-1
+   .. i+1 (contiguous in q), one vectorised pass over the band; banded: the
+   whole band array, row by row. */
 static inline int vlbe__ale_band_finite(const vlbe_ale_chain *ch, const vlbe_real *A)
 {
     const size_t n = (size_t)ch->n;
     int i, r, ok = 1;
+    if (ch->order) {
+        const int ld = ch->kl + ch->ku + 1;
+        for (r = 0; r < ch->n + ch->m; ++r) ok &= vlbe_all_finite(A + (size_t)r * (size_t)ld, ld);
+        return ok;
+    }
     for (i = 0; i < ch->nn; ++i) {
         const int lo = ch->node[i > 0 ? i - 1 : 0].ofs;
         const int hi = i + 2 < ch->nn ? ch->node[i + 2].ofs : ch->n;
@@ -4266,12 +4485,25 @@ static inline int vlbe__ale_diag_finite(int n, const vlbe_real *A)
     return ok;
 }
 
-/* zero n * n entries (the layout checked that n * n fits in a size_t) */
-static inline void vlbe__ale_zero_nn(int n, vlbe_real *A)
+/* 1 when the diagonal of the chain's matrix A is finite (the mass matrix:
+   vlbe__ale_diag_finite) */
+static inline int vlbe__ale_mdiag_finite(const vlbe_ale_chain *ch, const vlbe_real *A)
 {
-    const size_t nn = (size_t)n * (size_t)n;
+    int i, ok = 1;
+    if (!ch->order) return vlbe__ale_diag_finite(ch->n, A);
+    for (i = 0; i < ch->n; ++i) {
+        const vlbe_real a = A[vlbe__ale_at(ch, i, i)];
+        ok &= a - a == VLBE_R(0.0);
+    }
+    return ok;
+}
+
+/* zero one of the chain's matrices (vlbe__ale_mat_len reals) */
+static inline void vlbe__ale_zero_mat(const vlbe_ale_chain *ch, vlbe_real *A)
+{
+    const size_t len = vlbe__ale_mat_len(ch);
     size_t i;
-    for (i = 0; i < nn; ++i) A[i] = VLBE_R(0.0);
+    for (i = 0; i < len; ++i) A[i] = VLBE_R(0.0);
 }
 
 /* the first element whose coordinates hold entry k of q (or v, a): that
@@ -4342,32 +4574,31 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
                                  vlbe_real *M)
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
-    size_t n;
     vlbe_real qe[VLBE_ALE3_NQ], Me[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
     int e, i, k, rc, ne, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
     (void)v;
     VLBE_ASSERT(ch != NULL && q != NULL && M != NULL);
-    n = (size_t)ch->n;
     ne = vlbe__ale_ne(ch);
     if ((rc = vlbe__ale_in_check(ch, q, NULL, NULL)) != 0) return rc;
-    vlbe__ale_zero_nn(ch->n, M);
+    vlbe__ale_zero_mat(ch, M);
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe__ale_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK ||
             (st = vlbe__ale_el_mass(ch, e, md, qe, Me)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
-        vlbe__ale_scatter(ch->n, ne, idx, Me, M);
+        vlbe__ale_scatter(ch, ne, idx, Me, M);
     }
     for (i = 0; i < ch->nn; ++i)
         for (k = 0; k < ch->d; ++k) {
-            const size_t r = (size_t)(ch->node[i].ofs + k);
-            M[r * n + r] += ch->node[i].mass;
+            const int r = ch->node[i].ofs + k;
+            M[vlbe__ale_at(ch, r, r)] += ch->node[i].mass;
         }
-    return vlbe__ale_diag_finite(ch->n, M) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+    return vlbe__ale_mdiag_finite(ch, M) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
 
-/* Q and/or K, D (n x n; any of the three may be NULL) */
+/* Q and/or K, D (the chain's matrices: n x n, or band arrays; any of the three
+   may be NULL) */
 static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
                                          const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                          vlbe_real *D)
@@ -4382,8 +4613,8 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
     if ((rc = vlbe__ale_in_check(ch, q, v, NULL)) != 0) return rc;
     if (Q)
         for (i = 0; i < ch->n; ++i) Q[i] = VLBE_R(0.0);
-    if (K) vlbe__ale_zero_nn(ch->n, K);
-    if (D) vlbe__ale_zero_nn(ch->n, D);
+    if (K) vlbe__ale_zero_mat(ch, K);
+    if (D) vlbe__ale_zero_mat(ch, D);
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe__ale_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK ||
             (st = vlbe__ale_el_force(ch, e, md, qe, ve, Qe, K ? Ke : NULL, D ? De : NULL)) != VLBE_OK)
@@ -4403,8 +4634,8 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
         if (Q)
             for (i = 0; i < ne; ++i)
                 if (idx[i] >= 0) Q[idx[i]] += Qe[i];
-        if (K) vlbe__ale_scatter(ch->n, ne, idx, Ke, K);
-        if (D) vlbe__ale_scatter(ch->n, ne, idx, De, D);
+        if (K) vlbe__ale_scatter(ch, ne, idx, Ke, K);
+        if (D) vlbe__ale_scatter(ch, ne, idx, De, D);
     }
     if ((K && !vlbe__ale_band_finite(ch, K)) || (D && !vlbe__ale_band_finite(ch, D)))
         return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
@@ -4442,15 +4673,15 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
     VLBE_ASSERT(ch != NULL && q != NULL && a != NULL && Mq != NULL);
     ne = vlbe__ale_ne(ch);
     if ((rc = vlbe__ale_in_check(ch, q, NULL, a)) != 0) return rc;
-    vlbe__ale_zero_nn(ch->n, Mq);
-    if (Mv) vlbe__ale_zero_nn(ch->n, Mv);
+    vlbe__ale_zero_mat(ch, Mq);
+    if (Mv) vlbe__ale_zero_mat(ch, Mv);
     for (e = 0; e + 1 < ch->nn; ++e) {
         if ((st = vlbe__ale_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
         for (i = 0; i < ne; ++i) ae[i] = idx[i] >= 0 ? a[idx[i]] : VLBE_R(0.0);
         if ((st = vlbe__ale_el_mass_jac(ch, e, md, qe, ae, Je)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
-        vlbe__ale_scatter(ch->n, ne, idx, Je, Mq);
+        vlbe__ale_scatter(ch, ne, idx, Je, Mq);
     }
     return vlbe__ale_band_finite(ch, Mq) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
@@ -4487,12 +4718,13 @@ static inline vlbe_status vlbe__ale_angle(const vlbe_ale_chain *ch, int k, vlbe_
     return VLBE_OK;
 }
 
-/* Constraint rows: C (may be NULL), Cq rows (n wide, may be NULL), Ct. */
+/* Constraint rows: C (may be NULL), Cq (m x n, or the band array in banded
+   mode; may be NULL), Ct. */
 static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_real t,
                                               const vlbe_real *q, vlbe_real *C, vlbe_real *Cq,
                                               vlbe_real *Ct)
 {
-    const size_t n = (size_t)ch->n, nm = n * (size_t)ch->m;
+    const size_t nm = ch->order ? vlbe__ale_mat_len(ch) : (size_t)ch->n * (size_t)ch->m;
     size_t iz;
     int k, r = 0, i, b;
     vlbe_status st;
@@ -4501,14 +4733,13 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
     for (k = 0; k < ch->ncon; ++k) {
         const vlbe_ale_con *c = &ch->con[k];
         const int o = ch->node[c->node].ofs;
-        vlbe_real *row = Cq ? Cq + (size_t)r * n : NULL;
         switch (c->type) {
         case VLBE_ALE_CON_POS: {
             int j = 0; /* row of the next held component */
             for (b = 0; b < ch->d; ++b) {
                 if (c->which && !((c->which >> b) & 1)) continue;
                 if (C) C[r + j] = q[o + b] - c->v[b];
-                if (row) row[(size_t)j * n + (size_t)(o + b)] = VLBE_R(1.0);
+                if (Cq) Cq[vlbe__ale_cq_at(ch, r + j, o + b)] = VLBE_R(1.0);
                 if (Ct) Ct[r + j] = VLBE_R(0.0);
                 ++j;
             }
@@ -4517,16 +4748,16 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
             const int s = vlbe__ale_sidx(ch, c->node, c->which);
             for (b = 0; b < ch->d; ++b) {
                 if (C) C[r + b] = q[s + b] - c->v[b];
-                if (row) row[(size_t)b * n + (size_t)(s + b)] = VLBE_R(1.0);
+                if (Cq) Cq[vlbe__ale_cq_at(ch, r + b, s + b)] = VLBE_R(1.0);
                 if (Ct) Ct[r + b] = VLBE_R(0.0);
             }
         } break;
         case VLBE_ALE_CON_SLOPE_DIR: {
             const int s = vlbe__ale_sidx(ch, c->node, c->which);
             if (C) C[r] = q[s] * c->v[1] - q[s + 1] * c->v[0];
-            if (row) {
-                row[s] = c->v[1];
-                row[s + 1] = -c->v[0];
+            if (Cq) {
+                Cq[vlbe__ale_cq_at(ch, r, s)] = c->v[1];
+                Cq[vlbe__ale_cq_at(ch, r, s + 1)] = -c->v[0];
             }
             if (Ct) Ct[r] = VLBE_R(0.0);
         } break;
@@ -4535,9 +4766,9 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
             int s;
             if ((st = vlbe__ale_angle(ch, k, t, cs, w, &s)) != VLBE_OK) return st;
             if (C) C[r] = q[s] * cs[1] - q[s + 1] * cs[0];
-            if (row) {
-                row[s] = cs[1];
-                row[s + 1] = -cs[0];
+            if (Cq) {
+                Cq[vlbe__ale_cq_at(ch, r, s)] = cs[1];
+                Cq[vlbe__ale_cq_at(ch, r, s + 1)] = -cs[0];
             }
             if (Ct) Ct[r] = w[0] * (q[s] * cs[0] + q[s + 1] * cs[1]);
         } break;
@@ -4546,7 +4777,7 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
             const int pi = c->type == VLBE_ALE_CON_P ? vlbe__ale_pidx(ch, c->node)
                                                      : vlbe__ale_tidx(ch, c->node);
             if (C) C[r] = q[pi] - c->v[0] - (c->v[1] + VLBE_R(0.5) * c->v[2] * t) * t;
-            if (row) row[pi] = VLBE_R(1.0);
+            if (Cq) Cq[vlbe__ale_cq_at(ch, r, pi)] = VLBE_R(1.0);
             if (Ct) Ct[r] = -(c->v[1] + c->v[2] * t);
         } break;
         case VLBE_ALE_CON_EQUAL_LEN: {
@@ -4561,10 +4792,9 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
                 const int ri = r + i - a - 1;
                 if (C) C[ri] = q[vlbe__ale_pidx(ch, i)] - al * pa[0] - be * pz[0];
                 if (Cq) {
-                    vlbe_real *rw = Cq + (size_t)ri * n;
-                    rw[vlbe__ale_pidx(ch, i)] = VLBE_R(1.0);
-                    if (ca >= 0) rw[ca] = -al;
-                    if (cz >= 0) rw[cz] = -be;
+                    Cq[vlbe__ale_cq_at(ch, ri, vlbe__ale_pidx(ch, i))] = VLBE_R(1.0);
+                    if (ca >= 0) Cq[vlbe__ale_cq_at(ch, ri, ca)] = -al;
+                    if (cz >= 0) Cq[vlbe__ale_cq_at(ch, ri, cz)] = -be;
                 }
                 if (Ct) Ct[ri] = -(ca >= 0 ? VLBE_R(0.0) : al * pa[1]) - (cz >= 0 ? VLBE_R(0.0) : be * pz[1]);
             }
@@ -4572,9 +4802,9 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
         case VLBE_ALE_CON_SLIDE_C:
             for (b = 0; b < 2; ++b) {
                 if (C) C[r + b] = q[o + 2 + b] - q[o + 4 + b];
-                if (row) {
-                    row[(size_t)b * n + (size_t)(o + 2 + b)] = VLBE_R(1.0);
-                    row[(size_t)b * n + (size_t)(o + 4 + b)] = VLBE_R(-1.0);
+                if (Cq) {
+                    Cq[vlbe__ale_cq_at(ch, r + b, o + 2 + b)] = VLBE_R(1.0);
+                    Cq[vlbe__ale_cq_at(ch, r + b, o + 4 + b)] = VLBE_R(-1.0);
                 }
                 if (Ct) Ct[r + b] = VLBE_R(0.0);
             }
@@ -4583,10 +4813,10 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
             const vlbe_real na = vlbe_v2_norm(q + o + 2), nb = vlbe_v2_norm(q + o + 4);
             if (!(na > VLBE_R(0.0)) || !(nb > VLBE_R(0.0))) return VLBE_ESINGULAR;
             if (C) C[r] = na - nb;
-            if (row)
+            if (Cq)
                 for (b = 0; b < 2; ++b) {
-                    row[o + 2 + b] = q[o + 2 + b] / na;
-                    row[o + 4 + b] = -q[o + 4 + b] / nb;
+                    Cq[vlbe__ale_cq_at(ch, r, o + 2 + b)] = q[o + 2 + b] / na;
+                    Cq[vlbe__ale_cq_at(ch, r, o + 4 + b)] = -q[o + 4 + b] / nb;
                 }
             if (Ct) Ct[r] = VLBE_R(0.0);
         } break;
@@ -4681,14 +4911,12 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
                                         const vlbe_real *lambda, vlbe_real *H)
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
-    size_t n;
     int k, r = 0, i, j, s;
     (void)t;
     VLBE_ASSERT(ch != NULL && q != NULL && lambda != NULL && H != NULL);
-    n = (size_t)ch->n;
     if (!vlbe_all_finite(q, ch->n) || !vlbe_all_finite(lambda, ch->m))
         return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
-    vlbe__ale_zero_nn(ch->n, H);
+    vlbe__ale_zero_mat(ch, H);
     for (k = 0; k < ch->ncon; ++k) {
         const vlbe_ale_con *c = &ch->con[k];
         if (c->type == VLBE_ALE_CON_SLIDE_D) {
@@ -4696,11 +4924,11 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
             for (s = 0; s < 2; ++s) {
                 const vlbe_real *a = q + o + 2 + 2 * s, na = vlbe_v2_norm(a);
                 const vlbe_real f = (s ? -lambda[r] : lambda[r]) / na;
-                const size_t b = (size_t)(o + 2 + 2 * s);
+                const int b = o + 2 + 2 * s;
                 if (!(na > VLBE_R(0.0))) return vlbe__ale_fail(ch, VLBE_ESINGULAR, c->node);
                 for (i = 0; i < 2; ++i)
                     for (j = 0; j < 2; ++j) {
-                        vlbe_real *h = &H[(b + (size_t)i) * n + b + (size_t)j];
+                        vlbe_real *h = &H[vlbe__ale_at(ch, b + i, b + j)];
                         *h += f * ((i == j ? VLBE_R(1.0) : VLBE_R(0.0)) - a[i] * a[j] / (na * na));
                         if (!isfinite(*h)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, c->node);
                     }
@@ -4792,13 +5020,15 @@ static inline int vlbe__ale_constrained(const vlbe_ale_chain *ch, int i)
 /* Insert a node with a fixed material coordinate ph inside element e
    (between nodes e and e+1) by exact segmentation; (q, v) of the old layout
    map to (qn, vn) of the new one (qn, vn must not alias q, v; v and vn may
-   be NULL).  Constraints on later nodes are renumbered.  Needs
-   nn < nn_cap (else VLBE_EWORK); qn, vn hold ch->n + 4 reals.  An element
-   inside an equal-length group (VLBE_ALE_CON_EQUAL_LEN) cannot be split
-   (VLBE_EARG); e outside [0, nn - 1) or a 3D chain: VLBE_EARG; the errors
-   of vlbe_ale_chain_gather and of the split (ph outside (p1, p2):
-   VLBE_EBOUND; a non-finite new node: VLBE_ENONFINITE).  On failure
-   nothing changes. */
+   be NULL).  Constraints on later nodes are renumbered and the layout is
+   run (in banded mode: order, kl, ku too).  Needs nn < nn_cap and, in
+   banded mode, order_cap >= n + m + 4 (else VLBE_EWORK); qn, vn hold
+   ch->n + 4 reals.  VLBE_EARG when the new layout's matrices would not fit
+   in a size_t; an element inside an equal-length group
+   (VLBE_ALE_CON_EQUAL_LEN) cannot be split (VLBE_EARG); e outside [0,
+   nn - 1) or a 3D chain: VLBE_EARG; the errors of vlbe_ale_chain_gather
+   and of the split (ph outside (p1, p2): VLBE_EBOUND; a non-finite new
+   node: VLBE_ENONFINITE).  On failure nothing changes. */
 VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real ph, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v,
                                            vlbe_real *qn, vlbe_real *vn)
@@ -4815,6 +5045,8 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
         if (c->type == VLBE_ALE_CON_EQUAL_LEN && e >= c->node && e < c->node2) return VLBE_EARG;
     }
     if (ch->nn >= ch->nn_cap) return VLBE_EWORK;
+    /* the layout that ends the insertion: 4 coordinates more, the same rows */
+    if ((st = vlbe__ale_size_ok(ch, 2, ch->n + 4, ch->m)) != VLBE_OK) return st;
     if ((st = vlbe__ale_gather(ch, e, t, q, v, qe, v ? ve : NULL, idx, &md)) != VLBE_OK)
         return st;
     st = ch->et ? ch->et->split(ch->els, e, qe, v ? ve : NULL, ph, qh, v ? qhd : NULL, aux)
@@ -4877,7 +5109,8 @@ static inline vlbe_status vlbe__ale_merge_aux(const vlbe_ale_chain *ch, int i, v
    the time of q (prescribed material coordinates).  Node i must carry no
    mass and no constraint, not be sliding and not belong to an equal-length
    group (else VLBE_EARG, nothing changed).  q -> qn may be in place (qn ==
-   q, vn == v). */
+   q, vn == v).  The layout is run (in banded mode: order, kl, ku too);
+   its errors are found before anything changes. */
 /* The removal itself, node i checked; aux: the merge of the per-element
    types (vlbe__ale_merge_aux), unused without them. */
 static inline vlbe_status vlbe__ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe_real *q,
@@ -4912,6 +5145,11 @@ VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real 
     if (ch->el3 || i <= 0 || i >= ch->nn - 1 || ch->nn <= 2) return VLBE_EARG;
     if (ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0) || vlbe__ale_constrained(ch, i))
         return VLBE_EARG;
+    { /* the layout that ends the removal (order_cap may have changed since the last) */
+        const int n1 = ch->n - vlbe__ale_ncoord(&ch->node[i]);
+        const vlbe_status st = vlbe__ale_size_ok(ch, 2, n1, ch->m);
+        if (st != VLBE_OK) return st;
+    }
     if (ch->et) {
         const vlbe_status st = vlbe__ale_merge_aux(ch, i, t, q, aux);
         if (st != VLBE_OK) return st;
@@ -4947,8 +5185,9 @@ static inline int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
    Near a chain end, where no removable node is on the other side, only the
    insertion is made (needs capacity); removable means interior, fixed p, no
    mass, no constraint, not in an equal-length group.  The insertion is
-   made first: it needs nn < nn_cap (else VLBE_EWORK, nothing changed) and
-   qn, vn must hold ch->n + 4 reals.  (q, v) -> (qn, vn) in the new layout
+   made first: it needs nn < nn_cap and, in banded mode, order_cap >= n +
+   m + 4 (else VLBE_EWORK, nothing changed) and qn, vn must hold ch->n + 4
+   reals; the layout is run after every change.  (q, v) -> (qn, vn) in the new layout
    (copied unchanged when nothing is done; qn, vn must not alias q, v); *slider
    follows its node; *changed = 0 (nothing), 1 (inserted), 2 (inserted and
    removed), 3 (removed).  Restart the integrator from (qn, vn) when
