@@ -11,6 +11,7 @@
 #   make bench          build and run bench/*.c (-O3 -march=native), out/bench/;
 #                       where LAPACKE is installed also bench_lu beside
 #                       LAPACK's band LU (build/bench/bench_lu_lapacke)
+#   make bench-scale    time per step of a clamped chain, 4 .. 1024 elements, dense vs banded
 #   make examples       build examples/*.c with the full warning set
 #   make check-headers  each header alone, twice, as C++, in float mode
 #   make measured-update  rerun the tests and rewrite the measured numbers
@@ -101,7 +102,7 @@ LAPACKE_H := $(wildcard /usr/include/lapacke.h)
 BENCH_LAPACKE_BINS := $(if $(LAPACKE_H),$(BUILD)/bench/bench_lu_lapacke)
 
 .PHONY: all check test check-headers cmocka test-build examples demo bench \
-        bench-portable lint clean fuzz fuzz-build fuzz-clang measured-update mutate
+        bench-portable bench-scale lint clean fuzz fuzz-build fuzz-clang measured-update mutate
 
 all: test examples
 
@@ -263,6 +264,11 @@ bench: $(BENCH_BINS) $(BENCH_LAPACKE_BINS)
 	  case " $(BENCH_DIR_ARG) " in *" $$b "*) $(BUILD)/bench/$$b $(OUT)/bench;; *) $(BUILD)/bench/$$b;; esac; \
 	done
 	@set -e; for b in $(BENCH_LAPACKE_BINS); do echo "== $$b ($(BENCH_FLAGS), LAPACKE)"; $$b; done
+
+# time per step of a clamped chain, 4 .. 1024 elements, dense and banded
+bench-scale: $(BUILD)/bench/bench_scale
+	@mkdir -p $(OUT)/bench
+	$(BUILD)/bench/bench_scale $(OUT)/bench
 
 # the same benchmarks built without -march=native; files get the tag "portable"
 bench-portable: $(BENCH_PORTABLE_BINS)

@@ -17,6 +17,7 @@
 
 static inline void ex_ale_wire(vlbe_dae *sys, vlbe_ale_chain *ch)
 {
+    int i;
     memset(sys, 0, sizeof *sys);
     sys->n = ch->n;
     sys->m = ch->m;
@@ -29,6 +30,17 @@ static inline void ex_ale_wire(vlbe_dae *sys, vlbe_ale_chain *ch)
     sys->constr_jac = vlbe_ale_chain_constr_jac;
     sys->constr_acc = vlbe_ale_chain_constr_acc;
     sys->constr_hess = vlbe_ale_chain_constr_hess;
+    /* a planar chain whose material coordinates are all fixed has the
+       classic constant ANCF mass matrix (point masses included): no
+       d(Ma)/dq, and the integrators evaluate M once */
+    for (i = 0; i < ch->nn && ch->node[i].pmode == VLBE_ALE_PFIXED; ++i) continue;
+    if (ch->d == 2 && i == ch->nn) sys->flags |= VLBE_DAE_MASS_CONST;
+    if (ch->order) { /* banded mode (vlbe_ale_chain_band): the layout's band */
+        sys->storage = VLBE_DAE_BANDED;
+        sys->kl = ch->kl;
+        sys->ku = ch->ku;
+        sys->order = ch->order;
+    }
 }
 
 #endif /* VLBE_EX_ALE_H */
