@@ -24,7 +24,7 @@
                               analytic straight hanging chain (lambda_k)
      band_hht_run             200 HHT steps: banded = dense (analytic and
                               difference Jacobians, the latter by column
-                              groups), counters equal
+                              groups), counters equal; reuse_max bounds
      band_bdf_run             BDF to t = 1: banded = dense
      band_user_solver         lin_factor / lin_solve (a dense LU of the
                               expanded band) = the built-in band LU path;
@@ -367,6 +367,10 @@ static void test_band_hht_run(void **state)
     int an, k;
     (void)state;
     assert_int_equal(vlbe_hht_params_hht(&par, VLBE_R(-0.1)), VLBE_OK);
+    /* the automatic reuse_max differs with the storage (banded refreshes a
+       stale matrix sooner): the same explicit value for both makes the two
+       runs take the same decisions */
+    par.reuse_max = 2;
     for (an = 0; an < 2; ++an) {
         double dq, qs;
         ch_setup(&cd, &sd, P0, 0, an);
@@ -404,6 +408,10 @@ static void test_band_hht_run(void **state)
            kl + ku + 1 = 15 force calls per matrix instead of n = 24 */
         if (!an) assert_true(hb.stats.force_calls < hd.stats.force_calls);
     }
+    par.reuse_max = -1;
+    assert_int_equal(vlbe_hht_init(&hb, &sb, &par, 0, q, v, wb, WL, iwb, IWL), VLBE_EARG);
+    par.reuse_max = VLBE_INT_MAX_ITER + 1;
+    assert_int_equal(vlbe_hht_init(&hb, &sb, &par, 0, q, v, wb, WL, iwb, IWL), VLBE_EARG);
 }
 
 static void test_band_bdf_run(void **state)
