@@ -128,6 +128,10 @@ REFERENCES
 #define VLBE_DAE_MASS_V 2u     /* M depends on v too (FD of M a in v)          */
 #define VLBE_DAE_NO_CHESS 4u   /* drop d(C_q^T lambda)/dq from the iteration matrix */
 
+/* vlbe_dae.storage */
+#define VLBE_DAE_DENSE 0
+#define VLBE_DAE_BANDED 1
+
 /* Upper bounds of the iteration parameters (VLBE_EARG above them) */
 #define VLBE_HHT_MAX_HALVINGS 30 /* vlbe_hht_params.max_halvings: steps down to h / 2^30,
                                     recursion depth 30                          */
@@ -162,6 +166,12 @@ typedef struct vlbe_dae {
     /* optional: H = d(C_q^T lambda)/dq, n*n */
     int (*constr_hess)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
                        vlbe_real *H);
+    /* storage of the matrices: see vlbe.h, Band storage; VLBE_DAE_BANDED:
+       (n + m) x (n + m) band arrays in the augmented order order[0 .. n+m-1]
+       with half-bandwidths kl, ku */
+    int storage;        /* VLBE_DAE_DENSE (0, the default) or VLBE_DAE_BANDED */
+    int kl, ku;
+    const int *order;
 } vlbe_dae;
 
 /* Counters of one run (cumulative from init). */

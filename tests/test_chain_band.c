@@ -45,9 +45,13 @@
      ework                  order_cap too small: layout, insert, remove,
                             length control return VLBE_EWORK with the chain,
                             its arrays and order unchanged; band() with a
-                            negative capacity: VLBE_EARG */
+                            negative capacity: VLBE_EARG
+     wire                   examples/ex_ale.h's ex_ale_wire: the vlbe_dae
+                            dense by default, banded with the chain's kl, ku
+                            and order in banded mode */
 #include "test_util.h"
 #include "../rancf.h"
+#include "../examples/ex_ale.h"
 #include "ale_fixtures.h"
 #include "rancf_fixtures.h"
 
@@ -719,6 +723,25 @@ static void test_ework(void **state)
     assert_int_equal(vlbe_ale_chain_layout(ch), VLBE_OK);
 }
 
+/* ex_ale_wire on the planar chain, dense then banded */
+static void test_wire(void **state)
+{
+    vlbe_dae sys;
+    (void)state;
+    planar_chain(&cA, 0u);
+    ex_ale_wire(&sys, &cA.ch);
+    assert_int_equal(sys.storage, VLBE_DAE_DENSE);
+    assert_true(sys.order == NULL && sys.kl == 0 && sys.ku == 0);
+    bch_band(&cA);
+    ex_ale_wire(&sys, &cA.ch);
+    assert_int_equal(sys.storage, VLBE_DAE_BANDED);
+    assert_int_equal(sys.n, cA.ch.n);
+    assert_int_equal(sys.m, cA.ch.m);
+    assert_int_equal(sys.kl, cA.ch.kl);
+    assert_int_equal(sys.ku, cA.ch.ku);
+    assert_true(sys.order == cA.ord);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -729,6 +752,7 @@ int main(void)
         cmocka_unit_test(test_uniform_bandwidth),
         cmocka_unit_test(test_relayout),
         cmocka_unit_test(test_ework),
+        cmocka_unit_test(test_wire),
     };
     return cmocka_run_group_tests_name("chain_band", tests, NULL, NULL);
 }
