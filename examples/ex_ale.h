@@ -6,7 +6,8 @@
    elements and the element module nothing of integrators); its chain
    callbacks have the vlbe_dae signatures, and this is the one place that
    plugs all of them in.  Call after vlbe_ale_chain_layout() and again after
-   every change of the chain's layout (length control). */
+   every change of the chain's layout (length control).  A chain in banded
+   mode (vlbe_ale_chain_band) passes its band on: storage, kl, ku, order. */
 #ifndef VLBE_EX_ALE_H
 #define VLBE_EX_ALE_H
 
