@@ -3653,14 +3653,16 @@ typedef struct vlbe_ale_etype {
    entry.  Vectors (Q, C, Ct, gamma, and q, v, a, lambda) keep the natural
    order.  Layout writes order[0 .. n+m-1]: node by node, node i's
    coordinates in q order, then the constraint rows whose highest touched
-   coordinate belongs to node i, in row order.  kl = ku = the largest
+   coordinate belongs to node i, in row order; the rows that touch node 0
+   alone come first, before node 0 (no neighbour on that side: a clamp
+   there does not widen the band).  kl = ku = the largest
    |order[a] - order[b]| over the coupled pairs (two coordinates of one
    element; a constraint row and a coordinate it touches), read from the
    structure, not bounded: an element couples the coordinates of its two
    nodes, up to 9 apart for planar ALE nodes (5 coordinates each; 7 with
-   fixed p's, 15 for 3D ALE nodes with spin), and the rows of a node's
-   constraints sit between them, widening the band by their number (a
-   clamped Lagrangian end: 4 + 4 rows + 4 - 1 = 11).  It does not grow
+   fixed p's, 15 for 3D ALE nodes with spin), and the rows of an interior
+   node's constraints sit between them, widening the band by their number
+   (a clamped Lagrangian cantilever: 7, its clamp rows before node 0).  It does not grow
    with the number of elements, except that an equal-length group ending
    at a free p couples all its rows to that end.  Storage: (n + m)(kl + ku
    + 1) reals a matrix instead of n^2. */
@@ -3937,6 +3939,19 @@ static inline int vlbe__ale_con_row(const vlbe_ale_chain *ch, const vlbe_ale_con
     }
 }
 
+/* The highest coordinate row j of constraint c touches, for the rows of
+   one node (every type but VLBE_ALE_CON_EQUAL_LEN); lo from
+   vlbe__ale_con_row. */
+static inline int vlbe__ale_con_hi(const vlbe_ale_con *c, int lo)
+{
+    switch (c->type) {
+    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLOPE_ANGLE: return lo + 1; /* x', y' */
+    case VLBE_ALE_CON_SLIDE_C: return lo + 2;                                   /* r'(1), r'(2) */
+    case VLBE_ALE_CON_SLIDE_D: return lo + 3;
+    default: return lo; /* one coordinate */
+    }
+}
+
 /* Do the callbacks' matrices of a chain of n coordinates, m equations (in
    dimension d, with the constraints of ch) fit?  Dense: n * n and m * n in
    a size_t (else VLBE_EARG).  Banded: n + m <= INT_MAX (VLBE_EARG), <=
@@ -3969,36 +3984,42 @@ static inline vlbe_status vlbe__ale_size_ok(const vlbe_ale_chain *ch, int d, int
 
 /* The augmented order and half-bandwidth of a laid-out chain in banded mode
    (see vlbe_ale_chain).  order[] serves as its own scratch: the node of
-   each constraint row goes to order[n + r], the rows per node to
-   order[0 .. nn-1] (n >= 4 nn), turned into the rows before each node,
-   then the rows' places; the coordinates come last, node by node from the
-   last, node i's overwriting order[ofs_i ..] (ofs_i >= 4 i) after
-   order[i - 1], the rows before node i, was read. */
+   each constraint row goes to order[n + r] (-1: a row of node 0 alone,
+   which goes first), the rows per node to order[0 .. nn-1] (n >= 4 nn),
+   turned into the rows before each node, then the rows' places; the
+   coordinates come last, node by node from the last, node i's
+   overwriting order[ofs_i ..] (ofs_i >= 4 i) after order[i - 1], the rows
+   before node i, was read. */
 static inline void vlbe__ale_band_order(vlbe_ale_chain *ch)
 {
     int *ord = ch->order;
     const int n = ch->n, nn = ch->nn, ne = 2 * (2 * ch->d + ch->spin + 1);
-    int i, k, j, r, s, kl = 0;
+    int i, k, j, r, s, kl = 0, c0 = 0, f0 = 0;
     for (i = 0; i < nn; ++i) ord[i] = 0;
     for (k = 0, r = 0; k < ch->ncon; ++k) {
         const int rows = vlbe__ale_con_rows(ch, &ch->con[k]);
         for (j = 0; j < rows; ++j, ++r) {
             int lo;
             ord[n + r] = vlbe__ale_con_row(ch, &ch->con[k], j, &lo);
-            ord[ord[n + r]]++;
+            if (ord[n + r] == 0 && ch->con[k].type != VLBE_ALE_CON_EQUAL_LEN) {
+                ord[n + r] = -1; /* before node 0: no neighbour on that side */
+                ++c0;
+            } else {
+                ord[ord[n + r]]++;
+            }
         }
     }
-    for (i = 0, s = 0; i < nn; ++i) { /* rows of the nodes before i */
+    for (i = 0, s = c0; i < nn; ++i) { /* rows before node i's coordinates, c0 included */
         const int c = ord[i];
         ord[i] = s;
         s += c;
     }
     for (r = 0; r < ch->m; ++r) { /* after its node's coordinates, in row order */
         const int nd = ord[n + r], end = nd + 1 < nn ? ch->node[nd + 1].ofs : n;
-        ord[n + r] = end + ord[nd]++;
+        ord[n + r] = nd < 0 ? f0++ : end + ord[nd]++;
     }
     for (i = nn - 1; i >= 0; --i) { /* ord[i - 1]: now the rows of the nodes before i */
-        const int before = i > 0 ? ord[i - 1] : 0, end = i + 1 < nn ? ch->node[i + 1].ofs : n;
+        const int before = i > 0 ? ord[i - 1] : c0, end = i + 1 < nn ? ch->node[i + 1].ofs : n;
         for (k = ch->node[i].ofs; k < end; ++k) ord[k] = k + before;
     }
     /* the bandwidth: the coordinates keep their order, so an element's
@@ -4019,9 +4040,12 @@ static inline void vlbe__ale_band_order(vlbe_ale_chain *ch)
     for (k = 0, r = 0; k < ch->ncon; ++k) {
         const int rows = vlbe__ale_con_rows(ch, &ch->con[k]);
         for (j = 0; j < rows; ++j, ++r) {
-            int lo;
+            int lo, w;
             (void)vlbe__ale_con_row(ch, &ch->con[k], j, &lo);
-            if (ord[n + r] - ord[lo] > kl) kl = ord[n + r] - ord[lo];
+            /* a row before node 0 is farthest from its highest coordinate */
+            w = ord[n + r] < c0 ? ord[vlbe__ale_con_hi(&ch->con[k], lo)] - ord[n + r]
+                                : ord[n + r] - ord[lo];
+            if (w > kl) kl = w;
         }
     }
     ch->kl = ch->ku = kl;

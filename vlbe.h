@@ -784,7 +784,7 @@ VLBE_INLINE vlbe__bits vlbe__absmax_bits(const vlbe_real *x, size_t n)
     vlbe__bits m = 0, u;
     size_t i;
     for (i = 0; i < n; ++i) {
-        memcpy(&u, &x[i], sizeof u);
+        memcpy(&u, x + i, sizeof u);
         u &= VLBE__BITS_ABS;
         m = u > m ? u : m;
     }
