@@ -8,10 +8,10 @@
    THE WIRING.  ex_cable_wire(sys, ch, banded) plugs a planar chain into a
    vlbe_dae; every scene here builds its problem through it and sizes its
    integrator workspace through ex_cable_hht_work, so the storage of the
-   matrices (dense today; banded, O(N) per step, once the chains and the
-   integrators have it) is one argument, cfg.banded, passed down to one
-   place.  With banded = 1 ex_cable_wire returns -1 on this base (no banded
-   chain callbacks yet): that line is where the banded wiring goes.
+   matrices (dense, or banded: O(N) per step and memory) is one argument,
+   cfg.banded, passed down to one place.  A banded chain is switched to
+   its band (vlbe_ale_chain_band, an order buffer of n + m ints, + 4 where
+   the chain grows by insertion) before its layout.
 
    THE HANGING CABLE.  Length L, mass per length rhoA, gravity g, pinned at
    the top (its position held, its slope free), free at the bottom.  With z
@@ -128,10 +128,10 @@
 /* -- the wiring --------------------------------------------------------- */
 
 /* sys <- the chain's callbacks in the storage asked for: 0 on success, -1
-   when that storage is not available (banded, on this base). */
+   when a banded system is asked of a chain not in banded mode. */
 static inline int ex_cable_wire(vlbe_dae *sys, vlbe_ale_chain *ch, int banded)
 {
-    if (banded) return -1; /* the banded chain callbacks and order go here */
+    if (banded && !ch->order) return -1;
     ex_ale_wire(sys, ch);
     return 0;
 }
@@ -140,15 +140,15 @@ static inline int ex_cable_wire(vlbe_dae *sys, vlbe_ale_chain *ch, int banded)
    ex_cable_wire chose. */
 static inline void ex_cable_hht_work(const vlbe_dae *sys, size_t *lw, size_t *liw)
 {
-    *lw = vlbe_hht_work_len(sys->n, sys->m);
-    *liw = vlbe_hht_iwork_len(sys->n, sys->m);
+    *lw = vlbe_hht_work_len_sys(sys);
+    *liw = vlbe_hht_iwork_len_sys(sys);
 }
 
 /* Workspace of vlbe_dae_static on sys, likewise. */
 static inline void ex_cable_static_work(const vlbe_dae *sys, size_t *lw, size_t *liw)
 {
-    *lw = vlbe_static_work_len(sys->n, sys->m);
-    *liw = vlbe_static_iwork_len(sys->n, sys->m);
+    *lw = vlbe_static_work_len_sys(sys);
+    *liw = vlbe_static_iwork_len_sys(sys);
 }
 
 /* q (in: a start; out: the static equilibrium of sys at t = 0, multipliers
@@ -258,6 +258,7 @@ typedef struct ex_cable {
     vlbe_ale_mat mat;
     vlbe_ale_elem el;
     vlbe_ale_node *node; /* N + 1, malloc'ed */
+    int *order;          /* banded: the augmented order, malloc'ed */
     vlbe_ale_con con[2];
     vlbe_ale_chain ch;
     vlbe_dae sys;
@@ -267,7 +268,9 @@ typedef struct ex_cable {
 static inline void ex_cable_free(ex_cable *m)
 {
     free(m->node);
+    free(m->order);
     m->node = NULL;
+    m->order = NULL;
 }
 
 /* The chain of the header comment; 0 on success (m->node then malloc'ed:
@@ -301,6 +304,11 @@ static inline int ex_cable_build(ex_cable *m, const ex_cable_cfg *c)
         k.type = VLBE_ALE_CON_SLOPE_DIR; /* r' x (0, -1) = 0: the slope held vertical */
         k.v[1] = VLBE_R(-1.0);
         if (vlbe_ale_chain_add(&m->ch, &k)) goto fail;
+    }
+    if (c->banded) { /* n + m = 4 (N + 1) + 2 (+ 1 clamped) */
+        const int cap = 4 * (c->N + 1) + 3;
+        m->order = (int *)malloc((size_t)cap * sizeof *m->order);
+        if (!m->order || vlbe_ale_chain_band(&m->ch, m->order, cap)) goto fail;
     }
     if (vlbe_ale_chain_layout(&m->ch) || ex_cable_wire(&m->sys, &m->ch, c->banded)) goto fail;
     return 0;

@@ -138,6 +138,7 @@ typedef struct ex_winch {
     vlbe_ale_mat mat;
     vlbe_ale_elem el;
     vlbe_ale_node *node; /* nmax + 1, malloc'ed */
+    int *order;          /* banded: the augmented order, malloc'ed */
     vlbe_ale_con con[1];
     vlbe_ale_chain ch;
     vlbe_dae sys;
@@ -194,7 +195,9 @@ static inline void ex_winch_hist_free(ex_winch_hist *hi)
 static inline void ex_winch_free(ex_winch *m)
 {
     free(m->node);
+    free(m->order);
     m->node = NULL;
+    m->order = NULL;
 }
 
 /* The chain at rest in its discrete static equilibrium (the winch node's p
@@ -228,6 +231,11 @@ static inline int ex_winch_build(ex_winch *m, const ex_winch_cfg *c, vlbe_real *
     m->ch.g[1] = (vlbe_real)-g0;
     memset(&k, 0, sizeof k);
     k.type = VLBE_ALE_CON_POS; /* the winch at the origin */
+    if (c->banded) { /* n + m <= 4 (nmax + 1) + 2, + 4 for an insertion */
+        const int cap = 4 * (c->nmax + 1) + 6;
+        m->order = (int *)malloc((size_t)cap * sizeof *m->order);
+        if (!m->order || vlbe_ale_chain_band(&m->ch, m->order, cap)) goto fail;
+    }
     if (vlbe_ale_chain_add(&m->ch, &k) || vlbe_ale_chain_layout(&m->ch) ||
         ex_cable_wire(&m->sys, &m->ch, c->banded))
         goto fail;
