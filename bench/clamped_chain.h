@@ -1,0 +1,147 @@
+/* clamped_chain.h -- the clamped chain of the scaling benchmarks (bench_scale.c,
+   wp_chain.c): a planar ALE-ANCF chain, Lagrangian nodes, 10 m, steel-like
+   section (rhoA 7.85 kg/m, EA 2.1e8 N, EI 1.75e3 N m^2), gravity through
+   the distributed load, clamped at node 0 (VLBE_ALE_CON_POS +
+   VLBE_ALE_CON_SLOPE), straight and at rest at t = 0; HHT-alpha -0.05 with
+   the default Newton settings.  Dense or banded (vlbe_ale_chain_band).
+   -- part of vlbe                                  SPDX-License-Identifier: MIT
+   Include after bench_util.h. */
+#ifndef VLBE_BENCH_CLAMPED_CHAIN_H
+#define VLBE_BENCH_CLAMPED_CHAIN_H
+
+#include "../ancf_ale.h"
+#include "../integrators.h"
+#include "../examples/ex_ale.h"
+
+#include <stdlib.h>
+
+enum { CC_NMAX = 1024, CC_WARM = 20, CC_BLOCKS = 5, CC_DENSE_MAX = 256 };
+
+typedef struct cc_scene {
+    vlbe_ale_mat mat;
+    vlbe_ale_elem el;
+    vlbe_ale_node node[CC_NMAX + 1];
+    vlbe_ale_con con[2];
+    vlbe_ale_chain ch;
+    int *order;
+    vlbe_dae sys;
+    vlbe_hht st;
+    vlbe_real *w, *q0, *v0;
+    int *iw;
+    size_t lw, liw;
+} cc_scene;
+
+typedef struct cc_result {
+    double us, newton, lu, mb;
+    int kl, n;
+} cc_result;
+
+static inline void cc_free(cc_scene *s)
+{
+    free(s->w);
+    free(s->iw);
+    free(s->q0);
+    free(s->v0);
+    free(s->order);
+}
+
+/* builds the chain of ne elements, dense or banded, and starts HHT */
+static inline int cc_init(cc_scene *s, int ne, int band)
+{
+    vlbe_ale_con c;
+    vlbe_hht_params par;
+    vlbe_real r0[2] = {0, 0}, dir[2] = {1, 0};
+    int i;
+    memset(s, 0, sizeof *s);
+    s->mat.rhoA = VLBE_R(7.85);
+    s->mat.EA = VLBE_R(2.1e8);
+    s->mat.EI = VLBE_R(1.75e3);
+    s->mat.f[1] = VLBE_R(-9.81) * s->mat.rhoA;
+    if (vlbe_ale_elem_init(&s->el, &s->mat, 0, 0, 0, 0)) return -1;
+    for (i = 0; i <= ne; ++i) {
+        s->node[i].pmode = VLBE_ALE_PFIXED;
+        s->node[i].p = (vlbe_real)(10.0 * i / ne);
+    }
+    if (vlbe_ale_chain_init(&s->ch, &s->el, s->node, ne + 1, CC_NMAX + 1, s->con, 2)) return -1;
+    memset(&c, 0, sizeof c);
+    c.type = VLBE_ALE_CON_POS;
+    c.node = 0;
+    if (vlbe_ale_chain_add(&s->ch, &c)) return -1;
+    c.type = VLBE_ALE_CON_SLOPE;
+    c.v[0] = 1;
+    if (vlbe_ale_chain_add(&s->ch, &c)) return -1;
+    if (band) {
+        int cap = 5 * (ne + 1) + 4;
+        s->order = (int *)malloc((size_t)cap * sizeof *s->order);
+        if (!s->order || vlbe_ale_chain_band(&s->ch, s->order, cap)) return -1;
+    }
+    if (vlbe_ale_chain_layout(&s->ch)) return -1;
+    ex_ale_wire(&s->sys, &s->ch);
+    s->lw = vlbe_hht_work_len_sys(&s->sys);
+    s->liw = vlbe_hht_iwork_len_sys(&s->sys);
+    s->w = (vlbe_real *)malloc(s->lw * sizeof *s->w);
+    s->iw = (int *)malloc(s->liw * sizeof *s->iw);
+    s->q0 = (vlbe_real *)calloc((size_t)s->ch.n, sizeof *s->q0);
+    s->v0 = (vlbe_real *)calloc((size_t)s->ch.n, sizeof *s->v0);
+    if (!s->w || !s->iw || !s->q0 || !s->v0) return -1;
+    vlbe_ale_chain_straight(&s->ch, r0, dir, s->q0);
+    if (vlbe_hht_params_hht(&par, VLBE_R(-0.05))) return -1;
+    return vlbe_hht_init(&s->st, &s->sys, &par, 0, s->q0, s->v0, s->w, s->lw, s->iw, s->liw) ? -1
+                                                                                            : 0;
+}
+
+static inline int cc_time(int ne, int band, cc_result *r)
+{
+    cc_scene *s = (cc_scene *)malloc(sizeof *s);
+    double t[CC_BLOCKS];
+    long it0, lu0, steps = 0;
+    int b, k, ok = 0;
+    if (!s) return -1;
+    if (cc_init(s, ne, band)) goto out;
+    for (k = 0; k < CC_WARM; ++k)
+        if (vlbe_hht_step(&s->st, VLBE_R(1e-3))) goto out;
+    it0 = s->st.stats.newton_iters;
+    lu0 = s->st.stats.lu_factors;
+    for (b = 0; b < CC_BLOCKS; ++b) {
+        double t0 = benchu_now(), el;
+        int nk = 0;
+        do {
+            for (k = 0; k < 10; ++k)
+                if (vlbe_hht_step(&s->st, VLBE_R(1e-3))) goto out;
+            nk += 10;
+            el = benchu_now() - t0;
+        } while (el < 0.2 / CC_BLOCKS && nk < 100000);
+        t[b] = el / nk;
+        steps += nk;
+    }
+    qsort(t, CC_BLOCKS, sizeof *t, benchu_cmp_double);
+    r->us = 1e6 * t[CC_BLOCKS / 2];
+    r->newton = (double)(s->st.stats.newton_iters - it0) / (double)steps;
+    r->lu = (double)(s->st.stats.lu_factors - lu0) / (double)steps;
+    r->mb = ((double)s->lw * sizeof(vlbe_real) + (double)s->liw * sizeof(int) +
+             (band ? (double)(5 * (ne + 1) + 4) * sizeof(int) : 0.0)) / 1048576.0;
+    r->kl = band ? s->ch.kl : -1;
+    r->n = s->ch.n;
+    ok = 1;
+out:
+    cc_free(s);
+    free(s);
+    return ok ? 0 : -1;
+}
+
+/* least-squares slope of log y against log x */
+static inline double cc_slope(int n, const double *x, const double *y)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int i;
+    for (i = 0; i < n; ++i) {
+        double a = log(x[i]), b = log(y[i]);
+        sx += a;
+        sy += b;
+        sxx += a * a;
+        sxy += a * b;
+    }
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+#endif /* VLBE_BENCH_CLAMPED_CHAIN_H */
