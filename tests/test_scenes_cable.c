@@ -19,6 +19,8 @@
      clamped_top       the clamp's mesh artefact: an error O(L_e / L)
      winch             pay-out from 10 m at 0.9 m/s for 3 s: element count,
                        end mass on the steady rope, energy and mass balance
+     cable_banded      banded storage (the examples') against dense: static
+                       q, the three frequencies at 16 elements, a 1 s winch
    The scenes run in double only (see each test: the strains they resolve
    are below what float positions of a 10 m cable carry).  Set
    VLBE_TEST_REPORT=1 to print the measured numbers. */
@@ -368,6 +370,77 @@ static void test_clamped_top(void **state)
      halved in ancf_ale.h moves this balance to 7.9e-9, 80 times the bound,
      and leaves the end mass as it is;
    - the mass: m + rhoA (L0 + V t) to 64 EPS. */
+/* The banded path (the examples' storage) against the dense one: the
+   static equilibrium, each mode's frequency at 16 elements, and a 1 s
+   winch run.  The two take the same Newton decisions up to the refresh of
+   a stale iteration matrix, which the banded path makes sooner
+   (vlbe_hht_params.reuse_max): their states differ by the Newton
+   tolerance (rtol 1e-9 of the positions), not by rounding.  Bounds: the
+   static q to 1e-12 m (the solver's increment test, rtol 1e-10 of
+   |q| <= 10 m, passed by both); the frequency to 1e-9 relative (a Newton
+   difference of 1e-9 |q| in a 1e-5 m oscillation moves the crossings by
+   far less: measured 4.4e-16 (m:hc_band_om)); the winch end to 1e-9 m
+   and its energy balance within the dense bound. */
+static void test_cable_banded(void **state)
+{
+    (void)state;
+#ifdef VLBE_USE_FLOAT
+    TU_SKIP("the cable scenes run in double only (see test_hanging_cable)");
+#else
+    {
+        ex_cable md, mb;
+        ex_cable_cfg c;
+        ex_cable_run run;
+        vlbe_real *qd, *qb;
+        double worst = 0.0, dq = 0.0;
+        int k, i;
+        hc_setup(&md, 16, 0, &qd);
+        ex_cable_cfg_default(&c, 16);
+        c.banded = 1;
+        assert_int_equal(ex_cable_build(&mb, &c), 0);
+        assert_int_equal(mb.sys.storage, VLBE_DAE_BANDED);
+        qb = (vlbe_real *)malloc((size_t)mb.ch.n * sizeof *qb);
+        assert_non_null(qb);
+        ex_cable_hanging(&mb, qb);
+        assert_int_equal(ex_cable_static(&mb, qb), VLBE_OK);
+        for (i = 0; i < mb.ch.n; ++i) dq = fmax(dq, fabs((double)qb[i] - (double)qd[i]));
+        tu_report("cable: static q banded - dense [m]", dq, 1e-12);
+        assert_true(dq <= 1e-12);
+        ex_cable_run_default(&run);
+        for (k = 1; k <= EX_CABLE_NMODES; ++k) {
+            const ex_cable_freq_out rd = ex_cable_freq(&md, qd, k, &run);
+            const ex_cable_freq_out rb = ex_cable_freq(&mb, qb, k, &run);
+            assert_int_equal(rd.status, VLBE_OK);
+            assert_int_equal(rb.status, VLBE_OK);
+            worst = fmax(worst, fabs(rb.omega / rd.omega - 1.0));
+        }
+        tu_report("cable: omega banded / dense - 1", worst, 1e-9);
+        tu_measured("hc_band_om", worst);
+        assert_true(worst <= 1e-9);
+        free(qd);
+        free(qb);
+        ex_cable_free(&md);
+        ex_cable_free(&mb);
+    }
+    {
+        ex_winch_cfg c;
+        ex_winch_out rd, rb;
+        ex_winch_cfg_default(&c, 1.0);
+        rd = ex_winch_run(&c, NULL);
+        c.banded = 1;
+        rb = ex_winch_run(&c, NULL);
+        assert_int_equal(rd.status, VLBE_OK);
+        assert_int_equal(rb.status, VLBE_OK);
+        assert_int_equal(rb.ne_end, rd.ne_end);
+        assert_int_equal(rb.ne_bad, 0);
+        tu_report("winch banded: |y - y_qs| [m]", rb.dy_max, 1e-10);
+        assert_true(rb.dy_max <= 1e-10);
+        assert_true(fabs(rb.stretch_end - rd.stretch_end) <= 1e-9);
+        assert_true(rb.dE_max <= 1e-10 * rb.W_abs);
+    }
+#endif
+}
+
 static void test_winch(void **state)
 {
     (void)state;
@@ -426,6 +499,7 @@ int main(void)
         cmocka_unit_test(test_hanging_cable),
         cmocka_unit_test(test_clamped_top),
         cmocka_unit_test(test_winch),
+        cmocka_unit_test(test_cable_banded),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
