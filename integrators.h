@@ -550,8 +550,8 @@ VLBE_INLINE void vlbe__int_unperm(const vlbe_dae *s, int f, const vlbe_real *X, 
     }
 }
 
-/* Products with a model matrix of a banded problem through augmented
-   vectors (w: 2 NA reals of scratch):
+/* Products with a model matrix (banded: through augmented vectors, w: 2 NA
+   reals of scratch; dense: vlbe_mat_vec, vlbe_mat_tvec):
      kind 0: y (n) = A x (n)          (M, or any n x n matrix)
      kind 1: y (m) = C_q x (n)
      kind 2: y (n) = C_q^T x (m)                                        */
@@ -561,6 +561,12 @@ VLBE_INLINE void vlbe__int_bprod(const vlbe_dae *s, int kind, const vlbe_real *A
     int n = s->n, m = s->m, NA = n + m, i;
     vlbe_real *X = w, *Y = w + NA;
     const int *o = s->order;
+    if (!vlbe__int_banded(s)) {
+        if (kind == 0) vlbe_mat_vec(n, n, A, x, y);
+        else if (kind == 1) vlbe_mat_vec(m, n, A, x, y);
+        else vlbe_mat_tvec(m, n, A, x, y);
+        return;
+    }
     vlbe_vec_zero(NA, X);
     if (kind == 2)
         for (i = 0; i < m; ++i) X[o[n + i]] = x[i];
@@ -574,25 +580,51 @@ VLBE_INLINE void vlbe__int_bprod(const vlbe_dae *s, int kind, const vlbe_real *A
         for (i = 0; i < n; ++i) y[i] = Y[o[i]];
 }
 
-/* A block of an iteration matrix that Jacobian terms are added to.  Dense:
-   A points at the block's first entry, ld its leading dimension, model
-   entry (i, j) at A[i ld + j].  Banded: A is the whole band (leading
-   dimension ld, kl sub-diagonals), model entry at augmented (r, c) lands at
+/* A block of an iteration matrix that Jacobian terms are added to, in the
+   coordinates of the model's matrices: rows and columns 0..n-1 are q,
+   rows n..n+m-1 the constraints.  Dense (f = 0): A points at the block,
+   model entry (r, c) at A[(r + ro) ld + c] (ro shifts constraint rows to
+   the block's first row).  Banded: A is the whole band (leading dimension
+   ld, kl sub-diagonals), model entry at augmented (r, c) lands at
    (f r + ro, f c + co). */
 typedef struct vlbe__int_blk {
     vlbe_real *A;
     size_t ld;
     int kl, f, ro, co;
 } vlbe__int_blk;
+/* a dense block at A with leading dimension ld (constraint rows shifted by ro) */
+VLBE_INLINE vlbe__int_blk vlbe__int_dblk(vlbe_real *A, int ld, int ro)
+{
+    vlbe__int_blk b;
+    b.A = A;
+    b.ld = (size_t)ld;
+    b.kl = b.f = b.co = 0;
+    b.ro = ro;
+    return b;
+}
 VLBE_INLINE vlbe_real *vlbe__int_blk_at(const vlbe__int_blk *b, int r, int c)
 {
+    if (b->f == 0) return b->A + (size_t)(r + b->ro) * b->ld + (size_t)c;
     return b->A + VLBE_BAND_IDX(b->ld, b->kl, b->f * r + b->ro, b->f * c + b->co);
 }
-/* Adds c X (trans = 0) or c X^T (trans = 1) to block b, X a model band. */
+/* Adds c X to block b, X a model matrix: kind 0 an n x n one (M, K, D,
+   Mq, Mv, H), 1 C_q, 2 C_q^T (dense: C_q's m x n array; banded: the band,
+   C_q^T read transposed). */
 VLBE_INLINE void vlbe__int_badd(const vlbe_dae *s, const vlbe__int_blk *b, vlbe_real c,
-                                const vlbe_real *X, int trans)
+                                const vlbe_real *X, int kind)
 {
-    int NA = s->n + s->m, kl = s->kl, ld = vlbe__int_bld(s), r, o;
+    int n = s->n, NA = n + s->m, kl = s->kl, ld = vlbe__int_bld(s), r, o;
+    if (!vlbe__int_banded(s)) {
+        int i, j, rows = kind == 0 ? n : s->m;
+        for (i = 0; i < rows; ++i)
+            for (j = 0; j < n; ++j) {
+                vlbe_real x = c * X[(size_t)i * (size_t)n + (size_t)j];
+                if (kind == 0) *vlbe__int_blk_at(b, i, j) += x;
+                else if (kind == 1) *vlbe__int_blk_at(b, n + i, j) += x;
+                else *vlbe__int_blk_at(b, j, n + i) += x;
+            }
+        return;
+    }
     for (r = 0; r < NA; ++r) {
         const vlbe_real *xr = X + (size_t)r * (size_t)ld;
         int o0 = kl - r > 0 ? kl - r : 0, o1 = NA - 1 - r + kl;
@@ -600,7 +632,7 @@ VLBE_INLINE void vlbe__int_badd(const vlbe_dae *s, const vlbe__int_blk *b, vlbe_
         for (o = o0; o <= o1; ++o) {
             int col = r - kl + o;
             if (xr[o] == VLBE_R(0.0)) continue;
-            if (trans) *vlbe__int_blk_at(b, col, r) += c * xr[o];
+            if (kind == 2) *vlbe__int_blk_at(b, col, r) += c * xr[o];
             else *vlbe__int_blk_at(b, r, col) += c * xr[o];
         }
     }
@@ -612,27 +644,41 @@ VLBE_INLINE void vlbe__int_bdiag(const vlbe_dae *s, const vlbe__int_blk *b, vlbe
     for (i = 0; i < s->n; ++i) *vlbe__int_blk_at(b, s->order[i], s->order[i]) += c;
 }
 
-/* The rows of augmented column c that a Jacobian may fill: [c - ku, c + kl]
-   within 0..NA-1. */
+/* The rows of column c (augmented order; dense: the natural one) that a
+   Jacobian may fill: [c - ku, c + kl] within 0..NA-1 (dense: all). */
 VLBE_INLINE void vlbe__int_rows(const vlbe_dae *s, int c, int *r0, int *r1)
 {
     int NA = s->n + s->m;
+    if (!vlbe__int_banded(s)) {
+        *r0 = 0;
+        *r1 = NA - 1;
+        return;
+    }
     *r0 = c - s->ku < 0 ? 0 : c - s->ku;
     *r1 = c + s->kl > NA - 1 ? NA - 1 : c + s->kl;
+}
+/* the unknown at augmented position r (dense, inv NULL: r itself) */
+VLBE_INLINE int vlbe__int_unk(const int *inv, int r) { return inv ? inv[r] : r; }
+/* columns one forward difference serves (vlbe__int_group): every
+   kl + ku + 1-th of a band, one of a dense matrix */
+VLBE_INLINE int vlbe__int_gstride(const vlbe_dae *s)
+{
+    return vlbe__int_banded(s) ? vlbe__int_bld(s) : s->n + s->m;
 }
 
 /* Forward-difference steps of the coordinates of group g (Curtis, Powell,
    Reid: columns kl + ku + 1 apart in the augmented order have disjoint
-   rows, so one evaluation serves them all): x[j] = base[j] + d[j] for the
-   q_j of the group (others base[j]); returns 0 if the group is empty.  d
-   receives the exactly representable steps. */
+   rows, so one evaluation serves them all; dense: column g alone):
+   x[j] = base[j] + d[j] for the q_j of the group (others base[j]);
+   returns 0 if the group is empty.  d receives the exactly representable
+   steps. */
 VLBE_INLINE int vlbe__int_group(const vlbe_dae *s, const int *inv, int g, const vlbe_real *base,
                                 vlbe_real *x, vlbe_real *d)
 {
-    int n = s->n, NA = n + s->m, w = vlbe__int_bld(s), c, any = 0;
+    int n = s->n, NA = n + s->m, w = vlbe__int_gstride(s), c, any = 0;
     vlbe_vec_copy(n, base, x);
     for (c = g; c < NA; c += w) {
-        int j = inv[c];
+        int j = vlbe__int_unk(inv, c);
         if (j >= n) continue;
         x[j] = base[j] + vlbe__int_fd_step(base[j]);
         d[j] = x[j] - base[j];
@@ -701,205 +747,49 @@ VLBE_INLINE void vlbe__int_constr_vals(int n, int m, const vlbe_real *Cq, const 
             f[(size_t)nu * n + i] = vlbe_vec_dot(n, Cq + (size_t)i * n, v) + Ct[i];
 }
 
-/* Adds the q-derivatives of constraint terms (m > 0):
-     cl d(C_q^T lam)/dq   to the n x n block Jl (leading dim. ldl)  if lam != NULL,
-     cu d(C_q^T mu)/dq    to the n x n block Ju (leading dim. ldu)  if mu != NULL,
-     d(C_q v + C_t)/dq    to the m x n block Jg (leading dim. ldg)  if Jg != NULL,
-   the first two from constr_hess when given, the rest by forward differences
-   in q with one constr_jac call per coordinate shared by all terms (plus one
-   at q).  VLBE_DAE_NO_CHESS drops the first two.
-   w: n*n + m*n + m + n + 2 nf reals, nf = n [lam] + n [mu] + m [Jg]. */
-VLBE_INLINE vlbe_status vlbe__int_constr_q(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
-                                           const vlbe_real *q, const vlbe_real *lam,
-                                           vlbe_real cl, vlbe_real *Jl, int ldl,
-                                           const vlbe_real *mu, vlbe_real cu, vlbe_real *Ju,
-                                           int ldu, const vlbe_real *v, vlbe_real *Jg, int ldg,
-                                           vlbe_real *w)
+/* The Jacobian terms of the iteration matrices, for both storages.
+   vlbe__int_bconstr_q adds the q-derivatives of constraint terms (m > 0):
+     cl d(C_q^T lam)/dq   to block Jl   if lam != NULL,
+     cu d(C_q^T mu)/dq    to block Ju   if mu != NULL,
+     d(C_q v + C_t)/dq    to block Jg   if Jg != NULL (rows n..n+m-1),
+   the first two from constr_hess when given, the rest by forward
+   differences in q with one constr_jac call per column group shared by all
+   terms (plus one at q); VLBE_DAE_NO_CHESS drops the first two.
+   vlbe__int_btangent adds cq d(M a + C_q^T lambda - Q)/dq to block Jq and
+   cv d(M a - Q)/dv to block Jv (may be Jq's block; NULL: left out), from
+   force_jac and mass_jac or forward differences for those missing; lam ==
+   NULL leaves out the C_q^T lambda term; Qbase = Q(t,q,v) and Mbase =
+   M(t,q,v) must be given.  Forward differences go by column groups
+   (vlbe__int_group): kl + ku + 1 evaluations for a band, one per
+   coordinate for a dense matrix.  inv: from vlbe__int_inv (dense: NULL).
+   w: vlbe__int_btangent_len(s) reals (scratch). */
+VLBE_INLINE size_t vlbe__int_tlen(size_t ml0, size_t ml1, size_t n, size_t m)
 {
-    int n = s->n, m = s->m, i, j, k, nu = 0, nf;
-    size_t nn = (size_t)n * (size_t)n;
-    vlbe_real *H = w, *Cq = H + nn, *Ct = Cq + (size_t)m * n, *x = Ct + m, *f0 = x + n, *f;
-    const vlbe_real *u[2];
-    vlbe_real cu_[2], *Ju_[2];
-    int ldu_[2];
-    vlbe_status rc;
-    if ((s->flags & VLBE_DAE_NO_CHESS) || cl == VLBE_R(0.0)) lam = NULL;
-    if ((s->flags & VLBE_DAE_NO_CHESS) || cu == VLBE_R(0.0)) mu = NULL;
-    for (k = 0; k < 2; ++k) {
-        const vlbe_real *uk = k == 0 ? lam : mu;
-        if (!uk) continue;
-        u[nu] = uk;
-        cu_[nu] = k == 0 ? cl : cu;
-        Ju_[nu] = k == 0 ? Jl : Ju;
-        ldu_[nu] = k == 0 ? ldl : ldu;
-        ++nu;
-    }
-    if (s->constr_hess && nu > 0) {
-        for (k = 0; k < nu; ++k) {
-            ++c->constr_calls;
-            if ((rc = vlbe__int_cb(c, s->constr_hess(s->user, t, q, u[k], H))) != VLBE_OK) return rc;
-            for (i = 0; i < n; ++i)
-                for (j = 0; j < n; ++j) Ju_[k][(size_t)i * ldu_[k] + j] += cu_[k] * H[(size_t)i * n + j];
-        }
-        nu = 0;
-    }
-    if (nu == 0 && !Jg) return VLBE_OK;
-    if (!Jg) v = NULL;
-    nf = nu * n + (v ? m : 0);
-    f = f0 + nf;
-    if ((rc = vlbe__int_cjac(s, c, t, q, Cq, v ? Ct : NULL)) != VLBE_OK) return rc;
-    vlbe__int_constr_vals(n, m, Cq, Ct, nu, u, v, f0);
-    vlbe_vec_copy(n, q, x);
-    for (j = 0; j < n; ++j) {
-        vlbe_real d = vlbe__int_fd_step(q[j]);
-        x[j] = q[j] + d;
-        d = x[j] - q[j]; /* exactly representable step */
-        rc = vlbe__int_cjac(s, c, t, x, Cq, v ? Ct : NULL);
-        x[j] = q[j];
-        if (rc != VLBE_OK) return rc;
-        vlbe__int_constr_vals(n, m, Cq, Ct, nu, u, v, f);
-        for (k = 0; k < nu; ++k)
-            for (i = 0; i < n; ++i)
-                Ju_[k][(size_t)i * ldu_[k] + j] +=
-                    cu_[k] * (f[(size_t)k * n + i] - f0[(size_t)k * n + i]) / d;
-        if (v)
-            for (i = 0; i < m; ++i)
-                Jg[(size_t)i * ldg + j] += (f[(size_t)nu * n + i] - f0[(size_t)nu * n + i]) / d;
-    }
-    return VLBE_OK;
-}
-
-/* Scratch of vlbe__int_tangent2 / vlbe__int_tangent: 3 n*n + m*n + 3n + m. */
-VLBE_INLINE size_t vlbe__int_tangent_len(int n, int m)
-{
-    return 3 * (size_t)n * (size_t)n + (size_t)m * (size_t)n + 3 * (size_t)n + (size_t)m;
-}
-
-/* Adds  cq * d(M a + C_q^T lambda - Q)/dq  to the n x n block Jq (leading
-   dimension ldq) and  cv * d(M a - Q)/dv  to the n x n block Jv (ldv; may be
-   the same block as Jq), using the optional Jacobian callbacks and forward
-   differences for those missing.  lam == NULL leaves out the C_q^T lambda
-   term.  Qbase = Q(t,q,v) and Mbase = M(t,q,v) must be given (they are at
-   hand in every caller).  w: vlbe__int_tangent_len(n, m) reals (scratch). */
-VLBE_INLINE vlbe_status vlbe__int_tangent2(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
-                                           const vlbe_real *q, const vlbe_real *v,
-                                           const vlbe_real *a, const vlbe_real *lam,
-                                           const vlbe_real *Qbase, const vlbe_real *Mbase,
-                                           vlbe_real cq, vlbe_real *Jq, int ldq, vlbe_real cv,
-                                           vlbe_real *Jv, int ldv, vlbe_real *w)
-{
-    int n = s->n, m = s->m, i, j, pass;
-    size_t nn = (size_t)n * (size_t)n;
-    vlbe_real *K = w, *D = K + nn, *T = D + nn, *x = T + nn, *f = x + n, *f0 = f + n;
-    vlbe_status rc;
-    ++c->jac_evals;
-    /* -K and -D */
-    if (s->force_jac) {
-        ++c->force_calls;
-        if ((rc = vlbe__int_cb(c, s->force_jac(s->user, t, q, v, K, D))) != VLBE_OK) return rc;
-        for (i = 0; i < n; ++i)
-            for (j = 0; j < n; ++j) {
-                Jq[(size_t)i * ldq + j] -= cq * K[(size_t)i * n + j];
-                Jv[(size_t)i * ldv + j] -= cv * D[(size_t)i * n + j];
-            }
-    } else {
-        for (pass = 0; pass < 2; ++pass) {
-            vlbe_real cc = pass == 0 ? cq : cv;
-            const vlbe_real *base = pass == 0 ? q : v;
-            vlbe_real *J = pass == 0 ? Jq : Jv;
-            int ld = pass == 0 ? ldq : ldv;
-            if (cc == VLBE_R(0.0)) continue;
-            vlbe_vec_copy(n, base, x);
-            for (j = 0; j < n; ++j) {
-                vlbe_real d = vlbe__int_fd_step(base[j]);
-                x[j] = base[j] + d;
-                d = x[j] - base[j]; /* exactly representable step */
-                rc = pass == 0 ? vlbe__int_force(s, c, t, x, v, f) : vlbe__int_force(s, c, t, q, x, f);
-                x[j] = base[j];
-                if (rc != VLBE_OK) return rc;
-                for (i = 0; i < n; ++i) J[(size_t)i * ld + j] -= cc * (f[i] - Qbase[i]) / d;
-            }
-        }
-    }
-    /* d(M a)/dq, d(M a)/dv */
-    if (!(s->flags & VLBE_DAE_MASS_CONST)) {
-        if (s->mass_jac) {
-            ++c->mass_calls;
-            rc = vlbe__int_cb(c, s->mass_jac(s->user, t, q, v, a, K,
-                                             (s->flags & VLBE_DAE_MASS_V) ? D : NULL));
-            if (rc != VLBE_OK) return rc;
-            for (i = 0; i < n; ++i)
-                for (j = 0; j < n; ++j) {
-                    Jq[(size_t)i * ldq + j] += cq * K[(size_t)i * n + j];
-                    if (s->flags & VLBE_DAE_MASS_V) Jv[(size_t)i * ldv + j] += cv * D[(size_t)i * n + j];
-                }
-        } else {
-            vlbe_mat_vec(n, n, Mbase, a, f0);
-            for (pass = 0; pass < 2; ++pass) {
-                vlbe_real cc = pass == 0 ? cq : cv;
-                const vlbe_real *base = pass == 0 ? q : v;
-                vlbe_real *J = pass == 0 ? Jq : Jv;
-                int ld = pass == 0 ? ldq : ldv;
-                if (pass == 1 && !(s->flags & VLBE_DAE_MASS_V)) break;
-                if (cc == VLBE_R(0.0)) continue;
-                vlbe_vec_copy(n, base, x);
-                for (j = 0; j < n; ++j) {
-                    vlbe_real d = vlbe__int_fd_step(base[j]);
-                    x[j] = base[j] + d;
-                    d = x[j] - base[j];
-                    rc = pass == 0 ? vlbe__int_mass(s, c, t, x, v, T) : vlbe__int_mass(s, c, t, q, x, T);
-                    x[j] = base[j];
-                    if (rc != VLBE_OK) return rc;
-                    vlbe_mat_vec(n, n, T, a, f);
-                    for (i = 0; i < n; ++i) J[(size_t)i * ld + j] += cc * (f[i] - f0[i]) / d;
-                }
-            }
-        }
-    }
-    /* d(C_q^T lambda)/dq (scratch: w, the K D T area is free again) */
-    if (m > 0 && lam && cq != VLBE_R(0.0))
-        return vlbe__int_constr_q(s, c, t, q, lam, cq, Jq, ldq, NULL, VLBE_R(0.0), NULL, 0, NULL,
-                                  NULL, 0, w);
-    return VLBE_OK;
-}
-
-/* Adds  cq * d(M a + C_q^T lambda - Q)/dq + cv * d(M a - Q)/dv  to the n x n
-   block J (leading dimension ld); see vlbe__int_tangent2.
-   w: vlbe__int_tangent_len(n, m) reals (scratch). */
-VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
-                                          const vlbe_real *q, const vlbe_real *v,
-                                          const vlbe_real *a, const vlbe_real *lam,
-                                          const vlbe_real *Qbase, const vlbe_real *Mbase,
-                                          vlbe_real cq, vlbe_real cv, vlbe_real *J, int ld,
-                                          vlbe_real *w)
-{
-    return vlbe__int_tangent2(s, c, t, q, v, a, lam, Qbase, Mbase, cq, J, ld, cv, J, ld, w);
-}
-
-/* Banded counterparts of vlbe__int_constr_q and vlbe__int_tangent2 (same
-   terms, same callbacks; blocks instead of leading dimensions, a NULL block
-   is left out; missing Jacobians by forward differences over column groups,
-   vlbe__int_group: kl + ku + 1 evaluations instead of n).  inv: from
-   vlbe__int_inv.  w: vlbe__int_btangent_len(s) reals. */
-VLBE_INLINE size_t vlbe__int_bcq_len(const vlbe_dae *s)
-{
-    size_t n = (size_t)s->n, m = (size_t)s->m;
-    return vlbe__int_mlen(s, 0) + vlbe__int_mlen(s, 1) + m + 2 * n + 2 * (2 * n + m) +
-           2 * (n + m);
+    size_t a = 3 * ml0 + 6 * n + 2 * (m + n),                        /* K, D, T, vectors */
+        b = ml0 + ml1 + m + 2 * n + 2 * (2 * n + m) + 2 * (n + m); /* H, Cq, Ct, vectors */
+    return a > b ? a : b;
 }
 VLBE_INLINE size_t vlbe__int_btangent_len(const vlbe_dae *s)
 {
-    size_t n = (size_t)s->n, a = 3 * vlbe__int_mlen(s, 0) + 6 * n + 2 * ((size_t)s->m + n),
-           b = vlbe__int_bcq_len(s);
-    return a > b ? a : b;
+    return vlbe__int_tlen(vlbe__int_mlen(s, 0), vlbe__int_mlen(s, 1), (size_t)s->n,
+                          (size_t)s->m);
 }
-/* f = [C_q^T u_0; ..; C_q^T u_{nu-1}; C_q v + C_t] (the last if v) of a
-   banded C_q; pw: 2 NA scratch */
+/* the same for a dense problem of n coordinates and m constraints */
+VLBE_INLINE size_t vlbe__int_tangent_len(int n, int m)
+{
+    return vlbe__int_tlen((size_t)n * (size_t)n, (size_t)m * (size_t)n, (size_t)n, (size_t)m);
+}
+/* f = [C_q^T u_0; ..; C_q^T u_{nu-1}; C_q v + C_t] (the last if v); pw:
+   2 NA scratch of a band */
 VLBE_INLINE void vlbe__int_bconstr_vals(const vlbe_dae *s, const vlbe_real *Cq,
                                         const vlbe_real *Ct, int nu, const vlbe_real *const *u,
                                         const vlbe_real *v, vlbe_real *f, vlbe_real *pw)
 {
     int n = s->n, m = s->m, k, i;
+    if (!vlbe__int_banded(s)) {
+        vlbe__int_constr_vals(n, m, Cq, Ct, nu, u, v, f);
+        return;
+    }
     for (k = 0; k < nu; ++k) vlbe__int_bprod(s, 2, Cq, u[k], f + (size_t)k * n, pw);
     if (v) {
         vlbe__int_bprod(s, 1, Cq, v, f + (size_t)nu * n, pw);
@@ -913,7 +803,7 @@ VLBE_INLINE vlbe_status vlbe__int_bconstr_q(const vlbe_dae *s, vlbe_dae_stats *c
                                             const vlbe__int_blk *Ju, const vlbe_real *v,
                                             const vlbe__int_blk *Jg, const int *inv, vlbe_real *w)
 {
-    int n = s->n, m = s->m, NA = n + m, wd = vlbe__int_bld(s), k, g, col, nu = 0;
+    int n = s->n, m = s->m, NA = n + m, wd = vlbe__int_gstride(s), k, g, col, nu = 0;
     vlbe_real *H = w, *Cq = H + vlbe__int_mlen(s, 0), *Ct = Cq + vlbe__int_mlen(s, 1),
               *x = Ct + m, *d = x + n, *f0 = d + n, *f = f0 + 2 * n + m, *pw = f + 2 * n + m;
     const vlbe_real *u[2];
@@ -947,11 +837,11 @@ VLBE_INLINE vlbe_status vlbe__int_bconstr_q(const vlbe_dae *s, vlbe_dae_stats *c
         if ((rc = vlbe__int_cjac(s, c, t, x, Cq, v ? Ct : NULL)) != VLBE_OK) return rc;
         vlbe__int_bconstr_vals(s, Cq, Ct, nu, u, v, f, pw);
         for (col = g; col < NA; col += wd) {
-            int j = inv[col], r, r0, r1;
+            int j = vlbe__int_unk(inv, col), r, r0, r1;
             if (j >= n) continue;
             vlbe__int_rows(s, col, &r0, &r1);
             for (r = r0; r <= r1; ++r) {
-                int i = inv[r];
+                int i = vlbe__int_unk(inv, r);
                 if (i < n) {
                     for (k = 0; k < nu; ++k)
                         *vlbe__int_blk_at(Ju_[k], r, col) +=
@@ -972,7 +862,7 @@ VLBE_INLINE vlbe_status vlbe__int_btangent(const vlbe_dae *s, vlbe_dae_stats *c,
                                            vlbe_real cq, const vlbe__int_blk *Jq, vlbe_real cv,
                                            const vlbe__int_blk *Jv, const int *inv, vlbe_real *w)
 {
-    int n = s->n, NA = n + s->m, wd = vlbe__int_bld(s), g, col, pass;
+    int n = s->n, NA = n + s->m, wd = vlbe__int_gstride(s), g, col, pass;
     size_t ml = vlbe__int_mlen(s, 0);
     vlbe_real *K = w, *D = K + ml, *T = D + ml, *x = T + ml, *f = x + n, *f0 = f + n, *d = f0 + n,
               *pw = d + n;
@@ -996,13 +886,13 @@ VLBE_INLINE vlbe_status vlbe__int_btangent(const vlbe_dae *s, vlbe_dae_stats *c,
                 rc = pass == 0 ? vlbe__int_force(s, c, t, x, v, f) : vlbe__int_force(s, c, t, q, x, f);
                 if (rc != VLBE_OK) return rc;
                 for (col = g; col < NA; col += wd) {
-                    int j = inv[col], r, r0, r1;
+                    int j = vlbe__int_unk(inv, col), r, r0, r1;
                     if (j >= n) continue;
                     vlbe__int_rows(s, col, &r0, &r1);
-                    for (r = r0; r <= r1; ++r)
-                        if (inv[r] < n)
-                            *vlbe__int_blk_at(J, r, col) -=
-                                cc * (f[inv[r]] - Qbase[inv[r]]) / d[j];
+                    for (r = r0; r <= r1; ++r) {
+                        const int i = vlbe__int_unk(inv, r);
+                        if (i < n) *vlbe__int_blk_at(J, r, col) -= cc * (f[i] - Qbase[i]) / d[j];
+                    }
                 }
             }
         }
@@ -1030,13 +920,13 @@ VLBE_INLINE vlbe_status vlbe__int_btangent(const vlbe_dae *s, vlbe_dae_stats *c,
                     if (rc != VLBE_OK) return rc;
                     vlbe__int_bprod(s, 0, T, a, f, pw);
                     for (col = g; col < NA; col += wd) {
-                        int j = inv[col], r, r0, r1;
+                        int j = vlbe__int_unk(inv, col), r, r0, r1;
                         if (j >= n) continue;
                         vlbe__int_rows(s, col, &r0, &r1);
-                        for (r = r0; r <= r1; ++r)
-                            if (inv[r] < n)
-                                *vlbe__int_blk_at(J, r, col) +=
-                                    cc * (f[inv[r]] - f0[inv[r]]) / d[j];
+                        for (r = r0; r <= r1; ++r) {
+                            const int i = vlbe__int_unk(inv, r);
+                            if (i < n) *vlbe__int_blk_at(J, r, col) += cc * (f[i] - f0[i]) / d[j];
+                        }
                     }
                 }
             }
@@ -1047,6 +937,42 @@ VLBE_INLINE vlbe_status vlbe__int_btangent(const vlbe_dae *s, vlbe_dae_stats *c,
         return vlbe__int_bconstr_q(s, c, t, q, lam, cq, Jq, NULL, VLBE_R(0.0), NULL, NULL, NULL,
                                    inv, w);
     return VLBE_OK;
+}
+
+/* Dense callers: blocks given by their first entry and leading dimension
+   (Jg: the block of the m constraint rows). */
+VLBE_INLINE vlbe_status vlbe__int_constr_q(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *lam,
+                                           vlbe_real cl, vlbe_real *Jl, int ldl,
+                                           const vlbe_real *mu, vlbe_real cu, vlbe_real *Ju,
+                                           int ldu, const vlbe_real *v, vlbe_real *Jg, int ldg,
+                                           vlbe_real *w)
+{
+    vlbe__int_blk bl = vlbe__int_dblk(Jl, ldl, 0), bu = vlbe__int_dblk(Ju, ldu, 0),
+                  bg = vlbe__int_dblk(Jg, ldg, -s->n);
+    return vlbe__int_bconstr_q(s, c, t, q, lam, cl, Jl ? &bl : NULL, mu, cu, Ju ? &bu : NULL, v,
+                               Jg ? &bg : NULL, NULL, w);
+}
+VLBE_INLINE vlbe_status vlbe__int_tangent2(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v,
+                                           const vlbe_real *a, const vlbe_real *lam,
+                                           const vlbe_real *Qbase, const vlbe_real *Mbase,
+                                           vlbe_real cq, vlbe_real *Jq, int ldq, vlbe_real cv,
+                                           vlbe_real *Jv, int ldv, vlbe_real *w)
+{
+    vlbe__int_blk bq = vlbe__int_dblk(Jq, ldq, 0), bv = vlbe__int_dblk(Jv, ldv, 0);
+    return vlbe__int_btangent(s, c, t, q, v, a, lam, Qbase, Mbase, cq, &bq, cv, Jv ? &bv : NULL,
+                              NULL, w);
+}
+/* cq d(M a + C_q^T lambda - Q)/dq + cv d(M a - Q)/dv into one dense block */
+VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+                                          const vlbe_real *q, const vlbe_real *v,
+                                          const vlbe_real *a, const vlbe_real *lam,
+                                          const vlbe_real *Qbase, const vlbe_real *Mbase,
+                                          vlbe_real cq, vlbe_real cv, vlbe_real *J, int ld,
+                                          vlbe_real *w)
+{
+    return vlbe__int_tangent2(s, c, t, q, v, a, lam, Qbase, Mbase, cq, J, ld, cv, J, ld, w);
 }
 
 /* -- problem checks and consistent start -------------------------------- */
@@ -1219,8 +1145,8 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
         vlbe_vec_zero((int)vlbe__int_alen(sys, 1), A);
         vlbe__int_badd(sys, &B, VLBE_R(1.0), M, 0);
         if (m > 0) {
-            vlbe__int_badd(sys, &B, VLBE_R(1.0), Cq, 0);
             vlbe__int_badd(sys, &B, VLBE_R(1.0), Cq, 1);
+            vlbe__int_badd(sys, &B, VLBE_R(1.0), Cq, 2);
         }
     } else {
         for (i = 0; i < N; ++i)
@@ -1484,8 +1410,8 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             B.kl = sys->kl;
             B.f = 1;
             B.ro = B.co = 0;
-            vlbe__int_badd(sys, &B, sc, Cq, 0);
             vlbe__int_badd(sys, &B, sc, Cq, 1);
+            vlbe__int_badd(sys, &B, sc, Cq, 2);
         } else if (!band) {
             for (i = 0; i < m; ++i)
                 for (j = 0; j < n; ++j) {
@@ -1865,8 +1791,8 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
             vlbe_vec_zero((int)vlbe__int_alen(s, 1), LU);
             vlbe__int_badd(s, &B, VLBE_R(1.0), M, 0);
             if (m > 0) {
-                vlbe__int_badd(s, &B, VLBE_R(1.0), Cq, 0);
                 vlbe__int_badd(s, &B, VLBE_R(1.0), Cq, 1);
+                vlbe__int_badd(s, &B, VLBE_R(1.0), Cq, 2);
             }
             rc = vlbe__int_btangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, &B, gp, &B,
                                     st->piv_ + N, scr);
@@ -2125,13 +2051,7 @@ VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
 
 /* Scratch shared by the Jacobian helpers (and by vlbe_dae_consistent_acc at
    init, which gets the whole area from the iteration matrix on). */
-VLBE_INLINE size_t vlbe__bdf_scr_len(int n, int m)
-{
-    size_t N = (size_t)n, Mm = (size_t)m;
-    size_t a = vlbe__int_tangent_len(n, m);          /* vlbe__int_tangent2 */
-    size_t b = N * N + Mm * N + 5 * N + 3 * Mm;      /* vlbe__int_constr_q (lam, mu, g) */
-    return a > b ? a : b;
-}
+VLBE_INLINE size_t vlbe__bdf_scr_len(int n, int m) { return vlbe__int_tangent_len(n, m); }
 
 /* Size of the backup area of the BDF workspace (see below). */
 VLBE_INLINE size_t vlbe__bdf_backup_len(int n, int m)
@@ -2433,10 +2353,10 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
         vlbe__int_bdiag(s, &Bqv, -ic);
         vlbe__int_badd(s, &Bvv, VLBE_R(1.0), M, 0);
         if (m > 0) {
-            vlbe__int_badd(s, &Bqv, VLBE_R(1.0), Cq, 1); /* (q, mu)     */
-            vlbe__int_badd(s, &Bvq, VLBE_R(1.0), Cq, 1); /* (v, lambda) */
-            vlbe__int_badd(s, &Bqv, VLBE_R(1.0), Cq, 0); /* (lambda, v) */
-            vlbe__int_badd(s, &Bvq, VLBE_R(1.0), Cq, 0); /* (mu, q)     */
+            vlbe__int_badd(s, &Bqv, VLBE_R(1.0), Cq, 2); /* (q, mu)     */
+            vlbe__int_badd(s, &Bvq, VLBE_R(1.0), Cq, 2); /* (v, lambda) */
+            vlbe__int_badd(s, &Bqv, VLBE_R(1.0), Cq, 1); /* (lambda, v) */
+            vlbe__int_badd(s, &Bvq, VLBE_R(1.0), Cq, 1); /* (mu, q)     */
         }
         rc = vlbe__int_btangent(s, &st->stats, t, y, y + n, yp + n, NULL, Q, M, ic, &Bvq, ic,
                                 &Bvv, inv, scr);
