@@ -637,6 +637,25 @@ VLBE_INLINE void vlbe__int_badd(const vlbe_dae *s, const vlbe__int_blk *b, vlbe_
         }
     }
 }
+/* The whole band A of an iteration matrix of f blocks, as a block. */
+VLBE_INLINE vlbe__int_blk vlbe__int_band_blk(const vlbe_dae *s, vlbe_real *A, int f)
+{
+    vlbe__int_blk b;
+    b.A = A;
+    b.ld = vlbe__int_ald(s, f);
+    b.kl = vlbe__int_fkl(s, f);
+    b.f = f;
+    b.ro = b.co = 0;
+    return b;
+}
+/* Adds c C_q and c C_q^T to the (q, lambda) band B (m > 0). */
+VLBE_INLINE void vlbe__int_bsaddle(const vlbe_dae *s, const vlbe__int_blk *B, vlbe_real c,
+                                   const vlbe_real *Cq)
+{
+    if (s->m == 0) return;
+    vlbe__int_badd(s, B, c, Cq, 1);
+    vlbe__int_badd(s, B, c, Cq, 2);
+}
 /* Adds c to the diagonal of the block (u, u), u < n (BDF's identity blocks). */
 VLBE_INLINE void vlbe__int_bdiag(const vlbe_dae *s, const vlbe__int_blk *b, vlbe_real c)
 {
@@ -1136,18 +1155,10 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
     if ((rc = vlbe__int_cjac(sys, stats, t, q, Cq, NULL)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_gamma(sys, stats, t, q, v, b + n, sc)) != VLBE_OK) return rc;
     if (band) {
-        vlbe__int_blk B;
-        B.A = A;
-        B.ld = vlbe__int_ald(sys, 1);
-        B.kl = sys->kl;
-        B.f = 1;
-        B.ro = B.co = 0;
+        const vlbe__int_blk B = vlbe__int_band_blk(sys, A, 1);
         vlbe_vec_zero((int)vlbe__int_alen(sys, 1), A);
         vlbe__int_badd(sys, &B, VLBE_R(1.0), M, 0);
-        if (m > 0) {
-            vlbe__int_badd(sys, &B, VLBE_R(1.0), Cq, 1);
-            vlbe__int_badd(sys, &B, VLBE_R(1.0), Cq, 2);
-        }
+        vlbe__int_bsaddle(sys, &B, VLBE_R(1.0), Cq);
     } else {
         for (i = 0; i < N; ++i)
             for (j = 0; j < N; ++j) {
@@ -1222,12 +1233,14 @@ VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
 
 /* Workspace layout (reals), N = n + m: x = (q, lambda), trial x, Psi at x,
    Psi at the trial, Newton step (5 N); zero velocity, Q at x, Q at the trial
-   (3 n); C_q at x and at the trial (2 m n); iteration matrix (N*N); sink
-   for the unused dQ/dv block (n*n); tangent scratch (3 n*n + m n + 3 n + m). */
+   (3 n); C_q at x and at the trial (2 m n); iteration matrix (N*N);
+   Jacobian scratch (vlbe__int_tangent_len).  Banded: C_q and the iteration
+   matrix as bands, then the step and product vectors in the band's order
+   (3 N). */
 VLBE_API size_t vlbe_static_work_len(int n, int m)
 {
-    size_t N = (size_t)n + (size_t)m, nn = (size_t)n * (size_t)n, mn = (size_t)m * (size_t)n;
-    return 5 * N + 3 * (size_t)n + 2 * mn + N * N + nn + vlbe__int_tangent_len(n, m);
+    size_t N = (size_t)n + (size_t)m, mn = (size_t)m * (size_t)n;
+    return 5 * N + 3 * (size_t)n + 2 * mn + N * N + vlbe__int_tangent_len(n, m);
 }
 VLBE_API size_t vlbe_static_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
 VLBE_API size_t vlbe_static_work_len_sys(const vlbe_dae *sys)
@@ -1300,9 +1313,9 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
                                      vlbe_dae_stats *stats, vlbe_real *work, size_t work_len,
                                      int *iwork, size_t iwork_len)
 {
-    int n, m, N, i, j, it, k, inc_on, inc_ok, band;
+    int n, m, N, i, it, k, inc_on, inc_ok, band;
     size_t NN, e;
-    vlbe_real *x, *xt, *F, *Ft, *d, *z, *Q, *Qt, *Cq, *Cqt, *A, *sink, *scr, *tmp, *pw = NULL,
+    vlbe_real *x, *xt, *F, *Ft, *d, *z, *Q, *Qt, *Cq, *Cqt, *A, *scr, *tmp, *pw = NULL,
               *X = NULL;
     int *inv = NULL;
     vlbe_real fnorm, sc, kmax, cmax, merit;
@@ -1346,8 +1359,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     Cq = Qt + n;
     Cqt = Cq + vlbe__int_mlen(sys, 1);
     A = Cqt + vlbe__int_mlen(sys, 1);
-    sink = A + NN;
-    scr = sink + (band ? 0 : (size_t)n * n); /* banded: no sink, D is left out */
+    scr = A + NN;
     if (band) {
         X = scr + vlbe__int_btangent_len(sys); /* the step in A's order */
         pw = X + N;
@@ -1356,7 +1368,6 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     sl = *sys;
     sl.flags |= VLBE_DAE_MASS_CONST;
     vlbe_vec_zero(n, z);
-    if (!band) vlbe_vec_zero(n * n, sink);
     vlbe_vec_copy(n, q, x);
     if (m > 0) vlbe_vec_copy(m, lambda, x + n);
     /* the start is the caller's point: no backtracking from it */
@@ -1376,49 +1387,17 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
         }
         /* iteration matrix [-K + H, s C_q^T; s C_q, 0] */
         for (e = 0; e < NN; ++e) A[e] = VLBE_R(0.0);
-        if (band) {
-            vlbe__int_blk B;
-            B.A = A;
-            B.ld = vlbe__int_ald(sys, 1);
-            B.kl = sys->kl;
-            B.f = 1;
-            B.ro = B.co = 0;
+        {
+            const vlbe__int_blk B = band ? vlbe__int_band_blk(sys, A, 1) : vlbe__int_dblk(A, N, 0);
             rc = vlbe__int_btangent(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), &B,
                                     VLBE_R(0.0), NULL, inv, scr);
             if (rc != VLBE_OK) return rc;
             kmax = vlbe_vec_norm_inf((int)NN, A); /* only the q block is filled yet */
             cmax = vlbe_vec_norm_inf((int)vlbe__int_mlen(sys, 1), Cq);
-        } else {
-            rc = vlbe__int_tangent2(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), A, N,
-                                    VLBE_R(0.0), sink, n, scr);
-            if (rc != VLBE_OK) return rc;
-            kmax = cmax = VLBE_R(0.0);
-            for (i = 0; i < n; ++i)
-                for (j = 0; j < n; ++j) {
-                    vlbe_real a = vlbe_fabs(A[(size_t)i * N + j]);
-                    if (a > kmax) kmax = a;
-                }
-            cmax = vlbe_vec_norm_inf(m * n, Cq);
-        }
-        sc = (kmax > VLBE_R(0.0) && cmax > VLBE_R(0.0) && isfinite(kmax) && isfinite(cmax))
-                 ? kmax / cmax
-                 : VLBE_R(1.0);
-        if (band && m > 0) {
-            vlbe__int_blk B;
-            B.A = A;
-            B.ld = vlbe__int_ald(sys, 1);
-            B.kl = sys->kl;
-            B.f = 1;
-            B.ro = B.co = 0;
-            vlbe__int_badd(sys, &B, sc, Cq, 1);
-            vlbe__int_badd(sys, &B, sc, Cq, 2);
-        } else if (!band) {
-            for (i = 0; i < m; ++i)
-                for (j = 0; j < n; ++j) {
-                    vlbe_real c = sc * Cq[(size_t)i * n + j];
-                    A[(size_t)(n + i) * N + j] = c;
-                    A[(size_t)j * N + n + i] = c;
-                }
+            sc = (kmax > VLBE_R(0.0) && cmax > VLBE_R(0.0) && isfinite(kmax) && isfinite(cmax))
+                     ? kmax / cmax
+                     : VLBE_R(1.0);
+            vlbe__int_bsaddle(sys, &B, sc, Cq);
         }
         /* the line search's merit function: ||(Psi_q, s Psi_c)||, the
            constraint rows in the units of force like the iteration matrix
@@ -1782,18 +1761,10 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
         }
         /* iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v, C_q^T; C_q, 0] */
         if ((!st->have_lu_ || !p->modified) && band) {
-            vlbe__int_blk B;
-            B.A = LU;
-            B.ld = vlbe__int_ald(s, 1);
-            B.kl = s->kl;
-            B.f = 1;
-            B.ro = B.co = 0;
+            const vlbe__int_blk B = vlbe__int_band_blk(s, LU, 1);
             vlbe_vec_zero((int)vlbe__int_alen(s, 1), LU);
             vlbe__int_badd(s, &B, VLBE_R(1.0), M, 0);
-            if (m > 0) {
-                vlbe__int_badd(s, &B, VLBE_R(1.0), Cq, 1);
-                vlbe__int_badd(s, &B, VLBE_R(1.0), Cq, 2);
-            }
+            vlbe__int_bsaddle(s, &B, VLBE_R(1.0), Cq);
             rc = vlbe__int_btangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, &B, gp, &B,
                                     st->piv_ + N, scr);
             if (rc != VLBE_OK) return rc;
@@ -2340,11 +2311,7 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
         NN = vlbe__int_alen(s, 2);
         ld = vlbe__int_ald(s, 2);
         vlbe_vec_zero((int)NN, A);
-        Bqq.A = A;
-        Bqq.ld = ld;
-        Bqq.kl = vlbe__int_fkl(s, 2);
-        Bqq.f = 2;
-        Bqq.ro = Bqq.co = 0;
+        Bqq = vlbe__int_band_blk(s, A, 2);
         Bqv = Bvq = Bvv = Bqq;
         Bqv.co = 1;
         Bvq.ro = 1;
