@@ -46,6 +46,26 @@ static inline vlbe_ale_node node_make(int pmode, double p)
     return nd;
 }
 
+/* The 7 nodes of the mixed planar chains of the assembly suites:
+     0 fixed p = 0.1, 1 free 0.35, 2 free 0.6 sliding with a point mass
+     0.6, 3 prescribed p = 0.8 + 0.3 t - 0.35 t^2, 4 free 1.05, 5 free 1.3,
+     6 fixed p = 1.5 with a point mass 0.25 */
+static inline void nodes_mixed7(vlbe_ale_node *node)
+{
+    node[0] = node_make(VLBE_ALE_PFIXED, 0.1);
+    node[1] = node_make(VLBE_ALE_PFREE, 0.35);
+    node[2] = node_make(VLBE_ALE_PFREE, 0.6);
+    node[2].slide = 1;
+    node[2].mass = VLBE_R(0.6);
+    node[3] = node_make(VLBE_ALE_PPRESCRIBED, 0.8);
+    node[3].pd = VLBE_R(0.3);
+    node[3].pdd = VLBE_R(-0.7);
+    node[4] = node_make(VLBE_ALE_PFREE, 1.05);
+    node[5] = node_make(VLBE_ALE_PFREE, 1.3);
+    node[6] = node_make(VLBE_ALE_PFIXED, 1.5);
+    node[6].mass = VLBE_R(0.25);
+}
+
 /* a chain constraint */
 static inline vlbe_ale_con con_make(int type, int node, int node2, int which, double v0,
                                     double v1, double v2)

@@ -59,4 +59,28 @@ static inline int cholesky_ok(const vlbe_real *M, int ld, const int *idx, int n)
     return 1;
 }
 
+/* Residual of column r of X (n x nrhs) against B for the n x n row-major
+   A: returns ||A x - b||_inf and sets *scale = ||A||_inf ||x||_inf, summed
+   in long double so that its own rounding stays well below the backward-
+   error bounds the LU suites assert (a multiple of n eps *scale). */
+static inline double lu_residual(int n, int nrhs, int r, const vlbe_real *A, const vlbe_real *X,
+                                 const vlbe_real *B, double *scale)
+{
+    long double res = 0.0L, anorm = 0.0L, xnorm = 0.0L;
+    int i, j;
+    for (i = 0; i < n; ++i) {
+        long double s = -(long double)B[i * nrhs + r], row = 0.0L;
+        for (j = 0; j < n; ++j) {
+            s += (long double)A[i * n + j] * (long double)X[j * nrhs + r];
+            row += fabsl((long double)A[i * n + j]);
+        }
+        if (fabsl(s) > res) res = fabsl(s);
+        if (row > anorm) anorm = row;
+        if (fabsl((long double)X[i * nrhs + r]) > xnorm)
+            xnorm = fabsl((long double)X[i * nrhs + r]);
+    }
+    *scale = (double)(anorm * xnorm);
+    return (double)res;
+}
+
 #endif /* VLBE_TEST_FIXTURES_COMMON_H */

@@ -229,18 +229,7 @@ static void assembly_chain(chn *c, unsigned mode, int use_pfun, double *pfun_p0)
 {
     memset(c, 0, sizeof *c);
     c->mat = mat_std();
-    c->node[0] = node_make(VLBE_ALE_PFIXED, 0.1);
-    c->node[1] = node_make(VLBE_ALE_PFREE, 0.35);
-    c->node[2] = node_make(VLBE_ALE_PFREE, 0.6);
-    c->node[2].slide = 1;
-    c->node[2].mass = VLBE_R(0.6);
-    c->node[3] = node_make(VLBE_ALE_PPRESCRIBED, 0.8);
-    c->node[3].pd = VLBE_R(0.3);
-    c->node[3].pdd = VLBE_R(-0.7);
-    c->node[4] = node_make(VLBE_ALE_PFREE, 1.05);
-    c->node[5] = node_make(VLBE_ALE_PFREE, 1.3);
-    c->node[6] = node_make(VLBE_ALE_PFIXED, 1.5);
-    c->node[6].mass = VLBE_R(0.25);
+    nodes_mixed7(c->node);
     chn_init(c, 7, 0u, 0);
     c->ch.mode = mode;
     c->ch.g[0] = VLBE_R(0.3);

@@ -19,6 +19,7 @@
    | ALE Hermite / linear basis | dense LU. */
 #include "test_util.h"
 #include "../vlbe.h"
+#include "fixtures_common.h"
 
 #include <string.h>
 
@@ -757,23 +758,9 @@ static double lu_res_worst; /* worst residual / (n eps ||A|| ||x||) of check_res
 static void check_residual(int n, int nrhs, int r, const vlbe_real *A, const vlbe_real *X,
                            const vlbe_real *B)
 {
-    long double res = 0.0L, anorm = 0.0L, xnorm = 0.0L;
-    int i, j;
-    for (i = 0; i < n; ++i) {
-        long double s = -(long double)B[i * nrhs + r], row = 0.0L;
-        for (j = 0; j < n; ++j) {
-            s += (long double)A[i * n + j] * (long double)X[j * nrhs + r];
-            row += fabsl((long double)A[i * n + j]);
-        }
-        if (fabsl(s) > res) res = fabsl(s);
-        if (row > anorm) anorm = row;
-        if (fabsl((long double)X[i * nrhs + r]) > xnorm)
-            xnorm = fabsl((long double)X[i * nrhs + r]);
-    }
-    ASSERT_CLOSE_CTX((double)res, 0.0, 0, 10.0 * n * EPS * (double)(anorm * xnorm),
-                     "n = %d, right-hand side %d", n, r);
-    if (anorm * xnorm > 0.0L)
-        lu_res_worst = fmax(lu_res_worst, (double)res / (n * EPS * (double)(anorm * xnorm)));
+    double scale, res = lu_residual(n, nrhs, r, A, X, B, &scale);
+    ASSERT_CLOSE_CTX(res, 0.0, 0, 10.0 * n * EPS * scale, "n = %d, right-hand side %d", n, r);
+    if (scale > 0.0) lu_res_worst = fmax(lu_res_worst, res / (n * EPS * scale));
 }
 
 /* Factors A out of place (A must not change), solves for nrhs right-hand
