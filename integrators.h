@@ -983,17 +983,6 @@ VLBE_INLINE vlbe_status vlbe__int_tangent2(const vlbe_dae *s, vlbe_dae_stats *c,
     return vlbe__int_btangent(s, c, t, q, v, a, lam, Qbase, Mbase, cq, &bq, cv, Jv ? &bv : NULL,
                               NULL, w);
 }
-/* cq d(M a + C_q^T lambda - Q)/dq + cv d(M a - Q)/dv into one dense block */
-VLBE_INLINE vlbe_status vlbe__int_tangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
-                                          const vlbe_real *q, const vlbe_real *v,
-                                          const vlbe_real *a, const vlbe_real *lam,
-                                          const vlbe_real *Qbase, const vlbe_real *Mbase,
-                                          vlbe_real cq, vlbe_real cv, vlbe_real *J, int ld,
-                                          vlbe_real *w)
-{
-    return vlbe__int_tangent2(s, c, t, q, v, a, lam, Qbase, Mbase, cq, J, ld, cv, J, ld, w);
-}
-
 /* -- problem checks and consistent start -------------------------------- */
 /* need_mass = 0: a problem for the static solver, which never calls mass */
 VLBE_INLINE vlbe_status vlbe__dae_check(const vlbe_dae *sys, int need_mass)
@@ -1760,37 +1749,30 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
             }
         }
         /* iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v, C_q^T; C_q, 0] */
-        if ((!st->have_lu_ || !p->modified) && band) {
-            const vlbe__int_blk B = vlbe__int_band_blk(s, LU, 1);
-            vlbe_vec_zero((int)vlbe__int_alen(s, 1), LU);
-            vlbe__int_badd(s, &B, VLBE_R(1.0), M, 0);
-            vlbe__int_bsaddle(s, &B, VLBE_R(1.0), Cq);
+        if (!st->have_lu_ || !p->modified) {
+            vlbe__int_blk B;
+            size_t ld = (size_t)N;
+            if (band) {
+                B = vlbe__int_band_blk(s, LU, 1);
+                ld = B.ld;
+                vlbe_vec_zero((int)vlbe__int_alen(s, 1), LU);
+                vlbe__int_badd(s, &B, VLBE_R(1.0), M, 0);
+                vlbe__int_bsaddle(s, &B, VLBE_R(1.0), Cq);
+            } else {
+                B = vlbe__int_dblk(LU, N, 0);
+                for (i = 0; i < n; ++i) {
+                    for (j = 0; j < n; ++j) LU[(size_t)i * N + j] = M[(size_t)i * n + j];
+                    for (j = 0; j < m; ++j) LU[(size_t)i * N + n + j] = Cq[(size_t)j * n + i];
+                }
+                for (i = 0; i < m; ++i) {
+                    for (j = 0; j < n; ++j) LU[(size_t)(n + i) * N + j] = Cq[(size_t)i * n + j];
+                    for (j = 0; j < m; ++j) LU[(size_t)(n + i) * N + n + j] = VLBE_R(0.0);
+                }
+            }
             rc = vlbe__int_btangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, &B, gp, &B,
-                                    st->piv_ + N, scr);
+                                    band ? st->piv_ + N : NULL, scr);
             if (rc != VLBE_OK) return rc;
-            vlbe__int_equil(N, LU, B.ld, (int)B.ld, rs, NULL);
-            ++st->stats.lu_factors;
-            rc = vlbe__int_factor(s, &st->stats, 1, LU, st->piv_);
-            if (rc != VLBE_OK) {
-                st->have_lu_ = 0;
-                return rc;
-            }
-            st->have_lu_ = 1;
-            st->h_lu_ = h;
-            fresh = 1;
-            prev = VLBE_R(0.0);
-        } else if (!st->have_lu_ || !p->modified) {
-            for (i = 0; i < n; ++i) {
-                for (j = 0; j < n; ++j) LU[(size_t)i * N + j] = M[(size_t)i * n + j];
-                for (j = 0; j < m; ++j) LU[(size_t)i * N + n + j] = Cq[(size_t)j * n + i];
-            }
-            for (i = 0; i < m; ++i) {
-                for (j = 0; j < n; ++j) LU[(size_t)(n + i) * N + j] = Cq[(size_t)i * n + j];
-                for (j = 0; j < m; ++j) LU[(size_t)(n + i) * N + n + j] = VLBE_R(0.0);
-            }
-            rc = vlbe__int_tangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, gp, LU, N, scr);
-            if (rc != VLBE_OK) return rc;
-            vlbe__int_equil(N, LU, (size_t)N, N, rs, NULL);
+            vlbe__int_equil(N, LU, ld, band ? (int)ld : N, rs, NULL);
             ++st->stats.lu_factors;
             /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
             rc = vlbe__int_factor(s, &st->stats, 1, LU, st->piv_);
