@@ -34,9 +34,12 @@
    SP_INV_SYS; the invariant routes take the axial force from the tables
    and keep bending on Gauss points, the system route with a second element
    type with EA = 0 for it), HHT-alpha -0.05 at the scene's h = 5 ms, for
-   4..64 elements.  A warm-up run from rest to STEP_T1 = 10 s (sp_run's
-   loop) records the tip at every step (the routes must agree: max
-   difference to the Gauss route reported) and the state at STEP_T0 = 8 s;
+   4..64 elements, each route with dense and with banded matrices
+   (cfg.band: the chain's band in the augmented order, the integrator's
+   band LU; workspace from the _sys queries).  A warm-up run from rest to
+   STEP_T1 = 10 s (sp_run's loop) records the tip at every step (the routes
+   and storages must agree: max difference to the dense Gauss route
+   reported) and the state at STEP_T0 = 8 s;
    the timed window restarts from that state (vlbe_hht_init at 8 s) and
    takes the 400 steps to 10 s.  The window sits in the spin-up, where the
    scene spends its work from t = 4 s on: about 4 Newton iterations and one
@@ -74,7 +77,14 @@
    translation-free slots, its rounding grew with the chain: 1e-5 of max
    |Q| at 64 el., and HHT's Newton failed at 32 and 64 el.)  So Gauss
    points stay the default (vlbe_ale_force, and cfg.inv = SP_GAUSS in
-   ex_spin.h): faster per step at every size here. */
+   ex_spin.h): faster per step at every size here.
+   Banded (one run on a shared machine, us per step, Gauss dense /
+   banded): 4 el. 14.0 / 16.2, 8 el. 30.5 / 27.0, 16 el. 79.0 / 52.9,
+   32 el. 246.0 / 99.5, 64 el. 874.3 / 198.3 (target <= 200 us at 64
+   elements; a busier run: 966 / 230).  Banded wins from 8 elements on,
+   4.4x at 64; the callbacks are then half of the step (Q 51, K and D 58
+   us), the integrator's band LU, solves and products the other half
+   (87 us); the clamp's rows set kl = ku = 10 for the whole chain. */
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
 #include "../examples/ex_spin.h"
@@ -262,6 +272,9 @@ static void measure(cfg *cs, int nc, long *bad)
 #define STEP_MIN_S 0.05  /* s: a round's sample repeats the run up to this   */
 #define STEP_NOBS 2048   /* tip records per run (>= STEP_T1 / h + 1)         */
 #define STEP_NFULL 3     /* the whole-scene check runs: chain_ne[0 .. 2]      */
+#define NSTO 2           /* storage of the matrices: dense, banded (cfg.band) */
+static const char *const sto_name[NSTO] = {"", " banded"};
+static const char *const sto_csv[NSTO] = {"dense", "banded"};
 
 static const int step_route[NROUTE] = {SP_GAUSS, SP_INV_ELEM, SP_INV_SYS};
 
@@ -381,33 +394,36 @@ static vlbe_status tip_obs(void *ctx, double t, const vlbe_real *q, const vlbe_r
     return VLBE_OK;
 }
 
-/* one configuration: chain size index, route; medians over the rounds */
+/* one configuration: chain size index, route, storage; medians over the
+   rounds */
 typedef struct step_cfg {
-    int ch, route, reps;               /* reps: window runs per sample   */
+    int ch, route, band, reps;         /* reps: window runs per sample   */
     double s[STEP_ROUNDS][NTM + 1];    /* seconds per run: callbacks, total */
     double us[NTM + 1], us_min;        /* us per step: medians; min total */
     long calls[NTM];                   /* calls per window run           */
     double ns_call[NTM];               /* ns per call: median; failed runs: the warm-up */
     vlbe_dae_stats st;                 /* the window; failed: the warm-up */
     vlbe_status status;                /* warm-up, then window           */
-    double t_stop, dtip; /* dtip: max |tip - tip of Gauss| / max |tip|, 0..STEP_T1 */
+    double t_stop, dtip; /* dtip: max |tip - tip of dense Gauss| / max |tip|, 0..STEP_T1 */
     vlbe_real x0[2 * SP_NMAX];         /* q, v at STEP_T0                */
 } step_cfg;
 
 static sp_model step_m;
 static ex_method step_meth;
-static tip_rec step_tips[NROUTE];
+static tip_rec step_tips[NSTO][NROUTE];
 
-/* Scene 1 with ANCF at chain_ne[ch] elements and route r (HHT-alpha -0.05,
-   h = 5 ms, as sp_run) into step_m and *par; -1 on failure. */
-static int step_setup(int ch, int r, vlbe_hht_params *par, double *h)
+/* Scene 1 with ANCF at chain_ne[ch] elements, route r, dense or banded
+   matrices (HHT-alpha -0.05, h = 5 ms, as sp_run) into step_m and *par;
+   -1 on failure. */
+static int step_setup(int ch, int r, int band, vlbe_hht_params *par, double *h)
 {
     sp_cfg c;
     sp_cfg_default(&c, STEP_W, SP_ANCF);
     c.ne = chain_ne[ch];
     c.inv = step_route[r];
+    c.band = band;
     if (sp_init(&step_m, &c) != VLBE_OK || ex_hht_pick(par, c.alpha, c.rho_inf) != VLBE_OK ||
-        ex_method_reserve(&step_meth, step_m.n, step_m.sys.m) != 0)
+        ex_method_reserve_sys(&step_meth, &step_m.sys) != 0)
         return -1;
     par->max_halvings = 10;
     *h = c.h;
@@ -421,7 +437,7 @@ static int step_warmup(step_cfg *p, tip_rec *rec, dae_timer *tm, ex_run_out *ro)
     static vlbe_real q0[2 * SP_NMAX];
     vlbe_hht_params par;
     vlbe_dae sys;
-    if (step_setup(p->ch, p->route, &par, &step_meth.h) != 0) return -1;
+    if (step_setup(p->ch, p->route, p->band, &par, &step_meth.h) != 0) return -1;
     step_meth.hht = &par;
     sp_rest(&step_m, q0, q0 + step_m.n);
     rec->m = &step_m;
@@ -447,7 +463,7 @@ static double step_window(const step_cfg *p, int reps, dae_timer *tm, vlbe_dae_s
     long j, nsteps;
     int k;
     *rc = VLBE_EARG;
-    if (step_setup(p->ch, p->route, &par, &h) != 0) return -1.0;
+    if (step_setup(p->ch, p->route, p->band, &par, &h) != 0) return -1.0;
     nsteps = (long)floor((STEP_T1 - STEP_T0) / h + 0.5);
     tm->in = step_m.sys;
     tm_wire(tm, &sys);
@@ -481,8 +497,8 @@ static double tip_diff(const tip_rec *a, const tip_rec *b)
 /* Warm-up from rest to STEP_T1 with the tip record (status, tip
    difference, the state at STEP_T0), one window run (counters, calls, ns
    per call, runs per sample), then STEP_ROUNDS interleaved rounds of the
-   configurations that ran through.  The Gauss route of a size must come
-   before the others.  -1 on setup failure, else the number of failed
+   configurations that ran through.  The dense Gauss route of a size must
+   come before the others.  -1 on setup failure, else the number of failed
    runs. */
 static int step_measure(step_cfg *sc, int nsc)
 {
@@ -494,13 +510,14 @@ static int step_measure(step_cfg *sc, int nsc)
     for (i = 0; i < nsc; ++i) {
         step_cfg *p = &sc[i];
         double t1;
-        if (step_warmup(p, &step_tips[p->route], &tm, &ro) != 0) return -1;
+        tip_rec *rec = &step_tips[p->band][p->route];
+        if (step_warmup(p, rec, &tm, &ro) != 0) return -1;
         for (k = 0; k < NTM; ++k) p->ns_call[k] = tm.n[k] ? 1e9 * tm.s[k] / (double)tm.n[k] : 0.0;
         p->status = ro.status;
         p->st = ro.stats;
-        p->t_stop = step_tips[p->route].t_last;
-        p->dtip = p->route == 0 ? 0.0 : tip_diff(&step_tips[p->route], &step_tips[0]);
-        if (p->status == VLBE_OK && !step_tips[p->route].have_x0) p->status = VLBE_EARG;
+        p->t_stop = rec->t_last;
+        p->dtip = rec == &step_tips[0][0] ? 0.0 : tip_diff(rec, &step_tips[0][0]);
+        if (p->status == VLBE_OK && !rec->have_x0) p->status = VLBE_EARG;
         if (p->status != VLBE_OK) {
             ++fail;
             continue;
@@ -551,41 +568,47 @@ static void step_ratio(const step_cfg *a, const step_cfg *b)
    system route's (reported), -1 if a setup failed. */
 static int step_bench(const char *tag)
 {
-    static step_cfg sc[NCH * NROUTE];
+    /* configuration (c, b, r) at SC(c, b, r): size, storage, route */
+#define SC(c, b, r) (((c) * NSTO + (b)) * NROUTE + (r))
+    static step_cfg sc[NCH * NSTO * NROUTE];
     static sp_model fm;
     char csv[256], svg[256];
-    int c, r, i, nnoisy = 0, fail, fail_other = 0;
+    int c, r, b, i, nnoisy = 0, fail, fail_other = 0;
     FILE *f;
     for (c = 0; c < NCH; ++c)
-        for (r = 0; r < NROUTE; ++r) {
-            sc[c * NROUTE + r].ch = c;
-            sc[c * NROUTE + r].route = r;
-        }
-    fail = step_measure(sc, NCH * NROUTE);
+        for (b = 0; b < NSTO; ++b)
+            for (r = 0; r < NROUTE; ++r) {
+                sc[SC(c, b, r)].ch = c;
+                sc[SC(c, b, r)].band = b;
+                sc[SC(c, b, r)].route = r;
+            }
+    fail = step_measure(sc, NCH * NSTO * NROUTE);
     if (fail < 0) return -1;
     printf("\nscene 1 per step: ANCF beam with bending (examples/ex_spin.h, W = %g rad/s), "
            "HHT-alpha -0.05, h = 5 ms, timed t in [%g, %g] s (from the state of a run from rest); "
            "us per step: median (min) of %d interleaved rounds; callbacks timed inside the runs\n",
            STEP_W, STEP_T0, STEP_T1, STEP_ROUNDS);
-    printf("%4s %-19s %15s %8s %8s %8s %8s %8s %6s %6s %6s %8s %8s %8s\n", "ne", "route",
+    printf("%4s %-26s %15s %8s %8s %8s %8s %8s %6s %6s %6s %8s %8s %8s\n", "ne", "route",
            "us/step", "Q", "K,D", "M", "constr", "rest", "force", "Nwt/st", "LU/st", "Q ns/el",
            "QKD ns/el", "max dtip");
-    for (i = 0; i < NCH * NROUTE; ++i) {
+    for (i = 0; i < NCH * NSTO * NROUTE; ++i) {
         const step_cfg *p = &sc[i];
         const double steps = (double)p->st.steps, ne = chain_ne[p->ch];
+        char rn[64];
+        snprintf(rn, sizeof rn, "%s%s", route_name[p->route], sto_name[p->band]);
         if (p->status != VLBE_OK) {
-            printf("%4d %-19s %s at t = %.3f s (%ld steps, %ld rejected, %ld Newton, %ld LU); "
+            printf("%4d %-26s %s at t = %.3f s (%ld steps, %ld rejected, %ld Newton, %ld LU); "
                    "%.0f / %.0f ns per element per Q / Q,K,D call\n",
-                   chain_ne[p->ch], route_name[p->route], vlbe_status_str(p->status), p->t_stop,
+                   chain_ne[p->ch], rn, vlbe_status_str(p->status), p->t_stop,
                    p->st.steps, p->st.rejected, p->st.newton_iters, p->st.lu_factors,
                    p->ns_call[TM_FORCE] / ne, p->ns_call[TM_JAC] / ne);
             if (p->route != R_SYS) ++fail_other;
             continue;
         }
         nnoisy += p->us[NTM] > BENCHU_NOISY * p->us_min;
-        printf("%4d %-19s %7.1f (%5.1f) %8.2f %8.2f %8.2f %8.2f %8.2f %5.1f%% %6.2f %6.3f %8.0f "
+        printf("%4d %-26s %7.1f (%5.1f) %8.2f %8.2f %8.2f %8.2f %8.2f %5.1f%% %6.2f %6.3f %8.0f "
                "%8.0f %8.1e%s\n",
-               chain_ne[p->ch], route_name[p->route], p->us[NTM], p->us_min, p->us[TM_FORCE],
+               chain_ne[p->ch], rn, p->us[NTM], p->us_min, p->us[TM_FORCE],
                p->us[TM_JAC], p->us[TM_MASS], p->us[TM_OTHER],
                p->us[NTM] - p->us[TM_FORCE] - p->us[TM_JAC] - p->us[TM_MASS] - p->us[TM_OTHER],
                100.0 * (p->us[TM_FORCE] + p->us[TM_JAC]) / p->us[NTM],
@@ -593,17 +616,23 @@ static int step_bench(const char *tag)
                p->ns_call[TM_FORCE] / ne, p->ns_call[TM_JAC] / ne, p->dtip,
                p->us[NTM] > BENCHU_NOISY * p->us_min ? " *" : "");
     }
-    printf("%4s %-19s", "", "per step / Gauss:");
+    printf("%4s %-26s", "", "per step / Gauss (dense):");
     for (c = 0; c < NCH; ++c) printf(" %6d", chain_ne[c]);
     printf("\n");
     for (r = 1; r < NROUTE; ++r) {
-        printf("%4s %-19s", "", route_name[r]);
-        for (c = 0; c < NCH; ++c) step_ratio(&sc[c * NROUTE + r], &sc[c * NROUTE]);
+        printf("%4s %-26s", "", route_name[r]);
+        for (c = 0; c < NCH; ++c) step_ratio(&sc[SC(c, 0, r)], &sc[SC(c, 0, 0)]);
         printf("\n");
     }
-    printf("%4s %-19s", "", "elem / system inv.");
-    for (c = 0; c < NCH; ++c) step_ratio(&sc[c * NROUTE + R_ELEM], &sc[c * NROUTE + R_SYS]);
+    printf("%4s %-26s", "", "elem / system inv.");
+    for (c = 0; c < NCH; ++c) step_ratio(&sc[SC(c, 0, R_ELEM)], &sc[SC(c, 0, R_SYS)]);
     printf("\n");
+    printf("%4s %-26s\n", "", "per step, banded / dense:");
+    for (r = 0; r < NROUTE; ++r) {
+        printf("%4s %-26s", "", route_name[r]);
+        for (c = 0; c < NCH; ++c) step_ratio(&sc[SC(c, 1, r)], &sc[SC(c, 0, r)]);
+        printf("\n");
+    }
     if (nnoisy)
         printf("* median > %.2f x min: the machine was busy; rerun on a quiet machine\n", BENCHU_NOISY);
 
@@ -640,17 +669,18 @@ static int step_bench(const char *tag)
 
     snprintf(csv, sizeof csv, "out/bench/inv_step%s%s.csv", tag ? "-" : "", tag ? tag : "");
     snprintf(svg, sizeof svg, "out/bench/inv_step%s%s.svg", tag ? "-" : "", tag ? tag : "");
-    f = svgp_csv_open(csv, "elements,route,status,steps,rejected,newton_iters,lu_factors,rounds,"
+    f = svgp_csv_open(csv, "elements,route,storage,status,steps,rejected,newton_iters,lu_factors,rounds,"
                            "runs_per_sample,median_us_per_step,min_us_per_step,force_us_per_step,"
                            "force_jac_us_per_step,mass_us_per_step,constraints_us_per_step,"
                            "ns_per_elem_force_call,ns_per_elem_force_jac_call,max_tip_diff_rel");
     if (f) {
-        for (i = 0; i < NCH * NROUTE; ++i) {
+        for (i = 0; i < NCH * NSTO * NROUTE; ++i) {
             const step_cfg *p = &sc[i];
             const double ne = chain_ne[p->ch];
-            fprintf(f, "%d,%s,\"%s\",%ld,%ld,%ld,%ld,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,"
-                       "%.3e\n",
-                    chain_ne[p->ch], route_csv[p->route], vlbe_status_str(p->status), p->st.steps,
+            fprintf(f, "%d,%s,%s,\"%s\",%ld,%ld,%ld,%ld,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,"
+                       "%.6g,%.3e\n",
+                    chain_ne[p->ch], route_csv[p->route], sto_csv[p->band],
+                    vlbe_status_str(p->status), p->st.steps,
                     p->st.rejected, p->st.newton_iters, p->st.lu_factors, STEP_ROUNDS, p->reps,
                     p->us[NTM], p->status == VLBE_OK ? p->us_min : (double)NAN, p->us[TM_FORCE],
                     p->us[TM_JAC], p->us[TM_MASS], p->us[TM_OTHER], p->ns_call[TM_FORCE] / ne,
@@ -661,34 +691,40 @@ static int step_bench(const char *tag)
     } else
         fprintf(stderr, "bench_inv: cannot write %s\n", csv);
     {
-        static double xv[NCH], yv[2][NROUTE][NCH];
-        static char name[2][NROUTE][80];
+        /* j = 0, 1: the whole step dense, banded; j = 2: the Q and K, D
+           callbacks (dense) */
+        static double xv[NCH], yv[3][NROUTE][NCH];
+        static char name[3][NROUTE][96];
+        static const char *const what[3] = {"whole step", "whole step, banded",
+                                            "Q and K, D callbacks"};
         svgp_chart ch;
         int j;
         svgp_init(&ch,
-                  "spin-up W = 6, ANCF beam: time per HHT step (h = 5 ms), Gauss vs invariants",
+                  "spin-up W = 6, ANCF beam: time per HHT step (h = 5 ms), Gauss vs invariants, "
+                  "dense vs banded",
                   "elements", "us per step (median)", 1, 1);
-        for (j = 0; j < 2; ++j)
+        for (j = 0; j < 3; ++j)
             for (r = 0; r < NROUTE; ++r) {
                 char failed[40] = "";
                 size_t lf = 0;
                 for (c = 0; c < NCH; ++c) {
-                    const step_cfg *p = &sc[c * NROUTE + r];
+                    const step_cfg *p = &sc[SC(c, j == 1, r)];
                     xv[c] = chain_ne[c];
-                    yv[j][r][c] = j ? p->us[TM_FORCE] + p->us[TM_JAC] : p->us[NTM];
+                    yv[j][r][c] = j == 2 ? p->us[TM_FORCE] + p->us[TM_JAC] : p->us[NTM];
                     if (p->status != VLBE_OK && lf + 8 < sizeof failed)
                         lf += (size_t)snprintf(failed + lf, sizeof failed - lf, "%s%d",
                                                lf ? ", " : " (fails at ", chain_ne[c]);
                 }
-                snprintf(name[j][r], sizeof name[j][r], "%s, %s%s%s", route_name[r],
-                         j ? "Q and K, D callbacks" : "whole step", failed, lf ? " el.)" : "");
+                snprintf(name[j][r], sizeof name[j][r], "%s, %s%s%s", route_name[r], what[j],
+                         failed, lf ? " el.)" : "");
                 svgp_series(&ch, name[j][r], NCH, xv, yv[j][r],
-                            j ? SVGP_MARKERS | SVGP_DASH : SVGP_MARKERS);
+                            j == 2 ? SVGP_MARKERS | SVGP_DASH : SVGP_MARKERS);
             }
         svgp_fit_legend_log(&ch, 12, 0);
         if (svgp_write_file(&ch, svg) != 0) fprintf(stderr, "bench_inv: cannot write %s\n", svg);
         else printf("wrote %s\n", svg);
     }
+#undef SC
     ex_method_release(&step_meth);
     return fail_other;
 }

@@ -96,6 +96,7 @@ typedef struct cs_model {
     vlbe_real P[3 * (CS_NE_MAX + 1)];
     vlbe_dae sys;
     int ne, n;
+    int order[3 * (CS_NE_MAX + 1) + 3]; /* cs_band: the augmented order */
 } cs_model;
 
 static inline double cs_EI(void) { return CS_E * CS_I; }
@@ -142,6 +143,16 @@ static inline int cs_build(cs_model *m, int ne, unsigned flags)
     return cs_build_sec(m, ne, flags, cs_EA(), cs_EI(), cs_rhoA());
 }
 
+/* Banded matrices (vlbe_cr2d_beam_band) and the integrators' banded path
+   for a model cs_build made; 0 on success. */
+static inline int cs_band(cs_model *m)
+{
+    if (vlbe_cr2d_beam_band(&m->beam, m->order, (int)(sizeof m->order / sizeof m->order[0])))
+        return -1;
+    ex_cr2d_storage(&m->sys, &m->beam);
+    return 0;
+}
+
 /* ===== (a) roll-up ======================================================= */
 
 /* Load steps k = 1..nstep (lambda = k / nstep), each from the previous
@@ -155,7 +166,7 @@ static inline vlbe_status cs_rollup(cs_model *m, int nstep, const vlbe_static_pa
 {
     const int n = m->n;
     vlbe_static_params par;
-    size_t lw = vlbe_static_work_len(n, 3), liw = vlbe_static_iwork_len(n, 3);
+    size_t lw = vlbe_static_work_len_sys(&m->sys), liw = vlbe_static_iwork_len_sys(&m->sys);
     vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w), lam[3] = {0, 0, 0};
     int *iw = (int *)malloc(liw * sizeof *iw);
     vlbe_status rc = VLBE_OK;

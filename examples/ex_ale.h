@@ -16,6 +16,36 @@
 
 #include <string.h>
 
+/* the storage of sys's matrices that of the chain's callbacks: banded
+   with the layout's order and half-bandwidths when the chain is in banded
+   mode (vlbe_ale_chain_band), else dense (kl = ku = 0, order NULL) */
+static inline void ex_ale_storage(vlbe_dae *sys, const vlbe_ale_chain *ch)
+{
+    sys->storage = ch->order ? VLBE_DAE_BANDED : VLBE_DAE_DENSE;
+    sys->kl = ch->order ? ch->kl : 0;
+    sys->ku = ch->order ? ch->ku : 0;
+    sys->order = ch->order;
+}
+
+/* Banded mode of a chain set up for its layout (nodes and constraints
+   added): vlbe_ale_chain_band with the caller's order (order_cap ints: n +
+   m of the largest layout the chain will take, + 4 where length control
+   inserts nodes), then the layout.  The coordinates keep their places
+   (q, v of the dense layout stay valid); wire the system afterwards
+   (ex_ale_wire, or ex_ale_storage for a system of one's own). */
+static inline vlbe_status ex_ale_band(vlbe_ale_chain *ch, int *order, int order_cap)
+{
+    vlbe_status st = vlbe_ale_chain_band(ch, order, order_cap);
+    return st != VLBE_OK ? st : vlbe_ale_chain_layout(ch);
+}
+
+/* Half-bandwidth bound of a planar or 3D chain whose nodes carry at most
+   nc coordinates and that has m constraint rows and no equal-length
+   groups: an element couples two nodes, and the rows of its first node sit
+   between their coordinates, so kl = ku <= 2 nc + m - 1 in every layout of
+   it (vlbe_ale_chain).  Sizes the workspace of a chain that re-layouts. */
+static inline int ex_ale_kl_bound(int nc, int m) { return 2 * nc + m - 1; }
+
 static inline void ex_ale_wire(vlbe_dae *sys, vlbe_ale_chain *ch)
 {
     int i;
@@ -36,12 +66,7 @@ static inline void ex_ale_wire(vlbe_dae *sys, vlbe_ale_chain *ch)
        d(Ma)/dq, and the integrators evaluate M once */
     for (i = 0; i < ch->nn && ch->node[i].pmode == VLBE_ALE_PFIXED; ++i) continue;
     if (ch->d == 2 && i == ch->nn) sys->flags |= VLBE_DAE_MASS_CONST;
-    if (ch->order) { /* banded mode (vlbe_ale_chain_band): the layout's band */
-        sys->storage = VLBE_DAE_BANDED;
-        sys->kl = ch->kl;
-        sys->ku = ch->ku;
-        sys->order = ch->order;
-    }
+    ex_ale_storage(sys, ch); /* banded mode (vlbe_ale_chain_band): the layout's band */
 }
 
 #endif /* VLBE_EX_ALE_H */

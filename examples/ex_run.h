@@ -16,6 +16,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 /* Called at t = t0 and after every accepted step with the state then
@@ -44,7 +45,7 @@ typedef struct ex_method {
     const double *marks;
     int n_marks;
     vlbe_real *work; /* optional caller workspace (NULL: malloc'ed per run) */
-    size_t work_len; /* at least vlbe_hht/bdf_work_len(n, m)                */
+    size_t work_len; /* at least vlbe_hht/bdf_work_len_sys(sys)             */
     int *iwork;
     size_t iwork_len;
 } ex_method;
@@ -101,14 +102,14 @@ static inline void ex_rk4_step(int n, ex_rhs f, const void *ctx, double t, doubl
     for (i = 0; i < n; ++i) y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
 }
 
-/* Makes the caller workspace of m large enough for either integrator on a
-   problem of n coordinates and nm constraints, growing the buffers m
+/* Makes the caller workspace of m large enough for either integrator on
+   the problem sys (its storage: the _sys queries), growing the buffers m
    already has.  0 on success, -1 when out of memory (m then has none). */
-static inline int ex_method_reserve(ex_method *m, int n, int nm)
+static inline int ex_method_reserve_sys(ex_method *m, const vlbe_dae *sys)
 {
-    size_t lw = vlbe_hht_work_len(n, nm), liw = vlbe_hht_iwork_len(n, nm);
-    if (vlbe_bdf_work_len(n, nm) > lw) lw = vlbe_bdf_work_len(n, nm);
-    if (vlbe_bdf_iwork_len(n, nm) > liw) liw = vlbe_bdf_iwork_len(n, nm);
+    size_t lw = vlbe_hht_work_len_sys(sys), liw = vlbe_hht_iwork_len_sys(sys);
+    if (vlbe_bdf_work_len_sys(sys) > lw) lw = vlbe_bdf_work_len_sys(sys);
+    if (vlbe_bdf_iwork_len_sys(sys) > liw) liw = vlbe_bdf_iwork_len_sys(sys);
     if (m->work && lw <= m->work_len && liw <= m->iwork_len) return 0;
     free(m->work);
     free(m->iwork);
@@ -122,6 +123,16 @@ static inline int ex_method_reserve(ex_method *m, int n, int nm)
     m->work = NULL;
     m->iwork = NULL;
     return -1;
+}
+
+/* The same for a dense problem of n coordinates and nm constraints. */
+static inline int ex_method_reserve(ex_method *m, int n, int nm)
+{
+    vlbe_dae sys;
+    memset(&sys, 0, sizeof sys);
+    sys.n = n;
+    sys.m = nm;
+    return ex_method_reserve_sys(m, &sys);
 }
 
 /* Frees what ex_method_reserve gave m. */
@@ -143,8 +154,10 @@ static inline vlbe_status ex_run(const vlbe_dae *sys, const ex_method *m, const 
 {
     int n = sys->n, nm = sys->m;
     int own = m->work == NULL;
-    size_t lw = own ? (m->hht ? vlbe_hht_work_len(n, nm) : vlbe_bdf_work_len(n, nm)) : m->work_len;
-    size_t liw = own ? (m->hht ? vlbe_hht_iwork_len(n, nm) : vlbe_bdf_iwork_len(n, nm)) : m->iwork_len;
+    size_t lw = own ? (m->hht ? vlbe_hht_work_len_sys(sys) : vlbe_bdf_work_len_sys(sys))
+                    : m->work_len;
+    size_t liw = own ? (m->hht ? vlbe_hht_iwork_len_sys(sys) : vlbe_bdf_iwork_len_sys(sys))
+                     : m->iwork_len;
     vlbe_real *w = own ? (vlbe_real *)malloc(lw * sizeof *w) : m->work;
     int *iw = own ? (int *)malloc(liw * sizeof *iw) : m->iwork;
     vlbe_dae_stats zero_stats = {0};

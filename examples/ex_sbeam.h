@@ -68,6 +68,9 @@ typedef struct sb_cfg {
     int fixed_release;  /* 1: release at x > din + delta, without the step's
                            travel h max(0, U_A') (the rule that fails at
                            h >= 2e-3 in case (b); for the tests)            */
+    int band;           /* 1: banded matrices (vlbe_cr2d_beam_band; the ALE
+                           model of ex_xcheck.h: vlbe_ale_chain_band) and the
+                           integrators' banded path; 0: dense (default)     */
 } sb_cfg;
 
 /* The paper's section and material, 14 + 10 elements, dt = 1 ms. */
@@ -152,6 +155,8 @@ typedef struct sb_model {
     double delta;       /* outside once x > delta                       */
     double proj_max;    /* largest |v|, |phi| * h_out zeroed at an entry */
     int events;         /* node crossings                               */
+    int order[3 * (SB_MAXEL + 1) + 2 * (SB_MAXEL + 1) + 1]; /* cfg.band: the
+                           augmented order, room for every layout (n + 1 + 2 nn) */
 } sb_model;
 
 static inline void sb_ua_fun(void *ctx, vlbe_real t, vlbe_real *g3)
@@ -228,8 +233,10 @@ static inline double sb_x(const sb_model *m, const vlbe_real *q, int i)
    element; returns 1 when something changed. */
 static inline int sb_layout(sb_model *m, const vlbe_real *q, double t, int first)
 {
-    int *const order = m->beam.order; /* a banded beam's order (NULL: dense) */
-    const int order_cap = m->beam.order_cap;
+    /* a banded beam's order (NULL: dense); cfg.band: the model's from the
+       first layout on */
+    int *const order = m->beam.order ? m->beam.order : m->cfg.band ? m->order : NULL;
+    const int order_cap = m->beam.order ? m->beam.order_cap : m->n + 1 + 2 * m->nn;
     double g[3], din, dout;
     int i, nf = 0, changed = 0, trans = -1;
     sb_ua(&m->cfg, t, g);
@@ -333,8 +340,8 @@ static inline vlbe_status sb_static(sb_model *m, vlbe_real *q, double *force)
     memset(q, 0, sizeof(vlbe_real) * (size_t)m->n);
     sb_layout(m, q, 0.0, 1);
     vlbe_static_params_default(&sp);
-    lw = vlbe_static_work_len(m->n, m->sys.m);
-    liw = vlbe_static_iwork_len(m->n, m->sys.m);
+    lw = vlbe_static_work_len_sys(&m->sys);
+    liw = vlbe_static_iwork_len_sys(&m->sys);
     P = (vlbe_real *)calloc((size_t)m->n, sizeof *P);
     lam = (vlbe_real *)calloc((size_t)m->sys.m, sizeof *lam);
     w = (vlbe_real *)malloc(lw * sizeof *w);
@@ -373,13 +380,25 @@ done:
    alone ruins the integrator's predictor.  So v and phi of the released
    node are first relaxed to static balance with everything else held
    (Newton on their two rows; the true slope there differs from zero by
-   curvature x L2, which this recovers), their rates left at zero. */
+   curvature x L2, which this recovers), their rates left at zero.
+   (K of a banded beam is its band: sb_at places the entries.) */
+static inline size_t sb_at(const sb_model *m, int i, int j)
+{
+    const vlbe_cr2d_beam *b = &m->beam;
+    if (!b->order) return (size_t)i * (size_t)m->n + (size_t)j;
+    return VLBE_BAND_IDX(b->kl + b->ku + 1, b->kl, b->order[i], b->order[j]);
+}
+
 static inline vlbe_status sb_relax(sb_model *m, double t, int i, vlbe_real *q, const vlbe_real *v)
 {
+    const vlbe_cr2d_beam *bm = &m->beam;
+    const size_t klen = bm->order
+                            ? ((size_t)m->n + (size_t)bm->nfix) * (size_t)(bm->kl + bm->ku + 1)
+                            : (size_t)m->n * (size_t)m->n;
     vlbe_real *Q = (vlbe_real *)malloc(sizeof(vlbe_real) * (size_t)m->n);
-    vlbe_real *K = (vlbe_real *)malloc(sizeof(vlbe_real) * (size_t)m->n * (size_t)m->n);
+    vlbe_real *K = (vlbe_real *)malloc(sizeof(vlbe_real) * klen);
     vlbe_status st = VLBE_ENOCONV;
-    const size_t n = (size_t)m->n, r1 = (size_t)(3 * i + 1), r2 = r1 + 1;
+    const int r1 = 3 * i + 1, r2 = r1 + 1;
     int it;
     if (!Q || !K) {
         free(Q);
@@ -393,10 +412,10 @@ static inline vlbe_status sb_relax(sb_model *m, double t, int i, vlbe_real *q, c
             break;
         }
         /* K = dQ/dq: solve K_ii dx = -Q_i on the two rows */
-        a = (double)K[r1 * n + r1];
-        b = (double)K[r1 * n + r2];
-        c = (double)K[r2 * n + r1];
-        d = (double)K[r2 * n + r2];
+        a = (double)K[sb_at(m, r1, r1)];
+        b = (double)K[sb_at(m, r1, r2)];
+        c = (double)K[sb_at(m, r2, r1)];
+        d = (double)K[sb_at(m, r2, r2)];
         det = a * d - b * c;
         if (!(fabs(det) > 0.0)) {
             st = VLBE_ESINGULAR;
@@ -442,8 +461,22 @@ static inline void sb_run(sb_model *m, const sb_cfg *c, sb_observer obs, void *c
     if ((out->status = sb_init(m, c)) != VLBE_OK) return;
     q = (vlbe_real *)calloc((size_t)m->n, sizeof *q);
     v = (vlbe_real *)calloc((size_t)m->n, sizeof *v);
-    lw = vlbe_hht_work_len(m->n, 2 * m->nn + 1);
-    liw = vlbe_hht_iwork_len(m->n, 2 * m->nn + 1);
+    {
+        /* the largest system of the run: every node's v, phi and node 0's
+           u prescribed; banded, the half-bandwidth of a beam with 3 fixes
+           on one node, 5 + 3 (corot2d.h, vlbe_cr2d_beam), the widest any
+           layout has */
+        vlbe_dae big;
+        memset(&big, 0, sizeof big);
+        big.n = m->n;
+        big.m = 2 * m->nn + 1;
+        if (c->band) {
+            big.storage = VLBE_DAE_BANDED;
+            big.kl = big.ku = 8;
+        }
+        lw = vlbe_hht_work_len_sys(&big);
+        liw = vlbe_hht_iwork_len_sys(&big);
+    }
     w = (vlbe_real *)malloc(lw * sizeof *w);
     iw = (int *)malloc(liw * sizeof *iw);
     if (!q || !v || !w || !iw) {

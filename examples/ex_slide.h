@@ -62,6 +62,10 @@
 #define EX_SLIDE_NMAX 64   /* elements, at most                         */
 #define EX_SLIDE_MAXEV 256 /* length-control events recorded, at most   */
 #define EX_SLIDE_MAXSHAPE 4 /* length-control events whose shapes are sampled, at most */
+/* coordinates at most: nodes of [r, r'] and the slider's p; constraint rows
+   at most (clamp: 3, pins: 4) */
+#define EX_SLIDE_NQ (4 * (EX_SLIDE_NMAX + 2) + 1)
+#define EX_SLIDE_MROWS 4
 
 enum { EX_SLIDE_CLAMP_FREE = 0, EX_SLIDE_PIN_PIN = 1 };
 
@@ -77,6 +81,8 @@ typedef struct ex_slide_cfg {
     double stop;            /* clamped-free: end at an element ahead < stop L_std */
     int rational;           /* 1: ALE-RANCF elements (rancf.h)              */
     double R;               /* > 0: semicircle start of radius R (pinned-pinned) */
+    int band;               /* 1: banded matrices (vlbe_ale_chain_band) and the
+                               integrator's banded path; 0: dense (default) */
 } ex_slide_cfg;
 
 /* one row per accepted step (and t = 0); optionally (ex_slide_hist_shapes)
@@ -137,6 +143,9 @@ typedef struct ex_slide {
     long merge_fallbacks;
     vlbe_ale_etype et;          /* rational: rancf.h's calls, commit recorded */
     vlbe_rancf_elem els[EX_SLIDE_NMAX + 1];
+    /* cfg.band: the augmented order, room for the largest layout and the
+       4 more an insertion needs */
+    int order[EX_SLIDE_NQ + EX_SLIDE_MROWS + 4];
 } ex_slide;
 
 static inline double ex_slide_sigma(const ex_slide_wset *w)
@@ -334,6 +343,8 @@ static inline int ex_slide_build(ex_slide *m, const ex_slide_cfg *c, vlbe_real *
         k.v[1] = c->R > 0.0 ? x[nn - 1][1] : VLBE_R(0.0);
     }
     if (vlbe_ale_chain_add(&m->ch, &k) || vlbe_ale_chain_layout(&m->ch)) return -1;
+    if (c->band && ex_ale_band(&m->ch, m->order, (int)(sizeof m->order / sizeof m->order[0])))
+        return -1;
     ex_ale_wire(&m->sys, &m->ch);
     for (i = 0; i < m->ch.n; ++i) v0[i] = 0;
     for (i = 0; i < nn; ++i) {
@@ -458,6 +469,24 @@ static inline void ex_slide_record(ex_slide *m, const ex_slide_cfg *c, double t,
     hi->length[k] = ex_slide_len(&m->ch, (vlbe_real)t, q, v, &hi->rate[k]);
 }
 
+/* A system as large as the largest chain of the run (nmax coordinates),
+   for the workspace queries: every layout the length control makes fits.
+   Banded: at most EX_SLIDE_MROWS rows, nodes of at most 5 coordinates
+   (the slider's p), the half-bandwidth bound of ex_ale_kl_bound. */
+static inline vlbe_dae ex_slide_big(const ex_slide_cfg *c, int nmax)
+{
+    vlbe_dae big;
+    memset(&big, 0, sizeof big);
+    big.n = nmax;
+    big.m = 2;
+    if (c->band) {
+        big.m = EX_SLIDE_MROWS;
+        big.storage = VLBE_DAE_BANDED;
+        big.kl = big.ku = ex_ale_kl_bound(5, EX_SLIDE_MROWS);
+    }
+    return big;
+}
+
 /* The run of the header comment; hist may be NULL. */
 static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hist)
 {
@@ -468,7 +497,8 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
     vlbe_real *v = q ? q + nmax : NULL, *qn = q ? q + 2 * nmax : NULL, *vn = q ? q + 3 * nmax : NULL;
     vlbe_hht_params par;
     vlbe_hht st;
-    size_t lw = vlbe_hht_work_len(nmax, 2), liw = vlbe_hht_iwork_len(nmax, 2);
+    const vlbe_dae big = ex_slide_big(c, nmax);
+    size_t lw = vlbe_hht_work_len_sys(&big), liw = vlbe_hht_iwork_len_sys(&big);
     vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
     int *iw = (int *)malloc(liw * sizeof *iw);
     /* every step advances t by h (the halvings stay inside it), so

@@ -70,6 +70,7 @@
 
 #define SP_MAXEL 64
 #define SP_NMAX (4 * (SP_MAXEL + 1)) /* coordinates at most (ANCF)        */
+#define SP_NAMAX (SP_NMAX + 3)       /* coordinates and constraint rows    */
 #define SP_PI 3.14159265358979323846
 
 /* models (cfg.model) */
@@ -100,6 +101,9 @@ typedef struct sp_cfg {
     int bdf_max_order;   /* BDF: highest order (0: the default, 5)          */
     double bound;        /* stop with VLBE_EBOUND when |tip| > bound (0: off) */
     int max_halvings;    /* step halvings on Newton failure (0: 10)        */
+    int band;            /* 1: banded matrices (vlbe_ale_chain_band,
+                            vlbe_cr2d_beam_band), the integrators' banded
+                            path; 0: dense (default)                       */
 } sp_cfg;
 
 /* The scene: L = 10 m, EA = 2.8e7 N, EI = 1.4e4 N m^2, rhoA = 1.2 kg/m,
@@ -168,10 +172,13 @@ typedef struct sp_model {
     vlbe_real Lel[SP_MAXEL];
     vlbe_real isys_work[158 * SP_MAXEL + 40];
     vlbe_real band[2][SP_NMAX * VLBE_ALE_INV_BW];
-    vlbe_real *Dabs;         /* abs_a, abs_b: -(abs_a M + abs_b K0), n x n  */
+    vlbe_real *Dabs;         /* abs_a, abs_b: -(abs_a M + abs_b K0), n x n
+                                (cfg.band: the chain's band)                */
     vlbe_real Dabs_buf[SP_NMAX * SP_NMAX];
     vlbe_real scratch[SP_NMAX * SP_NMAX];
     vlbe_real vtmp[SP_NMAX];
+    vlbe_real vaug[2][SP_NAMAX]; /* cfg.band: Dabs v in the augmented order */
+    int order[SP_NAMAX];     /* cfg.band: the augmented order (chain, beam) */
     vlbe_dae sys;
 } sp_model;
 
@@ -188,15 +195,43 @@ static inline int sp_afun(void *user, int con, vlbe_real t, vlbe_real *a3)
    chain's forces, with SP_INV_SYS the chain carries bending only and the
    axial force comes from the system invariants; then the absolute-velocity
    damping when set.  user = the chain (as for the chain's own callbacks),
-   whose user is the sp_model. */
-static inline void sp_band_add(int n, const vlbe_real *B, vlbe_real *A)
+   whose user is the sp_model.
+   sp_band_add: the invariants' band B (natural order, VLBE_ALE_INV_BW per
+   row) added to a matrix of the chain's callbacks (n x n, or in banded
+   mode the chain's band: the entries B couples lie in an element, inside
+   the chain's band; the zeros between elements outside it are skipped). */
+static inline void sp_band_add(const vlbe_ale_chain *ch, const vlbe_real *B, vlbe_real *A)
 {
+    const int n = ch->n;
     int i, j;
     for (i = 0; i < n; ++i)
         for (j = i - VLBE_ALE_INV_KD; j <= i + VLBE_ALE_INV_KD; ++j)
-            if (j >= 0 && j < n)
-                A[(size_t)i * (size_t)n + (size_t)j] +=
-                    B[(size_t)i * VLBE_ALE_INV_BW + (size_t)(j - i + VLBE_ALE_INV_KD)];
+            if (j >= 0 && j < n) {
+                const vlbe_real b = B[(size_t)i * VLBE_ALE_INV_BW + (size_t)(j - i + VLBE_ALE_INV_KD)];
+                if (ch->order && (ch->order[j] - ch->order[i] > ch->ku ||
+                                  ch->order[i] - ch->order[j] > ch->kl)) {
+                    VLBE_ASSERT(b == VLBE_R(0.0));
+                    continue;
+                }
+                A[vlbe__ale_at(ch, i, j)] += b;
+            }
+}
+
+/* y = Dabs v (n): dense, or in banded mode through the augmented vectors
+   (the constraint rows' slots zero) */
+static inline void sp_dabs_v(sp_model *m, const vlbe_real *v, vlbe_real *y)
+{
+    const vlbe_ale_chain *ch = &m->ch;
+    const int n = m->n, na = ch->n + ch->m;
+    int i;
+    if (!ch->order) {
+        vlbe_mat_vec(n, n, m->Dabs, v, y);
+        return;
+    }
+    vlbe_vec_zero(na, m->vaug[0]);
+    for (i = 0; i < n; ++i) m->vaug[0][ch->order[i]] = v[i];
+    vlbe_band_mat_vec(na, ch->kl, ch->ku, m->Dabs, ch->kl + ch->ku + 1, m->vaug[0], m->vaug[1]);
+    for (i = 0; i < n; ++i) y[i] = m->vaug[1][ch->order[i]];
 }
 
 static inline int sp_ancf_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
@@ -211,7 +246,7 @@ static inline int sp_ancf_force(void *user, vlbe_real t, const vlbe_real *q, con
         for (i = 0; i < n; ++i) Q[i] += m->vtmp[i];
     }
     if (m->Dabs) {
-        vlbe_mat_vec(n, n, m->Dabs, v, m->vtmp);
+        sp_dabs_v(m, v, m->vtmp);
         for (i = 0; i < n; ++i) Q[i] += m->vtmp[i];
     }
     return 0;
@@ -221,17 +256,18 @@ static inline int sp_ancf_force_jac(void *user, vlbe_real t, const vlbe_real *q,
                                     const vlbe_real *v, vlbe_real *K, vlbe_real *D)
 {
     sp_model *m = (sp_model *)((vlbe_ale_chain *)user)->user;
-    const int n = m->n;
-    int rc, i;
+    const size_t len = vlbe__ale_mat_len(&m->ch); /* n x n, or the band */
+    size_t i;
+    int rc;
     if ((rc = vlbe_ale_chain_force_jac(&m->ch, t, q, v, K, D)) != 0) return rc;
     if (m->cfg.inv == SP_INV_SYS) {
         if (vlbe_ale_inv_sys_force(&m->isys, q, v, m->vtmp, m->band[0], m->band[1]) != VLBE_OK)
             return -1;
-        sp_band_add(n, m->band[0], K);
-        sp_band_add(n, m->band[1], D);
+        sp_band_add(&m->ch, m->band[0], K);
+        sp_band_add(&m->ch, m->band[1], D);
     }
     if (m->Dabs)
-        for (i = 0; i < n * n; ++i) D[i] += m->Dabs[i];
+        for (i = 0; i < len; ++i) D[i] += m->Dabs[i];
     return 0;
 }
 
@@ -278,6 +314,7 @@ static inline vlbe_status sp_init_ancf(sp_model *m, const sp_cfg *c)
     k.type = VLBE_ALE_CON_SLOPE_ANGLE; /* its slope along the hub: a = theta(t) */
     if ((st = vlbe_ale_chain_add(&m->ch, &k)) != VLBE_OK) return st;
     if ((st = vlbe_ale_chain_layout(&m->ch)) != VLBE_OK) return st;
+    if (c->band && (st = ex_ale_band(&m->ch, m->order, SP_NAMAX)) != VLBE_OK) return st;
     m->n = m->ch.n;
     if (c->inv == SP_INV_SYS &&
         (st = vlbe_ale_inv_sys_init(&m->isys, &m->ael, 0u, c->ne, m->Lel, m->isys_work,
@@ -292,8 +329,12 @@ static inline vlbe_status sp_init_ancf(sp_model *m, const sp_cfg *c)
     if (c->abs_a > 0.0 || c->abs_b > 0.0) {
         /* -(abs_a M + abs_b K0) = -abs_a M + abs_b dQ/dq of the straight
            beam at rest (dQ/dq at v = 0 does not depend on c_kv) */
-        const size_t nn = (size_t)m->n * (size_t)m->n;
-        vlbe_real q0[SP_NMAX], v0[SP_NMAX], r0[2] = {0, 0}, dir[2] = {1, 0};
+        const size_t nn = vlbe__ale_mat_len(&m->ch); /* n x n, or the band */
+        /* r0, dir static: gcc 12 at -O3 -march=native reports automatic
+           arrays here as maybe-uninitialized (as in sp_rest) */
+        static const vlbe_real r0[2] = {VLBE_R(0.0), VLBE_R(0.0)};
+        static const vlbe_real dir[2] = {VLBE_R(1.0), VLBE_R(0.0)};
+        vlbe_real q0[SP_NMAX], v0[SP_NMAX];
         size_t j;
         vlbe_ale_chain_straight(&m->ch, r0, dir, q0);
         for (i = 0; i < m->n; ++i) v0[i] = VLBE_R(0.0);
@@ -342,6 +383,7 @@ static inline vlbe_status sp_init(sp_model *m, const sp_cfg *c)
     m->fix[2].fun = sp_theta_fun;
     m->fix[2].ctx = &m->cfg;
     if ((st = vlbe_cr2d_beam_init(&m->beam, m->el, c->ne, m->fix, 3)) != VLBE_OK) return st;
+    if (c->band && (st = vlbe_cr2d_beam_band(&m->beam, m->order, SP_NAMAX)) != VLBE_OK) return st;
     if (c->model == SP_LINEAR) m->beam.frame = &m->fix[2]; /* the hub frame */
     ex_cr2d_dae(&m->sys, &m->beam, m->n, 3);
     if (c->model == SP_LINEAR) m->sys.flags = VLBE_DAE_MASS_CONST;

@@ -148,6 +148,7 @@
 #include "ex_sbeam.h"
 #include "ex_cant.h"
 #include "../ancf_ale.h"
+#include "ex_ale.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -283,6 +284,7 @@ typedef struct xc_ale {
     vlbe_ale_con con[2];
     vlbe_ale_chain ch;
     vlbe_dae sys;
+    int order[4 * (XC_NMAX + 1) + 3]; /* cfg.band: the augmented order */
 } xc_ale;
 
 typedef struct xc_ale_out {
@@ -315,13 +317,13 @@ static inline void xc_ale_damping(xc_ale *m, vlbe_real t)
 }
 
 /* -alpha M_e v_e of every element into Q (rows of coordinates) and, when K
-   is given, -alpha d(M_e v_e)/dq into K and -alpha M into D. */
+   is given, -alpha d(M_e v_e)/dq into K and -alpha M into D (n x n, or the
+   chain's band in banded mode). */
 static inline int xc_ale_mass_damping(xc_ale *m, vlbe_real t, const vlbe_real *q,
                                       const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                       vlbe_real *D)
 {
     const vlbe_real a = (vlbe_real)m->ra;
-    const size_t n = (size_t)m->ch.n;
     vlbe_real qe[10], ve[10], Me[100], Je[100];
     int e, i, j, idx[10];
     unsigned md;
@@ -340,8 +342,8 @@ static inline int xc_ale_mass_damping(xc_ale *m, vlbe_real t, const vlbe_real *q
             if (K)
                 for (j = 0; j < 10; ++j)
                     if (idx[j] >= 0) {
-                        K[(size_t)idx[i] * n + (size_t)idx[j]] -= a * Je[i * 10 + j];
-                        D[(size_t)idx[i] * n + (size_t)idx[j]] -= a * Me[i * 10 + j];
+                        K[vlbe__ale_at(&m->ch, idx[i], idx[j])] -= a * Je[i * 10 + j];
+                        D[vlbe__ale_at(&m->ch, idx[i], idx[j])] -= a * Me[i * 10 + j];
                     }
         }
     }
@@ -417,6 +419,7 @@ static inline void xc_ale_wire(xc_ale *m)
     s->constr_jac = xc_ale_constr_jac;
     s->constr_acc = xc_ale_constr_acc;
     s->constr_hess = xc_ale_constr_hess;
+    ex_ale_storage(s, &m->ch);
 }
 
 /* The chain of the header comment, straight along the axis. */
@@ -454,6 +457,10 @@ static inline vlbe_status xc_ale_build(xc_ale *m, const sb_cfg *c, int N, vlbe_r
     k.v[0] = VLBE_R(1.0);
     if ((st = vlbe_ale_chain_add(&m->ch, &k)) != VLBE_OK) return st;
     if ((st = vlbe_ale_chain_layout(&m->ch)) != VLBE_OK) return st;
+    if (c->band &&
+        (st = ex_ale_band(&m->ch, m->order, (int)(sizeof m->order / sizeof m->order[0]))) !=
+            VLBE_OK)
+        return st;
     xc_ale_wire(m);
     vlbe_ale_chain_straight(&m->ch, r0, dir, q0);
     return VLBE_OK;
@@ -462,9 +469,9 @@ static inline vlbe_status xc_ale_build(xc_ale *m, const sb_cfg *c, int N, vlbe_r
 /* Static deflection by a tip force scaled to tip0 (as sb_static). */
 static inline vlbe_status xc_ale_static(xc_ale *m, vlbe_real *q, double *force)
 {
-    const int n = m->ch.n, nc = m->ch.m;
+    const int nc = m->ch.m;
     vlbe_static_params sp;
-    const size_t lw = vlbe_static_work_len(n, nc), liw = vlbe_static_iwork_len(n, nc);
+    const size_t lw = vlbe_static_work_len_sys(&m->sys), liw = vlbe_static_iwork_len_sys(&m->sys);
     vlbe_real *w = (vlbe_real *)malloc((lw + (size_t)nc) * sizeof *w);
     int *iw = (int *)malloc(liw * sizeof *iw);
     vlbe_real *lam = w ? w + lw : NULL;
@@ -494,8 +501,21 @@ static inline vlbe_status xc_ale_static(xc_ale *m, vlbe_real *q, double *force)
 }
 
 /* Velocities just after the impulsive start (material at rest before):
-   [M C_q^T; C_q 0] [v; Lambda] = [-M_qp p'; -C_t] at t = 0. */
+   [M C_q^T; C_q 0] [v; Lambda] = [-M_qp p'; -C_t] at t = 0.  A one-off
+   dense solve; a banded chain is switched to dense for it and back. */
+static inline vlbe_status xc_ale_impulse_dense(xc_ale *m, const vlbe_real *q, vlbe_real *v);
 static inline vlbe_status xc_ale_impulse(xc_ale *m, const vlbe_real *q, vlbe_real *v)
+{
+    int *const order = m->ch.order;
+    const int cap = m->ch.order_cap;
+    vlbe_status st, sb;
+    if (!order) return xc_ale_impulse_dense(m, q, v);
+    if ((st = ex_ale_band(&m->ch, NULL, 0)) != VLBE_OK) return st;
+    st = xc_ale_impulse_dense(m, q, v);
+    sb = ex_ale_band(&m->ch, order, cap);
+    return st != VLBE_OK ? st : sb;
+}
+static inline vlbe_status xc_ale_impulse_dense(xc_ale *m, const vlbe_real *q, vlbe_real *v)
 {
     const int n = m->ch.n, nc = m->ch.m, N = n + nc;
     const size_t nn = (size_t)n * (size_t)n, NN = (size_t)N * (size_t)N;
@@ -562,8 +582,8 @@ static inline xc_ale_out xc_ale_run(const sb_cfg *c, int N, int start, xc_hist *
     if ((res.status = xc_ale_build(m, c, N, q)) != VLBE_OK) goto done;
     if ((res.status = xc_ale_static(m, q, &res.F0)) != VLBE_OK) goto done;
     if (start == XC_START_IMPULSE && (res.status = xc_ale_impulse(m, q, v)) != VLBE_OK) goto done;
-    lw = vlbe_hht_work_len(m->ch.n, m->ch.m);
-    liw = vlbe_hht_iwork_len(m->ch.n, m->ch.m);
+    lw = vlbe_hht_work_len_sys(&m->sys);
+    liw = vlbe_hht_iwork_len_sys(&m->sys);
     w = (vlbe_real *)malloc(lw * sizeof *w);
     iw = (int *)malloc(liw * sizeof *iw);
     res.status = VLBE_EWORK;

@@ -98,6 +98,8 @@
 #define MS_3D 2     /* 3D beam-shaft chain (VLBSE) instead of the planar one */
 #define MS_NOSPIN 4 /* 3D: without the spin angle (VLBE_ALE3_NO_SPIN)      */
 #define MS_XZ 8     /* 3D: vibration in the x-z plane (else x-y)           */
+#define MS_BAND 16  /* banded matrices (vlbe_ale_chain_band) and the
+                       integrators' banded path; else dense             */
 
 typedef struct ms_model {
     vlbe_ale_mat mat;
@@ -107,6 +109,7 @@ typedef struct ms_model {
     vlbe_ale_con con[2];
     vlbe_ale_chain ch;
     vlbe_dae sys;
+    int order[MS_NQ_NODE * (MS_NE_MAX + 1) + 6]; /* MS_BAND: the augmented order */
     double lam, eps, T; /* prestretch and tension */
     int ne, bend, kind;
     int tr;             /* component of the transverse motion: 1 (y) or 2 (z) */
@@ -147,7 +150,8 @@ static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_re
     vlbe_real r0[3] = {0, 0, 0}, dir[3] = {0, 0, 0};
     vlbe_ale_con c;
     int i;
-    if (ne < 2 || ne > MS_NE_MAX || kind < 0 || kind > 15 || (!d3 && kind > 1)) return -1;
+    if (ne < 2 || ne > MS_NE_MAX || kind < 0 || kind > 31 || (!d3 && (kind & ~MS_BAND) > 1))
+        return -1;
     memset(m, 0, sizeof *m);
     ms_section(&rhoA, &EA, &EI, &m->eps, &m->lam);
     m->T = MS_F;
@@ -190,6 +194,9 @@ static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_re
     c.v[0] = (vlbe_real)MS_L;
     vlbe_ale_chain_add(&m->ch, &c);
     if (vlbe_ale_chain_layout(&m->ch)) return -1;
+    if ((kind & MS_BAND) &&
+        ex_ale_band(&m->ch, m->order, (int)(sizeof m->order / sizeof m->order[0])))
+        return -1;
     ex_ale_wire(&m->sys, &m->ch);
     if (q0) {
         dir[0] = (vlbe_real)m->lam;

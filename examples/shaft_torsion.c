@@ -160,6 +160,7 @@ typedef struct st_model {
     vlbe_ale_chain ch;
     vlbe_dae sys;
     int ne;
+    int order[ST_NQ + 7]; /* st_band: the augmented order (7 constraint rows) */
 } st_model;
 
 /* ne elements; q0 (may be NULL): the straight state; v0 (may be NULL): at
@@ -209,6 +210,15 @@ static inline int st_build(st_model *m, int ne, vlbe_real *q0, vlbe_real *v0, in
             v0[m->node[i].ofs + 6] = (vlbe_real)s;
         }
     }
+    return 0;
+}
+
+/* Banded matrices (vlbe_ale_chain_band) and the integrators' banded path
+   for a model st_build made (its q0, v0 stay valid); 0 on success. */
+static inline int st_band(st_model *m)
+{
+    if (ex_ale_band(&m->ch, m->order, (int)(sizeof m->order / sizeof m->order[0]))) return -1;
+    ex_ale_storage(&m->sys, &m->ch);
     return 0;
 }
 
@@ -383,8 +393,10 @@ static inline vlbe_status st_observe(void *ctx, double t, const vlbe_real *q, co
 
 /* Free vibration of ne elements from the five-mode start, trapezoidal rule
    with step h = dt / every over T, theta at the free end every dt (o->y is
-   malloc'ed: free it).  Returns the run status. */
-static inline vlbe_status st_history(int ne, double dt, int every, double T, st_hist *o)
+   malloc'ed: free it); band: banded matrices (st_band).  Returns the run
+   status. */
+static inline vlbe_status st_history_run(int ne, double dt, int every, double T, int band,
+                                         st_hist *o)
 {
     st_model *m = (st_model *)malloc(sizeof *m);
     vlbe_real q0[ST_NQ], v0[ST_NQ];
@@ -399,7 +411,7 @@ static inline vlbe_status st_history(int ne, double dt, int every, double T, st_
     o->y = (double *)malloc(o->cap * sizeof *o->y);
     if (!m || !o->y) goto done;
     st = VLBE_EARG;
-    if (st_build(m, ne, q0, v0, 1)) goto done;
+    if (st_build(m, ne, q0, v0, 1) || (band && st_band(m))) goto done;
     o->idx = st_theta(m, ne);
     ex_hht_pick(&par, 0.0, 0.0); /* trapezoidal Newmark */
     memset(&meth, 0, sizeof meth);
@@ -411,6 +423,12 @@ static inline vlbe_status st_history(int ne, double dt, int every, double T, st_
 done:
     free(m);
     return st;
+}
+
+/* the scene's run: dense matrices */
+static inline vlbe_status st_history(int ne, double dt, int every, double T, st_hist *o)
+{
+    return st_history_run(ne, dt, every, T, 0, o);
 }
 
 /* frequencies of the history near fe[0..nm-1] (ex_peak_freq in the bands

@@ -62,6 +62,7 @@
    traverse in case a = 0.5, at 0.67 and 2.7 in case a = 1.5) grows late
    in the traverse and dominates. */
 #include "../ancf_ale.h"
+#include "ex_ale.h"
 #include "ex_eig.h"
 #include "ex_katz.h"
 #include "ex_run.h"
@@ -105,6 +106,7 @@ typedef struct ss_scene {
     vlbe_ale_node node[SS_NE_MAX + 1];
     vlbe_ale_con con[4];
     vlbe_dae sys;
+    int order[SS_NE_MAX * 8 + 8 + 6]; /* ss_band: the augmented order       */
     double t0, t1;    /* load at z0 l and at (1 - z0) l                     */
     int fixed;        /* 0: the paper's mesh (the load on node ne/2, every
                          element changing length); 1: ne equal fixed
@@ -272,6 +274,15 @@ static int ss_setup(ss_scene *s, double a, double kw, int ne, int fixed, double 
     return 0;
 }
 
+/* Banded matrices (vlbe_ale_chain_band) and the integrators' banded path
+   for a scene ss_setup made (its q0, v0 stay valid); 0 on success. */
+static inline int ss_band(ss_scene *s)
+{
+    if (ex_ale_band(&s->ch, s->order, (int)(sizeof s->order / sizeof s->order[0]))) return -1;
+    ex_ale_storage(&s->sys, &s->ch);
+    return 0;
+}
+
 /* the observer: samples of the load point and of material midspan, every
    s->every steps and at the end */
 static vlbe_status ss_obs(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
@@ -307,7 +318,7 @@ static void ss_errors(const ss_scene *s, const ex_katz *ref, int nmodes, double 
     int i, k;
     for (i = 0; i < s->ns; ++i) {
         const double t = s->t[i];
-        double r[4];
+        double r[4] = {0.0, 0.0, 0.0, 0.0}; /* gcc 12 -O3: maybe-uninitialized */
         ex_katz_eval(ref, nmodes, ref->v * t, t, &r[0], &r[1]);
         ex_katz_eval(ref, nmodes, 0.5 * ref->l, t, &r[2], &r[3]);
         for (k = 0; k < 4; ++k) e[k][i] = (s->u[k][i] - r[k]) / us;
