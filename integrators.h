@@ -242,10 +242,13 @@ typedef struct vlbe_hht_params {
     int reuse_max;          /* modified Newton: a kept matrix that the observed rate
                                says will not converge within this many further
                                iterations is refreshed at once, 0..VLBE_INT_MAX_ITER;
-                               0 = automatic (default): newton_max - 1 - (iterations
-                               done) for dense storage (an LU costs O(n^3): kept as
-                               long as the budget allows), 2 for banded storage (a
-                               Jacobian and band LU cost about three residuals)    */
+                               0 (default): the iterations left of newton_max, i.e.
+                               kept as long as the budget allows (right where an LU
+                               costs O(n^3)).  Banded chains, whose Jacobian and
+                               band LU cost about three residual evaluations, run
+                               faster with 2 (bench/bench_scale.c).  The storage
+                               never changes the iterates: dense and banded runs
+                               of one problem agree to rounding                  */
     vlbe_real ftol;         /* residual test (default 0 = off): when > 0 an iterate is
                                converged only if, besides the increment test, the
                                weighted Euclidean norm of the residual
@@ -1811,7 +1814,6 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
            alpha_f)/(1 - alpha_m) can be far larger than dq/dq'' = bp) */
         if (!vlbe_all_finite(tq, 4 * n + m)) return VLBE_ENONFINITE;
         if (p->reuse_max > 0 && left > p->reuse_max) left = p->reuse_max;
-        else if (p->reuse_max == 0 && band && left > 2) left = 2;
         /* Convergence is judged on the position and velocity increments
            bp dq'', gp dq'' (the
            multipliers are coupled to it through the same linear solve and
@@ -1862,13 +1864,13 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
                     conv = 1;
                 } else if (!fresh && vlbe__int_powi(theta, left) / (VLBE_R(1.0) - theta) * nrm >
                                          VLBE_R(1.0)) {
-                    /* will it converge within the iterations left (reuse_max)?
-                       If not, a stale matrix is refreshed now rather than
-                       after the budget is spent.  Banded by default within
-                       two: on bench_scale's chain a Jacobian and band LU
-                       cost 3.5 residual evaluations, and the rule takes the
-                       iterations per step from 5.9 (0.05 factorizations) to
-                       4.3 (0.25) */
+                    /* will it converge within the iterations left (or
+                       reuse_max)?  If not, a stale matrix is refreshed now
+                       rather than after the budget is spent (bench_scale's
+                       chain, reuse_max 2: 4.0-4.4 iterations and 0.2-0.5
+                       factorizations per step instead of 5.4-6.1 and
+                       0.0-0.4; a Jacobian and band LU cost 3.5 residual
+                       evaluations there) */
                     st->have_lu_ = 0;
                     prev = VLBE_R(0.0);
                     it = -1;

@@ -576,9 +576,14 @@ static void test_xcheck_ale(void **state)
     if (tu_report_on())
         print_message("    xcheck: steps %ld/%ld, Newton %ld/%ld, LU %ld/%ld\n", oa.steps, ob.steps,
                       oa.newton, ob.newton, oa.lu, ob.lu);
+    /* one Newton test decides within rounding of its threshold (the
+       band's pivot order is not the dense one): one iteration and one
+       refreshed matrix more or less in one run (681/680 and 682/681
+       measured), at an iterate already converged to rounding (the tip
+       agrees to 2.6e-15 m, far inside tol) */
     assert_int_equal(oa.steps, ob.steps);
-    assert_int_equal(oa.newton, ob.newton);
-    assert_int_equal(oa.lu, ob.lu);
+    assert_true(labs(oa.newton - ob.newton) <= 1);
+    assert_true(labs(oa.lu - ob.lu) <= 1);
     assert_int_equal(oa.rejected, ob.rejected);
     xc_hist_free(&a);
     xc_hist_free(&b);
