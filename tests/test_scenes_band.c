@@ -43,7 +43,7 @@
    flip), and the bound, N kappa FLT_EPSILON, is loose there (0.2 of the
    state in the spin-up; the runs agree to a few 1e-5).
 
-   Tests (dbl -O2: ~1 s; valgrind ~1 min)
+   Tests (dbl -O2: 1-2 s; valgrind under 2 min)
      spin_ancf       ex_spin.h, ANCF beam of 8 elements, W = 6 rad/s with a
                      4 s spin-up, 2.5 s: the three force routes (Gauss,
                      element and system invariants), Kelvin-Voigt damping,
@@ -74,9 +74,10 @@
                      impulse included
      rollup          corot_static.c (cs_band): the static roll-up, 8
                      elements, 8 load steps (vlbe_dae_static banded)
-   Float: the scenes that run in float today run here too (ANCF spin-up,
-   sliding mass, moving string, torsion, roll-up with the float section of
-   test_scenes_cr2d.c); the others skip with the reason. */
+   Float: the shortened runs that run in float with dense matrices run
+   here too (ANCF spin-up, sliding mass, moving string, torsion, roll-up
+   with the float section of test_scenes_cr2d.c); the others skip with the
+   reason. */
 #include "test_util.h"
 
 #define VLBE_EXAMPLE_NO_MAIN
