@@ -31,81 +31,72 @@ int main(int argc, char **argv)
 {
     static const int NE[] = {4, 16, 64, 128, 256, 512, 1024};
     enum { NS = sizeof NE / sizeof NE[0] };
-    double xd[NS], yd[NS], xb[NS], yb[NS], fitx[NS], fity[NS], slope_b, slope_d, us256 = 0,
-                                                                                 mb1024 = 0;
+    double x[3][NS], y[3][NS], slope[3], us256[3] = {0, 0, 0}, mb1024 = 0;
     const char *dir = argc > 1 ? argv[1] : "out/bench";
-    char model[128], path[512], ld[64], lb[64];
+    static const char *const vname[3] = {"dense", "banded", "banded, reuse_max 2"};
+    char model[128], path[512], lab[3][80];
     double mhz;
-    int i, nd = 0, nb = 0, nf = 0;
+    int i, v, np[3] = {0, 0, 0};
     FILE *csv;
     svgp_chart ch;
     benchu_cpu_info(model, sizeof model, &mhz);
     printf("chain scale: clamped planar ALE-ANCF chain, 10 m, HHT -0.05, h = 1 ms\n");
     printf("machine: %s (%.0f MHz), %s\n", model, mhz, VLBE_BENCH_FLAGS);
-    printf("%6s %6s %4s | %11s %7s %6s %9s | %11s %7s %6s %9s\n", "elem", "n", "kl",
-           "dense us", "newton", "lu", "MB", "banded us", "newton", "lu", "MB");
+    printf("%5s %5s %3s | %9s %6s %5s %7s | %9s %6s %5s %7s | %9s %6s %5s\n", "elem", "n", "kl",
+           "dense us", "newton", "lu", "MB", "banded us", "newton", "lu", "MB", "reuse2 us",
+           "newton", "lu");
     snprintf(path, sizeof path, "%s/bench_scale.csv", dir);
-    csv = svgp_csv_open(path, "elements,n,dense_us,dense_newton,dense_lu,dense_mb,band_us,"
-                              "band_newton,band_lu,band_mb,kl");
+    csv = svgp_csv_open(path, "elements,n,kl,dense_us,dense_newton,dense_lu,dense_mb,band_us,"
+                              "band_newton,band_lu,band_mb,reuse_us,reuse_newton,reuse_lu");
     for (i = 0; i < NS; ++i) {
-        cc_result d, b;
-        int ne = NE[i], hd = ne <= CC_DENSE_MAX;
-        memset(&d, 0, sizeof d);
-        if (hd && cc_time(ne, 0, &d)) {
-            fprintf(stderr, "bench_scale: dense run failed at %d elements\n", ne);
-            return 1;
+        cc_result r[3];
+        double row[14];
+        const int ne = NE[i];
+        memset(r, 0, sizeof r);
+        for (v = 0; v < 3; ++v) {
+            if (v == CC_DENSE && ne > CC_DENSE_MAX) continue;
+            if (cc_time(ne, v, &r[v])) {
+                fprintf(stderr, "bench_scale: %s run failed at %d elements\n", vname[v], ne);
+                return 1;
+            }
+            x[v][np[v]] = ne;
+            y[v][np[v]++] = r[v].us;
+            if (ne == 256) us256[v] = r[v].us;
         }
-        if (cc_time(ne, 1, &b)) {
-            fprintf(stderr, "bench_scale: banded run failed at %d elements\n", ne);
-            return 1;
+        if (ne == 1024) mb1024 = r[CC_BAND].mb;
+        if (ne <= CC_DENSE_MAX)
+            printf("%5d %5d %3d | %9.1f %6.2f %5.3f %7.2f |", ne, r[1].n, r[1].kl, r[0].us,
+                   r[0].newton, r[0].lu, r[0].mb);
+        else
+            printf("%5d %5d %3d | %9s %6s %5s %7s |", ne, r[1].n, r[1].kl, "-", "-", "-", "-");
+        printf(" %9.1f %6.2f %5.3f %7.3f | %9.1f %6.2f %5.3f\n", r[1].us, r[1].newton, r[1].lu,
+               r[1].mb, r[2].us, r[2].newton, r[2].lu);
+        row[0] = ne;
+        row[1] = r[1].n;
+        row[2] = r[1].kl;
+        for (v = 0; v < 3; ++v) {
+            const int have = v != CC_DENSE || ne <= CC_DENSE_MAX;
+            row[3 + 4 * v] = have ? r[v].us : (double)NAN;
+            row[4 + 4 * v] = have ? r[v].newton : (double)NAN;
+            row[5 + 4 * v] = have ? r[v].lu : (double)NAN;
+            if (v < 2) row[6 + 4 * v] = have ? r[v].mb : (double)NAN;
         }
-        if (hd) {
-            printf("%6d %6d %4d | %11.1f %7.2f %6.3f %9.2f | %11.1f %7.2f %6.3f %9.3f\n", ne, b.n,
-                   b.kl, d.us, d.newton, d.lu, d.mb, b.us, b.newton,
-                   b.lu, b.mb);
-            xd[nd] = ne;
-            yd[nd++] = d.us;
-        } else {
-            printf("%6d %6d %4d | %11s %7s %6s %9s | %11.1f %7.2f %6.3f %9.3f\n", ne, b.n,
-                   b.kl, "-", "-", "-", "-", b.us, b.newton, b.lu,
-                   b.mb);
-        }
-        xb[nb] = ne;
-        yb[nb++] = b.us;
-        if (ne >= 64) {
-            fitx[nf] = ne;
-            fity[nf++] = b.us;
-        }
-        if (ne == 256) us256 = b.us;
-        if (ne == 1024) mb1024 = b.mb;
-        if (csv) {
-            double row[11];
-            row[0] = ne;
-            row[1] = b.n;
-            row[2] = hd ? d.us : (double)NAN;
-            row[3] = hd ? d.newton : (double)NAN;
-            row[4] = hd ? d.lu : (double)NAN;
-            row[5] = hd ? d.mb : (double)NAN;
-            row[6] = b.us;
-            row[7] = b.newton;
-            row[8] = b.lu;
-            row[9] = b.mb;
-            row[10] = b.kl;
-            svgp_csv_row(csv, 11, row);
-        }
+        if (csv) svgp_csv_row(csv, 14, row);
         fflush(stdout);
     }
     if (csv) fclose(csv);
-    slope_b = cc_slope(nf, fitx, fity);
-    slope_d = cc_slope(nd > 2 ? nd - 2 : nd, xd + (nd > 2 ? 2 : 0), yd + (nd > 2 ? 2 : 0));
-    snprintf(ld, sizeof ld, "dense (slope %.2f, 64-256)", slope_d);
-    snprintf(lb, sizeof lb, "banded (slope %.2f, 64-1024)", slope_b);
+    /* slopes from 64 elements on (the first two sizes are below the
+       asymptotic regime: the integrator's fixed cost) */
+    for (v = 0; v < 3; ++v) {
+        slope[v] = cc_slope(np[v] - 2, x[v] + 2, y[v] + 2);
+        snprintf(lab[v], sizeof lab[v], "%s (slope %.2f)", vname[v], slope[v]);
+    }
     svgp_init(&ch, "clamped chain: time per HHT step", "elements", "us per step", 1, 1);
-    svgp_series(&ch, ld, nd, xd, yd, 0);
-    svgp_series(&ch, lb, nb, xb, yb, 0);
+    for (v = 0; v < 3; ++v) svgp_series(&ch, lab[v], np[v], x[v], y[v], 0);
     snprintf(path, sizeof path, "%s/bench_scale.svg", dir);
     svgp_write_file(&ch, path);
+    printf("banded, reuse_max 2: slope %.2f, %.0f us/step at 256 el.\n", slope[2], us256[2]);
     printf("chain scale: slope %.2f (64-1024 el.), %.0f us/step at 256 el., %.2f MB at 1024 el.\n",
-           slope_b, us256, mb1024);
+           slope[1], us256[1], mb1024);
     return 0;
 }

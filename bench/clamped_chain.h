@@ -3,7 +3,10 @@
    section (rhoA 7.85 kg/m, EA 2.1e8 N, EI 1.75e3 N m^2), gravity through
    the distributed load, clamped at node 0 (VLBE_ALE_CON_POS +
    VLBE_ALE_CON_SLOPE), straight and at rest at t = 0; HHT-alpha -0.05 with
-   the default Newton settings.  Dense or banded (vlbe_ale_chain_band).
+   the default Newton settings.  Variants: CC_DENSE, CC_BAND (banded,
+   vlbe_ale_chain_band, the same Newton settings), CC_BAND_REUSE (banded,
+   vlbe_hht_params.reuse_max = 2: a stale iteration matrix refreshed when
+   it needs more than two further iterations).
    -- part of vlbe                                  SPDX-License-Identifier: MIT
    Include after bench_util.h. */
 #ifndef VLBE_BENCH_CLAMPED_CHAIN_H
@@ -15,6 +18,7 @@
 
 #include <stdlib.h>
 
+enum { CC_DENSE, CC_BAND, CC_BAND_REUSE };
 enum { CC_NMAX = 1024, CC_WARM = 20, CC_BLOCKS = 5, CC_DENSE_MAX = 256 };
 
 typedef struct cc_scene {
@@ -45,8 +49,8 @@ static inline void cc_free(cc_scene *s)
     free(s->order);
 }
 
-/* builds the chain of ne elements, dense or banded, and starts HHT */
-static inline int cc_init(cc_scene *s, int ne, int band)
+/* builds the chain of ne elements in the variant asked for, and starts HHT */
+static inline int cc_init(cc_scene *s, int ne, int variant)
 {
     vlbe_ale_con c;
     vlbe_hht_params par;
@@ -70,7 +74,7 @@ static inline int cc_init(cc_scene *s, int ne, int band)
     c.type = VLBE_ALE_CON_SLOPE;
     c.v[0] = 1;
     if (vlbe_ale_chain_add(&s->ch, &c)) return -1;
-    if (band) {
+    if (variant != CC_DENSE) {
         int cap = 5 * (ne + 1) + 4;
         s->order = (int *)malloc((size_t)cap * sizeof *s->order);
         if (!s->order || vlbe_ale_chain_band(&s->ch, s->order, cap)) return -1;
@@ -86,18 +90,19 @@ static inline int cc_init(cc_scene *s, int ne, int band)
     if (!s->w || !s->iw || !s->q0 || !s->v0) return -1;
     vlbe_ale_chain_straight(&s->ch, r0, dir, s->q0);
     if (vlbe_hht_params_hht(&par, VLBE_R(-0.05))) return -1;
+    par.reuse_max = variant == CC_BAND_REUSE ? 2 : 0;
     return vlbe_hht_init(&s->st, &s->sys, &par, 0, s->q0, s->v0, s->w, s->lw, s->iw, s->liw) ? -1
                                                                                             : 0;
 }
 
-static inline int cc_time(int ne, int band, cc_result *r)
+static inline int cc_time(int ne, int variant, cc_result *r)
 {
     cc_scene *s = (cc_scene *)malloc(sizeof *s);
     double t[CC_BLOCKS];
     long it0, lu0, steps = 0;
     int b, k, ok = 0;
     if (!s) return -1;
-    if (cc_init(s, ne, band)) goto out;
+    if (cc_init(s, ne, variant)) goto out;
     for (k = 0; k < CC_WARM; ++k)
         if (vlbe_hht_step(&s->st, VLBE_R(1e-3))) goto out;
     it0 = s->st.stats.newton_iters;
@@ -119,8 +124,9 @@ static inline int cc_time(int ne, int band, cc_result *r)
     r->newton = (double)(s->st.stats.newton_iters - it0) / (double)steps;
     r->lu = (double)(s->st.stats.lu_factors - lu0) / (double)steps;
     r->mb = ((double)s->lw * sizeof(vlbe_real) + (double)s->liw * sizeof(int) +
-             (band ? (double)(5 * (ne + 1) + 4) * sizeof(int) : 0.0)) / 1048576.0;
-    r->kl = band ? s->ch.kl : -1;
+             (variant != CC_DENSE ? (double)(5 * (ne + 1) + 4) * sizeof(int) : 0.0)) /
+            1048576.0;
+    r->kl = variant != CC_DENSE ? s->ch.kl : -1;
     r->n = s->ch.n;
     ok = 1;
 out:

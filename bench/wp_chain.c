@@ -9,10 +9,11 @@
    default Newton settings, h = 4 ms ... 0.25 ms; the error is the distance
    of the free end at t = 0.2 s from a banded run at h = 1/32 ms (the
    scheme is second order: the error of the reference is 64^-2 of the
-   finest point's).  The banded path refreshes a stale iteration matrix
-   sooner (vlbe_hht_params.reuse_max, automatic) and so takes other Newton
-   iterates: its error must match the dense one to far below the error
-   itself, and its CPU time be lower.  Scale: the median time per step
+   finest point's).  Three runs per step size: dense, banded (the same
+   Newton iterates: equal to rounding), and banded with
+   vlbe_hht_params.reuse_max = 2 (a stale iteration matrix refreshed
+   sooner: other iterates, within the Newton tolerance): the errors must
+   match to far below the error itself.  Scale: the median time per step
    after 20 warm-up steps (bench_scale's measure), dense up to 256 and
    banded up to 1024 elements, with the least-squares slopes.
    Writes outdir/wp_chain.csv, wp_chain.svg, chain_scale.csv,
@@ -29,14 +30,14 @@ enum { WP_NE = 64, WP_NH = 5 };
 
 /* the free end at WP_TEND with step h; cpu seconds, Newton iterations and
    LU factorizations of the run; 0 on success */
-static int wp_run(int band, double h, double tip[2], double *cpu, long *newton, long *lu)
+static int wp_run(int variant, double h, double tip[2], double *cpu, long *newton, long *lu)
 {
     cc_scene *s = (cc_scene *)malloc(sizeof *s);
     long k, nk = (long)floor(WP_TEND / h + 0.5);
     double t0;
     int rc = -1;
     if (!s) return -1;
-    if (cc_init(s, WP_NE, band)) goto out;
+    if (cc_init(s, WP_NE, variant)) goto out;
     t0 = benchu_cpu_now();
     for (k = 0; k < nk; ++k)
         if (vlbe_hht_step(&s->st, (vlbe_real)h)) goto out;
@@ -56,56 +57,60 @@ int main(int argc, char **argv)
 {
     static const double H[WP_NH] = {4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4};
     static const int NE[] = {16, 64, 256, 1024};
+    static const char *const vname[3] = {"HHT, dense", "HHT, banded", "HHT, banded, reuse_max 2"};
     enum { NS = sizeof NE / sizeof NE[0] };
     const char *dir = argc > 1 ? argv[1] : "out";
-    double ref[2], err[2][WP_NH], cpu[2][WP_NH], xd[NS], yd[NS], xb[NS], yb[NS], sd, sb;
-    double worst = 0.0;
+    double ref[2], err[3][WP_NH], cpu[3][WP_NH], xd[NS], yd[NS], xb[NS], yb[NS], sd, sb;
+    double worst[3] = {0.0, 0.0, 0.0};
     char path[512], ld[80], lb[80];
     svgp_chart ch;
     FILE *csv;
-    int b, i, nd = 0, nb = 0;
+    int v, i, nd = 0, nb = 0;
     long nw, lu;
     double c;
-    if (wp_run(1, 1.0 / 32000.0, ref, &c, &nw, &lu)) {
+    if (wp_run(CC_BAND, 1.0 / 32000.0, ref, &c, &nw, &lu)) {
         fprintf(stderr, "wp_chain: the reference run failed\n");
         return 1;
     }
     printf("# clamped chain, %d elements, HHT-alpha -0.05, t = %g s: error of the free end "
-           "against h = 1/32 ms; dense against banded iteration matrices (%s)\n",
+           "against h = 1/32 ms; dense, banded, banded with reuse_max 2 (%s)\n",
            WP_NE, WP_TEND, VLBE_BENCH_FLAGS);
-    printf("# %8s | %11s %9s %7s %5s | %11s %9s %7s %5s | %11s\n", "h [s]", "dense err", "cpu s",
-           "newton", "LU", "banded err", "cpu s", "newton", "LU", "|d - b|");
+    printf("# %8s | %10s %8s %6s %4s | %10s %8s %6s %4s %9s | %10s %8s %6s %4s %9s\n", "h [s]",
+           "dense err", "cpu s", "newton", "LU", "banded err", "cpu s", "newton", "LU", "|b - d|",
+           "reuse err", "cpu s", "newton", "LU", "|r - d|");
     snprintf(path, sizeof path, "%s/wp_chain.csv", dir);
-    csv = svgp_csv_open(path, "h,dense_err,dense_cpu,band_err,band_cpu,diff");
+    csv = svgp_csv_open(path, "h,dense_err,dense_cpu,band_err,band_cpu,reuse_err,reuse_cpu,"
+                              "band_diff,reuse_diff");
     for (i = 0; i < WP_NH; ++i) {
-        double tip[2][2], row[6], diff;
-        long nwt[2], lut[2];
-        for (b = 0; b < 2; ++b) {
-            if (wp_run(b, H[i], tip[b], &cpu[b][i], &nwt[b], &lut[b])) {
-                fprintf(stderr, "wp_chain: %s run failed at h = %g\n", b ? "banded" : "dense", H[i]);
+        double tip[3][2], row[9], diff[3] = {0.0, 0.0, 0.0};
+        long nwt[3], lut[3];
+        for (v = 0; v < 3; ++v) {
+            if (wp_run(v, H[i], tip[v], &cpu[v][i], &nwt[v], &lut[v])) {
+                fprintf(stderr, "wp_chain: %s failed at h = %g\n", vname[v], H[i]);
                 return 1;
             }
-            err[b][i] = hypot(tip[b][0] - ref[0], tip[b][1] - ref[1]);
+            err[v][i] = hypot(tip[v][0] - ref[0], tip[v][1] - ref[1]);
+            diff[v] = hypot(tip[v][0] - tip[0][0], tip[v][1] - tip[0][1]);
+            if (diff[v] / err[0][i] > worst[v]) worst[v] = diff[v] / err[0][i];
         }
-        diff = hypot(tip[0][0] - tip[1][0], tip[0][1] - tip[1][1]);
-        if (diff / err[0][i] > worst) worst = diff / err[0][i];
-        printf("  %8.2e | %11.3e %9.4f %7ld %5ld | %11.3e %9.4f %7ld %5ld | %11.3e\n", H[i],
-               err[0][i], cpu[0][i], nwt[0], lut[0], err[1][i], cpu[1][i], nwt[1], lut[1], diff);
+        printf("  %8.2e | %10.3e %8.4f %6ld %4ld | %10.3e %8.4f %6ld %4ld %9.2e | %10.3e %8.4f %6ld "
+               "%4ld %9.2e\n", H[i], err[0][i], cpu[0][i], nwt[0], lut[0], err[1][i], cpu[1][i],
+               nwt[1], lut[1], diff[1], err[2][i], cpu[2][i], nwt[2], lut[2], diff[2]);
         row[0] = H[i];
-        row[1] = err[0][i];
-        row[2] = cpu[0][i];
-        row[3] = err[1][i];
-        row[4] = cpu[1][i];
-        row[5] = diff;
-        if (csv) svgp_csv_row(csv, 6, row);
+        for (v = 0; v < 3; ++v) {
+            row[1 + 2 * v] = err[v][i];
+            row[2 + 2 * v] = cpu[v][i];
+        }
+        row[7] = diff[1];
+        row[8] = diff[2];
+        if (csv) svgp_csv_row(csv, 9, row);
     }
     if (csv) fclose(csv);
-    printf("# largest |dense - banded| / dense error: %.2e (the Newton tolerance against the "
-           "discretisation error)\n", worst);
+    printf("# largest difference from the dense run / its error: banded %.2e (rounding), with "
+           "reuse_max 2 %.2e (the Newton tolerance)\n", worst[1], worst[2]);
     svgp_init(&ch, "clamped chain, 64 elements: work-precision", "CPU time [s]",
               "error of the free end [m]", 1, 1);
-    svgp_series(&ch, "HHT, dense", WP_NH, cpu[0], err[0], 0);
-    svgp_series(&ch, "HHT, banded", WP_NH, cpu[1], err[1], 0);
+    for (v = 0; v < 3; ++v) svgp_series(&ch, vname[v], WP_NH, cpu[v], err[v], 0);
     snprintf(path, sizeof path, "%s/wp_chain.svg", dir);
     if (svgp_write_file(&ch, path)) printf("# could not write %s\n", path);
 
@@ -117,7 +122,7 @@ int main(int argc, char **argv)
         cc_result rd, rb;
         double row[3];
         const int hd = NE[i] <= CC_DENSE_MAX;
-        if ((hd && cc_time(NE[i], 0, &rd)) || cc_time(NE[i], 1, &rb)) {
+        if ((hd && cc_time(NE[i], CC_DENSE, &rd)) || cc_time(NE[i], CC_BAND, &rb)) {
             fprintf(stderr, "wp_chain: timing failed at %d elements\n", NE[i]);
             return 1;
         }
