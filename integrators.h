@@ -1203,7 +1203,7 @@ VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const
        Psi(q, lambda) = ( C_q(t,q)^T lambda - Q(t,q,0),  C(t,q) ) = 0,
    the equations of motion with q' = q'' = 0 (M is never called).  The
    iteration matrix is dPsi/d(q, lambda) = [ -K + H, C_q^T; C_q, 0 ],
-   K = dQ/dq, H = d(C_q^T lambda)/dq, formed by vlbe__int_tangent2 (the
+   K = dQ/dq, H = d(C_q^T lambda)/dq, formed by vlbe__int_btangent (the
    integrators' helper: force_jac or forward differences for K, constr_hess
    or forward differences for H, H dropped under VLBE_DAE_NO_CHESS).  The
    constraint rows and multiplier columns are scaled by
