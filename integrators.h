@@ -1008,22 +1008,31 @@ VLBE_INLINE vlbe_status vlbe__dae_check(const vlbe_dae *sys, int need_mass)
 }
 VLBE_API vlbe_status vlbe_dae_check(const vlbe_dae *sys) { return vlbe__dae_check(sys, 1); }
 
+/* A dense problem of n coordinates and m constraints, for the (n, m)
+   workspace queries: each is the _sys query of that problem. */
+VLBE_INLINE vlbe_dae vlbe__int_dense(int n, int m)
+{
+    vlbe_dae d;
+    memset(&d, 0, sizeof d);
+    d.n = n;
+    d.m = m;
+    return d;
+}
 VLBE_API size_t vlbe_dae_work_len(int n, int m)
 {
-    size_t N = (size_t)n + (size_t)m;
-    /* system matrix N*N, rhs N, M n*n, Q n, Cq m*n, gamma scratch m*n + 2m + n */
-    return N * N + N + (size_t)n * n + (size_t)n + 2 * (size_t)m * n + 2 * (size_t)m + (size_t)n;
+    const vlbe_dae d = vlbe__int_dense(n, m);
+    return vlbe_dae_work_len_sys(&d);
 }
 VLBE_API size_t vlbe_dae_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
-/* the same for the problem's storage (= the (n, m) queries when dense) */
+/* the same for the problem's storage: system matrix, rhs, M, Q, C_q, the
+   scratch of gamma, and (banded) the right side in the band's order */
 VLBE_API size_t vlbe_dae_work_len_sys(const vlbe_dae *sys)
 {
     size_t NA;
     VLBE_ASSERT(sys != NULL);
-    if (!vlbe__int_banded(sys)) return vlbe_dae_work_len(sys->n, sys->m);
     NA = (size_t)sys->n + (size_t)sys->m;
-    return vlbe__int_alen(sys, 1) + 2 * NA + vlbe__int_mlen(sys, 0) + (size_t)sys->n +
-           vlbe__int_mlen(sys, 1) + vlbe__int_gamma_len(sys);
+    return vlbe__int_alen(sys, 1) + NA + vlbe__int_mlen(sys, 0) + (size_t)sys->n +
+           vlbe__int_mlen(sys, 1) + vlbe__int_gamma_len(sys) + (vlbe__int_banded(sys) ? NA : 0);
 }
 VLBE_API size_t vlbe_dae_iwork_len_sys(const vlbe_dae *sys)
 {
@@ -1231,18 +1240,17 @@ VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
    (3 N). */
 VLBE_API size_t vlbe_static_work_len(int n, int m)
 {
-    size_t N = (size_t)n + (size_t)m, mn = (size_t)m * (size_t)n;
-    return 5 * N + 3 * (size_t)n + 2 * mn + N * N + vlbe__int_tangent_len(n, m);
+    const vlbe_dae d = vlbe__int_dense(n, m);
+    return vlbe_static_work_len_sys(&d);
 }
 VLBE_API size_t vlbe_static_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
 VLBE_API size_t vlbe_static_work_len_sys(const vlbe_dae *sys)
 {
     size_t N;
     VLBE_ASSERT(sys != NULL);
-    if (!vlbe__int_banded(sys)) return vlbe_static_work_len(sys->n, sys->m);
     N = (size_t)sys->n + (size_t)sys->m;
     return 5 * N + 3 * (size_t)sys->n + 2 * vlbe__int_mlen(sys, 1) + vlbe__int_alen(sys, 1) +
-           vlbe__int_btangent_len(sys) + 3 * N;
+           vlbe__int_btangent_len(sys) + (vlbe__int_banded(sys) ? 3 * N : 0);
 }
 VLBE_API size_t vlbe_static_iwork_len_sys(const vlbe_dae *sys)
 {
@@ -1534,21 +1542,20 @@ VLBE_API vlbe_status vlbe_hht_params_genalpha(vlbe_hht_params *p, vlbe_real rho_
    row scales of the LU (N). */
 VLBE_API size_t vlbe_hht_work_len(int n, int m)
 {
-    size_t N = (size_t)n + (size_t)m, nn = (size_t)n * (size_t)n, mn = (size_t)m * (size_t)n;
-    return 3 * (4 * (size_t)n + (size_t)m) + N * N + N + nn + (size_t)n + mn + (size_t)m +
-           vlbe__int_tangent_len(n, m) + N;
+    const vlbe_dae d = vlbe__int_dense(n, m);
+    return vlbe_hht_work_len_sys(&d);
 }
 VLBE_API size_t vlbe_hht_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
 VLBE_API size_t vlbe_hht_work_len_sys(const vlbe_dae *sys)
 {
     size_t n, m, N, a, d;
     VLBE_ASSERT(sys != NULL);
-    if (!vlbe__int_banded(sys)) return vlbe_hht_work_len(sys->n, sys->m);
     n = (size_t)sys->n;
     m = (size_t)sys->m;
     N = n + m;
     a = 3 * (4 * n + m) + vlbe__int_alen(sys, 1) + N + vlbe__int_mlen(sys, 0) + n +
-        vlbe__int_mlen(sys, 1) + m + vlbe__int_btangent_len(sys) + N + 3 * N + n;
+        vlbe__int_mlen(sys, 1) + m + vlbe__int_btangent_len(sys) + N +
+        (vlbe__int_banded(sys) ? 3 * N + n : 0);
     d = 3 * (4 * n + m) + vlbe_dae_work_len_sys(sys); /* the consistent start */
     return a > d ? a : d;
 }
@@ -2004,9 +2011,6 @@ VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
     p->max_steps = 0;
 }
 
-/* Scratch shared by the Jacobian helpers (and by vlbe_dae_consistent_acc at
-   init, which gets the whole area from the iteration matrix on). */
-VLBE_INLINE size_t vlbe__bdf_scr_len(int n, int m) { return vlbe__int_tangent_len(n, m); }
 
 /* Size of the backup area of the BDF workspace (see below). */
 VLBE_INLINE size_t vlbe__bdf_backup_len(int n, int m)
@@ -2022,27 +2026,21 @@ VLBE_INLINE size_t vlbe__bdf_backup_len(int n, int m)
    of the iteration matrix (N2), scratch. */
 VLBE_API size_t vlbe_bdf_work_len(int n, int m)
 {
-    size_t N2 = 2 * (size_t)n + 2 * (size_t)m;
-    size_t tail = N2 * N2 + (size_t)n * (size_t)n + (size_t)n + (size_t)m * (size_t)n +
-                  (size_t)m + N2 + vlbe__bdf_scr_len(n, m);
-    size_t dae = vlbe_dae_work_len(n, m);
-    return N2 * (size_t)(VLBE_BDF_MAXORD + 1 + 5) + vlbe__bdf_backup_len(n, m) +
-           (tail > dae ? tail : dae);
+    const vlbe_dae d = vlbe__int_dense(n, m);
+    return vlbe_bdf_work_len_sys(&d);
 }
 VLBE_API size_t vlbe_bdf_iwork_len(int n, int m) { return 2 * (size_t)n + 2 * (size_t)m; }
-/* banded: the tail holds A (band of 2 (n+m) rows), M, Q, Cq, Ct, row
-   scales, scratch, and the vectors of the products in A's order (2 (n+m)
-   + 2 (n+m) + n) */
+/* banded: the tail ends with the vectors of the products in the band's
+   order (2 (n+m) + 2 (n+m) + n) */
 VLBE_API size_t vlbe_bdf_work_len_sys(const vlbe_dae *sys)
 {
     size_t n, m, N2, tail, dae;
     VLBE_ASSERT(sys != NULL);
-    if (!vlbe__int_banded(sys)) return vlbe_bdf_work_len(sys->n, sys->m);
     n = (size_t)sys->n;
     m = (size_t)sys->m;
     N2 = 2 * n + 2 * m;
     tail = vlbe__int_alen(sys, 2) + vlbe__int_mlen(sys, 0) + n + vlbe__int_mlen(sys, 1) + m + N2 +
-           vlbe__int_btangent_len(sys) + 2 * N2 + n;
+           vlbe__int_btangent_len(sys) + (vlbe__int_banded(sys) ? 2 * N2 + n : 0);
     dae = vlbe_dae_work_len_sys(sys);
     return N2 * (size_t)(VLBE_BDF_MAXORD + 1 + 5) + vlbe__bdf_backup_len(sys->n, sys->m) +
            (tail > dae ? tail : dae);
