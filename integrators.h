@@ -1060,8 +1060,8 @@ VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, int width, vlbe
     for (i = 0; i < N; ++i) {
         vlbe_real *ai = A + (size_t)i * ld, r = vlbe_vec_norm_inf(width, ai), si = VLBE_R(1.0);
         if (r > VLBE_R(0.0) && isfinite(r)) {
-            (void)frexp((double)r, &e);
-            si = (vlbe_real)ldexp(1.0, -e);
+            (void)vlbe_frexp(r, &e);
+            si = vlbe_ldexp(VLBE_R(1.0), -e);
             if (!isfinite(si)) si = VLBE_R(1.0); /* a subnormal row: 2^-e overflows */
             vlbe_vec_scale(width, si, ai);
             if (b) b[i] *= si;

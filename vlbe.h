@@ -16,8 +16,14 @@ CONFIG (define before the first #include; the first group is GLOBAL: set it
    VLBE_INLINE      default `static inline`
    VLBE_API         prefix of every public function, default VLBE_INLINE
    VLBE_RESTRICT    default `restrict` (C99), `__restrict` (C++), empty else
-   VLBE_ASSERT(x)   default assert(x); pure kernels check preconditions with it
+   VLBE_ASSERT(x)   precondition check of the pure kernels.  Default: assert(x)
+                    on a hosted system (__unix__, __APPLE__, _WIN32); on bare
+                    metal a trap (__builtin_trap, else abort) that links no
+                    printf or malloc; nothing under NDEBUG.  Define it to
+                    route failures to your own handler
    vlbe_sqrt ... vlbe_floor   the libm names; override all of them or none
+   vlbe_frexp, vlbe_ldexp     the same for the two exponent functions (a
+                    group of their own: override both or neither)
 
 CONVENTIONS
    Units: any consistent system (SI in all examples); angles in radians.
@@ -109,9 +115,25 @@ REFERENCES
 #include <string.h>
 #include <float.h>
 #include <math.h>
+/* Preconditions (programmer errors).  On a hosted system: the C assert
+   (message, abort; off under NDEBUG).  Elsewhere (a bare-metal target, no
+   OS macro): a trap without message, so that an embedded image does not
+   link printf and malloc through assert's message; off under NDEBUG too. */
 #ifndef VLBE_ASSERT
+#if defined(NDEBUG)
+#define VLBE_ASSERT(x) ((void)0)
+#elif defined(__unix__) || defined(__unix) || defined(__APPLE__) || defined(_WIN32)
 #include <assert.h>
 #define VLBE_ASSERT(x) assert(x)
+#else
+#define VLBE_ASSERT(x) ((x) ? (void)0 : vlbe__assert_trap())
+#if defined(__GNUC__) || defined(__clang__)
+static inline void vlbe__assert_trap(void) { __builtin_trap(); }
+#else
+#include <stdlib.h>
+static inline void vlbe__assert_trap(void) { abort(); }
+#endif
+#endif
 #endif
 
 /* index of entry (i, j) of a band-stored matrix (see Band storage above) */
@@ -152,6 +174,10 @@ typedef float vlbe_real;
 #define vlbe_log logf
 #define vlbe_floor floorf
 #endif
+#ifndef vlbe_frexp
+#define vlbe_frexp frexpf
+#define vlbe_ldexp ldexpf
+#endif
 #else
 typedef double vlbe_real;
 #define VLBE_R(x) x
@@ -168,6 +194,10 @@ typedef double vlbe_real;
 #define vlbe_exp exp
 #define vlbe_log log
 #define vlbe_floor floor
+#endif
+#ifndef vlbe_frexp
+#define vlbe_frexp frexp
+#define vlbe_ldexp ldexp
 #endif
 #endif
 
