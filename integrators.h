@@ -147,9 +147,19 @@ REFERENCES
 #define VLBE_DAE_BANDED 1 /* (n+m) x (n+m) bands in the augmented order          */
 
 /* Upper bounds of the iteration parameters (VLBE_EARG above them) */
-#define VLBE_HHT_MAX_HALVINGS 30 /* vlbe_hht_params.max_halvings: steps down to h / 2^30,
-                                    recursion depth 30                          */
+#define VLBE_HHT_MAX_HALVINGS 30 /* vlbe_hht_params.max_halvings: steps down to h / 2^30 */
 #define VLBE_INT_MAX_ITER 1000   /* newton_max of HHT and BDF, max_iter of vlbe_dae_static */
+
+/* Default tolerances follow the arithmetic: each is its double value, or a
+   multiple of the unit roundoff VLBE_EPS where that is larger (float).  An
+   iterate or a local error is known to a few ulps of the largest
+   coordinate at best, so a relative tolerance sits VLBE_RTOL_EPS units of
+   roundoff above it (float: 7.6e-6) and an absolute one VLBE_ATOL_EPS
+   (float: 9.5e-7, for coordinates of order one).  Double: the values of
+   the defaults' comments, bit for bit. */
+#define VLBE_RTOL_EPS 64
+#define VLBE_ATOL_EPS 8
+#define VLBE_TOL_DEFAULT(x, k) ((x) > (k) * VLBE_EPS ? (x) : (k) * VLBE_EPS)
 
 /* -- types -------------------------------------------------------------- */
 /* The problem: callbacks with a user context.  mass, force are required;
@@ -233,7 +243,8 @@ typedef struct vlbe_dae_stats {
 typedef struct vlbe_hht_params {
     vlbe_real alpha_m, alpha_f, beta, gamma;
     vlbe_real rtol, atol;   /* Newton: estimated error of the position and velocity
-                               increments <= atol + rtol |x| (default 1e-9, 1e-11) */
+                               increments <= atol + rtol |x| (default 1e-9, 1e-11;
+                               float 7.6e-6, 9.5e-7: VLBE_TOL_DEFAULT) */
     int newton_max;         /* iterations per attempt, 1..VLBE_INT_MAX_ITER (default 10) */
     int modified;           /* 1: keep the LU while the iteration contracts, 0: full
                                Newton (default 1)                                       */
@@ -275,7 +286,8 @@ typedef struct vlbe_hht_params {
 typedef struct vlbe_static_params {
     vlbe_real ftol;    /* residual test, absolute, in the units of Q and C
                           (C enters unscaled); 0 = off (default 0)                */
-    vlbe_real rtol, atol; /* increment test (default 1e-10, 1e-12); both 0 = off */
+    vlbe_real rtol, atol; /* increment test (default 1e-10, 1e-12; float 7.6e-6,
+                             9.5e-7); both 0 = off                           */
     int max_iter;      /* Newton iterations, 1..VLBE_INT_MAX_ITER (default 50)     */
     int max_halvings;  /* line search: halvings of a Newton step, 0..50 (default 5);
                           0 = plain Newton, the full step is always taken         */
@@ -312,7 +324,7 @@ typedef struct vlbe_hht {
 typedef struct vlbe_bdf_params {
     vlbe_real rtol, atol; /* local error per step on q and v (lambda, mu excluded):
                              weighted RMS with weights atol + rtol |y_i| <= 1
-                             (default 1e-6, 1e-8)                                  */
+                             (default 1e-6, 1e-8; float 7.6e-6, 9.5e-7)           */
     vlbe_real h0;         /* first step; 0: estimated from |y'(t0)| (default 0)    */
     vlbe_real h_min;      /* smallest step; 0: 4 eps |t| (default 0)               */
     vlbe_real h_max;      /* largest step; 0: unbounded (default 0)                */
@@ -1220,14 +1232,14 @@ VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const
    test then sees blocks of the same size whatever the units), and then
    every row is equilibrated (vlbe__int_equil), as in the integrators. */
 
-/* Defaults: ftol 0 (off), rtol 1e-10, atol 1e-12, 50 iterations, up to 5
-   halvings of a step. */
+/* Defaults: ftol 0 (off), rtol 1e-10, atol 1e-12 (float: VLBE_TOL_DEFAULT),
+   50 iterations, up to 5 halvings of a step. */
 VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
 {
     if (!p) return;
     p->ftol = VLBE_R(0.0);
-    p->rtol = VLBE_R(1e-10);
-    p->atol = VLBE_R(1e-12);
+    p->rtol = VLBE_TOL_DEFAULT(VLBE_R(1e-10), VLBE_RTOL_EPS);
+    p->atol = VLBE_TOL_DEFAULT(VLBE_R(1e-12), VLBE_ATOL_EPS);
     p->max_iter = 50;
     p->max_halvings = 5;
 }
@@ -1487,8 +1499,8 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
 
 VLBE_INLINE void vlbe__hht_defaults(vlbe_hht_params *p)
 {
-    p->rtol = VLBE_R(1e-9);
-    p->atol = VLBE_R(1e-11);
+    p->rtol = VLBE_TOL_DEFAULT(VLBE_R(1e-9), VLBE_RTOL_EPS);
+    p->atol = VLBE_TOL_DEFAULT(VLBE_R(1e-11), VLBE_ATOL_EPS);
     p->newton_max = 10;
     p->modified = 1;
     p->max_halvings = 0;
@@ -1684,7 +1696,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
 {
     const vlbe_dae *s = st->sys;
     const vlbe_hht_params *p = &st->par;
-    int n = st->n, m = st->m, N = n + m, i, j, it, fresh;
+    int n = st->n, m = st->m, N = n + m, i, j, it, fresh, full = !p->modified;
     size_t NN = (size_t)N * (size_t)N;
     vlbe_real *tq = vlbe__hht_trial(st), *tv = tq + n, *tqdd = tv + n, *ta = tqdd + n, *tl = ta + n;
     int band = vlbe__int_banded(s);
@@ -1759,7 +1771,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
             }
         }
         /* iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v, C_q^T; C_q, 0] */
-        if (!st->have_lu_ || !p->modified) {
+        if (!st->have_lu_ || full) {
             vlbe__int_blk B;
             size_t ld = (size_t)N;
             if (band) {
@@ -1862,8 +1874,26 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
                        velocity increment is that noise times gamma/(beta
                        h) and may stay above a tight atol): the iterate is
                        as good as the arithmetic makes it */
-                    if (theta >= VLBE_R(0.9) && nq <= VLBE_R(1.0)) conv = 1;
-                    else if (theta >= VLBE_R(1.0)) return VLBE_ENOCONV;
+                    if (theta >= VLBE_R(0.9) && nq <= VLBE_R(1.0)) {
+                        conv = 1;
+                    } else if (theta >= VLBE_R(1.0)) {
+                        if (full || p->max_halvings > 0) return VLBE_ENOCONV;
+                        /* diverging on a matrix of this attempt but of an
+                           earlier iterate: the tangent changed along the
+                           way (a start far from the solution: in float,
+                           the rounding of a stiff axial force, EA eps,
+                           makes the consistent start's q'' of the axial
+                           coordinates large, the predictor stretches the
+                           chain and the geometric stiffness of that
+                           stretch leaves with it).  Without halvings the
+                           rest of the attempt is full Newton, within the
+                           budget; with halvings the smaller step is the
+                           remedy (a run that completes is then the same
+                           with and without this branch) */
+                        full = 1;
+                        prev = VLBE_R(0.0);
+                        continue;
+                    }
                 }
                 if (conv) {
                     /* the noise floor above */
@@ -1903,36 +1933,49 @@ VLBE_INLINE void vlbe__hht_copy_state(int n, int m, const vlbe_real *src, vlbe_r
     vlbe_vec_copy(4 * n + m, src, dst);
 }
 
-/* Step of size h from st->t to t1 with up to `depth` levels of halving
-   (the halves end at st->t + h/2 and at t1). */
-VLBE_INLINE vlbe_status vlbe__hht_step_rec(vlbe_hht *st, vlbe_real h, vlbe_real t1, int depth)
+/* Step of size h from st->t to t1, halved on failure down to h /
+   2^max_halvings: a failed segment is replaced by its two halves (the
+   first ends at its start + half its size, the second at its end), each
+   of which may be halved again.  A loop over that binary tree, depth first,
+   with the ends of the open segments in end[] and bit l of `second` set
+   while the segment of level l is a second half: the stack is the same at
+   every depth.  On failure the state is the one before the call. */
+VLBE_INLINE vlbe_status vlbe__hht_step_halving(vlbe_hht *st, vlbe_real h, vlbe_real t1)
 {
-    int n = st->n, m = st->m;
-    vlbe_status rc = vlbe__hht_attempt(st, h, t1);
-    if (rc == VLBE_OK) {
-        vlbe__hht_copy_state(n, m, vlbe__hht_trial(st), st->q); /* q v qdd a lambda are contiguous */
-        st->t = t1;
-        ++st->stats.steps;
-        return VLBE_OK;
-    }
-    if (rc == VLBE_ENOCONV) ++st->stats.newton_fails;
-    ++st->stats.rejected;
-    st->have_lu_ = 0;
-    if (depth <= 0 || !vlbe__int_retry(&st->stats, rc)) return rc;
-    {
-        vlbe_real t0 = st->t;
-        vlbe_real *bk = vlbe__hht_backup(st);
-        /* the backup area is shared by all levels: only the outermost level
-           restores, inner levels return their status upwards */
-        if (depth == st->par.max_halvings) vlbe__hht_copy_state(n, m, st->q, bk);
-        rc = vlbe__hht_step_rec(st, VLBE_R(0.5) * h, t0 + VLBE_R(0.5) * h, depth - 1);
-        if (rc == VLBE_OK) rc = vlbe__hht_step_rec(st, VLBE_R(0.5) * h, t1, depth - 1);
-        if (rc != VLBE_OK && depth == st->par.max_halvings) {
-            vlbe__hht_copy_state(n, m, bk, st->q);
-            st->t = t0;
+    int n = st->n, m = st->m, depth = st->par.max_halvings, l = 0, k;
+    vlbe_real end[VLBE_HHT_MAX_HALVINGS + 1], hs = h, t0 = st->t;
+    unsigned long second = 0ul;
+    vlbe_real *bk = vlbe__hht_backup(st);
+    vlbe_status rc;
+    end[0] = t1;
+    for (;;) {
+        rc = vlbe__hht_attempt(st, hs, end[l]);
+        if (rc == VLBE_OK) {
+            vlbe__hht_copy_state(n, m, vlbe__hht_trial(st), st->q); /* q v qdd a lambda are contiguous */
+            st->t = end[l];
+            ++st->stats.steps;
+            while (l > 0 && (second >> l & 1ul)) --l; /* climb over finished second halves */
+            if (l == 0) return VLBE_OK;
+            second |= 1ul << l; /* a finished first half: its sibling ends where the parent does */
+            end[l] = end[l - 1];
+            for (hs = h, k = 0; k < l; ++k) hs *= VLBE_R(0.5);
+            continue;
         }
-        return rc;
+        if (rc == VLBE_ENOCONV) ++st->stats.newton_fails;
+        ++st->stats.rejected;
+        st->have_lu_ = 0;
+        if (l >= depth || !vlbe__int_retry(&st->stats, rc)) break;
+        if (l == 0) vlbe__hht_copy_state(n, m, st->q, bk);
+        ++l;
+        second &= ~(1ul << l);
+        hs *= VLBE_R(0.5);
+        end[l] = st->t + hs;
     }
+    if (l > 0) { /* halved: the backup holds the state before the call */
+        vlbe__hht_copy_state(n, m, bk, st->q);
+        st->t = t0;
+    }
+    return rc;
 }
 
 /* Advances the state by one step of size h > 0 (with halving on Newton
@@ -1966,7 +2009,7 @@ VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
     }
     t1 = tb + (vlbe_real)(k + 1) * hr;
     if (!isfinite(t1)) return VLBE_ENONFINITE; /* t + h overflows: nothing evaluated */
-    rc = vlbe__hht_step_rec(st, h, t1, st->par.max_halvings);
+    rc = vlbe__hht_step_halving(st, h, t1);
     if (rc != VLBE_OK) return rc;
     st->t_base_ = tb;
     st->h_run_ = hr;
@@ -1996,13 +2039,14 @@ VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
    puts an error d / h^2 into lambda, and that noise then spoils the order
    selection through the differences. */
 
-/* Defaults: rtol 1e-6, atol 1e-8, h0, h_min, h_max 0 (automatic), order <= 5,
-   4 Newton iterations, variable step, filtered error estimate. */
+/* Defaults: rtol 1e-6, atol 1e-8 (float: VLBE_TOL_DEFAULT), h0, h_min, h_max 0
+   (automatic), order <= 5, 4 Newton iterations, variable step, filtered
+   error estimate. */
 VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
 {
     VLBE_ASSERT(p != NULL);
-    p->rtol = VLBE_R(1e-6);
-    p->atol = VLBE_R(1e-8);
+    p->rtol = VLBE_TOL_DEFAULT(VLBE_R(1e-6), VLBE_RTOL_EPS);
+    p->atol = VLBE_TOL_DEFAULT(VLBE_R(1e-8), VLBE_ATOL_EPS);
     p->h0 = p->h_min = p->h_max = VLBE_R(0.0);
     p->max_order = VLBE_BDF_MAXORD;
     p->newton_max = 4;

@@ -201,8 +201,13 @@ static void test_static_params_default(void **state)
     (void)state;
     vlbe_static_params_default(&p);
     ASSERT_CLOSE(p.ftol, 0.0, 0.0, 0.0);
-    ASSERT_CLOSE(p.rtol, (double)VLBE_R(1e-10), 0.0, 0.0);
-    ASSERT_CLOSE(p.atol, (double)VLBE_R(1e-12), 0.0, 0.0);
+#ifdef VLBE_USE_FLOAT /* the double values are below float's resolution: 64 and 8 eps */
+    ASSERT_CLOSE(p.rtol, 64.0 * (double)FLT_EPSILON, 0.0, 0.0);
+    ASSERT_CLOSE(p.atol, 8.0 * (double)FLT_EPSILON, 0.0, 0.0);
+#else
+    ASSERT_CLOSE(p.rtol, 1e-10, 0.0, 0.0);
+    ASSERT_CLOSE(p.atol, 1e-12, 0.0, 0.0);
+#endif
     assert_int_equal(p.max_iter, 50);
     assert_int_equal(p.max_halvings, 5);
     vlbe_static_params_default(NULL); /* harmless */
