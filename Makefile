@@ -4,7 +4,8 @@
 #                       (double -O2, double -O0, float -O2, ASan+UBSan), the
 #                       measured numbers of the test comments against their
 #                       logs, and the double -O2 build under valgrind when it
-#                       is installed; each binary under a time limit
+#                       is installed; each binary under a time limit,
+#                       then make check-m4
 #   make demo           build the examples and run the paper scenes (out/demo/),
 #                       then the work-precision charts (out/wp_*.svg, every
 #                       bench/wp_*.c at -O2)
@@ -14,6 +15,12 @@
 #   make bench-scale    time per step of a clamped chain, 4 .. 1024 elements, dense vs banded
 #   make examples       build examples/*.c with the full warning set
 #   make check-headers  each header alone, twice, as C++, in float mode
+#   make check-m4       the tests/m4 programs built for a Cortex-M4F (float,
+#                       hard FPU) and run under qemu-system-arm -M mps2-an386,
+#                       each output against the host float run; no double
+#                       arithmetic in the images, image sizes, stack per
+#                       public function (build/m4/; make m4-tools installs
+#                       the ARM toolchain and QEMU with apt-get as root)
 #   make measured-update  rerun the tests and rewrite the measured numbers
 #                       quoted in test comments (tests/measured.sh) from them
 #   make lint           cppcheck
@@ -190,6 +197,8 @@ test: check-headers test-build
 	elif [ $$fail = 0 ]; then echo "test: valgrind not found, valgrind runs skipped"; fi; \
 	if [ -n "$$logs" ]; then $(TEST_SUMMARY) fail=$$fail $$logs; \
 	else echo "tests: 0 passed, 0 failed, 0 skipped"; fi; \
+	if [ $$fail = 0 ]; then echo "== make check-m4"; \
+	  $(MAKE) --no-print-directory check-m4 || { echo "FAILED: make check-m4"; fail=1; }; fi; \
 	exit $$fail
 
 # Runs the double and float builds with VLBE_TEST_REPORT=1 and rewrites every

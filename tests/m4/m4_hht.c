@@ -90,12 +90,6 @@ int main(void)
     }
     vlbe_ale_chain_straight(&ch, r0, dir, q0);
     if (m4_status("hht_params_hht", vlbe_hht_params_hht(&par, VLBE_R(-0.05)))) return m4_exit();
-#ifdef M4_HHT_DEV_TOL
-    par.rtol = M4_HHT_RTOL;
-    par.atol = M4_HHT_ATOL;
-    par.modified = M4_HHT_MOD;
-    par.max_halvings = M4_HHT_HALV;
-#endif
     if (m4_status("hht_init", vlbe_hht_init(&st, &sys, &par, VLBE_R(0.0), q0, v0, work, lw, iwork,
                                             liw)))
         return m4_exit();
