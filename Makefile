@@ -4,7 +4,8 @@
 #                       (double -O2, double -O0, float -O2, ASan+UBSan), the
 #                       measured numbers of the test comments against their
 #                       logs, and the double -O2 build under valgrind when it
-#                       is installed; each binary under a time limit
+#                       is installed; each binary under a time limit,
+#                       then make check-m4
 #   make demo           build the examples and run the paper scenes (out/demo/),
 #                       then the work-precision charts (out/wp_*.svg, every
 #                       bench/wp_*.c at -O2)
@@ -14,6 +15,12 @@
 #   make bench-scale    time per step of a clamped chain, 4 .. 1024 elements, dense vs banded
 #   make examples       build examples/*.c with the full warning set
 #   make check-headers  each header alone, twice, as C++, in float mode
+#   make check-m4       the tests/m4 programs built for a Cortex-M4F (float,
+#                       hard FPU) and run under qemu-system-arm -M mps2-an386,
+#                       each output against the host float run; no double
+#                       arithmetic in the images, image sizes, stack per
+#                       public function (build/m4/; make m4-tools installs
+#                       the ARM toolchain and QEMU with apt-get as root)
 #   make measured-update  rerun the tests and rewrite the measured numbers
 #                       quoted in test comments (tests/measured.sh) from them
 #   make lint           cppcheck
@@ -102,7 +109,8 @@ LAPACKE_H := $(wildcard /usr/include/lapacke.h)
 BENCH_LAPACKE_BINS := $(if $(LAPACKE_H),$(BUILD)/bench/bench_lu_lapacke)
 
 .PHONY: all check test check-headers cmocka test-build examples demo bench \
-        bench-portable bench-scale lint clean fuzz fuzz-build fuzz-clang measured-update mutate
+        bench-portable bench-scale lint clean fuzz fuzz-build fuzz-clang measured-update mutate \
+        check-m4 m4-tools
 
 all: test examples
 
@@ -189,6 +197,8 @@ test: check-headers test-build
 	elif [ $$fail = 0 ]; then echo "test: valgrind not found, valgrind runs skipped"; fi; \
 	if [ -n "$$logs" ]; then $(TEST_SUMMARY) fail=$$fail $$logs; \
 	else echo "tests: 0 passed, 0 failed, 0 skipped"; fi; \
+	if [ $$fail = 0 ]; then echo "== make check-m4"; \
+	  $(MAKE) --no-print-directory check-m4 || { echo "FAILED: make check-m4"; fail=1; }; fi; \
 	exit $$fail
 
 # Runs the double and float builds with VLBE_TEST_REPORT=1 and rewrites every
@@ -347,6 +357,118 @@ MUTATIONS ?=
 
 mutate: cmocka
 	@MAKE='$(MAKE)' sh tests/mutate.sh $(MUTATIONS)
+
+# -- Cortex-M4F under QEMU ------------------------------------------------------
+# make check-m4 builds every program of M4_NAMES (tests/m4/m4_*.c) twice:
+# for a Cortex-M4F with its single-precision FPU (float build, the WARN set,
+# -O2, no FMA contraction; newlib with rdimon semihosting; startup and
+# memory map in tests/m4/) and for the host in float with the same flags.
+# Then, failing on any miss:
+#   - runs each image under qemu-system-arm -M mps2-an386 (M4_TIMEOUT
+#     seconds each) and the host build, both must exit 0;
+#   - compares each M4 output with the host's (tests/m4/compare.awk: a
+#     value is bit-identical or within M4_TOL FLT_EPSILON times the largest
+#     magnitude of its group; counts and statuses equal);
+#   - checks that no image links a __aeabi_d* symbol (double arithmetic);
+#   - prints the size of each image and of an LU-only image (default
+#     VLBE_ASSERT, no crt0) that must link neither __assert_func, printf
+#     nor malloc;
+#   - prints the worst-case stack of every public function (tests/m4/stack.awk
+#     over gcc's -fstack-usage -fcallgraph-info=su of one unit of all headers
+#     compiled with -DVLBE_API=): at most 1 kB, 2 kB for element kernels,
+#     or the figure in tests/m4/stack_exceptions.txt; a recursion counts as
+#     over the limit unless listed there.  Table in build/m4/stack.md.
+# Outputs, images and tables in build/m4/.
+M4_CC ?= arm-none-eabi-gcc
+M4_NM ?= arm-none-eabi-nm
+M4_SIZE ?= arm-none-eabi-size
+M4_QEMU ?= qemu-system-arm
+M4_TIMEOUT ?= 60
+M4_TOL ?= 16
+M4_DIR = tests/m4
+M4_ARCH = -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
+M4_FLAGS = -DVLBE_USE_FLOAT -O2 -ffp-contract=off
+M4_LD = -T $(M4_DIR)/mps2_an386.ld $(M4_DIR)/startup.S
+M4_NAMES = m4_lu m4_ale m4_ale3 m4_rancf m4_cr2d m4_hht m4_bdf
+M4_ELFS := $(addprefix $(BUILD)/m4/,$(addsuffix .elf,$(M4_NAMES)))
+M4_HOST_BINS := $(addprefix $(BUILD)/m4/host/,$(M4_NAMES))
+M4_DEPS = $(HEADERS) $(M4_DIR)/m4_out.h
+M4_KERNEL_RE = ^vlbe_(ale|ale3|rancf|cr2d)_
+M4_SYSTEM_RE = _(chain|beam|inv_sys)_|_inv_chain_
+M4_PROBE = printf 'int main(void) { return 0; }\n' | \
+  $(M4_CC) $(M4_ARCH) --specs=rdimon.specs -x c - -o $(BUILD)/.m4-probe >/dev/null 2>&1
+M4_MISSING = m=""; \
+  if ! command -v $(M4_CC) >/dev/null 2>&1; then m="$$m gcc-arm-none-eabi"; \
+  elif ! $(M4_PROBE); then m="$$m libnewlib-arm-none-eabi"; fi; \
+  command -v $(M4_QEMU) >/dev/null 2>&1 || m="$$m qemu-system-arm"
+
+m4-tools:
+	@mkdir -p $(BUILD)
+	@$(M4_MISSING); if [ -z "$$m" ]; then exit 0; fi; \
+	if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	  echo "m4-tools: missing:$$m; installing with apt-get"; \
+	  { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y $$m; } || true; \
+	  $(M4_MISSING); if [ -z "$$m" ]; then exit 0; fi; \
+	fi; \
+	echo "make check-m4 needs the Debian packages:$$m (apt-get install$$m;" >&2; \
+	echo "or set M4_CC, M4_NM, M4_SIZE, M4_QEMU to an arm-none-eabi toolchain with newlib and a QEMU)" >&2; \
+	exit 1
+
+$(BUILD)/m4/%.elf: $(M4_DIR)/%.c $(M4_DEPS) $(M4_DIR)/startup.S $(M4_DIR)/mps2_an386.ld | m4-tools
+	@mkdir -p $(@D)
+	$(M4_CC) $(M4_ARCH) $(CSTD) $(WARN) $(M4_FLAGS) --specs=rdimon.specs $(M4_LD) $< -o $@ -lm
+
+# the footprint image: no crt0, no stdio (startup.S with M4_BARE)
+$(BUILD)/m4/m4_lu_only.elf: $(M4_DIR)/m4_lu_only.c vlbe.h $(M4_DIR)/startup.S $(M4_DIR)/mps2_an386.ld | m4-tools
+	@mkdir -p $(@D)
+	$(M4_CC) $(M4_ARCH) $(CSTD) $(WARN) $(M4_FLAGS) -DM4_BARE -nostartfiles $(M4_LD) $< -o $@ -lm
+
+$(BUILD)/m4/host/%: $(M4_DIR)/%.c $(M4_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(WARN) $(M4_FLAGS) $< -o $@ -lm
+
+# one unit of all headers, public functions external (-DVLBE_API=)
+$(BUILD)/m4/stack/vlbe_all.ci: $(HEADERS) | m4-tools
+	@mkdir -p $(@D)
+	@printf '#include "%s"\n' $(HEADERS) > $(@D)/vlbe_all.c
+	$(M4_CC) $(M4_ARCH) $(CSTD) $(WARN) $(M4_FLAGS) -DVLBE_API= -fstack-usage -fcallgraph-info=su \
+	  -I. -c $(@D)/vlbe_all.c -o $(@D)/vlbe_all.o
+
+check-m4: $(M4_ELFS) $(M4_HOST_BINS) $(BUILD)/m4/m4_lu_only.elf $(BUILD)/m4/stack/vlbe_all.ci
+	@set -u; fail=0; d=$(BUILD)/m4; \
+	echo "== check-m4: $(M4_NAMES) under $(M4_QEMU) -M mps2-an386 and on the host (float)"; \
+	for p in $(M4_NAMES); do \
+	  rc=0; timeout -k 5 $(M4_TIMEOUT) $(M4_QEMU) -M mps2-an386 -nographic -semihosting \
+	    -kernel $$d/$$p.elf < /dev/null > $$d/$$p.m4.txt 2>&1 || rc=$$?; \
+	  hrc=0; timeout -k 5 $(M4_TIMEOUT) $$d/host/$$p > $$d/$$p.host.txt 2>&1 || hrc=$$?; \
+	  if [ $$rc -eq 124 ] || [ $$rc -eq 137 ]; then echo "FAILED (time limit $(M4_TIMEOUT) s): $$p under QEMU"; fail=1; \
+	  elif [ $$rc -ne 0 ]; then echo "FAILED (exit $$rc): $$p under QEMU"; grep '^FAIL' $$d/$$p.m4.txt; fail=1; fi; \
+	  if [ $$hrc -ne 0 ]; then echo "FAILED (exit $$hrc): $$p on the host"; fail=1; fi; \
+	  awk -v tol=$(M4_TOL) -v prog=$$p -f $(M4_DIR)/compare.awk $$d/$$p.host.txt $$d/$$p.m4.txt || fail=1; \
+	done; \
+	rc=0; timeout -k 5 $(M4_TIMEOUT) $(M4_QEMU) -M mps2-an386 -nographic -semihosting \
+	  -kernel $$d/m4_lu_only.elf < /dev/null > $$d/m4_lu_only.m4.txt 2>&1 || rc=$$?; \
+	if [ $$rc -ne 0 ]; then echo "FAILED (exit $$rc): m4_lu_only under QEMU"; fail=1; fi; \
+	for e in $(M4_ELFS) $$d/m4_lu_only.elf; do \
+	  s=$$($(M4_NM) $$e | awk '$$NF ~ /^__aeabi_d/ { printf " %s", $$NF }'); \
+	  if [ -n "$$s" ]; then echo "FAILED: $$e links double arithmetic:$$s"; fail=1; fi; \
+	done; \
+	s=$$($(M4_NM) $$d/m4_lu_only.elf | awk '$$NF ~ /^(__assert_func|_?_?v?i?printf|_.*printf_r|malloc|_malloc_r)$$/ { printf " %s", $$NF }'); \
+	if [ -n "$$s" ]; then echo "FAILED: the LU-only image links$$s"; fail=1; fi; \
+	echo; echo "== check-m4: image sizes (bytes, $(M4_SIZE); text = code + read-only data)"; \
+	echo "| image | text | data | bss |"; echo "|---|---:|---:|---:|"; \
+	for e in $(M4_ELFS) $$d/m4_lu_only.elf; do \
+	  $(M4_SIZE) $$e | awk -v n=$$(basename $$e .elf) 'NR == 2 { printf "| %s | %d | %d | %d |\n", n, $$1, $$2, $$3 }'; \
+	done; \
+	echo "(m4_lu_only: vlbe.h's dense and band LU with the default VLBE_ASSERT, no crt0 and no stdio;"; \
+	echo " no __assert_func, printf or malloc linked; the others carry newlib's stdio and rdimon)"; \
+	echo; echo "== check-m4: stack per public function (bytes; float, $(M4_ARCH) -O2)"; \
+	awk -v headers="$(HEADERS)" -v kernel_re='$(M4_KERNEL_RE)' -v system_re='$(M4_SYSTEM_RE)' \
+	  -v exceptions=$(M4_DIR)/stack_exceptions.txt -f $(M4_DIR)/stack.awk $$d/stack/vlbe_all.ci \
+	  > $$d/stack.md 2> $$d/stack.sum || fail=1; \
+	cat $$d/stack.md $$d/stack.sum; \
+	if [ $$fail = 0 ]; then echo "check-m4: ok"; else echo "check-m4: FAILED"; fi; \
+	exit $$fail
 
 # -- lint ---------------------------------------------------------------------
 LINT_OPTS = --enable=warning,performance,portability --error-exitcode=1 --inline-suppr -q \

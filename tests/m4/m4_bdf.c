@@ -1,0 +1,157 @@
+/* m4_bdf.c -- BDF of integrators.h on the Cortex-M4F (make check-m4): the
+   index-3 Cartesian pendulum of examples/pendulum.c (mass 1 kg, rod 1 m,
+   g = 9.81, released at rest from the horizontal; C = (x^2 + y^2 - L^2)/2,
+   analytic Jacobians) to t = 1 s with vlbe_bdf_params_default; prints q,
+   v, lambda, mu at t = 0.25, 0.5, 0.75, 1 (step and order too) and the
+   counters.  A failure prints its status and the program exits nonzero.
+   -- part of vlbe                                  SPDX-License-Identifier: MIT */
+#include "../../integrators.h"
+#include "m4_out.h"
+
+#define WORK_CAP 1024
+#define IWORK_CAP 64
+
+typedef struct pend_par {
+    vlbe_real m, L, g; /* kg, m, m/s^2 */
+} pend_par;
+
+static vlbe_dae sys;
+static vlbe_bdf st;
+static vlbe_real work[WORK_CAP];
+static int iwork[IWORK_CAP];
+
+static int pend_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+{
+    const pend_par *p = (const pend_par *)user;
+    (void)t;
+    (void)q;
+    (void)v;
+    M[0] = p->m;
+    M[1] = VLBE_R(0.0);
+    M[2] = VLBE_R(0.0);
+    M[3] = p->m;
+    return 0;
+}
+
+static int pend_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+{
+    const pend_par *p = (const pend_par *)user;
+    (void)t;
+    (void)q;
+    (void)v;
+    Q[0] = VLBE_R(0.0);
+    Q[1] = -p->m * p->g;
+    return 0;
+}
+
+static int pend_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C)
+{
+    const pend_par *p = (const pend_par *)user;
+    (void)t;
+    C[0] = VLBE_R(0.5) * (q[0] * q[0] + q[1] * q[1] - p->L * p->L);
+    return 0;
+}
+
+static int pend_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
+{
+    (void)user;
+    (void)t;
+    Cq[0] = q[0];
+    Cq[1] = q[1];
+    if (Ct) Ct[0] = VLBE_R(0.0);
+    return 0;
+}
+
+/* gamma = -(C_q v)_q v = -|v|^2 */
+static int pend_constr_acc(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                           vlbe_real *gamma)
+{
+    (void)user;
+    (void)t;
+    (void)q;
+    gamma[0] = -(v[0] * v[0] + v[1] * v[1]);
+    return 0;
+}
+
+/* Q is constant: K = D = 0 */
+static int pend_force_jac(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                          vlbe_real *K, vlbe_real *D)
+{
+    int i;
+    (void)user;
+    (void)t;
+    (void)q;
+    (void)v;
+    for (i = 0; i < 4; ++i) K[i] = D[i] = VLBE_R(0.0);
+    return 0;
+}
+
+/* d(C_q^T lambda)/dq = lambda I */
+static int pend_constr_hess(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
+                            vlbe_real *H)
+{
+    (void)user;
+    (void)t;
+    (void)q;
+    H[0] = H[3] = lambda[0];
+    H[1] = H[2] = VLBE_R(0.0);
+    return 0;
+}
+
+int main(void)
+{
+    pend_par par;
+    vlbe_bdf_params bp;
+    vlbe_real q0[2], v0[2];
+    size_t lw, liw;
+    int k;
+    par.m = VLBE_R(1.0);
+    par.L = VLBE_R(1.0);
+    par.g = VLBE_R(9.81);
+    memset(&sys, 0, sizeof sys);
+    sys.n = 2;
+    sys.m = 1;
+    sys.flags = VLBE_DAE_MASS_CONST;
+    sys.user = &par;
+    sys.mass = pend_mass;
+    sys.force = pend_force;
+    sys.constr = pend_constr;
+    sys.constr_jac = pend_constr_jac;
+    sys.constr_acc = pend_constr_acc;
+    sys.force_jac = pend_force_jac;
+    sys.constr_hess = pend_constr_hess;
+    q0[0] = par.L;
+    q0[1] = VLBE_R(0.0);
+    v0[0] = v0[1] = VLBE_R(0.0);
+    lw = vlbe_bdf_work_len_sys(&sys);
+    liw = vlbe_bdf_iwork_len_sys(&sys);
+    m4_int("work_len", (long)lw);
+    m4_int("iwork_len", (long)liw);
+    if (lw > WORK_CAP || liw > IWORK_CAP) {
+        m4_status("workspace", VLBE_EWORK);
+        return m4_exit();
+    }
+    vlbe_bdf_params_default(&bp);
+    if (m4_status("bdf_init", vlbe_bdf_init(&st, &sys, &bp, VLBE_R(0.0), q0, v0, work, lw, iwork,
+                                            liw)))
+        return m4_exit();
+    for (k = 1; k <= 4; ++k) {
+        if (m4_status("bdf_advance", vlbe_bdf_advance(&st, VLBE_R(0.25) * (vlbe_real)k))) break;
+        m4_val("t", -1, st.t);
+        m4_vec("q", st.q, 2);
+        m4_vec("v", st.v, 2);
+        m4_vec("lambda", st.lambda, 1);
+        m4_vec("mu", st.mu, 1);
+        m4_val("h", -1, st.h);
+        m4_int("order", st.order);
+    }
+    m4_int("steps", st.stats.steps);
+    m4_int("rejected", st.stats.rejected);
+    m4_int("newton_iters", st.stats.newton_iters);
+    m4_int("newton_fails", st.stats.newton_fails);
+    m4_int("force_calls", st.stats.force_calls);
+    m4_int("jac_evals", st.stats.jac_evals);
+    m4_int("lu_factors", st.stats.lu_factors);
+    m4_int("lu_solves", st.stats.lu_solves);
+    return m4_exit();
+}
