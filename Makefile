@@ -385,6 +385,8 @@ M4_SIZE ?= arm-none-eabi-size
 M4_QEMU ?= qemu-system-arm
 M4_TIMEOUT ?= 60
 M4_TOL ?= 16
+# the float cantilever's tip against the double run, relative (make check-m4)
+M4_DBL_TOL ?= 1e-3
 M4_DIR = tests/m4
 M4_ARCH = -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 M4_FLAGS = -DVLBE_USE_FLOAT -O2 -ffp-contract=off
@@ -427,6 +429,11 @@ $(BUILD)/m4/host/%: $(M4_DIR)/%.c $(M4_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(CSTD) $(WARN) $(M4_FLAGS) $< -o $@ -lm
 
+# the HHT cantilever in double on the host: the float runs' tip against it
+$(BUILD)/m4/host-dbl/m4_hht: $(M4_DIR)/m4_hht.c $(M4_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(WARN) -O2 -DM4_HOST_DOUBLE $< -o $@ -lm
+
 # one unit of all headers, public functions external (-DVLBE_API=)
 $(BUILD)/m4/stack/vlbe_all.ci: $(HEADERS) | m4-tools
 	@mkdir -p $(@D)
@@ -434,7 +441,8 @@ $(BUILD)/m4/stack/vlbe_all.ci: $(HEADERS) | m4-tools
 	$(M4_CC) $(M4_ARCH) $(CSTD) $(WARN) $(M4_FLAGS) -DVLBE_API= -fstack-usage -fcallgraph-info=su \
 	  -I. -c $(@D)/vlbe_all.c -o $(@D)/vlbe_all.o
 
-check-m4: $(M4_ELFS) $(M4_HOST_BINS) $(BUILD)/m4/m4_lu_only.elf $(BUILD)/m4/stack/vlbe_all.ci
+check-m4: $(M4_ELFS) $(M4_HOST_BINS) $(BUILD)/m4/host-dbl/m4_hht $(BUILD)/m4/m4_lu_only.elf \
+          $(BUILD)/m4/stack/vlbe_all.ci
 	@set -u; fail=0; d=$(BUILD)/m4; \
 	echo "== check-m4: $(M4_NAMES) under $(M4_QEMU) -M mps2-an386 and on the host (float)"; \
 	for p in $(M4_NAMES); do \
@@ -445,6 +453,12 @@ check-m4: $(M4_ELFS) $(M4_HOST_BINS) $(BUILD)/m4/m4_lu_only.elf $(BUILD)/m4/stac
 	  elif [ $$rc -ne 0 ]; then echo "FAILED (exit $$rc): $$p under QEMU"; grep '^FAIL' $$d/$$p.m4.txt; fail=1; fi; \
 	  if [ $$hrc -ne 0 ]; then echo "FAILED (exit $$hrc): $$p on the host"; fail=1; fi; \
 	  awk -v tol=$(M4_TOL) -v prog=$$p -f $(M4_DIR)/compare.awk $$d/$$p.host.txt $$d/$$p.m4.txt || fail=1; \
+	done; \
+	hrc=0; timeout -k 5 $(M4_TIMEOUT) $$d/host-dbl/m4_hht > $$d/m4_hht.dbl.txt 2>&1 || hrc=$$?; \
+	if [ $$hrc -ne 0 ]; then echo "FAILED (exit $$hrc): m4_hht in double on the host"; fail=1; fi; \
+	for f in host m4; do \
+	  awk -v tol=$(M4_DBL_TOL) -v what="m4_hht $$f float" -f $(M4_DIR)/vs_double.awk \
+	    $$d/m4_hht.dbl.txt $$d/m4_hht.$$f.txt || fail=1; \
 	done; \
 	rc=0; timeout -k 5 $(M4_TIMEOUT) $(M4_QEMU) -M mps2-an386 -nographic -semihosting \
 	  -kernel $$d/m4_lu_only.elf < /dev/null > $$d/m4_lu_only.m4.txt 2>&1 || rc=$$?; \

@@ -440,11 +440,11 @@ static inline vlbe_real vlbe__ale_rule_bmax(const vlbe_ale_rule *r)
     return m;
 }
 
-VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *mat,
-                                        unsigned flags, int nm, int nl, int nt)
+/* The arguments of vlbe_ale_elem_init (also checked by the rational
+   element before it writes anything): a finite material with rhoA > 0 and
+   the other constants >= 0, rule orders 0 (default) .. VLBE_ALE_NGP_MAX. */
+static inline vlbe_status vlbe__ale_elem_check(const vlbe_ale_mat *mat, int nm, int nl, int nt)
 {
-    vlbe_status st;
-    VLBE_ASSERT(el != NULL && mat != NULL);
     if (!vlbe_all_finite(&mat->rhoA, 1) || !vlbe_all_finite(&mat->EA, 1) ||
         !vlbe_all_finite(&mat->EI, 1) || !vlbe_all_finite(&mat->c_eps, 1) ||
         !vlbe_all_finite(&mat->c_kap, 1) || !vlbe_all_finite(mat->f, 2))
@@ -455,6 +455,15 @@ VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *m
     if (nm < 0 || nm > VLBE_ALE_NGP_MAX || nl < 0 || nl > VLBE_ALE_NGP_MAX || nt < 0 ||
         nt > VLBE_ALE_NGP_MAX)
         return VLBE_EARG;
+    return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *mat,
+                                        unsigned flags, int nm, int nl, int nt)
+{
+    vlbe_status st;
+    VLBE_ASSERT(el != NULL && mat != NULL);
+    if ((st = vlbe__ale_elem_check(mat, nm, nl, nt)) != VLBE_OK) return st;
     /* nothing can fail below: el is written only now */
     if ((st = vlbe__ale_rule(&el->rm, nm, 4)) != VLBE_OK) return st;
     if ((st = vlbe__ale_rule(&el->rl, nl, 5)) != VLBE_OK) return st;

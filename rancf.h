@@ -294,11 +294,20 @@ static inline void vlbe__rancf_g(const vlbe_real *k, vlbe_real xi, int nd, vlbe_
     }
 }
 
+/* The basis of normalized weights k at p (weights already checked). */
+static inline void vlbe__rancf_eval(const vlbe_real *k, vlbe_real p, vlbe_real p1,
+                                    vlbe_real p2, int kmax, int amax, vlbe_herm_ale *b)
+{
+    vlbe_real g[4][6];
+    vlbe__rancf_g(k, (p - p1) * (VLBE_R(1.0) / (p2 - p1)), kmax + amax + 1, g);
+    vlbe__ale_basis_fill((const vlbe_real(*)[6])g, p, p1, p2, kmax, amax, b);
+}
+
 VLBE_API vlbe_status vlbe_rancf_basis_eval(const vlbe_real *w, vlbe_real p, vlbe_real p1,
                                            vlbe_real p2, int kmax, int amax,
                                            vlbe_herm_ale *VLBE_RESTRICT b)
 {
-    vlbe_real k[4], g[4][6];
+    vlbe_real k[4];
     vlbe_herm_ale t;
     vlbe_status st;
     VLBE_ASSERT(w != NULL && b != NULL);
@@ -306,25 +315,15 @@ VLBE_API vlbe_status vlbe_rancf_basis_eval(const vlbe_real *w, vlbe_real p, vlbe
     if ((st = vlbe__rancf_wnorm(w, k)) != VLBE_OK) return st;
     if (!isfinite(p) || !isfinite(p1) || !isfinite(p2)) return VLBE_ENONFINITE;
     if ((st = vlbe__ale_len(p1, p2)) != VLBE_OK) return st;
-    vlbe__rancf_g(k, (p - p1) * (VLBE_R(1.0) / (p2 - p1)), kmax + amax + 1, g);
-    vlbe__ale_basis_fill((const vlbe_real(*)[6])g, p, p1, p2, kmax, amax, &t);
+    vlbe__rancf_eval(k, p, p1, p2, kmax, amax, &t);
     return vlbe__rancf_b_out(&t, kmax, amax, b);
 }
 
-/* The basis of the element at p (weights already checked). */
-static inline void vlbe__rancf_eval(const vlbe_rancf_elem *el, vlbe_real p, vlbe_real p1,
-                                    vlbe_real p2, int kmax, int amax, vlbe_herm_ale *b)
-{
-    vlbe_real g[4][6];
-    vlbe__rancf_g(el->k, (p - p1) * (VLBE_R(1.0) / (p2 - p1)), kmax + amax + 1, g);
-    vlbe__ale_basis_fill((const vlbe_real(*)[6])g, p, p1, p2, kmax, amax, b);
-}
-
 /* Refill one rule point of the planar tables with the rational basis. */
-static inline void vlbe__rancf_gp(const vlbe_rancf_elem *el, vlbe_ale_gp *gp)
+static inline void vlbe__rancf_gp(const vlbe_real *k, vlbe_ale_gp *gp)
 {
     vlbe_herm_ale b;
-    vlbe__rancf_eval(el, gp->xi, VLBE_R(0.0), VLBE_R(1.0), 3, 2, &b);
+    vlbe__rancf_eval(k, gp->xi, VLBE_R(0.0), VLBE_R(1.0), 3, 2, &b);
     vlbe__ale_gp_set(gp, gp->xi, gp->w, &b);
 }
 
@@ -334,34 +333,53 @@ static inline int vlbe__rancf_gp_ok(const vlbe_ale_gp *gp)
     return vlbe_all_finite(&gp->b[0][0][0], 3 * VLBE_DA_N * 4) & vlbe_all_finite(gp->b3, 4);
 }
 
+/* 1 if the rational numbers at xi are finite (one scratch point; the
+   weights are so uneven otherwise that the basis overflows) */
+static inline int vlbe__rancf_xi_ok(const vlbe_real *k, vlbe_real xi)
+{
+    vlbe_ale_gp gp;
+    gp.xi = xi;
+    gp.w = VLBE_R(0.0);
+    vlbe__rancf_gp(k, &gp);
+    return vlbe__rancf_gp_ok(&gp);
+}
+
+/* Two passes, so that the element (12 kB in float) is never copied: every
+   check first (the planar element's arguments, the rational numbers at the
+   abscissae of the three rules and at the ends, on one scratch point),
+   then the planar tables written into *el and their Hermite numbers
+   replaced in place, which cannot fail. */
 VLBE_API vlbe_status vlbe_rancf_elem_init(vlbe_rancf_elem *el, const vlbe_ale_mat *mat,
                                           const vlbe_real *w, unsigned flags, int nm, int nl,
                                           int nt)
 {
-    vlbe_rancf_elem t;
+    vlbe_real k[4];
+    const int nr[3] = {nm != 0 ? nm : 4, nl != 0 ? nl : 5, nt != 0 ? nt : 5};
     vlbe_ale_rule *ru[3];
     vlbe_status st;
     int r, g, ok = 1;
     VLBE_ASSERT(el != NULL && mat != NULL && w != NULL);
-    if ((st = vlbe__rancf_wnorm(w, t.k)) != VLBE_OK) return st;
+    if ((st = vlbe__rancf_wnorm(w, k)) != VLBE_OK) return st;
     if (flags & VLBE_ALE_INV_AXIAL) return VLBE_EARG;
-    /* the planar element validates the material and the orders and lays
-       out the rules; its Hermite numbers are then replaced */
-    if ((st = vlbe_ale_elem_init(&t.ale, mat, flags, nm, nl, nt)) != VLBE_OK) return st;
-    ru[0] = &t.ale.rm;
-    ru[1] = &t.ale.rl;
-    ru[2] = &t.ale.rt;
+    if ((st = vlbe__ale_elem_check(mat, nm, nl, nt)) != VLBE_OK) return st;
+    for (r = 0; r < 3; ++r) {
+        const vlbe_real *x, *wg;
+        if (vlbe_gl_rule(nr[r], &x, &wg)) return VLBE_EARG;
+        for (g = 0; g < nr[r]; ++g) ok &= vlbe__rancf_xi_ok(k, VLBE_R(0.5) * (x[g] + VLBE_R(1.0)));
+    }
+    ok &= vlbe__rancf_xi_ok(k, VLBE_R(0.0)) & vlbe__rancf_xi_ok(k, VLBE_R(1.0));
+    if (!ok) return VLBE_EWEIGHT;
+    /* nothing can fail below: el is written only now */
+    if ((st = vlbe_ale_elem_init(&el->ale, mat, flags, nm, nl, nt)) != VLBE_OK) return st;
+    for (r = 0; r < 4; ++r) el->k[r] = k[r];
+    ru[0] = &el->ale.rm;
+    ru[1] = &el->ale.rl;
+    ru[2] = &el->ale.rt;
     for (r = 0; r < 3; ++r)
-        for (g = 0; g < ru[r]->n; ++g) {
-            vlbe__rancf_gp(&t, &ru[r]->g[g]);
-            ok &= vlbe__rancf_gp_ok(&ru[r]->g[g]);
-        }
-    vlbe__rancf_gp(&t, &t.ale.ends[0]);
-    vlbe__rancf_gp(&t, &t.ale.ends[1]);
-    ok &= vlbe__rancf_gp_ok(&t.ale.ends[0]) & vlbe__rancf_gp_ok(&t.ale.ends[1]);
-    if (!ok) return VLBE_EWEIGHT; /* weights so uneven that the basis overflows */
-    t.ale.bmax = vlbe__ale_rule_bmax(&t.ale.rm);
-    *el = t;
+        for (g = 0; g < ru[r]->n; ++g) vlbe__rancf_gp(k, &ru[r]->g[g]);
+    vlbe__rancf_gp(k, &el->ale.ends[0]);
+    vlbe__rancf_gp(k, &el->ale.ends[1]);
+    el->ale.bmax = vlbe__ale_rule_bmax(&el->ale.rm);
     return VLBE_OK;
 }
 
@@ -417,7 +435,7 @@ VLBE_API vlbe_status vlbe_rancf_point(const vlbe_rancf_elem *el, const vlbe_real
     VLBE_ASSERT(el != NULL && q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
-    vlbe__rancf_eval(el, p, q[4], q[9], 1, 0, &b);
+    vlbe__rancf_eval(el->k, p, q[4], q[9], 1, 0, &b);
     return vlbe__ale_point_b(&b, q, r, rp);
 }
 
@@ -430,7 +448,7 @@ VLBE_API vlbe_status vlbe_rancf_strain(const vlbe_rancf_elem *el, const vlbe_rea
     VLBE_ASSERT(el != NULL && q != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
-    vlbe__rancf_eval(el, p, q[4], q[9], 2, 0, &b);
+    vlbe__rancf_eval(el->k, p, q[4], q[9], 2, 0, &b);
     return vlbe__ale_strain_b(&b, q, eps, kap);
 }
 
@@ -444,7 +462,7 @@ VLBE_API vlbe_status vlbe_rancf_point_force(const vlbe_rancf_elem *el, const vlb
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     if (!isfinite(pf) || !vlbe_all_finite(F, 2)) return VLBE_ENONFINITE;
     if (pf < q[4] || pf > q[9]) return VLBE_EBOUND;
-    vlbe__rancf_eval(el, pf, q[4], q[9], 0, 2, &b);
+    vlbe__rancf_eval(el->k, pf, q[4], q[9], 0, 2, &b);
     return vlbe__ale_point_force_c(&b, q, F, Q, K);
 }
 
@@ -616,7 +634,7 @@ VLBE_API vlbe_status vlbe_rancf_split(const vlbe_rancf_elem *el, const vlbe_real
     if ((st = vlbe_rancf_bezier_split(2, el->k, P, (ph - q[4]) / (q[9] - q[4]), wlo, NULL, wro,
                                       NULL)) != VLBE_OK)
         return st;
-    vlbe__rancf_eval(el, ph, q[4], q[9], 1, 1, &b);
+    vlbe__rancf_eval(el->k, ph, q[4], q[9], 1, 1, &b);
     for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
         vlbe__ale_sum(&b, k, 0, q, h + 2 * k);
         if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, hd + 2 * k);
@@ -920,7 +938,7 @@ static inline const vlbe_ale_elem *vlbe__rancf_et_elem(const void *els, int e)
 static inline void vlbe__rancf_et_basis(const void *els, int e, vlbe_real p, vlbe_real p1,
                                         vlbe_real p2, int kmax, int amax, vlbe_herm_ale *b)
 {
-    vlbe__rancf_eval(&((const vlbe_rancf_elem *)els)[e], p, p1, p2, kmax, amax, b);
+    vlbe__rancf_eval(((const vlbe_rancf_elem *)els)[e].k, p, p1, p2, kmax, amax, b);
 }
 
 /* aux = [weights of the left part (4), of the right part (4)] */

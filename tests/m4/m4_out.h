@@ -13,6 +13,8 @@
    Names are <group> or <group>[<index>]: compare.awk scales the difference
    of a value by the largest magnitude of its group.  Output goes through
    fputs only.  m4_fail counts failed checks; main returns m4_exit().
+   M4_HOST_DOUBLE: a double build on the host (m4_hht against its float
+   runs), whose V lines carry the float of the value and its %.9e.
    -- part of vlbe                                  SPDX-License-Identifier: MIT */
 #ifndef VLBE_M4_OUT_H
 #define VLBE_M4_OUT_H
@@ -23,7 +25,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#if !defined(VLBE_USE_FLOAT)
+#if !defined(VLBE_USE_FLOAT) && !defined(M4_HOST_DOUBLE)
 #error "the M4 programs are float programs: build them with -DVLBE_USE_FLOAT"
 #endif
 
@@ -138,9 +140,14 @@ static inline void m4_val(const char *name, int i, vlbe_real x)
     m4_puts("V ");
     m4_put_name(name, i);
     m4_puts(" ");
+#ifdef VLBE_USE_FLOAT
     m4_put_hex(m4_bits(x));
     m4_puts(" ");
     m4_put_dec(x);
+#else /* M4_HOST_DOUBLE */
+    m4_put_hex(m4_bits((float)x));
+    printf(" %.9e", x);
+#endif
     m4_puts("\n");
 }
 
