@@ -274,10 +274,6 @@ static void test_spin_cr(void **state)
 {
     sp_cfg c;
     (void)state;
-    if (IS_FLOAT)
-        TU_SKIP("float: the co-rotational spin-up runs only through thousands of halved steps "
-                "(dense: 9212 Newton failures in 500 steps), not checked in float "
-                "(test_scenes_spin.c)");
     spin_cfg(&c, 6.0, SP_CR);
     spin_case("cr", "spin_cr", c);
     c.ray_b = 1e-3;
