@@ -481,6 +481,11 @@ check-m4: $(M4_ELFS) $(M4_HOST_BINS) $(BUILD)/m4/host-dbl/m4_hht $(BUILD)/m4/m4_
 	  -v exceptions=$(M4_DIR)/stack_exceptions.txt -f $(M4_DIR)/stack.awk $$d/stack/vlbe_all.ci \
 	  > $$d/stack.md 2> $$d/stack.sum || fail=1; \
 	cat $$d/stack.md $$d/stack.sum; \
+	grep -E '^\| [a-z0-9_]+\.h \| vlbe_' README.md > $$d/stack_readme.txt || true; \
+	grep -E '^\| [a-z0-9_]+\.h \| vlbe_' $$d/stack.md > $$d/stack_run.txt || true; \
+	if ! diff $$d/stack_readme.txt $$d/stack_run.txt > $$d/stack_readme.diff; then \
+	  echo "FAILED: README.md's stack table differs from this run (diff in $$d/stack_readme.diff)"; fail=1; \
+	else echo "stack: README.md's table equals this run"; fi; \
 	if [ $$fail = 0 ]; then echo "check-m4: ok"; else echo "check-m4: FAILED"; fi; \
 	exit $$fail
 
