@@ -391,7 +391,7 @@ M4_DIR = tests/m4
 M4_ARCH = -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 M4_FLAGS = -DVLBE_USE_FLOAT -O2 -ffp-contract=off
 M4_LD = -T $(M4_DIR)/mps2_an386.ld $(M4_DIR)/startup.S
-M4_NAMES = m4_lu m4_ale m4_ale3 m4_rancf m4_cr2d m4_hht m4_bdf
+M4_NAMES = m4_base m4_lu m4_ale m4_ale3 m4_rancf m4_cr2d m4_hht m4_bdf
 M4_ELFS := $(addprefix $(BUILD)/m4/,$(addsuffix .elf,$(M4_NAMES)))
 M4_HOST_BINS := $(addprefix $(BUILD)/m4/host/,$(M4_NAMES))
 M4_DEPS = $(HEADERS) $(M4_DIR)/m4_out.h
@@ -470,12 +470,15 @@ check-m4: $(M4_ELFS) $(M4_HOST_BINS) $(BUILD)/m4/host-dbl/m4_hht $(BUILD)/m4/m4_
 	s=$$($(M4_NM) $$d/m4_lu_only.elf | awk '$$NF ~ /^(__assert_func|_?_?v?i?printf|_.*printf_r|malloc|_malloc_r)$$/ { printf " %s", $$NF }'); \
 	if [ -n "$$s" ]; then echo "FAILED: the LU-only image links$$s"; fail=1; fi; \
 	echo; echo "== check-m4: image sizes (bytes, $(M4_SIZE); text = code + read-only data)"; \
-	echo "| image | text | data | bss |"; echo "|---|---:|---:|---:|"; \
+	base=$$($(M4_SIZE) $$d/m4_base.elf | awk 'NR == 2 { print $$1 }'); \
+	echo "| image | text | text - m4_base | data | bss |"; echo "|---|---:|---:|---:|---:|"; \
 	for e in $(M4_ELFS) $$d/m4_lu_only.elf; do \
-	  $(M4_SIZE) $$e | awk -v n=$$(basename $$e .elf) 'NR == 2 { printf "| %s | %d | %d | %d |\n", n, $$1, $$2, $$3 }'; \
+	  $(M4_SIZE) $$e | awk -v n=$$(basename $$e .elf) -v b=$$base \
+	    'NR == 2 { printf "| %s | %d | %s | %d | %d |\n", n, $$1, n == "m4_lu_only" ? "-" : (n == "m4_base" ? "0" : $$1 - b), $$2, $$3 }'; \
 	done; \
-	echo "(m4_lu_only: vlbe.h's dense and band LU with the default VLBE_ASSERT, no crt0 and no stdio;"; \
-	echo " no __assert_func, printf or malloc linked; the others carry newlib's stdio and rdimon)"; \
+	echo "(text - m4_base: what vlbe and the program's set-up add to the startup, crt0, stdio and output"; \
+	echo " helper of m4_base; m4_lu_only: vlbe.h's dense and band LU with the default VLBE_ASSERT, no crt0"; \
+	echo " and no stdio: no __assert_func, printf or malloc linked)"; \
 	echo; echo "== check-m4: stack per public function (bytes; float, $(M4_ARCH) -O2)"; \
 	awk -v headers="$(HEADERS)" -v kernel_re='$(M4_KERNEL_RE)' -v system_re='$(M4_SYSTEM_RE)' \
 	  -v exceptions=$(M4_DIR)/stack_exceptions.txt -f $(M4_DIR)/stack.awk $$d/stack/vlbe_all.ci \
