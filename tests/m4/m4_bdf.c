@@ -133,14 +133,7 @@ static int run(const vlbe_bdf_params *bp, const vlbe_real *q0, const vlbe_real *
         }
     }
     if (print) {
-        m4_int("steps", st.stats.steps);
-        m4_int("rejected", st.stats.rejected);
-        m4_int("newton_iters", st.stats.newton_iters);
-        m4_int("newton_fails", st.stats.newton_fails);
-        m4_int("force_calls", st.stats.force_calls);
-        m4_int("jac_evals", st.stats.jac_evals);
-        m4_int("lu_factors", st.stats.lu_factors);
-        m4_int("lu_solves", st.stats.lu_solves);
+        m4_stats(&st.stats);
     } else {
         m4_int("variable_step_invariants_ok", ok);
     }

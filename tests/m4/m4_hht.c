@@ -102,15 +102,6 @@ int main(void)
         }
         if (k % 250 == 0) print_tip();
     }
-    m4_int("steps", st.stats.steps);
-    m4_int("rejected", st.stats.rejected);
-    m4_int("newton_iters", st.stats.newton_iters);
-    m4_int("newton_fails", st.stats.newton_fails);
-    m4_int("force_calls", st.stats.force_calls);
-    m4_int("mass_calls", st.stats.mass_calls);
-    m4_int("constr_calls", st.stats.constr_calls);
-    m4_int("jac_evals", st.stats.jac_evals);
-    m4_int("lu_factors", st.stats.lu_factors);
-    m4_int("lu_solves", st.stats.lu_solves);
+    m4_stats(&st.stats);
     return m4_exit();
 }

@@ -188,4 +188,21 @@ static inline int m4_exit(void)
     return m4_fail ? 1 : 0;
 }
 
+#ifdef VLBE_INTEGRATORS_H
+/* the counters of an integrator run, one I line each */
+static inline void m4_stats(const vlbe_dae_stats *c)
+{
+    m4_int("steps", c->steps);
+    m4_int("rejected", c->rejected);
+    m4_int("newton_iters", c->newton_iters);
+    m4_int("newton_fails", c->newton_fails);
+    m4_int("force_calls", c->force_calls);
+    m4_int("mass_calls", c->mass_calls);
+    m4_int("constr_calls", c->constr_calls);
+    m4_int("jac_evals", c->jac_evals);
+    m4_int("lu_factors", c->lu_factors);
+    m4_int("lu_solves", c->lu_solves);
+}
+#endif
+
 #endif /* VLBE_M4_OUT_H */
