@@ -9,96 +9,17 @@
    -- part of vlbe                                  SPDX-License-Identifier: MIT */
 #include "../../integrators.h"
 #include "m4_out.h"
+/* the problem: examples/pendulum.c's callbacks (its runs stay out) */
+#define VLBE_EXAMPLE_NO_MAIN
+#include "../../examples/pendulum.c"
 
 #define WORK_CAP 1024
 #define IWORK_CAP 64
-
-typedef struct pend_par {
-    vlbe_real m, L, g; /* kg, m, m/s^2 */
-} pend_par;
 
 static vlbe_dae sys;
 static vlbe_bdf st;
 static vlbe_real work[WORK_CAP];
 static int iwork[IWORK_CAP];
-
-static int pend_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
-{
-    const pend_par *p = (const pend_par *)user;
-    (void)t;
-    (void)q;
-    (void)v;
-    M[0] = p->m;
-    M[1] = VLBE_R(0.0);
-    M[2] = VLBE_R(0.0);
-    M[3] = p->m;
-    return 0;
-}
-
-static int pend_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
-{
-    const pend_par *p = (const pend_par *)user;
-    (void)t;
-    (void)q;
-    (void)v;
-    Q[0] = VLBE_R(0.0);
-    Q[1] = -p->m * p->g;
-    return 0;
-}
-
-static int pend_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C)
-{
-    const pend_par *p = (const pend_par *)user;
-    (void)t;
-    C[0] = VLBE_R(0.5) * (q[0] * q[0] + q[1] * q[1] - p->L * p->L);
-    return 0;
-}
-
-static int pend_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
-{
-    (void)user;
-    (void)t;
-    Cq[0] = q[0];
-    Cq[1] = q[1];
-    if (Ct) Ct[0] = VLBE_R(0.0);
-    return 0;
-}
-
-/* gamma = -(C_q v)_q v = -|v|^2 */
-static int pend_constr_acc(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
-                           vlbe_real *gamma)
-{
-    (void)user;
-    (void)t;
-    (void)q;
-    gamma[0] = -(v[0] * v[0] + v[1] * v[1]);
-    return 0;
-}
-
-/* Q is constant: K = D = 0 */
-static int pend_force_jac(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
-                          vlbe_real *K, vlbe_real *D)
-{
-    int i;
-    (void)user;
-    (void)t;
-    (void)q;
-    (void)v;
-    for (i = 0; i < 4; ++i) K[i] = D[i] = VLBE_R(0.0);
-    return 0;
-}
-
-/* d(C_q^T lambda)/dq = lambda I */
-static int pend_constr_hess(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
-                            vlbe_real *H)
-{
-    (void)user;
-    (void)t;
-    (void)q;
-    H[0] = H[3] = lambda[0];
-    H[1] = H[2] = VLBE_R(0.0);
-    return 0;
-}
 
 /* BDF from the start to t = 1 s; print: the states at t = 0.25 .. 1 and
    the counters (bitwise comparison with the host) or, for the variable
@@ -146,24 +67,9 @@ int main(void)
     vlbe_bdf_params bp;
     vlbe_real q0[2], v0[2];
     size_t lw, liw;
-    par.m = VLBE_R(1.0);
-    par.L = VLBE_R(1.0);
-    par.g = VLBE_R(9.81);
-    memset(&sys, 0, sizeof sys);
-    sys.n = 2;
-    sys.m = 1;
-    sys.flags = VLBE_DAE_MASS_CONST;
-    sys.user = &par;
-    sys.mass = pend_mass;
-    sys.force = pend_force;
-    sys.constr = pend_constr;
-    sys.constr_jac = pend_constr_jac;
-    sys.constr_acc = pend_constr_acc;
-    sys.force_jac = pend_force_jac;
-    sys.constr_hess = pend_constr_hess;
-    q0[0] = par.L;
-    q0[1] = VLBE_R(0.0);
-    v0[0] = v0[1] = VLBE_R(0.0);
+    par = pend_default();
+    pend_setup(&sys, &par);
+    pend_initial(&par, q0, v0);
     lw = vlbe_bdf_work_len_sys(&sys);
     liw = vlbe_bdf_iwork_len_sys(&sys);
     m4_int("work_len", (long)lw);
