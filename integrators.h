@@ -1089,7 +1089,7 @@ VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, int width, vlbe
 VLBE_INLINE vlbe_status vlbe__int_factor(const vlbe_dae *s, vlbe_dae_stats *c, int f,
                                          vlbe_real *A, int *piv)
 {
-    int N = f * (s->n + s->m), band = vlbe__int_banded(s), kl = N - 1, ku = N - 1, rc;
+    int N = f * (s->n + s->m), band = vlbe__int_banded(s), kl = N - 1, ku = kl, rc;
     if (band) {
         kl = vlbe__int_fkl(s, f);
         ku = vlbe__int_fku(s, f);
