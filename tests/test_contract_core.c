@@ -205,6 +205,7 @@ static void test_lu_failure_outputs(void **state)
 typedef struct rh_user {
     double c, g, t_fail, t_last_c;
     int fail_rc, mass_zero;
+    int fail_count; /* > 0: only so many force calls past t_fail fail */
 } rh_user;
 
 static int rh_mass(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
@@ -220,7 +221,9 @@ static int rh_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v
     const rh_user *r = (const rh_user *)u;
     Q[0] = -VLBE_R(0.5) * q[0] - VLBE_R(0.01) * v[0];
     Q[1] = -(vlbe_real)r->g - q[1];
-    return (double)t > r->t_fail ? r->fail_rc : 0;
+    if (!((double)t > r->t_fail)) return 0;
+    if (r->fail_count > 0 && --((rh_user *)u)->fail_count == 0) ((rh_user *)u)->t_fail = HUGE_VAL;
+    return r->fail_rc;
 }
 static int rh_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
 {
@@ -455,6 +458,58 @@ static void test_hht_step_failure_untouched(void **state)
     u.fail_rc = -1;
     assert_int_equal(vlbe_hht_step(&st, VLBE_R(0.01)), VLBE_ECALLBACK);
     assert_hht_same(&st, &st0);
+    /* one level of halving: the second half fails at the deepest level
+       there is, the first half is undone all the same */
+    u.fail_rc = 1;
+    st.par.max_halvings = st0.par.max_halvings = 1;
+    assert_int_equal(vlbe_hht_step(&st, VLBE_R(0.01)), VLBE_ECALLBACK);
+    assert_true(st.stats.steps > st0.stats.steps);
+    assert_hht_same(&st, &st0);
+}
+
+/* A step that succeeds after one halving (the force callback refuses the
+   full step's end once): it ends at the run's time 11 h exactly, and its
+   state is that of two half steps taken one by one, bit for bit in double
+   (the same attempts from the same states: the failed attempt evaluates
+   nothing else; the half steps by hand end at t0 + 2 (h/2), equal to 11 h
+   in double).  Float: 11 h and t0 + 2 (h/2) differ by a rounding, which
+   the rheonomic constraint turns into q by c dt: q within 64 eps. */
+static void test_hht_step_halved_lands(void **state)
+{
+    static vlbe_real w[RH_LW], wb[RH_LW];
+    int iw[RH_LIW], iwb[RH_LIW], k;
+    vlbe_dae sys, sysb;
+    rh_user u, ub;
+    vlbe_hht st, sb;
+    vlbe_hht_params p;
+    const vlbe_real q0[2] = {0, 1}, v0[2] = {1, 0};
+    vlbe_real t0;
+    (void)state;
+    rh_sys(&sys, &u);
+    rh_sys(&sysb, &ub);
+    vlbe_hht_params_genalpha(&p, VLBE_R(0.8));
+    p.max_halvings = 3;
+    assert_int_equal(vlbe_hht_init(&st, &sys, &p, 0, q0, v0, w, RH_LW, iw, RH_LIW), VLBE_OK);
+    assert_int_equal(vlbe_hht_init(&sb, &sysb, &p, 0, q0, v0, wb, RH_LW, iwb, RH_LIW), VLBE_OK);
+    for (k = 0; k < 10; ++k) {
+        assert_int_equal(vlbe_hht_step(&st, VLBE_R(0.01)), VLBE_OK);
+        assert_int_equal(vlbe_hht_step(&sb, VLBE_R(0.01)), VLBE_OK);
+    }
+    t0 = st.t;
+    u.t_fail = (double)t0 + 0.006; /* past the first half's end */
+    u.fail_rc = 1;
+    u.fail_count = 1;
+    assert_int_equal(vlbe_hht_step(&st, VLBE_R(0.01)), VLBE_OK);
+    assert_int_equal(st.stats.rejected, 1);
+    assert_true(st.t == VLBE_R(11.0) * VLBE_R(0.01));
+    assert_int_equal(vlbe_hht_step(&sb, VLBE_R(0.005)), VLBE_OK);
+    assert_int_equal(vlbe_hht_step(&sb, VLBE_R(0.005)), VLBE_OK);
+#ifdef VLBE_USE_FLOAT
+    for (k = 0; k < 2; ++k) ASSERT_CLOSE(st.q[k], sb.q[k], 0.0, 64.0 * (double)VLBE_EPS);
+#else
+    assert_true(sb.t == st.t);
+    assert_memory_equal(st.q, sb.q, (4 * 2 + 1) * sizeof(vlbe_real)); /* q v qdd a lambda */
+#endif
 }
 
 /* Finite parameters at the edge of the accepted range (beta = the
@@ -877,6 +932,7 @@ int main(void)
         cmocka_unit_test(test_hht_init_failure_untouched),
         cmocka_unit_test(test_hht_step_bad_h),
         cmocka_unit_test(test_hht_step_failure_untouched),
+        cmocka_unit_test(test_hht_step_halved_lands),
         cmocka_unit_test(test_hht_step_trial_acc_overflow),
         cmocka_unit_test(test_hht_step_time_overflow),
         cmocka_unit_test(test_bdf_init_failure),
