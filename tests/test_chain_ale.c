@@ -1527,7 +1527,9 @@ static void shrink_run(double Lmin, int halvings, shrink_result *r)
        VLBE_ECALLBACK + VLBE_ELENGTH; any of them with L < 1e-3 L0;
    (c) no halvings: Newton diverges well before (the short element's
        bending makes the residual ever more nonlinear while the predictor's
-       error stays O(h^2)): VLBE_ENOCONV at L = 2.9e-2 (m:shrink_c) L0;
+       error stays O(h^2)); the attempt then finishes as full Newton, which
+       carries it further but not through: VLBE_ENOCONV at
+       L = 1.2e-2 (m:shrink_c) L0;
        asserted only to stop with ENOCONV, ESINGULAR or ELENGTH, finite.
    The element length L is exact in every accepted state (the constraint
    holds to Newton level), so "short" is read directly on p1 - p0.

@@ -269,8 +269,7 @@ static void test_pendulum_multiplier(void **state)
 /* Index 3: the positions satisfy C = 0 up to the Newton tolerance, whatever h.
    The last Newton increment dq satisfies |dq_i| <= sqrt(n) (atol + rtol |q|)
    (RMS norm <= 1, n = 2) and the remaining C is at most C_q dq ~ L |dq|;
-   add 16 eps L^2 for the rounding of C itself (the float build, where the
-   default rtol is below eps, relies on it). */
+   add 16 eps L^2 for the rounding of C itself. */
 static void test_pendulum_constraint(void **state)
 {
     static const char *const key[3] = {"cv_hht", "cv_ga08", "cv_ga0"};
@@ -295,9 +294,9 @@ static void test_pendulum_constraint(void **state)
            rho_inf = 0; 40 h^2 bounds them.  On top, the Newton stop: the
            velocity moves with the position by dv = gamma / (beta h) dq, so
            the position-level bound above reaches C_q v times gamma / (beta h)
-           (~500 at h = 4e-3: 7e-7 in double, 9.5e-4 in float, where the
-           default tolerances sit at the rounding of q; float gives
-           5.6e-4 (m@flt:cv_min) .. 8.2e-4 (m@flt:cv_max)) */
+           (~500 at h = 4e-3: 7e-7 in double, 7e-3 in float with its
+           default tolerances 7.6e-6, 9.5e-7; float gives
+           5.5e-4 (m@flt:cv_min) .. 1.3e-3 (m@flt:cv_max)) */
         tu_measured(key[k], r.max_cv);
         cvmin = fmin(cvmin, r.max_cv);
         cvmax = fmax(cvmax, r.max_cv);
@@ -993,7 +992,7 @@ static double pend_psi_round(const pend_par *p, const vlbe_hht *st)
    accepted state has ||Psi||/sqrt(N) <= ftol; and ftol binds (A's residual
    exceeds it at some steps: the default modified Newton stops on the
    increment test with residuals up to 3e-7 (m:psi_a) N in double,
-   4e-3 (m@flt:psi_a) N in float).  ftol: 1e-9 N in double, 1e-4 N in float,
+   9e-3 (m@flt:psi_a) N in float).  ftol: 1e-9 N in double, 1e-4 N in float,
    well above the rounding of Psi (a few eps times m g ~ 10 N): run C, full
    Newton with ftol = 0 on the same steps, ends at 3e-15 (m~:psi_full) N in
    double, 2e-6 (m@flt~:psi_full) N in float, held to ftol / 10.  Psi is

@@ -235,8 +235,8 @@ static void test_falling_beam(void **state)
      step, on the straight beam, changes it by rounding only), asserted
      below 1e-7 of it (float: 1e3 eps, the rounding of an energy of
      strain EA eps); the arc length (8-point Gauss of |r'|) to 1e-12 m
-     (float: 64 eps L, the rounding of the sum) (measured 1e-15
-     (m~:split_dlen) m);
+     (float: 64 eps L, the rounding of the sum); measured
+     1e-15 (m~:split_dlen) m;
    - conservative form: no energy gain between events (newton_share() of
      the peak kinetic energy, as for the falling beam) and the loss, HHT's
      dissipation, falls with the step: h = 1e-3 -> 2.5e-4 divides it by at
