@@ -75,10 +75,10 @@ CONVENTIONS
    outside [p1, p2].  On failure no output is written (point loads, which
    add to Q and K, work on copies).
    Stack (float, Cortex-M4F, gcc -O2, tests/m4/stack.awk; double about
-   twice): vlbe_ale_force and vlbe_ale_inv_force with K, D up to 4.5 kB
+   twice): vlbe_ale_force and vlbe_ale_inv_force with K, D up to 3.4 kB
    (local Q, K, D, so that a failure writes nothing, the strain e-columns
-   and the invariant-route scratch), the other planar eval calls at most
-   1.6 kB, vlbe_ale_elem_init 1.3 kB.
+   and the point scratch), the other planar eval calls at most 1.6 kB,
+   vlbe_ale_elem_init 1.3 kB.
    vlbe_ale_elem is about 16 kB: make one per material, not per element.
 
 NOTES (how the Jacobians are formed)
@@ -1143,17 +1143,19 @@ static inline void vlbe__ale_inv_out(vlbe_real S, const vlbe_real *y, int jac, v
    length), pd = (p1', p2') (0 for a fixed p).  K, D, dQ may be NULL (with
    K given, D must be too).  c: Kelvin-Voigt time (0: undamped, qd not
    read).  Q alone contracts column by column (ten independent sums), with
-   K row by row over eight products. */
+   K row by row over eight products.  Ks, Ds: the caller's scratch of 64
+   each for the 8 x 8 slot blocks (with K only; left as scratch). */
 static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlbe_real c,
                                        vlbe_real L, int pm, const vlbe_real *pd,
                                        const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
-                                       vlbe_real *K, vlbe_real *D, vlbe_real *dQ)
+                                       vlbe_real *K, vlbe_real *D, vlbe_real *dQ, vlbe_real *Ks,
+                                       vlbe_real *Ds)
 {
     const vlbe_real Li = VLBE_R(1.0) / L, L3 = Li * Li * Li;
     const signed char *pa = vlbe__ale_inv_pa();
     const int damp = c != VLBE_R(0.0), jac = K != NULL;
-    vlbe_real sc[4], r[8], u[8], y[2][8], H[VLBE_ALE_INV_NP * 8], S[VLBE_ALE_INV_NP], Qs[8];
-    vlbe_real Ks[64], Ds[64], yv[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    vlbe_real sc[4], r[8], u[8], y[2][8], H[VLBE_ALE_INV_NP * 8], Qs[8];
+    vlbe_real yv[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     int a, b, i, j, k, l, m, P, R;
     /* positions relative to node 1: the force is invariant to translation
        (s_1' + s_3' = 0), and so the Gram entries stay of size L^2 instead of
@@ -1190,6 +1192,7 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
                            c, L3, jac, H + 8 * P);
     }
     if (!jac) {
+        vlbe_real S[VLBE_ALE_INV_NP];
         for (P = 0; P < VLBE_ALE_INV_NP; ++P) S[P] = -Li * iv->b[P];
         for (R = 0; R < VLBE_ALE_INV_NP; ++R)
             for (P = 0; P < VLBE_ALE_INV_NP; ++P) S[P] += iv->t[P * VLBE_ALE_INV_NP + R] * H[8 * R];
@@ -1378,7 +1381,7 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
        inv: the axial part from the invariants */
     if (inv && mt->EA != VLBE_R(0.0))
         vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, pm, pd, q, qd, Q,
-                            NULL, NULL, NULL);
+                            NULL, NULL, NULL, NULL, NULL);
     for (pass = 0; pass < 2; ++pass) {
         const int ax = pass == 0 && mt->EA != VLBE_R(0.0) && !inv;
         const int bd = pass == 0 ? shared : (bend && !shared);
@@ -1470,7 +1473,6 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     const int inv = (mode & VLBE_ALE_INV_AXIAL) != 0, tload = inv && pm == 0;
     const int shared = bend && mt->EA != VLBE_R(0.0) && el->rl.n == el->rt.n && !inv;
     vlbe_real pd[2], Lp[6], dQ[10], dQx[10], Ke[80], De[80];
-    vlbe__ale_pt pt;
     vlbe_status st;
     int g, i, j, k;
     vlbe__ale_lpow(L, Lp);
@@ -1482,23 +1484,23 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
         if (mode & VLBE_ALE_CONSERVATIVE) return vlbe__ale_flux(el, pm, bend, q, L, Q, NULL, NULL);
         return VLBE_OK;
     }
-    {
-        for (i = 0; i < 10; ++i) dQx[i] = VLBE_R(0.0);
-        for (i = 0; i < 80; ++i) Ke[i] = De[i] = VLBE_R(0.0);
-    }
+    for (i = 0; i < 10; ++i) dQx[i] = VLBE_R(0.0);
 
     /* the axial force from the tables (inv; its p-columns of K come with
-       the others' below); transport inertia and distributed load: z = f -
+       the others' below; Ke, De its scratch before they are zeroed for the
+       strain terms); transport inertia and distributed load: z = f -
        rhoA r_v (eqs. 15, 19), fixed length with invariants (tload): the load
        alone (constant), from the tables */
     if (inv && mt->EA != VLBE_R(0.0))
         vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, pm, pd, q, qd, Q,
-                            K, D, dQx);
+                            K, D, dQx, Ke, De);
+    for (i = 0; i < 80; ++i) Ke[i] = De[i] = VLBE_R(0.0);
     if (tload) vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
     for (g = 0; !tload && g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         const vlbe_real w = gp->w * L;
         vlbe_real z[2], c[4], dd[4];
+        vlbe__ale_pt pt; /* per point: its storage is shared with the strain points' */
         vlbe__ale_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, q, pm ? qd : NULL, 3, &pt);
         z[0] = mt->f[0];
         z[1] = mt->f[1];
