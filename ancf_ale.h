@@ -2516,9 +2516,9 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
    p-forces are the paper's, without the end energy fluxes); no output is
    written on failure.  Stack (float, Cortex-M4F, gcc -O2,
    tests/m4/stack.awk; double about twice): vlbe_ale3_force with K and D
-   4.9 kB (local Q, K, D of 16 x 16, which the failure contract needs),
-   vlbe_ale3_mass_jac 3.5 kB (a local 16 x 16 result), the other calls at
-   most 1.9 kB. */
+   4.5 kB (local Q, K, D of 16 x 16, which the failure contract needs),
+   vlbe_ale3_mass_jac 2.4 kB (the 16 x 16 mass matrix), the other calls
+   at most 1.9 kB. */
 
 #define VLBE_ALE3_NO_SPIN 64u
 #define VLBE_ALE3_NO_TWIST 128u
@@ -3139,7 +3139,6 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
     const int twist = ly->spin && !(mode & VLBE_ALE3_NO_TWIST) && mt->GI != VLBE_R(0.0);
     const vlbe_real L = q[ly->p[1]] - q[ly->p[0]];
     vlbe_real pd[2], Lp[6], dQ[VLBE_ALE3_NQ], dQx[VLBE_ALE3_NQ];
-    vlbe__a3_pt pt;
     vlbe_status st;
     int g, i;
     const int f0 = mt->f[0] != VLBE_R(0.0) || mt->f[1] != VLBE_R(0.0) || mt->f[2] != VLBE_R(0.0);
@@ -3150,6 +3149,7 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
     if (pm || f0)
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_ale_gp *gp = &el->rm.g[g];
+            vlbe__a3_pt pt; /* per point: its storage is shared with the strain points' */
             vlbe__a3_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
             vlbe__a3_inertia_pt(mt, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
         }
@@ -3294,7 +3294,8 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
                                         vlbe_real *VLBE_RESTRICT Mq)
 {
     const vlbe_ale3_mat *mt = &el->mat;
-    vlbe_real J[VLBE_ALE3_NQ * VLBE_ALE3_NQ], M[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ], *const J = Mq; /* written only after
+                                                                   the last check */
     vlbe_real Ma[VLBE_ALE3_NQ], dF[VLBE_ALE3_NQ], ap[2], Lp[6], L;
     vlbe__ale_lay ly;
     vlbe__a3_pt pt;
@@ -3307,8 +3308,9 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
     n = ly.n;
     nn = n * n;
     pm = vlbe__ale_pmask(mode);
-    for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
-    if (pm) {
+    if (!pm)
+        for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
+    else {
         vlbe_real mp, ms, am = VLBE_R(0.0);
         if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
         L = q[ly.p[1]] - q[ly.p[0]];
@@ -3319,6 +3321,7 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
         for (i = 0; i < n; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
         if (!vlbe__ale_mjac_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms, am))
             return VLBE_ENONFINITE;
+        for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
         for (i = 0; i < n; ++i) Ma[i] = VLBE_R(0.0);
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_real w = el->rm.g[g].w * L;
@@ -3364,7 +3367,6 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
         vlbe__ale_degree(&ly, Ma, dF);
         vlbe__ale_pcols(&ly, L, pm, dF, ap, q, a, J, M);
     }
-    for (i = 0; i < nn; ++i) Mq[i] = J[i];
     return VLBE_OK;
 }
 
