@@ -74,13 +74,12 @@ CONVENTIONS
    curvature is undefined there); VLBE_EBOUND when a point load lies
    outside [p1, p2].  On failure no output is written (point loads, which
    add to Q and K, work on copies).
-   Stack: vlbe_ale_force with K, D uses up to about 7 kB (gcc -fstack-usage,
-   -O0 and -O2: local Q, K, D, so that a failure writes nothing, the strain
-   e-columns and the point scratch), the other eval calls at most 3 kB.
+   Stack (float, Cortex-M4F, gcc -O2, tests/m4/stack.awk; double about
+   twice): vlbe_ale_force and vlbe_ale_inv_force with K, D up to 3.4 kB
+   (local Q, K, D, so that a failure writes nothing, the strain e-columns
+   and the point scratch), the other planar eval calls at most 1.6 kB,
+   vlbe_ale_elem_init 1.3 kB.
    vlbe_ale_elem is about 16 kB: make one per material, not per element.
-   The invariant routes need about 2.5 kB of stack more than the Gauss
-   route (vlbe_ale_force with VLBE_ALE_INV_AXIAL, K and D: about 8.5 kB at
-   gcc -O2).
 
 NOTES (how the Jacobians are formed)
    At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
@@ -1144,17 +1143,19 @@ static inline void vlbe__ale_inv_out(vlbe_real S, const vlbe_real *y, int jac, v
    length), pd = (p1', p2') (0 for a fixed p).  K, D, dQ may be NULL (with
    K given, D must be too).  c: Kelvin-Voigt time (0: undamped, qd not
    read).  Q alone contracts column by column (ten independent sums), with
-   K row by row over eight products. */
+   K row by row over eight products.  Ks, Ds: the caller's scratch of 64
+   each for the 8 x 8 slot blocks (with K only; left as scratch). */
 static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlbe_real c,
                                        vlbe_real L, int pm, const vlbe_real *pd,
                                        const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
-                                       vlbe_real *K, vlbe_real *D, vlbe_real *dQ)
+                                       vlbe_real *K, vlbe_real *D, vlbe_real *dQ, vlbe_real *Ks,
+                                       vlbe_real *Ds)
 {
     const vlbe_real Li = VLBE_R(1.0) / L, L3 = Li * Li * Li;
     const signed char *pa = vlbe__ale_inv_pa();
     const int damp = c != VLBE_R(0.0), jac = K != NULL;
-    vlbe_real sc[4], r[8], u[8], y[2][8], H[VLBE_ALE_INV_NP * 8], S[VLBE_ALE_INV_NP], Qs[8];
-    vlbe_real Ks[64], Ds[64], yv[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    vlbe_real sc[4], r[8], u[8], y[2][8], H[VLBE_ALE_INV_NP * 8], Qs[8];
+    vlbe_real yv[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     int a, b, i, j, k, l, m, P, R;
     /* positions relative to node 1: the force is invariant to translation
        (s_1' + s_3' = 0), and so the Gram entries stay of size L^2 instead of
@@ -1191,6 +1192,7 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
                            c, L3, jac, H + 8 * P);
     }
     if (!jac) {
+        vlbe_real S[VLBE_ALE_INV_NP];
         for (P = 0; P < VLBE_ALE_INV_NP; ++P) S[P] = -Li * iv->b[P];
         for (R = 0; R < VLBE_ALE_INV_NP; ++R)
             for (P = 0; P < VLBE_ALE_INV_NP; ++P) S[P] += iv->t[P * VLBE_ALE_INV_NP + R] * H[8 * R];
@@ -1379,7 +1381,7 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
        inv: the axial part from the invariants */
     if (inv && mt->EA != VLBE_R(0.0))
         vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, pm, pd, q, qd, Q,
-                            NULL, NULL, NULL);
+                            NULL, NULL, NULL, NULL, NULL);
     for (pass = 0; pass < 2; ++pass) {
         const int ax = pass == 0 && mt->EA != VLBE_R(0.0) && !inv;
         const int bd = pass == 0 ? shared : (bend && !shared);
@@ -1471,7 +1473,6 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     const int inv = (mode & VLBE_ALE_INV_AXIAL) != 0, tload = inv && pm == 0;
     const int shared = bend && mt->EA != VLBE_R(0.0) && el->rl.n == el->rt.n && !inv;
     vlbe_real pd[2], Lp[6], dQ[10], dQx[10], Ke[80], De[80];
-    vlbe__ale_pt pt;
     vlbe_status st;
     int g, i, j, k;
     vlbe__ale_lpow(L, Lp);
@@ -1483,23 +1484,23 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
         if (mode & VLBE_ALE_CONSERVATIVE) return vlbe__ale_flux(el, pm, bend, q, L, Q, NULL, NULL);
         return VLBE_OK;
     }
-    {
-        for (i = 0; i < 10; ++i) dQx[i] = VLBE_R(0.0);
-        for (i = 0; i < 80; ++i) Ke[i] = De[i] = VLBE_R(0.0);
-    }
+    for (i = 0; i < 10; ++i) dQx[i] = VLBE_R(0.0);
 
     /* the axial force from the tables (inv; its p-columns of K come with
-       the others' below); transport inertia and distributed load: z = f -
+       the others' below; Ke, De its scratch before they are zeroed for the
+       strain terms); transport inertia and distributed load: z = f -
        rhoA r_v (eqs. 15, 19), fixed length with invariants (tload): the load
        alone (constant), from the tables */
     if (inv && mt->EA != VLBE_R(0.0))
         vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, pm, pd, q, qd, Q,
-                            K, D, dQx);
+                            K, D, dQx, Ke, De);
+    for (i = 0; i < 80; ++i) Ke[i] = De[i] = VLBE_R(0.0);
     if (tload) vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
     for (g = 0; !tload && g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         const vlbe_real w = gp->w * L;
         vlbe_real z[2], c[4], dd[4];
+        vlbe__ale_pt pt; /* per point: its storage is shared with the strain points' */
         vlbe__ale_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, q, pm ? qd : NULL, 3, &pt);
         z[0] = mt->f[0];
         z[1] = mt->f[1];
@@ -2006,17 +2007,22 @@ VLBE_API vlbe_status vlbe_ale_inv_init(vlbe_ale_inv *inv)
         }
     }
     {
-        vlbe_herm_ale hf[3];
+        /* f[g][k][a] = d h_a'/dp_k at xi = g/2, one basis evaluation at a time */
+        vlbe_real f[3][2][4];
         int k;
-        for (g = 0; g < 3; ++g)
-            vlbe_herm_ale_eval(VLBE_R(0.5) * (vlbe_real)g, VLBE_R(0.0), VLBE_R(1.0), 1, 1, &hf[g]);
+        for (g = 0; g < 3; ++g) {
+            vlbe_herm_ale hf;
+            vlbe_herm_ale_eval(VLBE_R(0.5) * (vlbe_real)g, VLBE_R(0.0), VLBE_R(1.0), 1, 1, &hf);
+            for (k = 0; k < 2; ++k)
+                for (a = 0; a < 4; ++a) f[g][k][a] = hf.h[1][1 + k][a];
+        }
         for (k = 0; k < 2; ++k)
             for (a = 0; a < 4; ++a) {
                 vlbe_real *cf = inv->dp[k] + 4 * a;
                 cf[0] = VLBE_R(0.0);
-                cf[1] = hf[0].h[1][1 + k][a];
-                cf[3] = hf[2].h[1][1 + k][a];
-                cf[2] = (hf[1].h[1][1 + k][a] + VLBE_R(0.25) * (cf[1] + cf[3])) / VLBE_R(1.5);
+                cf[1] = f[0][k][a];
+                cf[3] = f[2][k][a];
+                cf[2] = (f[1][k][a] + VLBE_R(0.25) * (cf[1] + cf[3])) / VLBE_R(1.5);
             }
     }
     return VLBE_OK;
@@ -2508,7 +2514,11 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
    VLBE_EARG for the planar element's VLBE_ALE_CONSERVATIVE and
    VLBE_ALE_INV_AXIAL (not available here: with free p the elastic
    p-forces are the paper's, without the end energy fluxes); no output is
-   written on failure.  Stack: about 9 kB with K and D. */
+   written on failure.  Stack (float, Cortex-M4F, gcc -O2,
+   tests/m4/stack.awk; double about twice): vlbe_ale3_force with K and D
+   4.5 kB (local Q, K, D of 16 x 16, which the failure contract needs),
+   vlbe_ale3_mass_jac 2.4 kB (the 16 x 16 mass matrix), the other calls
+   at most 1.9 kB. */
 
 #define VLBE_ALE3_NO_SPIN 64u
 #define VLBE_ALE3_NO_TWIST 128u
@@ -3129,7 +3139,6 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
     const int twist = ly->spin && !(mode & VLBE_ALE3_NO_TWIST) && mt->GI != VLBE_R(0.0);
     const vlbe_real L = q[ly->p[1]] - q[ly->p[0]];
     vlbe_real pd[2], Lp[6], dQ[VLBE_ALE3_NQ], dQx[VLBE_ALE3_NQ];
-    vlbe__a3_pt pt;
     vlbe_status st;
     int g, i;
     const int f0 = mt->f[0] != VLBE_R(0.0) || mt->f[1] != VLBE_R(0.0) || mt->f[2] != VLBE_R(0.0);
@@ -3140,6 +3149,7 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
     if (pm || f0)
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_ale_gp *gp = &el->rm.g[g];
+            vlbe__a3_pt pt; /* per point: its storage is shared with the strain points' */
             vlbe__a3_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
             vlbe__a3_inertia_pt(mt, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
         }
@@ -3284,7 +3294,8 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
                                         vlbe_real *VLBE_RESTRICT Mq)
 {
     const vlbe_ale3_mat *mt = &el->mat;
-    vlbe_real J[VLBE_ALE3_NQ * VLBE_ALE3_NQ], M[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ], *const J = Mq; /* written only after
+                                                                   the last check */
     vlbe_real Ma[VLBE_ALE3_NQ], dF[VLBE_ALE3_NQ], ap[2], Lp[6], L;
     vlbe__ale_lay ly;
     vlbe__a3_pt pt;
@@ -3297,8 +3308,9 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
     n = ly.n;
     nn = n * n;
     pm = vlbe__ale_pmask(mode);
-    for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
-    if (pm) {
+    if (!pm)
+        for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
+    else {
         vlbe_real mp, ms, am = VLBE_R(0.0);
         if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
         L = q[ly.p[1]] - q[ly.p[0]];
@@ -3309,6 +3321,7 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
         for (i = 0; i < n; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
         if (!vlbe__ale_mjac_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms, am))
             return VLBE_ENONFINITE;
+        for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
         for (i = 0; i < n; ++i) Ma[i] = VLBE_R(0.0);
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_real w = el->rm.g[g].w * L;
@@ -3354,7 +3367,6 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
         vlbe__ale_degree(&ly, Ma, dF);
         vlbe__ale_pcols(&ly, L, pm, dF, ap, q, a, J, M);
     }
-    for (i = 0; i < nn; ++i) Mq[i] = J[i];
     return VLBE_OK;
 }
 
@@ -3364,20 +3376,24 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
                                       const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
 {
     const vlbe_ale3_mat *mt = &el->mat;
-    vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Lp[6], L, T = VLBE_R(0.0), U = VLBE_R(0.0);
+    vlbe_real Lp[6], L, T = VLBE_R(0.0), U = VLBE_R(0.0);
     vlbe_real V = VLBE_R(0.0);
     vlbe__ale_lay ly;
     vlbe__a3_pt pt;
     vlbe_status st;
-    int g, i, j, n, bend, twist;
+    int g, bend, twist;
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
     mode |= el->flags;
     vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
-    if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
-    n = ly.n;
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) T += VLBE_R(0.5) * qd[i] * M[i * n + j] * qd[j];
+    { /* T through M, whose storage ends here (pt below may reuse it) */
+        vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+        const int n = ly.n;
+        int i, j;
+        if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
+        for (i = 0; i < n; ++i)
+            for (j = 0; j < n; ++j) T += VLBE_R(0.5) * qd[i] * M[i * n + j] * qd[j];
+    }
     bend = !(mode & VLBE_ALE_NO_BEND) && mt->EJ != VLBE_R(0.0);
     twist = ly.spin && !(mode & VLBE_ALE3_NO_TWIST) && mt->GI != VLBE_R(0.0);
     L = q[ly.p[1]] - q[ly.p[0]];
@@ -3476,24 +3492,25 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
 
 /* A point load at material point pf in [p1, p2] on the position field
    (F, 3 components: eq. 45) or on the spin field (torque T about the
-   axis: eq. 46): Q += S(pf)^T F, K += d/dq (K may be NULL), on the
-   caller's copies (vlbe__a3_point_load). */
+   axis: eq. 46): Q += S(pf)^T F, K += d/dq (Kr, Kc may be NULL), on the
+   caller's copies (vlbe__a3_point_load).  K changes in the p-rows and
+   p-columns only: Kr[k * VLBE_ALE3_NQ + i] is K(p_k, i), Kc[k *
+   VLBE_ALE3_NQ + i] is K(i, p_k) for the rows i that are not p's. */
 static inline vlbe_status vlbe__a3_point_add(unsigned mode, const vlbe_real *q, vlbe_real pf,
                                              const vlbe_real *F, vlbe_real T, int torque,
-                                             vlbe_real *Q, vlbe_real *K)
+                                             vlbe_real *Q, vlbe_real *Kr, vlbe_real *Kc)
 {
     static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
     vlbe__ale_lay ly;
     vlbe_herm_ale b;
     vlbe_real x[3];
     vlbe_status st;
-    int j, k, l, c, n;
+    int j, k, l, c;
     vlbe__ale_layout(mode, &ly);
     if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(pf) || (torque ? !isfinite(T) : !vlbe_all_finite(F, 3))) return VLBE_ENONFINITE;
     if (torque && !ly.spin) return VLBE_EARG;
     if (pf < q[ly.p[0]] || pf > q[ly.p[1]]) return VLBE_EBOUND;
-    n = ly.n;
     vlbe_herm_ale_eval(pf, q[ly.p[0]], q[ly.p[1]], 0, 2, &b);
     if (torque) {
         for (j = 0; j < 2; ++j) Q[ly.th[j]] += b.l[0][0][j] * T;
@@ -3506,50 +3523,69 @@ static inline vlbe_status vlbe__a3_point_add(unsigned mode, const vlbe_real *q, 
             Q[ly.p[k]] += vlbe_v3_dot(x, F);
         }
     }
-    if (!K) return VLBE_OK;
+    if (!Kr) return VLBE_OK;
     for (k = 0; k < 2; ++k) {
-        const int pk = ly.p[k];
+        vlbe_real *const row = Kr + k * VLBE_ALE3_NQ, *const col = Kc + k * VLBE_ALE3_NQ;
         if (torque)
             for (j = 0; j < 2; ++j) {
                 const vlbe_real h = b.l[0][1 + k][j] * T;
-                K[ly.th[j] * n + pk] += h;
-                K[pk * n + ly.th[j]] += h;
+                col[ly.th[j]] += h;
+                row[ly.th[j]] += h;
             }
         else
             for (j = 0; j < 4; ++j)
                 for (c = 0; c < 3; ++c) {
                     const vlbe_real h = b.h[0][1 + k][j] * F[c];
-                    K[(ly.e[j] + c) * n + pk] += h;
-                    K[pk * n + ly.e[j] + c] += h;
+                    col[ly.e[j] + c] += h;
+                    row[ly.e[j] + c] += h;
                 }
         for (l = 0; l < 2; ++l) {
             if (torque)
-                K[pk * n + ly.p[l]] += vlbe__a3_tsum(&ly, b.l[0][dd[k][l]], q) * T;
+                row[ly.p[l]] += vlbe__a3_tsum(&ly, b.l[0][dd[k][l]], q) * T;
             else {
                 vlbe__a3_sum(&ly, b.h[0][dd[k][l]], q, x);
-                K[pk * n + ly.p[l]] += vlbe_v3_dot(x, F);
+                row[ly.p[l]] += vlbe_v3_dot(x, F);
             }
         }
     }
     return VLBE_OK;
 }
 
-/* vlbe__a3_point_add on copies of Q and K, committed when finite. */
+/* vlbe__a3_point_add on copies of Q and of the p-rows and p-columns of K
+   (the rest of K does not change), committed when Q and all of K are
+   finite.  An entry that is not finite stays so when a number is added,
+   so the check of the caller's K and of the copies is that of the whole
+   updated K. */
 static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q, vlbe_real pf,
                                               const vlbe_real *F, vlbe_real T, int torque,
                                               vlbe_real *Q, vlbe_real *K)
 {
-    vlbe_real Qt[VLBE_ALE3_NQ], Kt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    vlbe_real Qt[VLBE_ALE3_NQ], Kr[2 * VLBE_ALE3_NQ], Kc[2 * VLBE_ALE3_NQ];
+    vlbe__ale_lay ly;
     vlbe_status st;
-    const int n = vlbe_ale3_nq(mode), nn = n * n;
-    int i;
+    const int n = vlbe_ale3_nq(mode);
+    int i, k;
+    vlbe__ale_layout(mode, &ly);
     for (i = 0; i < n; ++i) Qt[i] = Q[i];
-    for (i = 0; K && i < nn; ++i) Kt[i] = K[i];
-    if ((st = vlbe__a3_point_add(mode, q, pf, F, T, torque, Qt, K ? Kt : NULL)) != VLBE_OK)
+    for (k = 0; K && k < 2; ++k)
+        for (i = 0; i < n; ++i) {
+            Kr[k * VLBE_ALE3_NQ + i] = K[ly.p[k] * n + i];
+            Kc[k * VLBE_ALE3_NQ + i] = K[i * n + ly.p[k]];
+        }
+    if ((st = vlbe__a3_point_add(mode, q, pf, F, T, torque, Qt, K ? Kr : NULL,
+                                 K ? Kc : NULL)) != VLBE_OK)
         return st;
-    if (!vlbe_all_finite(Qt, n) || (K && !vlbe_all_finite(Kt, nn))) return VLBE_ENONFINITE;
+    if (!vlbe_all_finite(Qt, n) ||
+        (K && (!vlbe_all_finite(K, n * n) || !vlbe_all_finite(Kr, n) ||
+               !vlbe_all_finite(Kr + VLBE_ALE3_NQ, n) || !vlbe_all_finite(Kc, n) ||
+               !vlbe_all_finite(Kc + VLBE_ALE3_NQ, n))))
+        return VLBE_ENONFINITE;
     for (i = 0; i < n; ++i) Q[i] = Qt[i];
-    for (i = 0; K && i < nn; ++i) K[i] = Kt[i];
+    for (k = 0; K && k < 2; ++k)
+        for (i = 0; i < n; ++i) {
+            K[ly.p[k] * n + i] = Kr[k * VLBE_ALE3_NQ + i];
+            if (i != ly.p[0] && i != ly.p[1]) K[i * n + ly.p[k]] = Kc[k * VLBE_ALE3_NQ + i];
+        }
     return VLBE_OK;
 }
 

@@ -134,7 +134,10 @@ CONVENTIONS
    for NaN/Inf in fth; vlbe_cr2d_beam_energy: VLBE_EARG for a beam with a
    frame (it needs t: vlbe_cr2d_beam_energy_t).  On failure no output is
    written.
-   Stack: under 2 kB per call (the *_ff calls add 0.5 kB).
+   Stack (float, Cortex-M4F, gcc -O2, tests/m4/stack.awk; double about
+   twice): vlbe_cr2d_force, _force_ff and _trans_force with K and D at
+   most 1944 B, the other element calls at most 1.1 kB; the beam
+   callbacks up to 2.4 kB (force with the element views).
 
 API
    vlbe_status vlbe_cr2d_elem_init(el, mat, X1, X2, flags)   element (geometry, material)
@@ -351,7 +354,7 @@ static inline void vlbe__cr2d_herm(int t, vlbe_real c, int e, vlbe_real L, const
             const int p = (i & 1) + (j & 1) + e;
             const vlbe_real v = c * (vlbe_real)vlbe__cr2d_tab[t][i][j];
             if (ib[i] < 0 || ib[j] < 0) continue;
-            out[ib[i] * ld + ib[j]] += v * vlbe__cr2d_ipow(L, p);
+            if (out) out[ib[i] * ld + ib[j]] += v * vlbe__cr2d_ipow(L, p);
             if (dout) dout[ib[i] * ld + ib[j]] += v * (vlbe_real)p * vlbe__cr2d_ipow(L, p - 1);
         }
 }
@@ -365,7 +368,7 @@ static const int vlbe__cr2d_ib2[4] = {-1, -1, 4, 5}; /* the transition's v2, phi
    conventional element (tr = 0: m_a, k_a over L and m_b, k_b over L) or of
    the transition element (tr = 1: m_a, k_a over L; m_b, k_b of the outside
    segment over L2 on v2, phi2 only, eqs. 48-49); dm, dk0 (transition, may
-   be NULL): their L2-derivatives.  m_b with rhoI (eq. 22 prints rhoA on the
+   be NULL, also without m, k0): their L2-derivatives.  m_b with rhoI (eq. 22 prints rhoA on the
    rotary term; eq. 19 shows rhoI). */
 static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L2, vlbe_real *m,
                                    vlbe_real *k0, vlbe_real *dm, vlbe_real *dk0)
@@ -381,21 +384,25 @@ static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L
             for (i = 0; i < 36; ++i) k0[i] = el->k0_[i];
         return;
     }
-    if (m) {
-        for (i = 0; i < 36; ++i) m[i] = VLBE_R(0.0);
+    if (m || dm) {
+        if (m) {
+            for (i = 0; i < 36; ++i) m[i] = VLBE_R(0.0);
+            m[0 * 6 + 0] = m[3 * 6 + 3] = VLBE_R(2.0) * ma;
+            m[0 * 6 + 3] = m[3 * 6 + 0] = ma;
+        }
         if (dm)
             for (i = 0; i < 36; ++i) dm[i] = VLBE_R(0.0);
-        m[0 * 6 + 0] = m[3 * 6 + 3] = VLBE_R(2.0) * ma;
-        m[0 * 6 + 3] = m[3 * 6 + 0] = ma;
         vlbe__cr2d_herm(VLBE__CR2D_NN, el->mat.rhoA / VLBE_R(420.0), 1, L2, ib, 6, m, dm);
         vlbe__cr2d_herm(VLBE__CR2D_N1N1, el->mat.rhoI / VLBE_R(30.0), -1, L2, ib, 6, m, dm);
     }
-    if (k0) {
-        for (i = 0; i < 36; ++i) k0[i] = VLBE_R(0.0);
+    if (k0 || dk0) {
+        if (k0) {
+            for (i = 0; i < 36; ++i) k0[i] = VLBE_R(0.0);
+            k0[0 * 6 + 0] = k0[3 * 6 + 3] = ka;
+            k0[0 * 6 + 3] = k0[3 * 6 + 0] = -ka;
+        }
         if (dk0)
             for (i = 0; i < 36; ++i) dk0[i] = VLBE_R(0.0);
-        k0[0 * 6 + 0] = k0[3 * 6 + 3] = ka;
-        k0[0 * 6 + 3] = k0[3 * 6 + 0] = -ka;
         vlbe__cr2d_herm(VLBE__CR2D_N2N2, el->mat.EI, -3, L2, ib, 6, k0, dk0);
     }
 }
@@ -997,17 +1004,22 @@ static inline void vlbe__cr2d_forces(const vlbe_cr2d_elem *el, unsigned mode,
         for (i = 0; i < 6; ++i) f[i] = fL[i] = VLBE_R(0.0);
         for (i = 0; i < 36; ++i) A[i] = VLBE_R(0.0);
         if (nli) vlbe__cr2d_nli(el, k->L2, u, f, A, k->tr ? fL : NULL);
-        if (damp) {
-            vlbe_real m[36], k0[36], dm[36], dk[36];
-            vlbe__cr2d_lmat(el, k->tr, k->L2, m, k0, k->tr ? dm : NULL, k->tr ? dk : NULL);
+        if (damp) { /* m, k0, then (transition) their L2-derivatives in the same pair */
+            vlbe_real m[36], k0[36];
+            vlbe__cr2d_lmat(el, k->tr, k->L2, m, k0, NULL, NULL);
             for (i = 0; i < 6; ++i)
                 for (j = 0; j < 6; ++j) {
                     const int e = i * 6 + j;
                     const vlbe_real c = el->mat.ray_a * m[e] + el->mat.ray_b * k0[e];
                     f[i] += c * u[j];
                     A[e] += c;
-                    if (k->tr) fL[i] += (el->mat.ray_a * dm[e] + el->mat.ray_b * dk[e]) * u[j];
                 }
+            if (k->tr) {
+                vlbe__cr2d_lmat(el, 1, k->L2, NULL, NULL, m, k0);
+                for (i = 0; i < 6; ++i)
+                    for (j = 0; j < 6; ++j)
+                        fL[i] += (el->mat.ray_a * m[i * 6 + j] + el->mat.ray_b * k0[i * 6 + j]) * u[j];
+            }
         }
         if (k->tr) { /* eq. 46: f_b on v2, phi2 only; no node-1 lateral rates */
             f[1] = f[2] = fL[1] = fL[2] = VLBE_R(0.0);
