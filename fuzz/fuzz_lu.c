@@ -241,7 +241,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     vlbe_real A[LU_NMAX * LU_NMAX], A0[LU_NMAX * LU_NMAX], LUb[LU_NMAX * LU_NMAX],
         B[LU_NMAX * LU_RMAX], *LU;
-    int piv[LU_NMAX], piv0[LU_NMAX], info, info0, *pinfo, n, s, nrhs, inplace, i, anyinf = 0;
+    int piv[LU_NMAX], piv0[LU_NMAX], info = 0, info0 = 0, *pinfo, n, s, nrhs, inplace, i, anyinf = 0;
     vlbe_status st;
     fz_rd rd;
     unsigned flags;

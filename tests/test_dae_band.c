@@ -291,7 +291,7 @@ static void test_band_consistent_acc(void **state)
 {
     chain cd, cb;
     vlbe_dae sd, sb;
-    vlbe_real q[NMAX], v[NMAX], ad[NMAX], ab[NMAX], ld[MMAX], lb[MMAX];
+    vlbe_real q[NMAX] = {0}, v[NMAX] = {0}, ad[NMAX], ab[NMAX], ld[MMAX], lb[MMAX];
     int an;
     (void)state;
     for (an = 0; an < 2; ++an) {
@@ -320,7 +320,7 @@ static void test_band_static(void **state)
 {
     chain cd, cb;
     vlbe_dae sd, sb;
-    vlbe_real qd[NMAX], qb[NMAX], v[NMAX], ld[MMAX], lb[MMAX];
+    vlbe_real qd[NMAX] = {0}, qb[NMAX], v[NMAX] = {0}, ld[MMAX], lb[MMAX];
     vlbe_static_params sp;
     int an, k;
     (void)state;
@@ -361,7 +361,7 @@ static void test_band_hht_run(void **state)
 {
     chain cd, cb;
     vlbe_dae sd, sb;
-    vlbe_real q[NMAX], v[NMAX];
+    vlbe_real q[NMAX] = {0}, v[NMAX] = {0};
     vlbe_hht_params par;
     vlbe_hht hd, hb;
     int an, k;
@@ -418,7 +418,7 @@ static void test_band_bdf_run(void **state)
 {
     chain cd, cb;
     vlbe_dae sd, sb;
-    vlbe_real q[NMAX], v[NMAX];
+    vlbe_real q[NMAX] = {0}, v[NMAX] = {0};
     vlbe_bdf_params bp;
     vlbe_bdf bd, bb;
     (void)state;
@@ -481,7 +481,7 @@ static void test_band_user_solver(void **state)
 {
     chain cb, cu;
     vlbe_dae sb, su;
-    vlbe_real q[NMAX], v[NMAX];
+    vlbe_real q[NMAX] = {0}, v[NMAX] = {0};
     vlbe_hht_params par;
     vlbe_hht hb, hu;
     vlbe_bdf_params bp;
@@ -532,7 +532,7 @@ static void test_band_args(void **state)
 {
     chain cb, cd;
     vlbe_dae sb, sd;
-    vlbe_real q[NMAX], v[NMAX], a[NMAX], l[MMAX];
+    vlbe_real q[NMAX] = {0}, v[NMAX] = {0}, a[NMAX], l[MMAX];
     int k;
     (void)state;
     ch_setup(&cb, &sb, P0, 1, 1);

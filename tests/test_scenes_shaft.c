@@ -619,7 +619,7 @@ static void herm_freq(int ne, double z, double EJ, double rhoA, int nf, double *
     double M[(2 * SS_NE_MAX + 2) * (2 * SS_NE_MAX + 2)];
     vlbe_real Mb[4 * SS_NE_MAX * SS_NE_MAX], Kb[4 * SS_NE_MAX * SS_NE_MAX], lam[2 * SS_NE_MAX];
     vlbe_real *wk = (vlbe_real *)malloc(ex_eig_work_len(nb) * sizeof *wk);
-    int e, i, j, info = 0, map[2 * SS_NE_MAX + 2];
+    int e, i, j, info = 0, map[2 * SS_NE_MAX + 2] = {0};
     assert_non_null(wk);
     assert_true(ne <= SS_NE_MAX);
     for (i = 0; i < nd * nd; ++i) K[i] = M[i] = 0.0;
