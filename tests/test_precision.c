@@ -29,6 +29,7 @@
 #include "test_util.h"
 #include "../ancf_ale.h"
 #include "../integrators.h"
+#include "../examples/ex_ale.h"
 
 #include <string.h>
 
@@ -78,18 +79,7 @@ static void ct_setup(ct_model *c)
     k.v[0] = VLBE_R(1.0);
     assert_int_equal(vlbe_ale_chain_add(&c->ch, &k), VLBE_OK);
     assert_int_equal(vlbe_ale_chain_layout(&c->ch), VLBE_OK);
-    c->sys.n = c->ch.n;
-    c->sys.m = c->ch.m;
-    c->sys.user = &c->ch;
-    c->sys.flags = VLBE_DAE_MASS_CONST; /* fixed material coordinates: constant M */
-    c->sys.mass = vlbe_ale_chain_mass;
-    c->sys.force = vlbe_ale_chain_force;
-    c->sys.force_jac = vlbe_ale_chain_force_jac;
-    c->sys.mass_jac = vlbe_ale_chain_mass_jac;
-    c->sys.constr = vlbe_ale_chain_constr;
-    c->sys.constr_jac = vlbe_ale_chain_constr_jac;
-    c->sys.constr_acc = vlbe_ale_chain_constr_acc;
-    c->sys.constr_hess = vlbe_ale_chain_constr_hess;
+    ex_ale_wire(&c->sys, &c->ch); /* planar, every p fixed: VLBE_DAE_MASS_CONST */
     vlbe_ale_chain_straight(&c->ch, r0, dir, c->q);
     assert_true(vlbe_hht_work_len(c->ch.n, c->ch.m) <= CT_WLEN);
     assert_true(vlbe_static_work_len(c->ch.n, c->ch.m) <= CT_WLEN);

@@ -5,12 +5,13 @@
    straight and at rest at t = 0; vlbe_hht_params_hht(-0.05) with its
    defaults, h = 1e-3, 1000 steps.  Prints the tip (x, y, x', y' and their
    rates) every 250 steps and the counters; a failed step prints its status
-   and the program exits nonzero.  The vlbe_dae is wired as
-   examples/ex_ale.h's ex_ale_wire does (dense storage).
+   and the program exits nonzero.  The vlbe_dae is wired by
+   examples/ex_ale.h's ex_ale_wire (dense storage).
    -- part of vlbe                                  SPDX-License-Identifier: MIT */
 #include "../../ancf_ale.h"
 #include "../../integrators.h"
 #include "m4_out.h"
+#include "../../examples/ex_ale.h" /* the chain's vlbe_dae */
 
 #define NE 4
 #define WORK_CAP 8192
@@ -24,23 +25,6 @@ static vlbe_dae sys;
 static vlbe_hht st;
 static vlbe_real work[WORK_CAP], q0[64], v0[64];
 static int iwork[IWORK_CAP];
-
-static void wire(void)
-{
-    memset(&sys, 0, sizeof sys);
-    sys.n = ch.n;
-    sys.m = ch.m;
-    sys.user = &ch;
-    sys.mass = vlbe_ale_chain_mass;
-    sys.force = vlbe_ale_chain_force;
-    sys.force_jac = vlbe_ale_chain_force_jac;
-    sys.mass_jac = vlbe_ale_chain_mass_jac;
-    sys.constr = vlbe_ale_chain_constr;
-    sys.constr_jac = vlbe_ale_chain_constr_jac;
-    sys.constr_acc = vlbe_ale_chain_constr_acc;
-    sys.constr_hess = vlbe_ale_chain_constr_hess;
-    sys.flags |= VLBE_DAE_MASS_CONST; /* planar, every p fixed: constant M */
-}
 
 static void print_tip(void)
 {
@@ -79,7 +63,7 @@ int main(void)
     c.v[0] = VLBE_R(1.0);
     if (m4_status("chain_add_slope", vlbe_ale_chain_add(&ch, &c))) return m4_exit();
     if (m4_status("chain_layout", vlbe_ale_chain_layout(&ch))) return m4_exit();
-    wire();
+    ex_ale_wire(&sys, &ch); /* planar, every p fixed: VLBE_DAE_MASS_CONST */
     m4_int("n", sys.n);
     m4_int("m", sys.m);
     lw = vlbe_hht_work_len_sys(&sys);
