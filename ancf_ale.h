@@ -227,6 +227,7 @@ API
    vlbe_status vlbe_ale_chain_length(ch, t, q, v, len, rate)  arc length, its rate
    int vlbe_ale_chain_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc / _constr_hess(user = ch, ...)         vlbe_dae callbacks
+   vlbe_status vlbe_ale_chain_dae(ch, sys)                  fill a vlbe_dae with them
    vlbe_status vlbe_ale_chain_insert(ch, e, ph, t, q, v, qn, vn)  split element e
    vlbe_status vlbe_ale_chain_remove(ch, i, t, q, v, qn, vn)  merge at node i
    vlbe_status vlbe_ale_chain_length_control(ch, &s, Lstd, t, q, v, qn, vn, &chg)
@@ -3800,6 +3801,18 @@ VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real 
                                        const vlbe_real *v, vlbe_real *gamma);
 VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real *q,
                                         const vlbe_real *lambda, vlbe_real *H);
+/* The vlbe_dae (vlbe.h) of the chain: n, m, every callback above, user =
+   ch, the flags (VLBE_DAE_MASS_CONST for a planar chain whose material
+   coordinates are all fixed: the classic constant ANCF mass, point masses
+   included; none otherwise: M depends on the nodal p's, and a 3D chain's
+   on the spin) and the storage (banded with the chain's order and
+   half-bandwidths in banded mode, else dense).  Everything else of *sys
+   is zeroed.  Call after vlbe_ale_chain_layout and again after every
+   change of the layout (length control, insert, remove); VLBE_EARG before
+   the first layout (sys untouched).  To add forces of one's own, wrap
+   sys->force (and force_jac) in functions that call the chain's and keep
+   sys->user = ch, or point sys->user at a struct holding the chain. */
+VLBE_API vlbe_status vlbe_ale_chain_dae(vlbe_ale_chain *ch, vlbe_dae *sys);
 
 /* -- implementation ----------------------------------------------------- */
 static inline vlbe_status vlbe__ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
@@ -5006,6 +5019,34 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
         r += vlbe__ale_con_rows(ch, c);
     }
     return 0;
+}
+
+VLBE_API vlbe_status vlbe_ale_chain_dae(vlbe_ale_chain *ch, vlbe_dae *sys)
+{
+    int i;
+    VLBE_ASSERT(ch != NULL && sys != NULL);
+    if (ch->n < 1) return VLBE_EARG; /* not laid out */
+    memset(sys, 0, sizeof *sys);
+    sys->n = ch->n;
+    sys->m = ch->m;
+    sys->user = ch;
+    sys->mass = vlbe_ale_chain_mass;
+    sys->force = vlbe_ale_chain_force;
+    sys->force_jac = vlbe_ale_chain_force_jac;
+    sys->mass_jac = vlbe_ale_chain_mass_jac;
+    sys->constr = vlbe_ale_chain_constr;
+    sys->constr_jac = vlbe_ale_chain_constr_jac;
+    sys->constr_acc = vlbe_ale_chain_constr_acc;
+    sys->constr_hess = vlbe_ale_chain_constr_hess;
+    for (i = 0; i < ch->nn && ch->node[i].pmode == VLBE_ALE_PFIXED; ++i) continue;
+    if (ch->d == 2 && i == ch->nn) sys->flags |= VLBE_DAE_MASS_CONST;
+    if (ch->order) {
+        sys->storage = VLBE_DAE_BANDED;
+        sys->kl = ch->kl;
+        sys->ku = ch->ku;
+        sys->order = ch->order;
+    }
+    return VLBE_OK;
 }
 
 /* ===== segmentation, merging, length control ============================ */

@@ -160,6 +160,7 @@ API
    void vlbe_cr2d_fix_eval(f, t, g3)                         g, g', g'' of a prescribed coordinate
    int vlbe_cr2d_beam_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc (user = beam, ...)                      vlbe_dae callbacks
+   vlbe_status vlbe_cr2d_beam_dae(b, sys)                    fill a vlbe_dae with them
    vlbe_status vlbe_cr2d_beam_energy(b, q, v, E)             T, U of the beam (no frame)
    vlbe_status vlbe_cr2d_beam_energy_t(b, t, q, v, E)        T, U at t (frame at t)
 
@@ -1464,6 +1465,15 @@ VLBE_API int vlbe_cr2d_beam_constr_jac(void *user, vlbe_real t, const vlbe_real 
                                        vlbe_real *Ct);
 VLBE_API int vlbe_cr2d_beam_constr_acc(void *user, vlbe_real t, const vlbe_real *q,
                                        const vlbe_real *v, vlbe_real *gamma);
+/* The vlbe_dae (vlbe.h) of the beam: n = 3 (ne + 1), m = nfix, every
+   callback above (constr_hess NULL: the prescribed coordinates are linear
+   in q, so d(C_q^T lambda)/dq = 0 and the solvers' differences of it
+   vanish), user = b, flags 0 (the consistent mass depends on q), the
+   storage of the beam (banded with its order and half-bandwidths after
+   vlbe_cr2d_beam_band, else dense); everything else of *sys zeroed.  Call
+   again after changing nfix or the storage; VLBE_EARG (sys untouched) when
+   the banded order was made for another nfix. */
+VLBE_API vlbe_status vlbe_cr2d_beam_dae(vlbe_cr2d_beam *b, vlbe_dae *sys);
 VLBE_API vlbe_status vlbe_cr2d_beam_energy(const vlbe_cr2d_beam *b, const vlbe_real *q,
                                            const vlbe_real *v, vlbe_real *E);
 VLBE_API vlbe_status vlbe_cr2d_beam_energy_t(const vlbe_cr2d_beam *b, vlbe_real t,
@@ -1867,6 +1877,30 @@ VLBE_API int vlbe_cr2d_beam_constr_acc(void *user, vlbe_real t, const vlbe_real 
         gamma[k] = g[2];
     }
     return vlbe_all_finite(gamma, b->nfix) ? 0 : vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
+}
+
+VLBE_API vlbe_status vlbe_cr2d_beam_dae(vlbe_cr2d_beam *b, vlbe_dae *sys)
+{
+    VLBE_ASSERT(b != NULL && sys != NULL);
+    if (b->order && b->nfix != b->band_m_) return VLBE_EARG;
+    memset(sys, 0, sizeof *sys);
+    sys->n = b->n;
+    sys->m = b->nfix;
+    sys->user = b;
+    sys->mass = vlbe_cr2d_beam_mass;
+    sys->force = vlbe_cr2d_beam_force;
+    sys->force_jac = vlbe_cr2d_beam_force_jac;
+    sys->mass_jac = vlbe_cr2d_beam_mass_jac;
+    sys->constr = vlbe_cr2d_beam_constr;
+    sys->constr_jac = vlbe_cr2d_beam_constr_jac;
+    sys->constr_acc = vlbe_cr2d_beam_constr_acc;
+    if (b->order) {
+        sys->storage = VLBE_DAE_BANDED;
+        sys->kl = b->kl;
+        sys->ku = b->ku;
+        sys->order = b->order;
+    }
+    return VLBE_OK;
 }
 
 VLBE_API vlbe_status vlbe_cr2d_beam_energy(const vlbe_cr2d_beam *b, const vlbe_real *q,

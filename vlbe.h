@@ -262,6 +262,100 @@ typedef struct vlbe_herm_ale {
     vlbe_real L;  /* element length p2 - p1           */
 } vlbe_herm_ale;
 
+/* -- the problem: a constrained mechanical system -------------------------
+   What a model hands to the solvers of integrators.h (and what a chain or a
+   co-rotational beam fills with vlbe_ale_chain_dae, vlbe_cr2d_beam_dae):
+        M(t,q,v) q'' + C_q(t,q)^T lambda = Q(t,q,v),      C(t,q) = 0.
+   It lives here, below every module, so that a model fills it without
+   knowing the integrators and the integrators solve it without knowing the
+   model.
+
+   Callback return values, the same for every callback of every model (the
+   user's own, chains of ancf_ale.h and rancf.h, beams of corot2d.h):
+      0    success;
+     > 0   the point asked for lies outside the model's domain (a Newton
+           iterate shortened an element below its minimum length, inverted
+           it, made a matrix singular or a value non-finite; a beam node left
+           its joint): the solver treats the attempt like a Newton
+           divergence and may retry with a smaller step;
+     < 0   fatal: the solver stops with VLBE_ECALLBACK.
+   The library's models return 1 or -1 and keep the vlbe_status behind it
+   and the element (or node, constraint) in their err and err_elem fields:
+   1 for VLBE_ELENGTH, VLBE_ESINGULAR and VLBE_ENONFINITE (co-rotational
+   beams: also VLBE_EBOUND, a node outside the prismatic joint), -1 for any
+   other status (VLBE_ECALLBACK of a failing user function, VLBE_EARG).
+   The solvers keep the last failing value in vlbe_dae_stats.callback_rc. */
+/* vlbe_dae.flags */
+#define VLBE_DAE_MASS_CONST 1u /* M does not depend on t, q or v: no dM/dq terms, and
+                                  HHT and BDF evaluate M once per init and keep it */
+#define VLBE_DAE_MASS_V 2u     /* M depends on v too (FD of M a in v)          */
+#define VLBE_DAE_NO_CHESS 4u   /* drop d(C_q^T lambda)/dq from the iteration matrix */
+
+/* vlbe_dae.storage: how the matrix callbacks store their matrices */
+#define VLBE_DAE_DENSE 0  /* n x n and m x n row-major (the default)            */
+#define VLBE_DAE_BANDED 1 /* (n+m) x (n+m) bands in the augmented order          */
+
+/* The problem: callbacks with a user context.  mass, force are required;
+   constr and constr_jac when m > 0.  The rest is optional (NULL). */
+typedef struct vlbe_dae {
+    int n;        /* number of coordinates q                */
+    int m;        /* number of constraints                  */
+    unsigned flags;
+    void *user;
+    /* M(t,q,v), n*n */
+    int (*mass)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M);
+    /* Q(t,q,v), n */
+    int (*force)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q);
+    /* C(t,q), m */
+    int (*constr)(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C);
+    /* C_q (m*n) and C_t (m); Ct may be NULL when the caller does not need it */
+    int (*constr_jac)(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct);
+    /* optional: gamma = -( (C_q v)_q v + 2 C_qt v + C_tt ), the right side of
+       C_q q'' = gamma; default: central differences of C_q v + C_t along (1, v) */
+    int (*constr_acc)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                      vlbe_real *gamma);
+    /* optional: K = dQ/dq and D = dQ/dv, n*n each */
+    int (*force_jac)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                     vlbe_real *K, vlbe_real *D);
+    /* optional: Mq = d(M a)/dq and (if flag MASS_V) Mv = d(M a)/dv, n*n each; Mv may be NULL */
+    int (*mass_jac)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                    const vlbe_real *a, vlbe_real *Mq, vlbe_real *Mv);
+    /* optional: H = d(C_q^T lambda)/dq, n*n */
+    int (*constr_hess)(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *lambda,
+                       vlbe_real *H);
+    /* Storage of the matrices (0 = VLBE_DAE_DENSE in a zeroed struct).
+       VLBE_DAE_BANDED: the model orders the augmented unknowns (q, lambda)
+       so that every constraint row sits next to the coordinates it touches:
+       order[i] (i < n) is the row and column of q_i in the augmented matrix
+       [M*, C_q^T; C_q, 0] of size NA = n + m, order[n + k] that of
+       lambda_k (a permutation of 0..NA-1), and every entry of M, K, D,
+       d(Ma)/dq, d(Ma)/dv, d(C_q^T lambda)/dq, d(C_q v)/dq at (order[i],
+       order[j]) and of C_q at (order[n+k], order[j]) and (order[j],
+       order[n+k]) lies within kl sub- and ku super-diagonals.  Then mass,
+       force_jac, mass_jac, constr_jac and constr_hess write NA x NA bands
+       (vlbe.h band storage, ld = kl + ku + 1) in that order, zeros
+       included: M(i, j) at VLBE_BAND_IDX(ld, kl, order[i], order[j]),
+       C_q(k, j) at VLBE_BAND_IDX(ld, kl, order[n+k], order[j]) (C_q only,
+       not its transpose); vectors stay in the natural order.  The
+       integrators then never form an n x n matrix: workspace and work per
+       step O(NA (kl + ku)). */
+    int storage;
+    int kl, ku;
+    const int *order;
+    /* optional, any storage: the caller's own linear solver for the
+       iteration matrices.  lin_factor receives the assembled matrix A of
+       size N (dense: N x N row-major, lda = N; banded: band storage with
+       kl, ku, lda, rows and columns in the integrator's order) and returns
+       0, > 0 if A is singular (VLBE_ESINGULAR), < 0 on a fatal error
+       (VLBE_ECALLBACK); lin_solve then overwrites B (N x nrhs row-major)
+       with A^-1 B and cannot fail.  One factorization is live at a time:
+       every lin_solve uses the last successful lin_factor.  Both or
+       neither. */
+    int (*lin_factor)(void *user, int storage, int N, int kl, int ku, const vlbe_real *A,
+                      int lda);
+    void (*lin_solve)(void *user, int N, int nrhs, vlbe_real *B);
+} vlbe_dae;
+
 /* -- API prototypes ----------------------------------------------------- */
 VLBE_API const char *vlbe_status_str(vlbe_status s);
 VLBE_API int vlbe_all_finite(const vlbe_real *x, int n);

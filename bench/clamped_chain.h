@@ -14,7 +14,6 @@
 
 #include "../ancf_ale.h"
 #include "../integrators.h"
-#include "../examples/ex_ale.h"
 
 #include <stdlib.h>
 
@@ -80,7 +79,7 @@ static inline int cc_init(cc_scene *s, int ne, int variant)
         if (!s->order || vlbe_ale_chain_band(&s->ch, s->order, cap)) return -1;
     }
     if (vlbe_ale_chain_layout(&s->ch)) return -1;
-    ex_ale_wire(&s->sys, &s->ch);
+    if (vlbe_ale_chain_dae(&s->ch, &s->sys)) return -1;
     s->lw = vlbe_hht_work_len_sys(&s->sys);
     s->liw = vlbe_hht_iwork_len_sys(&s->sys);
     s->w = (vlbe_real *)malloc(s->lw * sizeof *s->w);

@@ -133,8 +133,7 @@ static inline int cs_build_sec(cs_model *m, int ne, unsigned flags, double EA, d
     m->P[3 * ne + 2] = (vlbe_real)(2.0 * CS_PI * EI / CS_L);
     m->beam.P = m->P;
     m->beam.load = VLBE_R(0.0);
-    ex_cr2d_dae(&m->sys, &m->beam, m->n, 3);
-    return 0;
+    return vlbe_cr2d_beam_dae(&m->beam, &m->sys) ? -1 : 0;
 }
 
 /* The scene's cantilever: the paper's section. */

@@ -132,8 +132,7 @@
 static inline int ex_cable_wire(vlbe_dae *sys, vlbe_ale_chain *ch, int banded)
 {
     if (banded && !ch->order) return -1;
-    ex_ale_wire(sys, ch);
-    return 0;
+    return vlbe_ale_chain_dae(ch, sys) ? -1 : 0;
 }
 
 /* Workspace of HHT (and of the consistent start) on sys, in the storage

@@ -345,7 +345,7 @@ static inline int ex_slide_build(ex_slide *m, const ex_slide_cfg *c, vlbe_real *
     if (vlbe_ale_chain_add(&m->ch, &k) || vlbe_ale_chain_layout(&m->ch)) return -1;
     if (c->band && ex_ale_band(&m->ch, m->order, (int)(sizeof m->order / sizeof m->order[0])))
         return -1;
-    ex_ale_wire(&m->sys, &m->ch);
+    if (vlbe_ale_chain_dae(&m->ch, &m->sys)) return -1;
     for (i = 0; i < m->ch.n; ++i) v0[i] = 0;
     for (i = 0; i < nn; ++i) {
         const int o = m->node[i].ofs;
@@ -581,7 +581,7 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
                 res.newton += st.stats.newton_iters;
                 res.lu += st.stats.lu_factors;
                 res.rejected += st.stats.rejected;
-                ex_ale_wire(&m->sys, &m->ch);
+                (void)vlbe_ale_chain_dae(&m->ch, &m->sys); /* laid out: VLBE_OK */
                 res.lc_events++;
                 res.status = vlbe_hht_init(&st, &m->sys, &par, (vlbe_real)t, qn, vn, w, lw, iw, liw);
                 res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;

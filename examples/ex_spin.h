@@ -320,7 +320,7 @@ static inline vlbe_status sp_init_ancf(sp_model *m, const sp_cfg *c)
         (st = vlbe_ale_inv_sys_init(&m->isys, &m->ael, 0u, c->ne, m->Lel, m->isys_work,
                                     sizeof m->isys_work / sizeof m->isys_work[0])) != VLBE_OK)
         return st;
-    ex_ale_wire(&m->sys, &m->ch);
+    if ((st = vlbe_ale_chain_dae(&m->ch, &m->sys)) != VLBE_OK) return st;
     m->sys.flags = VLBE_DAE_MASS_CONST; /* p fixed: M constant */
     if (c->inv == SP_INV_SYS || c->abs_a > 0.0 || c->abs_b > 0.0) {
         m->sys.force = sp_ancf_force;
@@ -385,7 +385,7 @@ static inline vlbe_status sp_init(sp_model *m, const sp_cfg *c)
     if ((st = vlbe_cr2d_beam_init(&m->beam, m->el, c->ne, m->fix, 3)) != VLBE_OK) return st;
     if (c->band && (st = vlbe_cr2d_beam_band(&m->beam, m->order, SP_NAMAX)) != VLBE_OK) return st;
     if (c->model == SP_LINEAR) m->beam.frame = &m->fix[2]; /* the hub frame */
-    ex_cr2d_dae(&m->sys, &m->beam, m->n, 3);
+    if ((st = vlbe_cr2d_beam_dae(&m->beam, &m->sys)) != VLBE_OK) return st;
     if (c->model == SP_LINEAR) m->sys.flags = VLBE_DAE_MASS_CONST;
     return VLBE_OK;
 }

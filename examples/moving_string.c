@@ -197,7 +197,7 @@ static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_re
     if ((kind & MS_BAND) &&
         ex_ale_band(&m->ch, m->order, (int)(sizeof m->order / sizeof m->order[0])))
         return -1;
-    ex_ale_wire(&m->sys, &m->ch);
+    if (vlbe_ale_chain_dae(&m->ch, &m->sys)) return -1;
     if (q0) {
         dir[0] = (vlbe_real)m->lam;
         vlbe_ale_chain_straight(&m->ch, r0, dir, q0); /* theta = 0 */

@@ -192,7 +192,7 @@ static inline int st_build(st_model *m, int ne, vlbe_real *q0, vlbe_real *v0, in
     memset(&c, 0, sizeof c);
     c.type = VLBE_ALE_CON_SPIN; /* theta_0 = 0 */
     if (vlbe_ale_chain_add(&m->ch, &c) || vlbe_ale_chain_layout(&m->ch)) return -1;
-    ex_ale_wire(&m->sys, &m->ch);
+    if (vlbe_ale_chain_dae(&m->ch, &m->sys)) return -1;
     m->sys.flags = VLBE_DAE_MASS_CONST; /* every p fixed: M constant */
     if (q0) {
         const vlbe_real r0[3] = {0, 0, 0}, dir[3] = {1, 0, 0};

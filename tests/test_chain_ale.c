@@ -127,7 +127,7 @@ static void chn_wire(chn *c)
 {
     assert_int_equal(vlbe_ale_chain_layout(&c->ch), VLBE_OK);
     assert_true(c->ch.n <= N_MAX && c->ch.m <= M_MAX);
-    ex_ale_wire(&c->sys, &c->ch);
+    assert_int_equal(vlbe_ale_chain_dae(&c->ch, &c->sys), VLBE_OK);
 }
 
 /* index of the free p of node i in q */

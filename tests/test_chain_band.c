@@ -46,9 +46,12 @@
                             length control return VLBE_EWORK with the chain,
                             its arrays and order unchanged; band() with a
                             negative capacity: VLBE_EARG
-     wire                   examples/ex_ale.h's ex_ale_wire: the vlbe_dae
-                            dense by default, banded with the chain's kl, ku
-                            and order in banded mode */
+     chain_dae              vlbe_ale_chain_dae: the chain's callbacks,
+                            VLBE_DAE_MASS_CONST exactly for planar chains
+                            with every p fixed, dense by default, banded
+                            with the chain's kl, ku and order in banded
+                            mode; VLBE_EARG and nothing written before the
+                            first layout */
 #include "test_util.h"
 #include "../rancf.h"
 #include "../examples/ex_ale.h"
@@ -718,23 +721,67 @@ static void test_ework(void **state)
     assert_int_equal(vlbe_ale_chain_layout(ch), VLBE_OK);
 }
 
-/* ex_ale_wire on the planar chain, dense then banded */
-static void test_wire(void **state)
+/* every callback of sys the chain's, user the chain, n and m its own */
+static void dae_is_chain(const vlbe_dae *sys, vlbe_ale_chain *ch)
 {
-    vlbe_dae sys;
+    assert_true(sys->user == (void *)ch && sys->n == ch->n && sys->m == ch->m);
+    assert_true(sys->mass == vlbe_ale_chain_mass && sys->force == vlbe_ale_chain_force);
+    assert_true(sys->force_jac == vlbe_ale_chain_force_jac);
+    assert_true(sys->mass_jac == vlbe_ale_chain_mass_jac);
+    assert_true(sys->constr == vlbe_ale_chain_constr);
+    assert_true(sys->constr_jac == vlbe_ale_chain_constr_jac);
+    assert_true(sys->constr_acc == vlbe_ale_chain_constr_acc);
+    assert_true(sys->constr_hess == vlbe_ale_chain_constr_hess);
+    assert_true(sys->lin_factor == NULL && sys->lin_solve == NULL);
+}
+
+/* vlbe_ale_chain_dae: the chain's callbacks; VLBE_DAE_MASS_CONST exactly
+   when the chain is planar with every p fixed (the Lagrangian chain), not
+   with free or prescribed p's (the mixed planar and the rational chain);
+   dense storage by default, banded with the chain's kl, ku and order in
+   banded mode; before the first layout VLBE_EARG and sys untouched. */
+static void test_chain_dae(void **state)
+{
+    vlbe_dae sys, ref;
     (void)state;
     planar_chain(&cA, 0u);
-    ex_ale_wire(&sys, &cA.ch);
+    memset(&sys, 0xa5, sizeof sys);
+    assert_int_equal(vlbe_ale_chain_dae(&cA.ch, &sys), VLBE_OK);
+    dae_is_chain(&sys, &cA.ch);
+    assert_int_equal((int)sys.flags, 0);
     assert_int_equal(sys.storage, VLBE_DAE_DENSE);
     assert_true(sys.order == NULL && sys.kl == 0 && sys.ku == 0);
+    assert_int_equal(vlbe_dae_check(&sys), VLBE_OK);
     bch_band(&cA);
-    ex_ale_wire(&sys, &cA.ch);
+    assert_int_equal(vlbe_ale_chain_dae(&cA.ch, &sys), VLBE_OK);
+    dae_is_chain(&sys, &cA.ch);
     assert_int_equal(sys.storage, VLBE_DAE_BANDED);
-    assert_int_equal(sys.n, cA.ch.n);
-    assert_int_equal(sys.m, cA.ch.m);
     assert_int_equal(sys.kl, cA.ch.kl);
     assert_int_equal(sys.ku, cA.ch.ku);
     assert_true(sys.order == cA.ord);
+    assert_int_equal(vlbe_dae_check(&sys), VLBE_OK);
+
+    lagrangian_chain(&cA, 5);
+    assert_int_equal(vlbe_ale_chain_dae(&cA.ch, &sys), VLBE_OK);
+    dae_is_chain(&sys, &cA.ch);
+    assert_int_equal((int)sys.flags, (int)VLBE_DAE_MASS_CONST);
+    rational_chain(&cA);
+    assert_int_equal(vlbe_ale_chain_dae(&cA.ch, &sys), VLBE_OK);
+    dae_is_chain(&sys, &cA.ch);
+    assert_int_equal((int)sys.flags, 0);
+
+    /* not laid out: nothing written */
+    memset(&cA, 0, sizeof cA);
+    cA.mat = mat_std();
+    assert_int_equal(vlbe_ale_elem_init(&cA.el, &cA.mat, 0u, 0, 0, 0), VLBE_OK);
+    cA.node[0] = node_make(VLBE_ALE_PFIXED, 0.0);
+    cA.node[1] = node_make(VLBE_ALE_PFIXED, 1.0);
+    assert_int_equal(vlbe_ale_chain_init(&cA.ch, &cA.el, cA.node, 2, NN_MAX, cA.con, NC_MAX),
+                     VLBE_OK);
+    memset(&sys, 0x5a, sizeof sys);
+    ref = sys;
+    assert_int_equal(vlbe_ale_chain_dae(&cA.ch, &sys), VLBE_EARG);
+    assert_memory_equal(&sys, &ref, sizeof sys);
 }
 
 int main(void)
@@ -747,7 +794,7 @@ int main(void)
         cmocka_unit_test(test_uniform_bandwidth),
         cmocka_unit_test(test_relayout),
         cmocka_unit_test(test_ework),
-        cmocka_unit_test(test_wire),
+        cmocka_unit_test(test_chain_dae),
     };
     return cmocka_run_group_tests_name("chain_band", tests, NULL, NULL);
 }

@@ -45,8 +45,9 @@
                       banded mode across the re-layout when nodes cross the
                       exit: the order of the new fixes, kl = 8, copied
                       into its vlbe_dae
-     band_wiring      ex_cr2d_dae copies the beam's storage (dense or its
-                      order, kl, ku) into the vlbe_dae
+     band_wiring      vlbe_cr2d_beam_dae: the beam's callbacks, m = nfix,
+                      its storage (dense, or its order, kl, ku); VLBE_EARG
+                      and nothing written for an order of another nfix
    All comparisons are exact (tolerance 0): the banded and the dense
    callbacks compute the same sums in the same order, so the float build
    runs the same checks. */
@@ -536,25 +537,44 @@ static void test_band_relayout(void **state)
     assert_true(m.sys.order == order && m.sys.kl == 8 && m.sys.ku == 8);
 }
 
-/* ex_cr2d_dae (examples/ex_cr2d.h): a dense beam gives a dense system
-   (kl = ku = 0, order NULL), a banded one its order and half-bandwidths. */
+/* vlbe_cr2d_beam_dae: the beam's callbacks (constr_hess NULL), n and m =
+   nfix, flags 0; a dense beam gives a dense system (kl = ku = 0, order
+   NULL), a banded one its order and half-bandwidths; a banded order made
+   for another nfix: VLBE_EARG and nothing written. */
 static void test_band_wiring(void **state)
 {
     static bcase c;
-    vlbe_dae sys;
+    vlbe_dae sys, ref;
     int order[MAXNM];
     tu_rng g = tu_rng_seed(29);
     (void)state;
     bcase_make(&c, 3, KIND_PLAIN, LAY_CLAMP, &g);
     memset(&sys, 0xff, sizeof sys);
-    ex_cr2d_dae(&sys, &c.bm, c.n, c.m);
+    assert_int_equal(vlbe_cr2d_beam_dae(&c.bm, &sys), VLBE_OK);
     assert_int_equal(sys.storage, VLBE_DAE_DENSE);
     assert_true(sys.kl == 0 && sys.ku == 0 && sys.order == NULL);
+    assert_true(sys.n == c.n && sys.m == c.m && sys.user == &c.bm && sys.flags == 0u);
+    assert_true(sys.mass == vlbe_cr2d_beam_mass && sys.force == vlbe_cr2d_beam_force);
+    assert_true(sys.force_jac == vlbe_cr2d_beam_force_jac);
+    assert_true(sys.mass_jac == vlbe_cr2d_beam_mass_jac);
+    assert_true(sys.constr == vlbe_cr2d_beam_constr);
+    assert_true(sys.constr_jac == vlbe_cr2d_beam_constr_jac);
+    assert_true(sys.constr_acc == vlbe_cr2d_beam_constr_acc);
+    assert_true(sys.constr_hess == NULL && sys.lin_factor == NULL && sys.lin_solve == NULL);
+    assert_int_equal(vlbe_dae_check(&sys), VLBE_OK);
     assert_int_equal(vlbe_cr2d_beam_band(&c.bm, order, MAXNM), VLBE_OK);
-    ex_cr2d_dae(&sys, &c.bm, c.n, c.m);
+    assert_int_equal(vlbe_cr2d_beam_dae(&c.bm, &sys), VLBE_OK);
     assert_int_equal(sys.storage, VLBE_DAE_BANDED);
     assert_true(sys.kl == 8 && sys.ku == 8 && sys.order == order);
     assert_true(sys.n == c.n && sys.m == c.m && sys.user == &c.bm);
+    assert_int_equal(vlbe_dae_check(&sys), VLBE_OK);
+    /* one fix fewer than the order was made for */
+    c.bm.nfix--;
+    memset(&sys, 0x5a, sizeof sys);
+    ref = sys;
+    assert_int_equal(vlbe_cr2d_beam_dae(&c.bm, &sys), VLBE_EARG);
+    assert_memory_equal(&sys, &ref, sizeof sys);
+    c.bm.nfix++;
 }
 
 int main(void)

@@ -29,7 +29,6 @@
 #include "../ancf_ale.h"
 #include "ale_fixtures.h"
 #include "../integrators.h"
-#include "../examples/ex_ale.h"
 
 #include <stdlib.h>
 
@@ -94,7 +93,7 @@ static void sh_make(sh *s, int ne, double c, double V, double c_phi, int both)
     }
     assert_int_equal(vlbe_ale_chain_layout(&s->ch), VLBE_OK);
     assert_true(s->ch.n <= NQ_MAX);
-    ex_ale_wire(&s->sys, &s->ch);
+    assert_int_equal(vlbe_ale_chain_dae(&s->ch, &s->sys), VLBE_OK);
 }
 
 /* the straight state at rest, spin rates thd(x) at the nodes not held */

@@ -29,7 +29,6 @@
 #include "test_util.h"
 #include "../ancf_ale.h"
 #include "../integrators.h"
-#include "../examples/ex_ale.h"
 
 #include <string.h>
 
@@ -79,7 +78,8 @@ static void ct_setup(ct_model *c)
     k.v[0] = VLBE_R(1.0);
     assert_int_equal(vlbe_ale_chain_add(&c->ch, &k), VLBE_OK);
     assert_int_equal(vlbe_ale_chain_layout(&c->ch), VLBE_OK);
-    ex_ale_wire(&c->sys, &c->ch); /* planar, every p fixed: VLBE_DAE_MASS_CONST */
+    /* planar, every p fixed: VLBE_DAE_MASS_CONST */
+    assert_int_equal(vlbe_ale_chain_dae(&c->ch, &c->sys), VLBE_OK);
     vlbe_ale_chain_straight(&c->ch, r0, dir, c->q);
     assert_true(vlbe_hht_work_len(c->ch.n, c->ch.m) <= CT_WLEN);
     assert_true(vlbe_static_work_len(c->ch.n, c->ch.m) <= CT_WLEN);

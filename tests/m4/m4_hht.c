@@ -5,13 +5,12 @@
    straight and at rest at t = 0; vlbe_hht_params_hht(-0.05) with its
    defaults, h = 1e-3, 1000 steps.  Prints the tip (x, y, x', y' and their
    rates) every 250 steps and the counters; a failed step prints its status
-   and the program exits nonzero.  The vlbe_dae is wired by
-   examples/ex_ale.h's ex_ale_wire (dense storage).
+   and the program exits nonzero.  The vlbe_dae is the chain's
+   (vlbe_ale_chain_dae, dense storage).
    -- part of vlbe                                  SPDX-License-Identifier: MIT */
 #include "../../ancf_ale.h"
 #include "../../integrators.h"
 #include "m4_out.h"
-#include "../../examples/ex_ale.h" /* the chain's vlbe_dae */
 
 #define NE 4
 #define WORK_CAP 8192
@@ -63,7 +62,8 @@ int main(void)
     c.v[0] = VLBE_R(1.0);
     if (m4_status("chain_add_slope", vlbe_ale_chain_add(&ch, &c))) return m4_exit();
     if (m4_status("chain_layout", vlbe_ale_chain_layout(&ch))) return m4_exit();
-    ex_ale_wire(&sys, &ch); /* planar, every p fixed: VLBE_DAE_MASS_CONST */
+    /* planar, every p fixed: VLBE_DAE_MASS_CONST */
+    if (m4_status("chain_dae", vlbe_ale_chain_dae(&ch, &sys))) return m4_exit();
     m4_int("n", sys.n);
     m4_int("m", sys.m);
     lw = vlbe_hht_work_len_sys(&sys);
