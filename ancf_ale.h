@@ -187,6 +187,7 @@ API
    vlbe_status vlbe_ale_point_force(q, pf, F, Q, K)         Q += N(pf)^T F, K += d/dq
    vlbe_status vlbe_ale_point(q, p, r, rp)                  r(p), r'(p)
    vlbe_status vlbe_ale_strain(q, p, &eps, &kap)            strain, curvature at p
+   vlbe_status vlbe_ale_prestretch(EA, F, &eps, &lam)       Green strain, stretch of tension F
    vlbe_status vlbe_ale_split(q, qd, ph, qh, qhd)           exact segmentation at ph
    invariants (fixed-length elements and chains, see INVARIANTS; ALE
    elements: vlbe_ale_force with VLBE_ALE_INV_AXIAL):
@@ -222,6 +223,8 @@ API
    vlbe_status vlbe_ale_chain_pnode(ch, i, t, q, v, p3)     p, p', p'' of a node
    vlbe_status vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, mode)  element view
    void vlbe_ale_chain_straight(ch, r0, dir, q)             straight start state
+   vlbe_status vlbe_ale_chain_window(ch, s, lam, c)         nodes fixed in space, material
+                                                            flowing at c with stretch lam
    vlbe_status vlbe_ale_chain_locate / _point(ch, t, q, p, ...)  element of p, r(p)
    vlbe_status vlbe_ale_chain_energy(ch, t, q, v, E)        T, U, V of the chain
    vlbe_status vlbe_ale_chain_length(ch, t, q, v, len, rate)  arc length, its rate
@@ -356,6 +359,8 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
                                     vlbe_real *VLBE_RESTRICT rp);
 VLBE_API vlbe_status vlbe_ale_strain(const vlbe_real *q, vlbe_real p, vlbe_real *VLBE_RESTRICT eps,
                                      vlbe_real *VLBE_RESTRICT kap);
+VLBE_API vlbe_status vlbe_ale_prestretch(vlbe_real EA, vlbe_real F, vlbe_real *VLBE_RESTRICT eps,
+                                         vlbe_real *VLBE_RESTRICT lam);
 VLBE_API vlbe_status vlbe_ale_inv_init(vlbe_ale_inv *inv);
 VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
                                         const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
@@ -1880,6 +1885,47 @@ static inline vlbe_status vlbe__ale_strain_b(const vlbe_herm_ale *b, const vlbe_
     if ((eps && !isfinite(e)) || !isfinite(k)) return VLBE_ENONFINITE;
     if (eps) *eps = e;
     if (kap) *kap = k;
+    return VLBE_OK;
+}
+
+/* Prestress of a straight element.  The axial force of the planar and the
+   3D element is EA eps along r' with the Green strain eps = (|r'|^2 - 1)/2
+   (p is the unstretched arc length), so a straight piece under the tension
+   F (force in space, F < 0 compression) has eps with
+        T(eps) = EA eps sqrt(1 + 2 eps) = F
+   and the stretch lam = |r'| = sqrt(1 + 2 eps): a span of length l in space
+   holds l / lam of material (so rho A, per unstretched length, gives rho A
+   / lam per metre in space).  T is increasing and convex for eps > -1/3
+   (T' = EA (1 + 3 eps) / lam, T'' = EA (2 + 3 eps) / lam^3), from its least
+   value -EA / (3 sqrt 3) there; Newton from eps0 = F / EA, where T(eps0) >=
+   F (lam >= 1 for F >= 0, lam < 1 and eps0 < 0 else), then decreases
+   monotonically to the root and stops when a step no longer decreases it:
+   eps to a few ulps.  EA <= 0, F or EA not finite, F <= -EA / (3 sqrt 3)
+   (no stretched state left: the piece collapses): VLBE_EARG; outputs
+   untouched on failure.  For a given stress-free length L0 of a span of
+   length l, lam = l / L0 instead (eps = (lam^2 - 1) / 2). */
+VLBE_API vlbe_status vlbe_ale_prestretch(vlbe_real EA, vlbe_real F, vlbe_real *VLBE_RESTRICT eps,
+                                         vlbe_real *VLBE_RESTRICT lam)
+{
+    vlbe_real x[2], e, en;
+    int k;
+    VLBE_ASSERT(eps != NULL && lam != NULL);
+    x[0] = EA;
+    x[1] = F;
+    if (!vlbe_all_finite(x, 2) || !(EA > VLBE_R(0.0))) return VLBE_EARG;
+    if (!(F > -EA / (VLBE_R(3.0) * vlbe_sqrt(VLBE_R(3.0))))) return VLBE_EARG;
+    e = F / EA;
+    if (!vlbe_all_finite(&e, 1)) return VLBE_EARG; /* F / EA overflows: no such piece */
+    for (k = 0; k < 200; ++k) {
+        const vlbe_real l = vlbe_sqrt(VLBE_R(1.0) + VLBE_R(2.0) * e);
+        const vlbe_real r = EA * e * l - F, dT = EA * (VLBE_R(1.0) + VLBE_R(3.0) * e) / l;
+        if (!(r > VLBE_R(0.0)) || !(dT > VLBE_R(0.0))) break; /* at the root (to rounding) */
+        en = e - r / dT;
+        if (!(en < e)) break; /* no longer decreasing: converged */
+        e = en;
+    }
+    *eps = e;
+    *lam = vlbe_sqrt(VLBE_R(1.0) + VLBE_R(2.0) * e);
     return VLBE_OK;
 }
 
@@ -3759,6 +3805,8 @@ VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe
                                            vlbe_real *ve, int *idx, unsigned *mode);
 VLBE_API void vlbe_ale_chain_straight(const vlbe_ale_chain *ch, const vlbe_real *r0,
                                       const vlbe_real *dir, vlbe_real *q);
+VLBE_API vlbe_status vlbe_ale_chain_window(vlbe_ale_chain *ch, const vlbe_real *s, vlbe_real lam,
+                                           vlbe_real c);
 VLBE_API vlbe_status vlbe_ale_chain_locate(const vlbe_ale_chain *ch, vlbe_real t,
                                            const vlbe_real *q, vlbe_real p, int *e);
 VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
@@ -4310,6 +4358,47 @@ VLBE_API void vlbe_ale_chain_straight(const vlbe_ale_chain *ch, const vlbe_real 
         if (ch->spin) q[vlbe__ale_tidx(ch, i)] = VLBE_R(0.0);
         if (nd->pmode == VLBE_ALE_PFREE) q[vlbe__ale_pidx(ch, i)] = nd->p;
     }
+}
+
+/* An axially moving span in an Eulerian window (a moving string or belt,
+   a band saw, a strip between rolls): nodes 0..nn-1 stay at the places s[i]
+   (strictly increasing arc positions in space along the span) while the
+   material passes through them at speed c (its velocity in space along the
+   span; c < 0 flows towards node 0) with the stretch lam (vlbe_ale_prestretch
+   for a tension, l / L0 for a stress-free length L0 of a span l).  Material
+   coordinates are unstretched arc length, so the material point at place s
+   at time t is p = (s - c t) / lam: every node gets pmode
+   VLBE_ALE_PPRESCRIBED, p = s[i] / lam, pd = -c / lam, pdd = 0 (a chain's
+   pfun, if set, still overrides them).  Call before vlbe_ale_chain_layout
+   (the modes decide the coordinates); the straight start state is then
+   vlbe_ale_chain_straight(ch, r0, lam e, q) with e the unit direction of
+   the span (r = r0 + (s - s[0]) e, r' = lam e), at rest (v = 0: the nodes do
+   not move, the material does).  lam <= 0, s not increasing, or a value
+   not finite: VLBE_EARG, the nodes untouched. */
+VLBE_API vlbe_status vlbe_ale_chain_window(vlbe_ale_chain *ch, const vlbe_real *s, vlbe_real lam,
+                                           vlbe_real c)
+{
+    vlbe_real x[2];
+    int i;
+    VLBE_ASSERT(ch != NULL && s != NULL);
+    x[0] = lam;
+    x[1] = c;
+    if (!vlbe_all_finite(x, 2) || !(lam > VLBE_R(0.0)) || !vlbe_all_finite(s, ch->nn))
+        return VLBE_EARG;
+    for (i = 0; i + 1 < ch->nn; ++i)
+        if (!(s[i + 1] > s[i])) return VLBE_EARG;
+    for (i = 0; i < ch->nn; ++i) { /* p and p' finite (no overflow) */
+        x[0] = s[i] / lam;
+        x[1] = -c / lam;
+        if (!vlbe_all_finite(x, 2)) return VLBE_EARG;
+    }
+    for (i = 0; i < ch->nn; ++i) {
+        ch->node[i].pmode = VLBE_ALE_PPRESCRIBED;
+        ch->node[i].p = s[i] / lam;
+        ch->node[i].pd = -c / lam;
+        ch->node[i].pdd = VLBE_R(0.0);
+    }
+    return VLBE_OK;
 }
 
 /* Element holding material point p (the first whose [p1, p2] contains it). */

@@ -15,9 +15,11 @@
    Our reading of the data (the paper leaves it implicit):
    - F is the physical tension.  The element's axial force is EA eps r' with
      the Green strain eps, so its magnitude is T = EA eps lam with the
-     stretch lam = |r'| = sqrt(1 + 2 eps); we solve T = F for eps.
+     stretch lam = |r'| = sqrt(1 + 2 eps); vlbe_ale_prestretch solves T = F
+     for eps.
    - v0 is the speed of the material in space, so every node's material
-     coordinate moves at p' = -v0 / lam (p_i(t) = x_i / lam - v0 t / lam).
+     coordinate moves at p' = -v0 / lam (p_i(t) = x_i / lam - v0 t / lam):
+     vlbe_ale_chain_window sets the nodes so.
    - rhoA is the mass per unit unstretched length, so the stretched string
      carries rhoA / lam per metre.
    The linear transverse equation of that continuum is eq. (55) with
@@ -115,18 +117,17 @@ typedef struct ms_model {
     int tr;             /* component of the transverse motion: 1 (y) or 2 (z) */
 } ms_model;
 
-/* Section and prestretch: T = EA eps sqrt(1 + 2 eps) = F. */
+/* Section and prestretch: T = EA eps sqrt(1 + 2 eps) = F (vlbe_ale_prestretch). */
 static inline void ms_section(double *rhoA, double *EA, double *EI, double *eps, double *lam)
 {
     const double PI = 3.14159265358979323846, A = PI * MS_R * MS_R;
-    double e = 0.0;
-    int k;
+    vlbe_real e = 0, l = 1;
     *rhoA = MS_RHO * A;
     *EA = MS_E * A;
     *EI = MS_E * PI * MS_R * MS_R * MS_R * MS_R / 4.0;
-    for (k = 0; k < 50; ++k) e = MS_F / (*EA * sqrt(1.0 + 2.0 * e));
-    *eps = e;
-    *lam = sqrt(1.0 + 2.0 * e);
+    (void)vlbe_ale_prestretch((vlbe_real)*EA, (vlbe_real)MS_F, &e, &l); /* EA > 0, F > 0: VLBE_OK */
+    *eps = (double)e;
+    *lam = (double)l;
 }
 
 /* The exact first frequency of the prestretched moving string (see top). */
@@ -147,7 +148,7 @@ static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_re
     const int d3 = (kind & MS_3D) != 0;
     const unsigned flags = ((kind & MS_BEND) ? 0u : VLBE_ALE_NO_BEND) | VLBE_ALE_NO_DAMP;
     double rhoA, EA, EI;
-    vlbe_real r0[3] = {0, 0, 0}, dir[3] = {0, 0, 0};
+    vlbe_real r0[3] = {0, 0, 0}, dir[3] = {0, 0, 0}, s[MS_NE_MAX + 1];
     vlbe_ale_con c;
     int i;
     if (ne < 2 || ne > MS_NE_MAX || kind < 0 || kind > 31 || (!d3 && (kind & ~MS_BAND) > 1))
@@ -177,15 +178,13 @@ static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_re
     } else if (vlbe_ale_elem_init(&m->el, &m->mat, flags, 0, 0, 0)) {
         return -1;
     }
-    for (i = 0; i <= ne; ++i) {
-        vlbe_ale_node *nd = &m->node[i];
-        nd->pmode = VLBE_ALE_PPRESCRIBED;
-        nd->p = (vlbe_real)(MS_L * i / ne / m->lam);
-        nd->pd = (vlbe_real)(-MS_V0 / m->lam);
-    }
     if ((d3 ? vlbe_ale_chain_init3(&m->ch, &m->el3, m->node, ne + 1, MS_NE_MAX + 1, m->con, 2)
             : vlbe_ale_chain_init(&m->ch, &m->el, m->node, ne + 1, MS_NE_MAX + 1, m->con, 2)))
         return -1;
+    /* the window: nodes at x_i = l i / ne, the material flowing through at
+       v0 with the stretch lam (p_i = (x_i - v0 t) / lam) */
+    for (i = 0; i <= ne; ++i) s[i] = (vlbe_real)(MS_L * i / ne);
+    if (vlbe_ale_chain_window(&m->ch, s, (vlbe_real)m->lam, (vlbe_real)MS_V0)) return -1;
     memset(&c, 0, sizeof c);
     c.type = VLBE_ALE_CON_POS; /* supports: positions fixed (pinned; 3D: all 3 components) */
     c.node = 0;
