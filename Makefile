@@ -86,7 +86,9 @@ EXAMPLE_SRCS := $(wildcard $(EXAMPLE_DIR)/*.c)
 EXAMPLE_NAMES := $(basename $(notdir $(EXAMPLE_SRCS)))
 EXAMPLE_BINS := $(addprefix $(BUILD)/examples/,$(EXAMPLE_NAMES))
 EXAMPLE_DEPS := $(HEADERS) $(wildcard $(EXAMPLE_DIR)/*.h) bench/svgplot.h
-DEMO_SCENES ?= $(EXAMPLE_NAMES)
+# first_chain.c is the README's first program, not a paper scene (make
+# check-first runs it)
+DEMO_SCENES ?= $(filter-out first_chain,$(EXAMPLE_NAMES))
 
 BENCH_SRCS := $(wildcard bench/*.c)
 BENCH_NAMES := $(basename $(notdir $(BENCH_SRCS)))
@@ -108,7 +110,7 @@ BENCH_DIR_ARG := $(DEMO_WP_NAMES)
 LAPACKE_H := $(wildcard /usr/include/lapacke.h)
 BENCH_LAPACKE_BINS := $(if $(LAPACKE_H),$(BUILD)/bench/bench_lu_lapacke)
 
-.PHONY: all check test check-headers cmocka test-build examples demo bench \
+.PHONY: all check test check-headers check-first cmocka test-build examples demo bench \
         bench-portable bench-scale lint clean fuzz fuzz-build fuzz-clang measured-update mutate \
         check-m4 m4-tools
 
@@ -217,6 +219,24 @@ $(BUILD)/examples/%: $(EXAMPLE_DIR)/%.c $(EXAMPLE_DEPS)
 
 examples: $(EXAMPLE_BINS)
 	@echo "examples: $(words $(EXAMPLE_BINS)) built$(if $(EXAMPLE_BINS),: $(EXAMPLE_NAMES))"
+
+# The README's first program, built as a user would (the warning set, -O2)
+# in double and in float, and run: each must finish (exit 0), and the two
+# tips at t = 1 s agree to 1e-3 relative (float carries about 2e-4 there,
+# make check-m4's cantilever)
+FIRST_BINS = $(BUILD)/first/first_chain-dbl $(BUILD)/first/first_chain-flt
+$(BUILD)/first/first_chain-dbl: $(EXAMPLE_DIR)/first_chain.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(WARN) -O2 -I. $< -o $@ -lm
+$(BUILD)/first/first_chain-flt: $(EXAMPLE_DIR)/first_chain.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(WARN) -O2 -DVLBE_USE_FLOAT -I. $< -o $@ -lm
+
+check-first: $(FIRST_BINS)
+	@set -e; for b in $(FIRST_BINS); do echo "== $$b"; $$b > $$b.txt || { cat $$b.txt; echo "FAILED: $$b"; exit 1; }; cat $$b.txt; done; \
+	awk '/^t = 1.0 s/ { y[++n] = $$8 + 0 } END { d = y[1] - y[2]; if (d < 0) d = -d; s = y[1] < 0 ? -y[1] : y[1]; \
+	  if (n != 2 || !(s > 0) || !(d <= 1e-3 * s)) { print "FAILED: first_chain tip, double " y[1] " mm, float " y[2] " mm"; exit 1 } \
+	  printf "check-first: tip at t = 1 s, double %s mm, float %s mm\n", y[1], y[2] }' $(BUILD)/first/first_chain-dbl.txt $(BUILD)/first/first_chain-flt.txt
 
 # Each example prints, besides its own report, comparison rows
 #   ROW|<scene>|<quantity [unit]>|<published>|<computed>|<relative error>|<cpu seconds>
