@@ -3820,7 +3820,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t
    the value of vlbe__ale_fail (1: the state is outside the model's domain,
    the integrator may retry; -1: fatal) with the status and the element (-1:
    none, or a constraint) in ch->err, ch->err_elem -- the only change a call
-   makes to the chain.  Non-finite q, v (force, force_jac), a (mass_jac) or
+   makes to the chain (the convention of every model, vlbe.h at vlbe_dae).  Non-finite q, v (force, force_jac), a (mass_jac) or
    lambda (constr_hess) are found before anything is written: VLBE_ENONFINITE
    (for q, v, a with the first element that meets them) and the outputs
    untouched.  Exception to the rule that a failed call writes nothing: a

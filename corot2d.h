@@ -1382,7 +1382,8 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
    VLBE_ESINGULAR (the point lies outside the model's domain, e.g. a
    Newton iterate moved a node of the transition element across the
    joint's exit: the integrators retry smaller) and -1 otherwise, with the
-   status and the element in err, err_elem.  With joint set, element trans
+   status and the element in err, err_elem (the convention of every model,
+   vlbe.h at vlbe_dae).  With joint set, element trans
    is evaluated as the transition element (vlbe_cr2d_trans_*); the caller
    moves trans (and the constraints of the nodes inside the joint) when a
    node crosses the exit.  NaN/Inf in a callback's q, v (force, force_jac)
