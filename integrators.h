@@ -9,6 +9,8 @@ USAGE
 
      vlbe_dae sys = {0};  sys.n = ...; sys.m = ...; sys.user = &my;
      sys.mass = my_mass; sys.force = my_force; sys.constr = my_c; sys.constr_jac = my_cq;
+       (a chain of ancf_ale.h or rancf.h: vlbe_ale_chain_dae(&ch, &sys); a beam of
+       corot2d.h: vlbe_cr2d_beam_dae(&beam, &sys))
      vlbe_hht_params par;  vlbe_hht_params_genalpha(&par, 0.8);
      size_t lw = vlbe_hht_work_len(n, m), liw = vlbe_hht_iwork_len(n, m);
      ... allocate lw vlbe_real and liw int ...

@@ -76,6 +76,10 @@ CONVENTIONS
    the row interchanges): ld = vlbe_band_lu_ld(kl, ku) = 2 kl + ku + 1.
 
 API (one line each)
+   vlbe_dae                                            the problem (a type): n, m, callbacks,
+                                                       flags, storage; filled by a model
+                                                       (vlbe_ale_chain_dae, vlbe_cr2d_beam_dae)
+                                                       or the user, solved by integrators.h
    const char *vlbe_status_str(vlbe_status s)          name of a status code
    int   vlbe_all_finite(const vlbe_real *x, int n)    1 if no NaN/Inf in x
    vlbe_real vlbe_v2_dot/cross/norm, vlbe_v2_axpy      2D vector ops
