@@ -22,7 +22,8 @@
 # compiled and linked twice, double and -DVLBE_USE_FLOAT, with the
 # project's warnings (CC, CSTD, WARN from the Makefile), -O2, -I. and -lm.
 # Links: every [text](target) and ![alt](target) whose target is not a URL
-# must name an existing file relative to its page (anchors not checked).
+# must name an existing file relative to its page, and an anchor (#...) a
+# heading of that file.
 # Names: every vlbe_*, VLBE_*, svgp_*, SVGP_* identifier on the pages must
 # occur in the sources (*.h, *.c, Makefile).
 set -u
@@ -116,12 +117,22 @@ if [ -f "$OUT/manifest" ]; then
 fi
 
 # -- links --------------------------------------------------------------------
+# anchors: GitHub's rule for headings in ASCII (lower case, punctuation but
+# - and _ dropped, spaces to -); non-ASCII characters are dropped, which is
+# right for the dashes and arrows of these headings, not for letters
+slugs() { sed -n 's/^#\{1,6\} \{1,\}//p' "$1" | LC_ALL=C tr 'A-Z' 'a-z' | LC_ALL=C sed 's/[^a-z0-9 _-]//g; s/ /-/g'; }
 nl=0
 for p in $PAGES; do
     d=$(dirname "$p")
-    for t in $(grep -o '\](\([^)#]*\)[)#]' "$p" | sed 's/^](//; s/[)#]$//' | grep -v -E '^(https?:|mailto:|$)'); do
+    for t in $(grep -o '](\([^) ]*\))' "$p" | sed 's/^](//; s/)$//' | grep -v -E '^(https?:|mailto:)'); do
         nl=$((nl + 1))
-        [ -e "$d/$t" ] || { echo "FAILED: $p: link to $t: no such file ($d/$t)"; fail=1; }
+        file=${t%%#*}; anchor=""
+        case $t in *'#'*) anchor=${t#*#};; esac
+        if [ -z "$file" ]; then file=$p; else file=$d/$file; fi
+        if [ ! -e "$file" ]; then echo "FAILED: $p: link to $t: no such file ($file)"; fail=1; continue; fi
+        if [ -n "$anchor" ] && ! slugs "$file" | grep -q -x -F -- "$anchor"; then
+            echo "FAILED: $p: link to $t: no heading with that anchor in $file"; fail=1
+        fi
     done
 done
 
