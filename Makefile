@@ -15,6 +15,8 @@
 #   make bench-scale    time per step of a clamped chain, 4 .. 1024 elements, dense vs banded
 #   make examples       build examples/*.c with the full warning set
 #   make check-headers  each header alone, twice, as C++, in float mode
+#   make check-docs     every C block of README.md and docs/*.md compiled, their
+#                       links and quoted names checked (tests/doc_blocks.sh)
 #   make check-m4       the tests/m4 programs built for a Cortex-M4F (float,
 #                       hard FPU) and run under qemu-system-arm -M mps2-an386,
 #                       each output against the host float run; no double
@@ -134,6 +136,13 @@ check-headers:
 	@printf '#include "bench/svgplot.h"\n#include "bench/svgplot.h"\n' | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -
 	@printf '#include "bench/svgplot.h"\n' | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -
 
+# every ```c block of README.md and docs/*.md compiled and linked, double
+# and float (tests/doc_blocks.sh says how fragments and mirrors of
+# examples/*.c are compiled); relative links and quoted names checked
+.PHONY: check-docs
+check-docs:
+	@CC='$(CC)' CSTD='$(CSTD)' WARN='$(WARN)' BUILD='$(BUILD)' sh tests/doc_blocks.sh
+
 # -- cmocka -------------------------------------------------------------------
 CMOCKA_PROBE = printf '\#include <stdarg.h>\n\#include <stddef.h>\n\#include <setjmp.h>\n\#include <stdint.h>\n\#include <cmocka.h>\nint main(void) { print_message("%%s", ""); return 0; }\n' | \
   $(CC) $(CMOCKA_CFLAGS) -x c - -o $(BUILD)/.cmocka-probe $(CMOCKA_LIBS) >/dev/null 2>&1
@@ -177,7 +186,7 @@ TEST_SUMMARY = awk '{ b = FILENAME; sub(/\/[^\/]*$$/, "", b); sub(/.*\//, "", b)
   END { for (i = 1; i <= nb; ++i) printf "  %-14s %4d passed, %d failed, %d skipped\n", order[i], p[order[i]], f[order[i]], s[order[i]]; \
     if (F == 0 && fail != 0) F = 1; printf "tests: %d passed, %d failed, %d skipped\n", P, F, S }'
 
-test: check-headers test-build
+test: check-headers check-docs test-build
 	@set -u; fail=0; logs=""; \
 	if [ -z "$(TEST_NAMES)" ]; then echo "test: no $(TEST_DIR)/test_*.c yet"; fi; \
 	run() { lim=$$1; log=$$2; shift 2; logs="$$logs $$log"; rc=0; \
@@ -504,11 +513,11 @@ check-m4: $(M4_ELFS) $(M4_HOST_BINS) $(BUILD)/m4/host-dbl/m4_hht $(BUILD)/m4/m4_
 	  -v exceptions=$(M4_DIR)/stack_exceptions.txt -f $(M4_DIR)/stack.awk $$d/stack/vlbe_all.ci \
 	  > $$d/stack.md 2> $$d/stack.sum || fail=1; \
 	cat $$d/stack.md $$d/stack.sum; \
-	grep -E '^\| [a-z0-9_]+\.h \| vlbe_' README.md > $$d/stack_readme.txt || true; \
+	grep -E '^\| [a-z0-9_]+\.h \| vlbe_' docs/embedded.md > $$d/stack_readme.txt || true; \
 	grep -E '^\| [a-z0-9_]+\.h \| vlbe_' $$d/stack.md > $$d/stack_run.txt || true; \
 	if ! diff $$d/stack_readme.txt $$d/stack_run.txt > $$d/stack_readme.diff; then \
-	  echo "FAILED: README.md's stack table differs from this run (diff in $$d/stack_readme.diff)"; fail=1; \
-	else echo "stack: README.md's table equals this run"; fi; \
+	  echo "FAILED: docs/embedded.md's stack table differs from this run (diff in $$d/stack_readme.diff)"; fail=1; \
+	else echo "stack: docs/embedded.md's table equals this run"; fi; \
 	if [ $$fail = 0 ]; then echo "check-m4: ok"; else echo "check-m4: FAILED"; fi; \
 	exit $$fail
 

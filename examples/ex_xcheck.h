@@ -62,7 +62,7 @@
    in a bent cubic, so bending also stretches; the static tip force of the
    start comes out 0.75 % / 0.055 % / 0.001 % too high with 3 / 5 / 10
    elements (cubic Hermite bending alone is exact for a tip load), and 5
-   elements miss the tip history by 1-2 % of tip0 in 0.3 s (README).
+   elements miss the tip history by 1-2 % of tip0 in 0.3 s (docs/results.md).
    Damping of eq. (56): the Rayleigh pair alpha(t), beta(t) of ex_sbeam.h
    (sb_rayleigh), as the co-rotational model: the stiffness part as the
    element's Kelvin-Voigt coefficients c_eps = c_kap = beta (material
@@ -165,7 +165,7 @@ enum { XC_START_IMPULSE = 0, XC_START_STEADY = 1 };
    term g (P - 2K) a of q_d): the convention the co-rotational model
    follows through its transition element, whose beta k0 (eqs. 50-51)
    damps the rates of its coordinates over the outside segment at fixed
-   s / L2 (sliding_xcheck.c, README) */
+   s / L2 (sliding_xcheck.c, docs/results.md) */
 #define XC_AM_BETA_FIXED_XI 1u
 
 /* A history: tip deflection y(t) at the recorded instants. */

@@ -23,7 +23,7 @@
      refined         CR and ALE at h = 0.25 ms, AM 6 modes at 0.05 ms
      convergence     each model against its own refinement: CR 21 + 15
                      elements at 0.25 ms (28 + 20 runs too, at twice the
-                     CPU; its numbers in README), ALE 20 elements at 1 ms, AM
+                     CPU; its numbers in docs/results.md), ALE 20 elements at 1 ms, AM
                      3 and 6 modes and half the step
      nonlinearity    CR and ALE started at tip0 / 10 and scaled by 10: the
                      part of each nonlinear run that the linear AM cannot
@@ -200,7 +200,7 @@ static int xs_case(char which, const char *dir, int undamped)
     }
     cf = c;
     cf.h = hp / 4.0;
-    cf.n_in = 21; /* 28 + 20 runs too, at twice the CPU (README) */
+    cf.n_in = 21; /* 28 + 20 runs too, at twice the CPU (docs/results.md) */
     cf.n_out = 15;
     xs_cr(&run[R_CRM], "CR 21+15, h = 0.25 ms", &cf);
     xs_ale(&run[R_ALEN], "ALE 20 el., h = 1 ms", &c, 20, XC_START_IMPULSE);

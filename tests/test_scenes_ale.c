@@ -247,7 +247,7 @@ static void test_falling_beam(void **state)
      kinetic energy (measured 3.4e-2 (m:sb_paper_gain_rel)): the flux the
      paper's virtual work leaves out (ancf_ale.h, VLBE_ALE_CONSERVATIVE); if
      this ever fails the paper form has become conservative and the
-     README's finding is stale. */
+     finding of docs/results.md is stale. */
 static void test_suspended_beam(void **state)
 {
     (void)state;

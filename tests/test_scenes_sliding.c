@@ -205,7 +205,7 @@ static void test_crossings(void **state)
    L2^-3) grows within the next step by U_A' h, many times its length, and
    Newton fails even at h / 64: VLBE_ENOCONV, reported with the last
    accepted state finite.  Released once it is h U_A' further out, the same
-   run gets through (README, bench/wp_sliding.c). */
+   run gets through (docs/results.md, bench/wp_sliding.c). */
 static double g_last_t;
 static int g_last_finite;
 static void last_obs(void *ctx, const sb_model *m, double t, const vlbe_real *q, const vlbe_real *v)

@@ -288,7 +288,7 @@ static void test_am_lagrange(void **state)
      damp   the damping convention: AM with the stiffness-proportional
             damping on the curvature rate at fixed x/l against the
             material rate (the co-rotational model follows the former, the
-            ALE and AM models the latter; README): the model difference
+            ALE and AM models the latter; docs/results.md): the model difference
             itself, x 1
      am_step  AM's own step: RK4 at 0.1 ms against 0.05 ms; fourth
             order, the half step keeps 1/16: x 16/15
