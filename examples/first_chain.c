@@ -1,9 +1,9 @@
 /* first_chain.c -- a steel flat bar (1 m, 100 x 10 mm) clamped at x = 0 and
    released under gravity: four ALE-ANCF elements in a chain, HHT-alpha.
-   cc -std=c99 -O2 -I. examples/first_chain.c -lm && ./a.out
+   cc -std=c99 -O2 examples/first_chain.c -lm && ./a.out
    -- part of vlbe                                  SPDX-License-Identifier: MIT */
-#include "ancf_ale.h"
-#include "integrators.h"
+#include "../ancf_ale.h"
+#include "../integrators.h"
 #include <stdio.h>
 
 #define NE 4 /* elements */
