@@ -15,7 +15,10 @@
    window_steady       a string and a beam in an Eulerian window (nodes fixed
                        in space, material flowing at c = 3 m/s under tension
                        F = 100 N, EA = 1e4 N, pinned at both ends): the nodes'
-                       places are the given s_i, and the straight state is a
+                       places are the given s_i, the material point at node
+                       2 at t = 0 is found c t downstream at t (to 16 eps of
+                       the coordinates, rounding of the basis), and the
+                       straight state is a
                        steady flow: the kinetic energy is that of the
                        material moving at c, rho A (l / lam) c^2 / 2 (to 16
                        eps: the quadrature of a constant is exact), the
@@ -169,6 +172,16 @@ static void test_window_steady(void **state)
                   amax_r / aref, tol);
         assert_true(amax_r <= tol * aref);
         assert_true(amax_s <= tol * aref / h);
+        /* the material point at node 2 at t = 0 is c t further down the
+           span at t = 0.05 s (the chain's nodes have not moved) */
+        {
+            const double t = 0.05, sd = (double)w->s[2] - 0.2 + 3.0 * t;
+            vlbe_real r[2], rp[2];
+            assert_int_equal(vlbe_ale_chain_point(&w->ch, (vlbe_real)t, w->q, w->node[2].p, r, rp),
+                             VLBE_OK);
+            ASSERT_CLOSE(r[0], 0.3 + 0.6 * sd, 0.0, 16.0 * (double)VLBE_EPS);
+            ASSERT_CLOSE(r[1], -0.1 + 0.8 * sd, 0.0, 16.0 * (double)VLBE_EPS);
+        }
         /* the material moves at c in space: T = rho A (l / lam) c^2 / 2 */
         {
             vlbe_real E[3] = {0, 0, 0};
