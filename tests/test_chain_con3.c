@@ -514,18 +514,223 @@ static void test_axial_free(void **state)
 /* 4. the hub: 3D reduced to the plane                                       */
 /* ======================================================================= */
 
+typedef struct c2 {
+    vlbe_ale_mat mat;
+    vlbe_ale_elem el;
+    vlbe_ale_node node[NN_MAX];
+    vlbe_ale_con con[NC_MAX];
+    vlbe_ale_chain ch;
+    vlbe_dae sys;
+} c2;
+
+typedef struct hht_run {
+    vlbe_hht_params par;
+    vlbe_hht hs;
+    vlbe_real *w;
+    int *iw;
+    size_t lw, liw;
+} hht_run;
+
+static void hht_begin(hht_run *h, const vlbe_dae *sys, const vlbe_real *q)
+{
+    vlbe_real v[N_MAX];
+    int i;
+    for (i = 0; i < sys->n; ++i) v[i] = VLBE_R(0.0);
+    assert_int_equal(vlbe_hht_params_hht(&h->par, VLBE_R(-0.1)), VLBE_OK);
+    h->lw = vlbe_hht_work_len_sys(sys);
+    h->liw = vlbe_hht_iwork_len_sys(sys);
+    h->w = (vlbe_real *)malloc(h->lw * sizeof *h->w);
+    h->iw = (int *)malloc(h->liw * sizeof *h->iw);
+    assert_non_null(h->w);
+    assert_non_null(h->iw);
+    assert_int_equal(vlbe_hht_init(&h->hs, sys, &h->par, VLBE_R(0.0), q, v, h->w, h->lw, h->iw,
+                                   h->liw),
+                     VLBE_OK);
+}
+
+static void hht_end(hht_run *h)
+{
+    free(h->w);
+    free(h->iw);
+}
+
+#define HUB_NE 4
+#define HUB_STEPS 150
+
+/* A radial beam (4 elements, L = 1, the O(1) materials, in-plane load f)
+   on a hub turning about z by a(t) = 0.2 + 3 t^2 / 2, from rest: the 3D
+   chain with spin (POS + SLOPE_ROT with e0 = x, k = z, + SPIN theta = 0:
+   k.e0 = 0, the documented spin law) and the planar chain (POS +
+   SLOPE_ANGLE with the same law), HHT-alpha -0.1, h = 2e-3, 150 steps.
+   In the plane the 3D element's M, Q, K, D equal the planar element's to
+   rounding (test_ale3.c, planar_reproduction), and its z, z', theta rows
+   decouple (their couplings vanish at z = 0, theta = 0), so the runs differ
+   by rounding only, carried from step to step: tolerance 64 EPS per step
+   on the node coordinates (|r|, |r'| ~ 1), i.e. 64 EPS x 150 steps; z, z',
+   theta stay 0 to 64 EPS. */
 static void test_hub_reproduction(void **state)
 {
+    static c2 p;
+    static c3 s;
+    const vlbe_ale_mat m2 = mat_std();
+    vlbe_ale3_mat m3 = mat3_o1();
+    const double e0[3] = {1, 0, 0}, kz[3] = {0, 0, 1}, g0 = 0.2, g2 = 3.0, h = 2e-3;
+    const double tol = 64.0 * EPS * HUB_STEPS, tolz = 64.0 * EPS;
+    vlbe_real q2[N_MAX], q3[N_MAX], r0[3] = {0, 0, 0}, dir[3];
+    hht_run a, b;
+    double worst = 0.0, wz = 0.0;
+    int i, k, st;
     (void)state;
+    m3.rhoA = m2.rhoA;
+    m3.EA = m2.EA;
+    m3.EJ = m2.EI;
+    m3.c_eps = m2.c_eps;
+    m3.c_kap = m2.c_kap;
+    m3.f[0] = m2.f[0];
+    m3.f[1] = m2.f[1];
+    m3.f[2] = VLBE_R(0.0);
+    /* planar */
+    memset(&p, 0, sizeof p);
+    p.mat = m2;
+    assert_int_equal(vlbe_ale_elem_init(&p.el, &p.mat, 0u, 0, 0, 0), VLBE_OK);
+    for (i = 0; i <= HUB_NE; ++i) p.node[i] = node_make(VLBE_ALE_PFIXED, (double)i / HUB_NE);
+    assert_int_equal(vlbe_ale_chain_init(&p.ch, &p.el, p.node, HUB_NE + 1, NN_MAX, p.con, NC_MAX),
+                     VLBE_OK);
+    {
+        const vlbe_ale_con kp = con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0, 0, 0);
+        const vlbe_ale_con ka = con_make(VLBE_ALE_CON_SLOPE_ANGLE, 0, 0, 0, g0, 0, g2);
+        assert_int_equal(vlbe_ale_chain_add(&p.ch, &kp), VLBE_OK);
+        assert_int_equal(vlbe_ale_chain_add(&p.ch, &ka), VLBE_OK);
+    }
+    assert_int_equal(vlbe_ale_chain_layout(&p.ch), VLBE_OK);
+    ex_ale_wire(&p.sys, &p.ch);
+    /* 3D with spin */
+    c3_init(&s, &m3, 0u, HUB_NE + 1, 1.0 / HUB_NE);
+    c3_add(&s, con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0, 0, 0));
+    c3_add(&s, con_rot(0, e0, kz, g0, 0.0, g2));
+    c3_add(&s, con_make(VLBE_ALE_CON_SPIN, 0, 0, 0, 0, 0, 0));
+    c3_wire(&s);
+    s.sys.flags |= VLBE_DAE_MASS_CONST; /* fixed p: M constant, as the planar chain's */
+    dir[0] = vlbe_cos((vlbe_real)g0);
+    dir[1] = vlbe_sin((vlbe_real)g0);
+    dir[2] = VLBE_R(0.0);
+    vlbe_ale_chain_straight(&p.ch, r0, dir, q2);
+    vlbe_ale_chain_straight(&s.ch, r0, dir, q3);
+    hht_begin(&a, &p.sys, q2);
+    hht_begin(&b, &s.sys, q3);
+    for (st = 0; st < HUB_STEPS; ++st) {
+        assert_int_equal(vlbe_hht_step(&a.hs, (vlbe_real)h), VLBE_OK);
+        assert_int_equal(vlbe_hht_step(&b.hs, (vlbe_real)h), VLBE_OK);
+        for (i = 0; i <= HUB_NE; ++i) {
+            const vlbe_real *x2 = a.hs.q + p.node[i].ofs, *x3 = b.hs.q + s.node[i].ofs;
+            for (k = 0; k < 2; ++k) {
+                worst = fmax(worst, fabs((double)x2[k] - (double)x3[k]));
+                worst = fmax(worst, fabs((double)x2[2 + k] - (double)x3[3 + k]));
+            }
+            wz = fmax(wz, fmax(fabs((double)x3[2]), fmax(fabs((double)x3[5]), fabs((double)x3[6]))));
+        }
+    }
+    /* the beam has turned with the hub: node 0's slope along a(T), to the
+       Newton tolerance that the constraint rows are solved to (x 10) */
+    {
+        const double aT = g0 + 0.5 * g2 * (h * HUB_STEPS) * (h * HUB_STEPS);
+        const vlbe_real *sl = b.hs.q + s.node[0].ofs + 3;
+        ASSERT_CLOSE(atan2((double)sl[1], (double)sl[0]), aT, 0, 10.0 * (double)b.par.rtol);
+    }
+    tu_report("hub: 3D vs planar, in-plane r, r' over the run", worst, tol);
+    tu_report("hub: 3D z, z', theta", wz, tolz);
+    ASSERT_CLOSE(worst, 0.0, 0, tol);
+    ASSERT_CLOSE(wz, 0.0, 0, tolz);
+    hht_end(&a);
+    hht_end(&b);
 }
 
 /* ======================================================================= */
 /* 5. bad inputs                                                             */
 /* ======================================================================= */
 
+/* a byte copy of the chain and its constraint array */
+typedef struct snap {
+    vlbe_ale_chain ch;
+    vlbe_ale_con con[NC_MAX];
+} snap;
+
+static void snap_take(const c3 *c, snap *s)
+{
+    memcpy(&s->ch, &c->ch, sizeof s->ch);
+    memcpy(s->con, c->con, sizeof s->con);
+}
+
+static void snap_check(const c3 *c, const snap *s)
+{
+    assert_memory_equal(&s->ch, &c->ch, sizeof s->ch);
+    assert_memory_equal(s->con, c->con, sizeof s->con);
+}
+
 static void test_bad_inputs(void **state)
 {
+    static c3 c;
+    static c2 p;
+    snap s0;
+    const vlbe_ale3_mat m = mat3_o1();
+    const double z3[3] = {0, 0, 0}, e0[3] = {0.6, 0.8, 0}, k0[3] = {0, 0, 2};
+    vlbe_ale_con k;
+    vlbe_real q[N_MAX], Ct[M_MAX];
+    int i;
     (void)state;
+    c3_init(&c, &m, 0u, 3, 0.5);
+    c3_add(&c, con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0, 0, 0));
+    snap_take(&c, &s0);
+    /* zero direction (SLOPE_DIR, SLOPE_ROT), zero axis: VLBE_EARG */
+    k = con_make(VLBE_ALE_CON_SLOPE_DIR, 1, 0, 0, 0, 0, 0);
+    assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_EARG);
+    k = con_rot(0, z3, k0, 0, 1, 0);
+    assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_EARG);
+    k = con_rot(0, e0, z3, 0, 1, 0);
+    assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_EARG);
+    /* non-finite direction, axis, law: VLBE_ENONFINITE */
+    k = con_rot(0, e0, k0, 0, 1, 0);
+    k.d[1] = (vlbe_real)INFINITY;
+    assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_ENONFINITE);
+    k = con_rot(0, e0, k0, 0, 1, 0);
+    k.axis[2] = (vlbe_real)NAN;
+    assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_ENONFINITE);
+    k = con_rot(0, e0, k0, 0, 1, 0);
+    k.law[2] = (vlbe_real)NAN;
+    assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_ENONFINITE);
+    /* a node out of range */
+    k = con_rot(3, e0, k0, 0, 1, 0);
+    assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_EARG);
+    snap_check(&c, &s0);
+    /* made zero in place after add: layout refuses, nothing changes */
+    c3_add(&c, con_rot(0, e0, k0, 0, 1, 0));
+    assert_int_equal(vlbe_ale_chain_layout(&c.ch), VLBE_OK);
+    c.con[1].axis[2] = VLBE_R(0.0);
+    snap_take(&c, &s0);
+    assert_int_equal(vlbe_ale_chain_layout(&c.ch), VLBE_EARG);
+    snap_check(&c, &s0);
+    /* an axis along e0: accepted; the slope direction stays e0 (C_t = 0
+       on r' = s e0: the rows turn about e0 itself) */
+    c3_init(&c, &m, 0u, 3, 0.5);
+    k = con_rot(0, e0, e0, 0, 1.5, 0);
+    c3_add(&c, k);
+    c3_wire(&c);
+    for (i = 0; i < c.ch.n; ++i) q[i] = VLBE_R(0.0);
+    for (i = 0; i < 3; ++i) q[3 + i] = (vlbe_real)(1.2 * e0[i]);
+    assert_int_equal(vlbe_ale_chain_constr_jac(&c.ch, VLBE_R(0.7), q, bs_Cq, Ct), 0);
+    ASSERT_CLOSE((double)Ct[0], 0.0, 0, 8.0 * EPS);
+    ASSERT_CLOSE((double)Ct[1], 0.0, 0, 8.0 * EPS);
+    /* a planar chain: SLOPE_ROT does not exist, SLOPE_DIR needs x or y */
+    memset(&p, 0, sizeof p);
+    p.mat = mat_std();
+    assert_int_equal(vlbe_ale_elem_init(&p.el, &p.mat, 0u, 0, 0, 0), VLBE_OK);
+    for (i = 0; i < 3; ++i) p.node[i] = node_make(VLBE_ALE_PFIXED, 0.5 * i);
+    assert_int_equal(vlbe_ale_chain_init(&p.ch, &p.el, p.node, 3, NN_MAX, p.con, NC_MAX), VLBE_OK);
+    k = con_rot(0, e0, k0, 0, 1, 0);
+    assert_int_equal(vlbe_ale_chain_add(&p.ch, &k), VLBE_EARG);
+    k = con_make(VLBE_ALE_CON_SLOPE_DIR, 1, 0, 0, 0, 0, 1);
+    assert_int_equal(vlbe_ale_chain_add(&p.ch, &k), VLBE_EARG);
+    assert_int_equal(p.ch.ncon, 0);
 }
 
 int main(void)
