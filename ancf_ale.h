@@ -215,7 +215,8 @@ API
    chains (node p modes fixed / prescribed / free, sliding nodes, point masses):
    vlbe_status vlbe_ale_chain_init(ch, el, nodes, nn, cap, cons, ccap)
    vlbe_status vlbe_ale_chain_types(ch, et, els)            per-element types (rancf.h)
-   vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint
+   vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint (VLBE_ALE_CON_*,
+                                                            values in con.r / d / axis / law)
    vlbe_status vlbe_ale_chain_layout(ch)                    coordinates n, equations m
    vlbe_status vlbe_ale_chain_band(ch, order, cap)          banded callbacks in the augmented
                                                             order (order NULL: dense)
