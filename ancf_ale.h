@@ -216,7 +216,8 @@ API
    chains (node p modes fixed / prescribed / free, sliding nodes, point masses):
    vlbe_status vlbe_ale_chain_init(ch, el, nodes, nn, cap, cons, ccap)
    vlbe_status vlbe_ale_chain_types(ch, et, els)            per-element types (rancf.h)
-   vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint
+   vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint (VLBE_ALE_CON_*,
+                                                            values in con.r / d / axis / law)
    vlbe_status vlbe_ale_chain_layout(ch)                    coordinates n, equations m
    vlbe_status vlbe_ale_chain_band(ch, order, cap)          banded callbacks in the augmented
                                                             order (order NULL: dense)
@@ -3663,21 +3664,43 @@ VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, v
 #define VLBE_ALE_PPRESCRIBED 1 /* p(t) given (pfun or node.p + pd t + pdd t^2/2)   */
 #define VLBE_ALE_PFREE 2       /* p is a coordinate (initial value node.p)         */
 
-/* constraint types (equations each) */
-#define VLBE_ALE_CON_POS 1       /* r_node = v[0..1] (components: `which` mask) (2) */
-#define VLBE_ALE_CON_SLOPE_DIR 2 /* r'_node x v[0..1] = 0 (slope `which`)       (1) */
-#define VLBE_ALE_CON_SLOPE 3     /* r'_node = v[0..1] (slope `which`)           (2) */
-#define VLBE_ALE_CON_P 4         /* p_node = v0 + v1 t + v2 t^2/2 (free node)   (1) */
+/* constraint types (equations each: planar / 3D).  The values a type reads
+   are named fields of vlbe_ale_con (r, d, axis, law; the others unused). */
+#define VLBE_ALE_CON_POS 1       /* r_node = r (components: `which` mask)     (2 / 3) */
+#define VLBE_ALE_CON_SLOPE_DIR 2 /* r'_node parallel to d, |r'| free (slope `which`):
+                                    planar r' x d = 0; 3D r'.b1 = r'.b2 = 0, b1, b2
+                                    the orthonormal pair of vlbe__ale_perp (1 / 2) */
+#define VLBE_ALE_CON_SLOPE 3     /* r'_node = d (slope `which`)               (2 / 3) */
+#define VLBE_ALE_CON_P 4         /* p_node = g(t) of law (free node)          (1 / 1) */
 #define VLBE_ALE_CON_EQUAL_LEN 5 /* nodes node..node2 equally spaced in p (eq. 51 of [V]) (node2-node-1) */
-#define VLBE_ALE_CON_SLIDE_C 6   /* sliding node: r'(1) = r'(2) (eq. 40 of [R]) (2) */
-#define VLBE_ALE_CON_SLIDE_D 7   /* sliding node: |r'(1)| = |r'(2)| (eq. 40)    (1) */
-#define VLBE_ALE_CON_SLOPE_ANGLE 8 /* r'_node x (cos a, sin a) = 0, a(t) = v0 + v1 t +
-                                      v2 t^2/2 or the chain's afun (slope `which`) (1) */
-#define VLBE_ALE_CON_SPIN 9      /* 3D with spin: theta_node = v0 + v1 t + v2 t^2/2
-                                    (a prescribed spin angle, or rate v1)       (1) */
-/* In a 3D chain (vlbe_ale_chain_init3) POS and SLOPE have 3 rows (v[0..2]:
-   a spherical joint, eq. 50 of [V]; POS + SLOPE: a clamp), and SLOPE_DIR,
-   SLOPE_ANGLE, SLIDE_C, SLIDE_D and sliding nodes are planar only. */
+#define VLBE_ALE_CON_SLIDE_C 6   /* sliding node: r'(1) = r'(2) (eq. 40 of [R]) (2 / -) */
+#define VLBE_ALE_CON_SLIDE_D 7   /* sliding node: |r'(1)| = |r'(2)| (eq. 40)  (1 / -) */
+#define VLBE_ALE_CON_SLOPE_ANGLE 8 /* r'_node x (cos a, sin a) = 0, a(t) = g(t) of law
+                                      or the chain's afun (slope `which`)     (1 / -) */
+#define VLBE_ALE_CON_SPIN 9      /* 3D with spin: theta_node = g(t) of law
+                                    (a prescribed spin angle, or rate law[1]) (- / 1) */
+#define VLBE_ALE_CON_SLOPE_ROT 10 /* 3D: r'_node parallel to e(t) = R(k, a(t)) e0 (a hub
+                                     turning about axis k by a(t) = g(t) of law or the
+                                     chain's afun), |r'| free: r'.R b1 = r'.R b2 = 0,
+                                     e0 = d, k = axis, b1, b2 of e0 as SLOPE_DIR (- / 2) */
+/* g(t) = law[0] + law[1] t + law[2] t^2 / 2.  In a 3D chain
+   (vlbe_ale_chain_init3) POS and SLOPE have 3 rows (a spherical joint, eq.
+   50 of [V]; POS + SLOPE: a clamp that also holds |r'|, the axial strain
+   at the node; POS + SLOPE_DIR or POS + SLOPE_ROT: a clamp leaving the
+   axial strain free), and SLOPE_ANGLE, SLIDE_C, SLIDE_D and sliding nodes
+   are planar only.  SLOPE_DIR's d, SLOPE_ROT's d and axis need not be unit
+   vectors but must not be zero (vlbe_ale_chain_add: VLBE_EARG); an axis
+   along e0 is allowed (the slope direction then stays e0).  Spin angle
+   under SLOPE_ROT: theta of [V] is the turn of the cross section about the
+   beam axis (the third Tait-Bryan angle, section 2), a coordinate of its
+   own that enters M and Q only through its own inertia and twist (eqs. 23,
+   27-28, 38, 40), so the constraint holds r' only.  A hub turning about k turns
+   the root section about the beam axis at the rate a' (k.e) / |k| |e|,
+   and k.e(t) = k.e0 is constant, so a chain with spin whose root turns
+   with the hub adds VLBE_ALE_CON_SPIN at the node with law = (theta_0, c g1,
+   c g2), c = k.e0 / (|k| |e0|) (0 for an axis across the beam, as for a
+   radial blade on a hub: theta_0 held), or for an afun a SPIN law of its
+   own rates. */
 
 typedef struct vlbe_ale_node {
     int pmode;     /* VLBE_ALE_PFIXED / PPRESCRIBED / PFREE                          */
@@ -3691,11 +3714,17 @@ typedef struct vlbe_ale_node {
 
 typedef struct vlbe_ale_con {
     int type;
-    int node, node2; /* node2: last node of VLBE_ALE_CON_EQUAL_LEN                    */
-    int which;       /* slope constraints on a sliding node: 0 left, 1 right;
-                        VLBE_ALE_CON_POS: mask of the components held (bit k:
-                        component k; 0 = all), e.g. 3 = a roller free along z */
-    vlbe_real v[3];
+    int node, node2;   /* node2: last node of VLBE_ALE_CON_EQUAL_LEN                  */
+    int which;         /* slope constraints on a sliding node: 0 left, 1 right;
+                          VLBE_ALE_CON_POS: mask of the components held (bit k:
+                          component k; 0 = all), e.g. 3 = a roller free along z */
+    vlbe_real r[3];    /* POS: the position held [m]                                 */
+    vlbe_real d[3];    /* SLOPE: the slope r' held; SLOPE_DIR: the direction (not
+                          zero, any length); SLOPE_ROT: e0, the direction at a = 0 */
+    vlbe_real axis[3]; /* SLOPE_ROT: the rotation axis k (not zero, any length)       */
+    vlbe_real law[3];  /* P, SPIN, SLOPE_ANGLE, SLOPE_ROT: g0, g1, g2 of g(t) = g0 + g1 t
+                          + g2 t^2/2 [m or rad] (SLOPE_ANGLE, SLOPE_ROT: unused when
+                          the chain has an afun) */
 } vlbe_ale_con;
 
 /* Per-element types of a planar chain whose elements differ, e.g. rational
@@ -3774,8 +3803,9 @@ typedef struct vlbe_ale_chain {
     vlbe_real Lmin;      /* element length below which callbacks fail (ELENGTH)   */
     /* optional p(t), p'(t), p''(t) of prescribed nodes; returns 0 on success */
     int (*pfun)(void *user, int node, vlbe_real t, vlbe_real *p3);
-    /* optional a(t), a'(t), a''(t) of VLBE_ALE_CON_SLOPE_ANGLE constraint `con`
-       (its index in con[]), e.g. a hub angle; returns 0 on success */
+    /* optional a(t), a'(t), a''(t) of the VLBE_ALE_CON_SLOPE_ANGLE or
+       VLBE_ALE_CON_SLOPE_ROT constraint `con` (its index in con[]), e.g. a hub
+       angle; returns 0 on success */
     int (*afun)(void *user, int con, vlbe_real t, vlbe_real *a3);
     void *user;
     vlbe_status err;     /* status of the last failed callback (VLBE_OK if none)   */
@@ -3955,8 +3985,9 @@ static inline int vlbe__ale_con_rows(const vlbe_ale_chain *ch, const vlbe_ale_co
     }
     case VLBE_ALE_CON_SLOPE: return d;
     case VLBE_ALE_CON_SLIDE_C: return planar ? 2 : 0;
-    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLIDE_D: case VLBE_ALE_CON_SLOPE_ANGLE:
-        return planar ? 1 : 0;
+    case VLBE_ALE_CON_SLOPE_DIR: return d - 1;
+    case VLBE_ALE_CON_SLOPE_ROT: return planar ? 0 : 2;
+    case VLBE_ALE_CON_SLIDE_D: case VLBE_ALE_CON_SLOPE_ANGLE: return planar ? 1 : 0;
     case VLBE_ALE_CON_P: return 1;
     case VLBE_ALE_CON_SPIN: return planar ? 0 : 1;
     case VLBE_ALE_CON_EQUAL_LEN: /* node checked first: node2 - node cannot overflow */
@@ -3965,13 +3996,71 @@ static inline int vlbe__ale_con_rows(const vlbe_ale_chain *ch, const vlbe_ale_co
     }
 }
 
-VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c)
+/* u = x / |x| for a finite x of d components, scaled by its largest
+   component first (no overflow or underflow of |x|^2); 0 when x is zero or
+   not finite, 1 on success */
+static inline int vlbe__ale_unit(int d, const vlbe_real *x, vlbe_real *u)
 {
-    VLBE_ASSERT(ch != NULL && c != NULL);
-    if (ch->ncon >= ch->ncon_cap) return VLBE_EWORK;
+    vlbe_real m = VLBE_R(0.0), n2 = VLBE_R(0.0), n;
+    int i;
+    for (i = 0; i < d; ++i)
+        if (vlbe_fabs(x[i]) > m) m = vlbe_fabs(x[i]);
+    if (!(m > VLBE_R(0.0)) || !isfinite(m)) return 0;
+    for (i = 0; i < d; ++i) {
+        u[i] = x[i] / m;
+        n2 += u[i] * u[i];
+    }
+    n = vlbe_sqrt(n2); /* in [1, sqrt(d)] */
+    for (i = 0; i < d; ++i) u[i] /= n;
+    return 1;
+}
+
+/* The orthonormal pair b = [b1, b2] across a 3D direction e (not zero):
+   with u = e / |e| and c the first component of least |u_c| (|u_c| <=
+   1/sqrt 3), b1 = (e_c - u_c u) / |e_c - u_c u| (the unit axis farthest
+   from e, its part across e: |e_c - u_c u|^2 = 1 - u_c^2 >= 2/3, so no
+   cancellation) and b2 = u x b1; [u, b1, b2] is right-handed.  Returns 0
+   for a zero or non-finite e. */
+static inline int vlbe__ale_perp(const vlbe_real *e, vlbe_real *b)
+{
+    vlbe_real u[3], w[3];
+    int i, c = 0;
+    if (!vlbe__ale_unit(3, e, u)) return 0;
+    for (i = 1; i < 3; ++i)
+        if (vlbe_fabs(u[i]) < vlbe_fabs(u[c])) c = i;
+    for (i = 0; i < 3; ++i) w[i] = (i == c ? VLBE_R(1.0) : VLBE_R(0.0)) - u[c] * u[i];
+    if (!vlbe__ale_unit(3, w, b)) return 0; /* cannot happen: |w|^2 >= 2/3 */
+    vlbe_v3_cross(u, b, b + 3);
+    return 1;
+}
+
+/* The checks of vlbe_ale_chain_add and _layout on one constraint: its
+   type, rows and nodes (VLBE_EARG), its values finite (VLBE_ENONFINITE),
+   the directions SLOPE_DIR and SLOPE_ROT read not zero (VLBE_EARG). */
+static inline vlbe_status vlbe__ale_con_check(const vlbe_ale_chain *ch, const vlbe_ale_con *c)
+{
+    const int d = ch->el3 ? 3 : 2;
+    vlbe_real u[3];
     if (vlbe__ale_con_rows(ch, c) < 1 || c->node < 0 || c->node >= ch->nn) return VLBE_EARG;
     if (c->type == VLBE_ALE_CON_EQUAL_LEN && c->node2 >= ch->nn) return VLBE_EARG;
-    if (!vlbe_all_finite(c->v, 3)) return VLBE_ENONFINITE;
+    if (!vlbe_all_finite(c->r, 3) || !vlbe_all_finite(c->d, 3) || !vlbe_all_finite(c->axis, 3) ||
+        !vlbe_all_finite(c->law, 3))
+        return VLBE_ENONFINITE;
+    if ((c->type == VLBE_ALE_CON_SLOPE_DIR || c->type == VLBE_ALE_CON_SLOPE_ROT) &&
+        !vlbe__ale_unit(d, c->d, u))
+        return VLBE_EARG;
+    if (c->type == VLBE_ALE_CON_SLOPE_ROT && !vlbe__ale_unit(3, c->axis, u)) return VLBE_EARG;
+    return VLBE_OK;
+}
+
+/* Appends constraint c (copied) after the checks of vlbe__ale_con_check;
+   VLBE_EWORK when con[] is full.  On failure nothing changes. */
+VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c)
+{
+    vlbe_status st;
+    VLBE_ASSERT(ch != NULL && c != NULL);
+    if (ch->ncon >= ch->ncon_cap) return VLBE_EWORK;
+    if ((st = vlbe__ale_con_check(ch, c)) != VLBE_OK) return st;
     ch->con[ch->ncon++] = *c;
     return VLBE_OK;
 }
@@ -4030,8 +4119,8 @@ static inline int vlbe__ale_con_row(const vlbe_ale_chain *ch, const vlbe_ale_con
         *lo = o + b;
         return c->node;
     case VLBE_ALE_CON_SLOPE: *lo = vlbe__ale_sidx(ch, c->node, c->which) + j; return c->node;
-    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLOPE_ANGLE:
-        *lo = vlbe__ale_sidx(ch, c->node, c->which);
+    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLOPE_ANGLE: case VLBE_ALE_CON_SLOPE_ROT:
+        *lo = vlbe__ale_sidx(ch, c->node, c->which); /* the whole slope */
         return c->node;
     case VLBE_ALE_CON_P: *lo = vlbe__ale_pidx(ch, c->node); return c->node;
     case VLBE_ALE_CON_SPIN: *lo = vlbe__ale_tidx(ch, c->node); return c->node;
@@ -4048,10 +4137,11 @@ static inline int vlbe__ale_con_row(const vlbe_ale_chain *ch, const vlbe_ale_con
 /* The highest coordinate row j of constraint c touches, for the rows of
    one node (every type but VLBE_ALE_CON_EQUAL_LEN); lo from
    vlbe__ale_con_row. */
-static inline int vlbe__ale_con_hi(const vlbe_ale_con *c, int lo)
+static inline int vlbe__ale_con_hi(const vlbe_ale_chain *ch, const vlbe_ale_con *c, int lo)
 {
     switch (c->type) {
-    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLOPE_ANGLE: return lo + 1; /* x', y' */
+    case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLOPE_ANGLE: case VLBE_ALE_CON_SLOPE_ROT:
+        return lo + ch->d - 1; /* the slope's d components */
     case VLBE_ALE_CON_SLIDE_C: return lo + 2;                                   /* r'(1), r'(2) */
     case VLBE_ALE_CON_SLIDE_D: return lo + 3;
     default: return lo; /* one coordinate */
@@ -4149,7 +4239,7 @@ static inline void vlbe__ale_band_order(vlbe_ale_chain *ch)
             int lo, w;
             (void)vlbe__ale_con_row(ch, &ch->con[k], j, &lo);
             /* a row before node 0 is farthest from its highest coordinate */
-            w = ord[n + r] < c0 ? ord[vlbe__ale_con_hi(&ch->con[k], lo)] - ord[n + r]
+            w = ord[n + r] < c0 ? ord[vlbe__ale_con_hi(ch, &ch->con[k], lo)] - ord[n + r]
                                 : ord[n + r] - ord[lo];
             if (w > kl) kl = w;
         }
@@ -4186,11 +4276,10 @@ VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch)
     for (k = 0; k < ch->ncon; ++k) {
         const vlbe_ale_con *c = &ch->con[k];
         int r = vlbe__ale_con_rows(ch, c);
-        if (r < 1 || c->node < 0 || c->node >= ch->nn || m > INT_MAX - r) return VLBE_EARG;
-        if (!vlbe_all_finite(c->v, 3)) return VLBE_ENONFINITE;
+        if ((st = vlbe__ale_con_check(ch, c)) != VLBE_OK) return st;
+        if (m > INT_MAX - r) return VLBE_EARG;
         if (c->type == VLBE_ALE_CON_SPIN && !spin) return VLBE_EARG;
         if (c->type == VLBE_ALE_CON_EQUAL_LEN) {
-            if (c->node2 >= ch->nn) return VLBE_EARG;
             for (i = c->node + 1; i < c->node2; ++i)
                 if (ch->node[i].pmode != VLBE_ALE_PFREE) return VLBE_EARG;
         }
@@ -4865,6 +4954,23 @@ static inline vlbe_status vlbe__ale_eql_end(const vlbe_ale_chain *ch, int i, vlb
     return vlbe_ale_chain_pnode(ch, i, t, q, NULL, p3);
 }
 
+/* a, a', a'' at t of the angle of the VLBE_ALE_CON_SLOPE_ANGLE or
+   VLBE_ALE_CON_SLOPE_ROT constraint k: the chain's afun, or its law */
+static inline vlbe_status vlbe__ale_law(const vlbe_ale_chain *ch, int k, vlbe_real t,
+                                        vlbe_real *a3)
+{
+    const vlbe_ale_con *c = &ch->con[k];
+    if (ch->afun) {
+        if (ch->afun(ch->user, k, t, a3)) return VLBE_ECALLBACK;
+        if (!vlbe_all_finite(a3, 3)) return VLBE_ENONFINITE;
+    } else {
+        a3[0] = c->law[0] + (c->law[1] + VLBE_R(0.5) * c->law[2] * t) * t;
+        a3[1] = c->law[1] + c->law[2] * t;
+        a3[2] = c->law[2];
+    }
+    return VLBE_OK;
+}
+
 /* a, a', a'' of the VLBE_ALE_CON_SLOPE_ANGLE constraint k at t, and the
    slope s = r' it acts on: cs = [cos a, sin a], w = [a', a''], the index of
    the slope in q. */
@@ -4873,19 +4979,53 @@ static inline vlbe_status vlbe__ale_angle(const vlbe_ale_chain *ch, int k, vlbe_
 {
     const vlbe_ale_con *c = &ch->con[k];
     vlbe_real a3[3];
-    if (ch->afun) {
-        if (ch->afun(ch->user, k, t, a3)) return VLBE_ECALLBACK;
-        if (!vlbe_all_finite(a3, 3)) return VLBE_ENONFINITE;
-    } else {
-        a3[0] = c->v[0] + (c->v[1] + VLBE_R(0.5) * c->v[2] * t) * t;
-        a3[1] = c->v[1] + c->v[2] * t;
-        a3[2] = c->v[2];
-    }
+    vlbe_status st;
+    if ((st = vlbe__ale_law(ch, k, t, a3)) != VLBE_OK) return st;
     cs[0] = vlbe_cos(a3[0]);
     cs[1] = vlbe_sin(a3[0]);
     w[0] = a3[1];
     w[1] = a3[2];
     *s = vlbe__ale_sidx(ch, c->node, c->which);
+    return VLBE_OK;
+}
+
+/* The rows of the 3D slope-direction constraint k (VLBE_ALE_CON_SLOPE_DIR
+   or _SLOPE_ROT) at t: B = [b1, b2] (rows of C_q on the slope s, C = B s)
+   and, for SLOPE_ROT, kB = dB/da = k x B and kkB = k x (k x B) (zero for
+   SLOPE_DIR), w = [a', a''].  SLOPE_ROT: b_j = R(k, a) b_j0 with b_j0 the
+   pair across e0 (vlbe__ale_perp) and R x = x cos a + (k x x) sin a + k (k.x)
+   (1 - cos a) (Rodrigues, k unit); dR x / da = k x R x, so C_t = a' kB s
+   and C_tt = a'' kB s + a'^2 kkB s.  add and layout have checked d and axis. */
+static inline vlbe_status vlbe__ale_dir3(const vlbe_ale_chain *ch, int k, vlbe_real t,
+                                         vlbe_real *B, vlbe_real *kB, vlbe_real *kkB,
+                                         vlbe_real *w)
+{
+    const vlbe_ale_con *c = &ch->con[k];
+    vlbe_real b0[6] = {0, 0, 0, 0, 0, 0}, u[3] = {0, 0, 0}, a3[3], ca, sa, x[3];
+    int j, i;
+    vlbe_status st;
+    (void)vlbe__ale_perp(c->d, b0);
+    if (c->type != VLBE_ALE_CON_SLOPE_ROT) {
+        for (i = 0; i < 6; ++i) {
+            B[i] = b0[i];
+            kB[i] = kkB[i] = VLBE_R(0.0);
+        }
+        w[0] = w[1] = VLBE_R(0.0);
+        return VLBE_OK;
+    }
+    if ((st = vlbe__ale_law(ch, k, t, a3)) != VLBE_OK) return st;
+    (void)vlbe__ale_unit(3, c->axis, u);
+    ca = vlbe_cos(a3[0]);
+    sa = vlbe_sin(a3[0]);
+    for (j = 0; j < 2; ++j) {
+        const vlbe_real *b = b0 + 3 * j, ub = vlbe_v3_dot(u, b) * (VLBE_R(1.0) - ca);
+        vlbe_v3_cross(u, b, x);
+        for (i = 0; i < 3; ++i) B[3 * j + i] = b[i] * ca + x[i] * sa + u[i] * ub;
+        vlbe_v3_cross(u, B + 3 * j, kB + 3 * j);
+        vlbe_v3_cross(u, kB + 3 * j, kkB + 3 * j);
+    }
+    w[0] = a3[1];
+    w[1] = a3[2];
     return VLBE_OK;
 }
 
@@ -4909,7 +5049,7 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
             int j = 0; /* row of the next held component */
             for (b = 0; b < ch->d; ++b) {
                 if (c->which && !((c->which >> b) & 1)) continue;
-                if (C) C[r + j] = q[o + b] - c->v[b];
+                if (C) C[r + j] = q[o + b] - c->r[b];
                 if (Cq) Cq[vlbe__ale_cq_at(ch, r + j, o + b)] = VLBE_R(1.0);
                 if (Ct) Ct[r + j] = VLBE_R(0.0);
                 ++j;
@@ -4918,19 +5058,31 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
         case VLBE_ALE_CON_SLOPE: {
             const int s = vlbe__ale_sidx(ch, c->node, c->which);
             for (b = 0; b < ch->d; ++b) {
-                if (C) C[r + b] = q[s + b] - c->v[b];
+                if (C) C[r + b] = q[s + b] - c->d[b];
                 if (Cq) Cq[vlbe__ale_cq_at(ch, r + b, s + b)] = VLBE_R(1.0);
                 if (Ct) Ct[r + b] = VLBE_R(0.0);
             }
         } break;
-        case VLBE_ALE_CON_SLOPE_DIR: {
+        case VLBE_ALE_CON_SLOPE_DIR:
+        case VLBE_ALE_CON_SLOPE_ROT: {
             const int s = vlbe__ale_sidx(ch, c->node, c->which);
-            if (C) C[r] = q[s] * c->v[1] - q[s + 1] * c->v[0];
-            if (Cq) {
-                Cq[vlbe__ale_cq_at(ch, r, s)] = c->v[1];
-                Cq[vlbe__ale_cq_at(ch, r, s + 1)] = -c->v[0];
+            vlbe_real B[6], kB[6], kkB[6], w[2];
+            if (ch->d == 2) { /* planar SLOPE_DIR: r' x d */
+                if (C) C[r] = q[s] * c->d[1] - q[s + 1] * c->d[0];
+                if (Cq) {
+                    Cq[vlbe__ale_cq_at(ch, r, s)] = c->d[1];
+                    Cq[vlbe__ale_cq_at(ch, r, s + 1)] = -c->d[0];
+                }
+                if (Ct) Ct[r] = VLBE_R(0.0);
+                break;
             }
-            if (Ct) Ct[r] = VLBE_R(0.0);
+            if ((st = vlbe__ale_dir3(ch, k, t, B, kB, kkB, w)) != VLBE_OK) return st;
+            for (b = 0; b < 2; ++b) { /* C = b_j . r', C_t = a' (k x b_j) . r' */
+                if (C) C[r + b] = vlbe_v3_dot(B + 3 * b, q + s);
+                if (Cq)
+                    for (i = 0; i < 3; ++i) Cq[vlbe__ale_cq_at(ch, r + b, s + i)] = B[3 * b + i];
+                if (Ct) Ct[r + b] = w[0] * vlbe_v3_dot(kB + 3 * b, q + s);
+            }
         } break;
         case VLBE_ALE_CON_SLOPE_ANGLE: { /* C = r' x e(a) = x' sin a - y' cos a */
             vlbe_real cs[2], w[2];
@@ -4947,9 +5099,9 @@ static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_rea
         case VLBE_ALE_CON_SPIN: {
             const int pi = c->type == VLBE_ALE_CON_P ? vlbe__ale_pidx(ch, c->node)
                                                      : vlbe__ale_tidx(ch, c->node);
-            if (C) C[r] = q[pi] - c->v[0] - (c->v[1] + VLBE_R(0.5) * c->v[2] * t) * t;
+            if (C) C[r] = q[pi] - c->law[0] - (c->law[1] + VLBE_R(0.5) * c->law[2] * t) * t;
             if (Cq) Cq[vlbe__ale_cq_at(ch, r, pi)] = VLBE_R(1.0);
-            if (Ct) Ct[r] = -(c->v[1] + c->v[2] * t);
+            if (Ct) Ct[r] = -(c->law[1] + c->law[2] * t);
         } break;
         case VLBE_ALE_CON_EQUAL_LEN: {
             const int a = c->node, z = c->node2;
@@ -5009,8 +5161,9 @@ VLBE_API int vlbe_ale_chain_constr(void *user, vlbe_real t, const vlbe_real *q, 
     return st ? vlbe__ale_fail(ch, st, -1) : 0;
 }
 
-/* (Cq's entries are finite for finite q: +-1, the constraints' v (checked
-   by add and layout), cos and sin, slopes over their norms, al, be) */
+/* (Cq's entries are finite for finite q: +-1, the constraints' values
+   (checked by add and layout), cos and sin, unit vectors, slopes over
+   their norms, al, be) */
 VLBE_API int vlbe_ale_chain_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq,
                                        vlbe_real *Ct)
 {
@@ -5025,7 +5178,7 @@ VLBE_API int vlbe_ale_chain_constr_jac(void *user, vlbe_real t, const vlbe_real 
 
 /* gamma = -((C_q v)_q v + 2 C_qt v + C_tt): nonzero for prescribed p (p''),
    equal lengths with prescribed ends, the |r'(1)| = |r'(2)| constraint and
-   a turning slope direction. */
+   a turning slope direction (SLOPE_ANGLE, SLOPE_ROT). */
 VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real *q,
                                        const vlbe_real *v, vlbe_real *gamma)
 {
@@ -5040,7 +5193,7 @@ VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real 
         const int rows = vlbe__ale_con_rows(ch, c), o = ch->node[c->node].ofs;
         for (i = 0; i < rows; ++i) gamma[r + i] = VLBE_R(0.0);
         if (c->type == VLBE_ALE_CON_P || c->type == VLBE_ALE_CON_SPIN) {
-            gamma[r] = c->v[2];
+            gamma[r] = c->law[2];
         } else if (c->type == VLBE_ALE_CON_EQUAL_LEN) {
             vlbe_real pa[3], pz[3];
             int ca, cz;
@@ -5063,6 +5216,16 @@ VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real 
                 g += (s ? VLBE_R(-1.0) : VLBE_R(1.0)) * (vlbe_v2_dot(ad, ad) - d * d / (na * na)) / na;
             }
             gamma[r] = -g;
+        } else if (c->type == VLBE_ALE_CON_SLOPE_ROT) {
+            /* C = B(a) s: gamma = -(2 a' kB s' + a'' kB s + a'^2 kkB s) */
+            vlbe_real B[6], kB[6], kkB[6], w[2];
+            const int s = vlbe__ale_sidx(ch, c->node, c->which);
+            if ((st = vlbe__ale_dir3(ch, k, t, B, kB, kkB, w)) != VLBE_OK)
+                return vlbe__ale_fail(ch, st, -1);
+            for (i = 0; i < 2; ++i)
+                gamma[r + i] = -(VLBE_R(2.0) * w[0] * vlbe_v3_dot(kB + 3 * i, v + s) +
+                                 w[1] * vlbe_v3_dot(kB + 3 * i, q + s) +
+                                 w[0] * w[0] * vlbe_v3_dot(kkB + 3 * i, q + s));
         } else if (c->type == VLBE_ALE_CON_SLOPE_ANGLE) {
             /* C = s x e(a): C_qt v = a' (s'.e), C_tt = a'' (s.e) - a'^2 (s x e) */
             vlbe_real cs[2], w[2];
@@ -5077,7 +5240,8 @@ VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real 
     return vlbe_all_finite(gamma, ch->m) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
 
-/* H = d(C_q^T lambda)/dq: only the |r'| constraint is nonlinear. */
+/* H = d(C_q^T lambda)/dq: only the |r'| constraint is nonlinear (the
+   others, SLOPE_ROT included, are linear in q: H = 0 for them). */
 VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real *q,
                                         const vlbe_real *lambda, vlbe_real *H)
 {

@@ -71,7 +71,7 @@ static inline int cc_init(cc_scene *s, int ne, int variant)
     c.node = 0;
     if (vlbe_ale_chain_add(&s->ch, &c)) return -1;
     c.type = VLBE_ALE_CON_SLOPE;
-    c.v[0] = 1;
+    c.d[0] = 1;
     if (vlbe_ale_chain_add(&s->ch, &c)) return -1;
     if (variant != CC_DENSE) {
         int cap = 5 * (ne + 1) + 4;

@@ -301,7 +301,7 @@ static inline int ex_cable_build(ex_cable *m, const ex_cable_cfg *c)
     if (vlbe_ale_chain_add(&m->ch, &k)) goto fail;
     if (c->clamped) {
         k.type = VLBE_ALE_CON_SLOPE_DIR; /* r' x (0, -1) = 0: the slope held vertical */
-        k.v[1] = VLBE_R(-1.0);
+        k.d[1] = VLBE_R(-1.0);
         if (vlbe_ale_chain_add(&m->ch, &k)) goto fail;
     }
     if (c->banded) { /* n + m = 4 (N + 1) + 2 (+ 1 clamped) */

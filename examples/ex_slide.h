@@ -336,11 +336,11 @@ static inline int ex_slide_build(ex_slide *m, const ex_slide_cfg *c, vlbe_real *
     if (vlbe_ale_chain_add(&m->ch, &k)) return -1;
     if (c->support == EX_SLIDE_CLAMP_FREE) {
         k.type = VLBE_ALE_CON_SLOPE_DIR; /* clamp: slope direction (1, 0) */
-        k.v[0] = 1;
+        k.d[0] = 1;
     } else {
         k.node = nn - 1; /* pin at the right end of the start shape: (L, 0), (2R, 0) */
-        k.v[0] = c->R > 0.0 ? x[nn - 1][0] : (vlbe_real)c->L;
-        k.v[1] = c->R > 0.0 ? x[nn - 1][1] : VLBE_R(0.0);
+        k.r[0] = c->R > 0.0 ? x[nn - 1][0] : (vlbe_real)c->L;
+        k.r[1] = c->R > 0.0 ? x[nn - 1][1] : VLBE_R(0.0);
     }
     if (vlbe_ale_chain_add(&m->ch, &k) || vlbe_ale_chain_layout(&m->ch)) return -1;
     if (c->band && ex_ale_band(&m->ch, m->order, (int)(sizeof m->order / sizeof m->order[0])))

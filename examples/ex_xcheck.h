@@ -454,7 +454,7 @@ static inline vlbe_status xc_ale_build(xc_ale *m, const sb_cfg *c, int N, vlbe_r
     k.type = VLBE_ALE_CON_POS; /* node 0 at C = (0, 0) */
     if ((st = vlbe_ale_chain_add(&m->ch, &k)) != VLBE_OK) return st;
     k.type = VLBE_ALE_CON_SLOPE_DIR; /* r' of node 0 along the axis (1, 0) */
-    k.v[0] = VLBE_R(1.0);
+    k.d[0] = VLBE_R(1.0);
     if ((st = vlbe_ale_chain_add(&m->ch, &k)) != VLBE_OK) return st;
     if ((st = vlbe_ale_chain_layout(&m->ch)) != VLBE_OK) return st;
     if (c->band &&

@@ -35,7 +35,7 @@ int main(void)
     TRY(vlbe_ale_chain_init(&ch, &el, node, NE + 1, NE + 1, con, 2));
     c.type = VLBE_ALE_CON_POS;   c.node = 0;     /* clamp: r(0) = (0, 0) ... */
     TRY(vlbe_ale_chain_add(&ch, &c));
-    c.type = VLBE_ALE_CON_SLOPE; c.v[0] = 1;     /* ... and r'(0) = (1, 0) */
+    c.type = VLBE_ALE_CON_SLOPE; c.d[0] = 1;     /* ... and r'(0) = (1, 0) */
     TRY(vlbe_ale_chain_add(&ch, &c));
     TRY(vlbe_ale_chain_layout(&ch));             /* coordinates: ch.n, equations: ch.m */
     TRY(vlbe_ale_chain_dae(&ch, &sys));

@@ -190,7 +190,7 @@ static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_re
     c.node = 0;
     vlbe_ale_chain_add(&m->ch, &c);
     c.node = ne;
-    c.v[0] = (vlbe_real)MS_L;
+    c.r[0] = (vlbe_real)MS_L;
     vlbe_ale_chain_add(&m->ch, &c);
     if (vlbe_ale_chain_layout(&m->ch)) return -1;
     if ((kind & MS_BAND) &&

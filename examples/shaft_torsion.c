@@ -187,7 +187,7 @@ static inline int st_build(st_model *m, int ne, vlbe_real *q0, vlbe_real *v0, in
     c.type = VLBE_ALE_CON_POS; /* r_0 = 0 */
     if (vlbe_ale_chain_add(&m->ch, &c)) return -1;
     c.type = VLBE_ALE_CON_SLOPE; /* r_0' = e_x: with POS a clamp */
-    c.v[0] = VLBE_R(1.0);
+    c.d[0] = VLBE_R(1.0);
     if (vlbe_ale_chain_add(&m->ch, &c)) return -1;
     memset(&c, 0, sizeof c);
     c.type = VLBE_ALE_CON_SPIN; /* theta_0 = 0 */

@@ -246,7 +246,7 @@ static int ss_setup(ss_scene *s, double a, double kw, int ne, int fixed, double 
     if (vlbe_ale_chain_add(&s->ch, &c)) return -1;
     memset(&c, 0, sizeof c);
     c.type = VLBE_ALE_CON_SPIN; /* theta_0 = Omega t */
-    c.v[1] = (vlbe_real)SS_OMEGA_SPIN;
+    c.law[1] = (vlbe_real)SS_OMEGA_SPIN;
     if (vlbe_ale_chain_add(&s->ch, &c) || vlbe_ale_chain_layout(&s->ch)) return -1;
     if (q0 && v0) {
         for (i = 0; i < s->ch.n; ++i) q0[i] = v0[i] = VLBE_R(0.0);

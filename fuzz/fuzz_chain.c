@@ -82,7 +82,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         c.node = fz_index(&rd, nn);
         c.node2 = fz_index(&rd, nn);
         c.which = fz_int(&rd, 0, 3);
-        fz_reals(&rd, c.v, 3);
+        fz_reals(&rd, c.r, 3); /* one triple for the field the type reads */
+        memcpy(c.d, c.r, sizeof c.d);
+        memcpy(c.axis, c.r, sizeof c.axis);
+        memcpy(c.law, c.r, sizeof c.law);
         fz_snap_reset();
         fz_snap(&ch, sizeof ch, "chain");
         fz_snap(cons, sizeof cons, "cons");

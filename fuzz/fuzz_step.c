@@ -105,7 +105,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         c.type = VLBE_ALE_CON_POS;
         if (vlbe_ale_chain_add(&ch, &c) != VLBE_OK) return 0;
         c.type = VLBE_ALE_CON_SLOPE;
-        c.v[0] = VLBE_R(1.0);
+        c.d[0] = VLBE_R(1.0);
         if (vlbe_ale_chain_add(&ch, &c) != VLBE_OK) return 0;
     }
     if (vlbe_ale_chain_layout(&ch) != VLBE_OK) return 0;

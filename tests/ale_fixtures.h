@@ -66,19 +66,50 @@ static inline void nodes_mixed7(vlbe_ale_node *node)
     node[6].mass = VLBE_R(0.25);
 }
 
-/* a chain constraint */
+/* a chain constraint; v0, v1, v2 go to the field its type reads: the
+   position r (POS), the slope or direction d (SLOPE, SLOPE_DIR), the law
+   g0, g1, g2 (P, SPIN, SLOPE_ANGLE); nothing for the others */
 static inline vlbe_ale_con con_make(int type, int node, int node2, int which, double v0,
                                     double v1, double v2)
 {
     vlbe_ale_con c;
+    vlbe_real *f = NULL;
     memset(&c, 0, sizeof c);
     c.type = type;
     c.node = node;
     c.node2 = node2;
     c.which = which;
-    c.v[0] = (vlbe_real)v0;
-    c.v[1] = (vlbe_real)v1;
-    c.v[2] = (vlbe_real)v2;
+    switch (type) {
+    case VLBE_ALE_CON_POS: f = c.r; break;
+    case VLBE_ALE_CON_SLOPE: case VLBE_ALE_CON_SLOPE_DIR: f = c.d; break;
+    case VLBE_ALE_CON_P: case VLBE_ALE_CON_SPIN: case VLBE_ALE_CON_SLOPE_ANGLE: f = c.law; break;
+    default: break;
+    }
+    if (f) {
+        f[0] = (vlbe_real)v0;
+        f[1] = (vlbe_real)v1;
+        f[2] = (vlbe_real)v2;
+    }
+    return c;
+}
+
+/* a 3D slope-rotation constraint (VLBE_ALE_CON_SLOPE_ROT) at node: e0, the
+   axis k and the law g0, g1, g2 of the angle */
+static inline vlbe_ale_con con_rot(int node, const double *e0, const double *k, double g0,
+                                   double g1, double g2)
+{
+    vlbe_ale_con c;
+    int i;
+    memset(&c, 0, sizeof c);
+    c.type = VLBE_ALE_CON_SLOPE_ROT;
+    c.node = node;
+    for (i = 0; i < 3; ++i) {
+        c.d[i] = (vlbe_real)e0[i];
+        c.axis[i] = (vlbe_real)k[i];
+    }
+    c.law[0] = (vlbe_real)g0;
+    c.law[1] = (vlbe_real)g1;
+    c.law[2] = (vlbe_real)g2;
     return c;
 }
 

@@ -34,7 +34,9 @@
      rational_chain         ALE-RANCF elements with non-unit weights (rancf.h),
                             a sliding node, free and prescribed p
      chain3d_spin           3D beam-shaft chain with spin: POS (3 rows and
-                            masked), SLOPE, SPIN, P, EQUAL_LEN, a point mass
+                            masked), SLOPE, SPIN, P, EQUAL_LEN, a point mass;
+                            again with SLOPE_ROT at the clamp and SLOPE_DIR
+                            (2 rows) at an interior free node and at node 5
      uniform_bandwidth      kl of uniform chains does not grow with the
                             number of elements (3 .. 129 nodes), and equals
                             the count of the widest element's coordinates
@@ -372,8 +374,12 @@ static void rational_chain(bch *c)
 /* 3D with spin: nodes 0 fixed, 1, 2 free, 3 prescribed, 4 free, 5 fixed
    with a point mass, p every 0.4; at 0 POS + SLOPE + SPIN (a clamp driven
    in spin), EQUAL_LEN 0..3, P at 4, at 5 SPIN and POS of y and z; damping,
-   gravity. */
-static void chain3d(bch *c)
+   gravity.  rot: the clamp's SLOPE turned into SLOPE_ROT (e0, axis, law)
+   and SLOPE_DIR rows (2 each) at the interior free node 1 and at node 5
+   (node 1: its element to free node 2 couples x1 with p2, so kl is
+   attained; towards a fixed node the widest pair, x and the next theta,
+   is structurally zero). */
+static void chain3d(bch *c, int rot)
 {
     int i;
     memset(c, 0, sizeof *c);
@@ -394,7 +400,14 @@ static void chain3d(bch *c)
                      VLBE_OK);
     c->ch.g[2] = VLBE_R(-9.81);
     bch_add(c, con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0, 0, 0));
-    bch_add(c, con_make(VLBE_ALE_CON_SLOPE, 0, 0, 0, 1, 0, 0));
+    if (rot) {
+        static const double e0[3] = {1.0, 0.2, -0.1}, k[3] = {0.3, 0.4, 0.9};
+        bch_add(c, con_rot(0, e0, k, 0.2, 1.5, -0.4));
+        bch_add(c, con_make(VLBE_ALE_CON_SLOPE_DIR, 1, 0, 0, 0.9, 0.3, 0.2));
+        bch_add(c, con_make(VLBE_ALE_CON_SLOPE_DIR, 5, 0, 0, 1.0, -0.1, 0.3));
+    } else {
+        bch_add(c, con_make(VLBE_ALE_CON_SLOPE, 0, 0, 0, 1, 0, 0));
+    }
     bch_add(c, con_make(VLBE_ALE_CON_SPIN, 0, 0, 0, 0, 2.0, 0.5));
     bch_add(c, con_make(VLBE_ALE_CON_EQUAL_LEN, 0, 3, 0, 0, 0, 0));
     bch_add(c, con_make(VLBE_ALE_CON_P, 4, 0, 0, 1.6, 0.1, 0));
@@ -451,10 +464,14 @@ static void test_rational_chain(void **state)
 static void test_chain3d_spin(void **state)
 {
     (void)state;
-    chain3d(&cA);
+    chain3d(&cA, 0);
     bch_band(&cA);
     (void)band_check(&cA, 41, "3D with spin");
     (void)band_check(&cA, 42, "3D with spin");
+    chain3d(&cA, 1);
+    bch_band(&cA);
+    (void)band_check(&cA, 43, "3D, SLOPE_ROT and SLOPE_DIR");
+    (void)band_check(&cA, 44, "3D, SLOPE_ROT and SLOPE_DIR");
 }
 
 /* Uniform chains of nn nodes, p every 0.25 (no band set):

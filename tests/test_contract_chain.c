@@ -555,7 +555,7 @@ static void test_failed_untouched(void **state)
     snap_check(&d.ch, &s0);
     /* a constraint value made NaN in place (add checked it, layout too) */
     pfx_init(&c);
-    c.con[0].v[1] = (vlbe_real)NAN;
+    c.con[0].r[1] = (vlbe_real)NAN;
     snap_take(&c.ch, &s0);
     assert_int_equal(vlbe_ale_chain_layout(&c.ch), VLBE_ENONFINITE);
     snap_check(&c.ch, &s0);

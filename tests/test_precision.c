@@ -75,7 +75,7 @@ static void ct_setup(ct_model *c)
     k.node = 0;
     assert_int_equal(vlbe_ale_chain_add(&c->ch, &k), VLBE_OK);
     k.type = VLBE_ALE_CON_SLOPE;
-    k.v[0] = VLBE_R(1.0);
+    k.d[0] = VLBE_R(1.0);
     assert_int_equal(vlbe_ale_chain_add(&c->ch, &k), VLBE_OK);
     assert_int_equal(vlbe_ale_chain_layout(&c->ch), VLBE_OK);
     /* planar, every p fixed: VLBE_DAE_MASS_CONST */

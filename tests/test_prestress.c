@@ -118,13 +118,13 @@ static void win_build(win *w, int bend)
     }
     w->con[0].type = VLBE_ALE_CON_POS;
     w->con[0].node = 0;
-    w->con[0].v[0] = r0[0];
-    w->con[0].v[1] = r0[1];
+    w->con[0].r[0] = r0[0];
+    w->con[0].r[1] = r0[1];
     assert_int_equal(vlbe_ale_chain_add(&w->ch, &w->con[0]), VLBE_OK);
     w->con[1] = w->con[0];
     w->con[1].node = NE;
-    w->con[1].v[0] = r0[0] + VLBE_R(0.6);
-    w->con[1].v[1] = r0[1] + VLBE_R(0.8);
+    w->con[1].r[0] = r0[0] + VLBE_R(0.6);
+    w->con[1].r[1] = r0[1] + VLBE_R(0.8);
     assert_int_equal(vlbe_ale_chain_add(&w->ch, &w->con[1]), VLBE_OK);
     assert_int_equal(vlbe_ale_chain_layout(&w->ch), VLBE_OK);
     assert_int_equal(vlbe_ale_chain_dae(&w->ch, &w->sys), VLBE_OK);

@@ -134,11 +134,11 @@ static void c3_make(c3 *c, unsigned flags)
     c->ch.g[2] = VLBE_R(1.0);
     memset(&k, 0, sizeof k);
     k.type = VLBE_ALE_CON_POS;
-    k.v[0] = VLBE_R(0.01);
+    k.r[0] = VLBE_R(0.01);
     assert_int_equal(vlbe_ale_chain_add(&c->ch, &k), VLBE_OK);
     k.node = 4;
     k.which = 5; /* x and z */
-    k.v[2] = VLBE_R(1.2);
+    k.r[2] = VLBE_R(1.2);
     assert_int_equal(vlbe_ale_chain_add(&c->ch, &k), VLBE_OK);
     memset(&k, 0, sizeof k);
     k.type = VLBE_ALE_CON_EQUAL_LEN;
@@ -151,14 +151,14 @@ static void c3_make(c3 *c, unsigned flags)
     memset(&k, 0, sizeof k);
     k.type = VLBE_ALE_CON_SLOPE;
     k.node = 4;
-    k.v[2] = VLBE_R(1.0);
+    k.d[2] = VLBE_R(1.0);
     assert_int_equal(vlbe_ale_chain_add(&c->ch, &k), VLBE_OK);
     if (!(flags & VLBE_ALE3_NO_SPIN)) {
         memset(&k, 0, sizeof k);
         k.type = VLBE_ALE_CON_SPIN;
-        k.v[0] = VLBE_R(0.1);
-        k.v[1] = VLBE_R(2.0);
-        k.v[2] = VLBE_R(-0.7);
+        k.law[0] = VLBE_R(0.1);
+        k.law[1] = VLBE_R(2.0);
+        k.law[2] = VLBE_R(-0.7);
         assert_int_equal(vlbe_ale_chain_add(&c->ch, &k), VLBE_OK);
     }
     assert_int_equal(vlbe_ale_chain_layout(&c->ch), VLBE_OK);
@@ -341,8 +341,10 @@ static void chain3_layout(void **state)
     k.type = VLBE_ALE_CON_SPIN;
     assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_OK);
     assert_int_equal(vlbe_ale_chain_layout(&c.ch), VLBE_EARG);
-    /* planar-only constraints and a bad mask */
+    /* planar-only constraints, a zero slope direction and a bad mask */
     c3_make(&c, 0);
+    k.type = VLBE_ALE_CON_SLOPE_ANGLE;
+    assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_EARG);
     k.type = VLBE_ALE_CON_SLOPE_DIR;
     assert_int_equal(vlbe_ale_chain_add(&c.ch, &k), VLBE_EARG);
     k.type = VLBE_ALE_CON_SLIDE_C;

@@ -59,7 +59,7 @@ int main(void)
     c.node = 0;
     if (m4_status("chain_add_pos", vlbe_ale_chain_add(&ch, &c))) return m4_exit();
     c.type = VLBE_ALE_CON_SLOPE;
-    c.v[0] = VLBE_R(1.0);
+    c.d[0] = VLBE_R(1.0);
     if (m4_status("chain_add_slope", vlbe_ale_chain_add(&ch, &c))) return m4_exit();
     if (m4_status("chain_layout", vlbe_ale_chain_layout(&ch))) return m4_exit();
     /* planar, every p fixed: VLBE_DAE_MASS_CONST */
