@@ -225,6 +225,9 @@ API
    vlbe_status vlbe_ale_chain_locate / _point(ch, t, q, p, ...)  element of p, r(p)
    vlbe_status vlbe_ale_chain_energy(ch, t, q, v, E)        T, U, V of the chain
    vlbe_status vlbe_ale_chain_length(ch, t, q, v, len, rate)  arc length, its rate
+   vlbe_status vlbe_ale_chain_loads(ch, loads, n)           point loads (vlbe_ale_load: forces,
+                                                            moments; fixed or moving, constant
+                                                            or callback); ch->load_factor
    int vlbe_ale_chain_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc / _constr_hess(user = ch, ...)         vlbe_dae callbacks
    vlbe_status vlbe_ale_chain_insert(ch, e, ph, t, q, v, qn, vn)  split element e
@@ -3728,7 +3731,15 @@ typedef struct vlbe_ale_etype {
    load in K and D).  The chain's load factor scales the value (and its
    derivatives).  outside = 0: a p(t) outside the chain's material range
    makes the callbacks fail with VLBE_EBOUND (fatal, -1); outside = 1: the
-   load is absent (no force) while p(t) is outside. */
+   load is absent (no force) while p(t) is outside.
+   The chain's force and force_jac check every load before they write
+   anything: an unknown kind or outside flag, a moment in a 3D chain
+   without spin (VLBE_EARG, -1), NaN/Inf in a law, a constant value or
+   load_factor (VLBE_ENONFINITE, 1), p(t) outside the range (above); the
+   load's index goes to ch->err_load (-1 for every other failure).  A
+   failing or non-finite fun, or a zero slope under a planar moment
+   (VLBE_ESINGULAR), shows during the assembly (outputs unspecified, as
+   for an element's failure). */
 #define VLBE_ALE_LOAD_FORCE 1
 #define VLBE_ALE_LOAD_MOMENT 2
 typedef struct vlbe_ale_load {
@@ -3774,11 +3785,11 @@ typedef struct vlbe_ale_load {
    point masses and the point loads (vlbe_ale_load) are all multiplied by
    load_factor (1 after init): load stepping with vlbe_dae_static.  Between
    two calls (steps, load increments) a caller may change load_factor, g,
-   the point loads' values, laws and callbacks (the array it gave to
+   the point loads' values, laws and callbacks (in the array given to
    vlbe_ale_chain_loads, or another array through that call), pfun, afun,
-   user, Lmin; mat.f lives in the element type, which the chain reads at every call (a
-   caller changing it changes every chain using that type).  Only before
-   vlbe_ale_chain_layout (which must follow): nodes' pmode, slide, the
+   user and Lmin; mat.f lives in the element type, which the chain reads
+   at every call (changing it changes every chain using that type).  Only
+   followed by vlbe_ale_chain_layout: the nodes' pmode and slide, the
    number of nodes and constraints, mode, the banded switch. */
 typedef struct vlbe_ale_chain {
     const vlbe_ale_elem *el;    /* planar element type (NULL in a 3D chain)      */

@@ -137,7 +137,8 @@ CONVENTIONS
    Stack (float, Cortex-M4F, gcc -O2, tests/m4/stack.awk; double about
    twice): vlbe_cr2d_force, _force_ff and _trans_force with K and D at
    most 1944 B, the other element calls at most 1.1 kB; the beam
-   callbacks up to 2.4 kB (force with the element views).
+   callbacks up to 3.3 kB (force with the element views and the loads'
+   frames).
 
 API
    vlbe_status vlbe_cr2d_elem_init(el, mat, X1, X2, flags)   element (geometry, material)
@@ -157,6 +158,9 @@ API
    vlbe_status vlbe_cr2d_beam_init(b, el, ne, fix, nfix)     n = 3 (ne + 1), m = nfix
    vlbe_status vlbe_cr2d_beam_band(b, order, order_cap)      banded callbacks (order: n + m
                                                              of the caller) or dense (NULL)
+   vlbe_status vlbe_cr2d_beam_loads(b, loads, n)             point loads between the nodes
+                                                             (vlbe_cr2d_load); b->dist, dist_e:
+                                                             distributed dead load
    void vlbe_cr2d_fix_eval(f, t, g3)                         g, g', g'' of a prescribed coordinate
    int vlbe_cr2d_beam_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc (user = beam, ...)                      vlbe_dae callbacks
@@ -1376,7 +1380,23 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
    q[3 i .. 3 i + 2] = (u, v, phi) of node i, n = 3 (ne + 1).  Constant nodal
    loads P (n, scaled by `load`) and prescribed coordinates (holonomic,
    rheonomic constraints q[dof] = g(t), m = nfix) complete the vlbe_dae
-   problem; the callbacks below take the beam as `user`.  A callback that
+   problem; the callbacks below take the beam as `user` (b->user is the
+   caller's own pointer, which the beam never reads).  Loads between the
+   nodes: point loads (vlbe_cr2d_load, vlbe_cr2d_beam_loads) and a dead
+   load per unit reference length (dist, plus dist_e per element) with
+   consistent nodal forces and moments Q = int (dr/dq)^T w dx over the
+   element's interpolation (for small rotations q L/2 and q L^2/12 at the
+   nodes) and their stiffness; `load` scales P, dist, dist_e and the point
+   loads (load stepping with vlbe_dae_static).  Between calls a caller may
+   change load, P, dist, dist_e and the point loads (their array, or
+   another through vlbe_cr2d_beam_loads): the callbacks read them at every
+   call.  The force
+   callbacks check the loads before they write anything (a bad kind or
+   outside flag, a load on the transition element or a LINEAR element in a
+   floating frame: VLBE_EARG, -1; NaN/Inf in load, dist, dist_e, a law or a
+   constant value: VLBE_ENONFINITE, 1; s(t) outside the beam: VLBE_EBOUND,
+   -1), with the load's index in err_load (-1: the distributed load, or no
+   load).  The beam's energies have no load potential.  A callback that
    fails returns 1 for VLBE_ELENGTH, VLBE_ENONFINITE, VLBE_EBOUND and
    VLBE_ESINGULAR (the point lies outside the model's domain, e.g. a
    Newton iterate moved a node of the transition element across the
