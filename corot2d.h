@@ -2177,12 +2177,13 @@ static inline int vlbe__cr2d_loads_check(vlbe_cr2d_beam *b, vlbe_real t)
     return 0;
 }
 
-/* adds the loads between the nodes to Q and/or K, D */
+/* adds the loads between the nodes to Q and/or K, D (Qe, Ke, De: the
+   caller's element scratch) */
 static inline int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vlbe_real *q,
                                         const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
-                                        vlbe_real *D)
+                                        vlbe_real *D, vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
 {
-    vlbe_real Qe[6], Ke[36], De[36], w[2], ss[2], xi;
+    vlbe_real w[2], ss[2], xi;
     size_t map[12];
     vlbe_status st;
     int e, i, k;
@@ -2243,7 +2244,7 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const v
         if ((K && !vlbe__cr2d_scatter(map, Ke, K)) || (D && !vlbe__cr2d_scatter(map, De, D)))
             return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
-    if ((rc = vlbe__cr2d_beam_loads(b, t, q, v, Q, K, D)) != 0) return rc;
+    if ((rc = vlbe__cr2d_beam_loads(b, t, q, v, Q, K, D, Qe, Ke, De)) != 0) return rc;
     if (Q && !vlbe_all_finite(Q, b->n)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
     return 0;
 }
