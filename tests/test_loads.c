@@ -43,7 +43,8 @@
      chain_factor            Q(lambda) - Q(0) = lambda (Q(1) - Q(0)) and the
                              same for K, D, with mat.f, g on point masses and
                              point loads all present; lambda = 1 bitwise
-                             the chain without the field set
+                             the chain without the field set; lambda = 0 the
+                             chain without any applied load
      chain_band              banded K, D with loads equal the dense ones
      chain_bad_input         p outside (EBOUND, -1, Q untouched), outside = 1
                              (no load), NaN in p, f or the factor, unknown
@@ -59,6 +60,9 @@
                              out here from [H] eqs. 7-9
      cr2d_jacobian           K, D of constant and callback, fixed and moving
                              loads and of the distributed load vs differences
+     cr2d_linear             LINEAR elements: the linearised interpolation's
+                             constant Q (that of the co-rotational element at
+                             the reference state) and no load stiffness
      cr2d_node_load          a force and moment at a node equal P there (Q,
                              and K = 0)
      cr2d_dist_resultant     sum of the translational Q of a distributed load
@@ -502,6 +506,17 @@ static void test_chain_factor(void **state)
         }
         assert_true(maxabs(nn, d1) > 0.0);
         ASSERT_VEC_CLOSE(dl, d1, nn, 0.0, RTOL * maxabs(nn, D1));
+        /* lambda = 0: no applied load at all (mat.f, g, point loads) */
+        assert_int_equal(vlbe_ale_chain_loads(&c->ch, NULL, 0), VLBE_OK);
+        c->ch.g[0] = c->ch.g[1] = c->ch.g[2] = VLBE_R(0.0);
+        c->ch.load_factor = VLBE_R(1.0);
+        for (i = 0; i < 3; ++i) {
+            c->el.mat.f[i % 2] = VLBE_R(0.0);
+            c->el3.mat.f[i] = VLBE_R(0.0);
+            c->rel[i].ale.mat.f[0] = c->rel[i].ale.mat.f[1] = VLBE_R(0.0);
+        }
+        assert_int_equal(vlbe_ale_chain_force(&c->ch, t, c->q, c->v, Qa), 0);
+        ASSERT_VEC_CLOSE(Q0, Qa, n, 0.0, RTOL * maxabs(n, Q1));
     }
 }
 
@@ -880,6 +895,42 @@ static void test_cr2d_jacobian(void **state)
     }
 }
 
+/* LINEAR elements take their loads through the linearised interpolation:
+   Q constant (the deformed state's equals the reference state's), K = 0,
+   and at the reference state the co-rotational element's Q */
+static void test_cr2d_linear(void **state)
+{
+    tbeam *b = &g_b;
+    static vlbe_real K[51 * 51], D[51 * 51], K0[51 * 51], D0[51 * 51];
+    vlbe_real Qd[51], Qr[51], Qn[51], z[51];
+    vlbe_cr2d_load ld[2];
+    vlbe_cr2d_beam b0;
+    int i, n;
+    (void)state;
+    ld[0] = cload_make(VLBE_CR2D_LOAD_FORCE, 0.61, 0, 0, 0.9, -1.4);
+    ld[1] = cload_make(VLBE_CR2D_LOAD_MOMENT, 1.33, 0, 0, 0.7, 0);
+    beam_make(b, CNE, 0, 0u);
+    n = b->b.n;
+    memset(z, 0, sizeof z);
+    b->b.dist[1] = VLBE_R(-0.9);
+    assert_int_equal(vlbe_cr2d_beam_loads(&b->b, ld, 2), VLBE_OK);
+    beam_Qload(b, 0, z, b->v, Qn);
+    beam_make(b, CNE, 0, VLBE_CR2D_LINEAR);
+    b->b.dist[1] = VLBE_R(-0.9);
+    assert_int_equal(vlbe_cr2d_beam_loads(&b->b, ld, 2), VLBE_OK);
+    beam_Qload(b, 0, b->q, b->v, Qd);
+    beam_Qload(b, 0, z, b->v, Qr);
+    ASSERT_VEC_CLOSE(Qd, Qr, n, 0.0, RTOL * maxabs(n, Qr));
+    ASSERT_VEC_CLOSE(Qr, Qn, n, 0.0, RTOL * maxabs(n, Qn));
+    b0 = b->b;
+    b0.loads = NULL;
+    b0.nloads = 0;
+    b0.dist[1] = VLBE_R(0.0);
+    assert_int_equal(vlbe_cr2d_beam_force_jac(&b->b, 0, b->q, b->v, K, D), 0);
+    assert_int_equal(vlbe_cr2d_beam_force_jac(&b0, 0, b->q, b->v, K0, D0), 0);
+    for (i = 0; i < n * n; ++i) assert_true(K[i] == K0[i] && D[i] == D0[i]);
+}
+
 static void test_cr2d_node_load(void **state)
 {
     tbeam *b = &g_b;
@@ -1203,6 +1254,7 @@ int main(void)
         cmocka_unit_test(test_chain_static),
         cmocka_unit_test(test_cr2d_force_potential),
         cmocka_unit_test(test_cr2d_jacobian),
+        cmocka_unit_test(test_cr2d_linear),
         cmocka_unit_test(test_cr2d_node_load),
         cmocka_unit_test(test_cr2d_dist_resultant),
         cmocka_unit_test(test_cr2d_cantilever),
