@@ -1466,7 +1466,8 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, const vlbe_real *
    identity).  Q, K, D are the caller's zeroed locals; f the distributed
    load (el->mat.f, or the chain's scaled copy). */
 static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mode,
-                                           const vlbe_real *f, const vlbe_real *q, const vlbe_real *qd,
+                                           const vlbe_real *f, const vlbe_real *q,
+                                           const vlbe_real *qd,
                                            vlbe_real *Q, vlbe_real *K, vlbe_real *D)
 {
     const vlbe_ale_mat *mt = &el->mat;
@@ -3136,8 +3137,8 @@ static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe_real 
 }
 
 static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
-                                          unsigned mode, const vlbe_real *f, const vlbe_real *q,
-                                          const vlbe_real *qd,
+                                          unsigned mode, const vlbe_real *f,
+                                          const vlbe_real *q, const vlbe_real *qd,
                                           vlbe_real *Q, vlbe_real *K, vlbe_real *D)
 {
     const vlbe_ale3_mat *mt = &el->mat;
@@ -4987,7 +4988,8 @@ static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vl
         if (!mom) {
             vlbe__ale_ld_hess(d, nb, &b, 0, qe, f, s, Ke);
         } else if (!ch->el3) { /* M (G1^T A G1 + g . d^2 r'/dq^2), A = d^2 phi/dr'^2 */
-            const vlbe_real x = r1[0], y = r1[1], rho2 = x * x + y * y, i4 = VLBE_R(1.0) / (rho2 * rho2);
+            const vlbe_real x = r1[0], y = r1[1], rho2 = x * x + y * y;
+            const vlbe_real i4 = VLBE_R(1.0) / (rho2 * rho2);
             const vlbe_real axx = VLBE_R(2.0) * x * y * i4, axy = (y * y - x * x) * i4;
             vlbe__ale_ld_hess(d, nb, &b, 1, qe, g, s * f[0], Ke);
             for (a = 0; a < ne; ++a) {

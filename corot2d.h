@@ -1847,7 +1847,8 @@ static inline vlbe_status vlbe__cr2d_lframe(const vlbe_cr2d_elem *el, unsigned m
         f->e1[0] = x / l;
         f->e1[1] = y / l;
         for (j = 0; j < 2; ++j) { /* wrapped: the angle of a0 + phi_j against e1 */
-            const vlbe_real c = vlbe_cos(el->a0 + q[3 * j + 2]), s = vlbe_sin(el->a0 + q[3 * j + 2]);
+            const vlbe_real c = vlbe_cos(el->a0 + q[3 * j + 2]);
+            const vlbe_real s = vlbe_sin(el->a0 + q[3 * j + 2]);
             f->th[j] = vlbe_atan2(f->e1[0] * s - f->e1[1] * c, f->e1[0] * c + f->e1[1] * s);
         }
         f->A[0] = VLBE_R(2.0) * x * y * i4;
@@ -2050,7 +2051,8 @@ static inline vlbe_status vlbe__cr2d_load_elem(const vlbe_cr2d_beam *b, const vl
             rd[c] = (fr.d[c] + fr.L * Wx * fr.e2[c]) * xd;
             for (a = 0; a < 6; ++a) rd[c] += Gr[6 * c + a] * v[a];
         }
-        if (ld->fun(ld->user, t, r, rd, f, jac ? dfr : NULL, jac ? dfv : NULL)) return VLBE_ECALLBACK;
+        if (ld->fun(ld->user, t, r, rd, f, jac ? dfr : NULL, jac ? dfv : NULL))
+            return VLBE_ECALLBACK;
         if (!vlbe_all_finite(f, nc) || !vlbe_all_finite(dfr, 4) || !vlbe_all_finite(dfv, 4))
             return VLBE_ENONFINITE;
     } else {

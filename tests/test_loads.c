@@ -117,7 +117,8 @@ static int cb_fun(void *user, vlbe_real t, const vlbe_real *r, const vlbe_real *
         for (j = 0; j < c->d; ++j) x += c->B[i][j] * (double)r[j] + c->C[i][j] * (double)rd[j];
         f[i] = (vlbe_real)x;
         for (j = 0; j < c->d; ++j) {
-            if (dfr) dfr[i * c->d + j] = (vlbe_real)(c->B[i][j] + (i == j ? 2.0 * c->E[i] * (double)r[i] : 0.0));
+            const double dr = i == j ? 2.0 * c->E[i] * (double)r[i] : 0.0;
+            if (dfr) dfr[i * c->d + j] = (vlbe_real)(c->B[i][j] + dr);
             if (dfv) dfv[i * c->d + j] = (vlbe_real)c->C[i][j];
         }
     }
@@ -190,7 +191,8 @@ static void chain_make(tch *c, int type)
                                         (vlbe_real)(0.9 + 0.1 * i), VLBE_R(1.1)};
                 assert_int_equal(vlbe_rancf_elem_init(&c->rel[i], &c->mat, w, 0, 0, 0, 0), VLBE_OK);
             }
-            assert_int_equal(vlbe_rancf_chain_init(&c->ch, c->rel, c->node, 4, 4, NULL, 0), VLBE_OK);
+            assert_int_equal(vlbe_rancf_chain_init(&c->ch, c->rel, c->node, 4, 4, NULL, 0),
+                             VLBE_OK);
         } else {
             assert_int_equal(vlbe_ale_elem_init(&c->el, &c->mat, 0u, 0, 0, 0), VLBE_OK);
             assert_int_equal(vlbe_ale_chain_init(&c->ch, &c->el, c->node, 4, 5, NULL, 0), VLBE_OK);
@@ -303,7 +305,8 @@ static void test_chain_force_potential(void **state)
         assert_int_equal(vlbe_ale_chain_energy(&c->ch, t, c->q, c->v, E1), VLBE_OK);
         assert_int_equal(vlbe_ale_chain_loads(&c->ch, NULL, 0), VLBE_OK);
         assert_int_equal(vlbe_ale_chain_energy(&c->ch, t, c->q, c->v, E0), VLBE_OK);
-        ASSERT_CLOSE(E1[2] - E0[2], 0.75 * chain_V(c, t, c->q, ld.f, p), RTOL, RTOL * fabs((double)E0[2]));
+        ASSERT_CLOSE(E1[2] - E0[2], 0.75 * chain_V(c, t, c->q, ld.f, p), RTOL,
+                     RTOL * fabs((double)E0[2]));
     }
 }
 
@@ -461,7 +464,8 @@ static void test_chain_factor(void **state)
         tch *c = &g_c;
         static vlbe_real K1[NMAX * NMAX], K0[NMAX * NMAX], Kl[NMAX * NMAX];
         static vlbe_real D1[NMAX * NMAX], D0[NMAX * NMAX], Dl[NMAX * NMAX];
-        vlbe_real Q1[NMAX], Q0[NMAX], Ql[NMAX], Qa[NMAX], Qb[NMAX], d1[NMAX * NMAX], dl[NMAX * NMAX];
+        vlbe_real Q1[NMAX], Q0[NMAX], Ql[NMAX], Qa[NMAX], Qb[NMAX];
+        vlbe_real d1[NMAX * NMAX], dl[NMAX * NMAX];
         const vlbe_real t = VLBE_R(0.4), lam = VLBE_R(0.37);
         cbload cb;
         vlbe_ale_load ld[2];
@@ -550,8 +554,9 @@ static void test_chain_band(void **state)
                     assert_true(K[i * c->ch.n + j] == VLBE_R(0.0));
                     continue;
                 }
-                ASSERT_CLOSE(Kb[VLBE_BAND_IDX(ld_, c->ch.kl, order[i], order[j])], K[i * c->ch.n + j], 0.0, 0.0);
-                ASSERT_CLOSE(Db[VLBE_BAND_IDX(ld_, c->ch.kl, order[i], order[j])], D[i * c->ch.n + j], 0.0, 0.0);
+                const size_t at = VLBE_BAND_IDX(ld_, c->ch.kl, order[i], order[j]);
+                ASSERT_CLOSE(Kb[at], K[i * c->ch.n + j], 0.0, 0.0);
+                ASSERT_CLOSE(Db[at], D[i * c->ch.n + j], 0.0, 0.0);
             }
     }
 }
@@ -691,7 +696,8 @@ static void test_chain_static(void **state)
         assert_true(vlbe_static_work_len(sys.n, sys.m) <= 8000);
         for (i = 1; i <= 2; ++i) { /* load stepping */
             c->ch.load_factor = (vlbe_real)(0.5 * i);
-            assert_int_equal(vlbe_dae_static(&sys, &sp, 0, q, lam, NULL, w, 8000, iw, 100), VLBE_OK);
+            assert_int_equal(vlbe_dae_static(&sys, &sp, 0, q, lam, NULL, w, 8000, iw, 100),
+                             VLBE_OK);
         }
         assert_int_equal(vlbe_ale_chain_point(&c->ch, 0, q, (vlbe_real)L, NULL, rp), VLBE_OK);
         wt = k ? M * L * L / (2 * EI) : -P * a * a * (3 * L - a) / (6 * EI);
@@ -1151,7 +1157,8 @@ static void test_cr2d_factor_band(void **state)
         c[i] = lam * (Q1[i] - Q0[i]);
     }
     ASSERT_VEC_CLOSE(a, c, n, 0.0, RTOL * maxabs(n, Q1));
-    for (i = 0; i < n * n; ++i) ASSERT_CLOSE(Kl[i] - K0[i], lam * (K1[i] - K0[i]), 0.0, RTOL * maxabs(n * n, K1));
+    for (i = 0; i < n * n; ++i)
+        ASSERT_CLOSE(Kl[i] - K0[i], lam * (K1[i] - K0[i]), 0.0, RTOL * maxabs(n * n, K1));
     /* band = dense */
     assert_int_equal(vlbe_cr2d_beam_band(&b->b, order, 60), VLBE_OK);
     assert_int_equal(vlbe_cr2d_beam_force_jac(&b->b, 0, b->q, b->v, Kb, Db), 0);
@@ -1160,8 +1167,9 @@ static void test_cr2d_factor_band(void **state)
         for (j = 0; j < n; ++j) {
             const int di = order[i] - order[j];
             if (di > b->b.kl || -di > b->b.ku) continue;
-            ASSERT_CLOSE(Kb[VLBE_BAND_IDX(ldb, b->b.kl, order[i], order[j])], Kl[i * n + j], 0.0, 0.0);
-            ASSERT_CLOSE(Db[VLBE_BAND_IDX(ldb, b->b.kl, order[i], order[j])], D[i * n + j], 0.0, 0.0);
+            const size_t at = VLBE_BAND_IDX(ldb, b->b.kl, order[i], order[j]);
+            ASSERT_CLOSE(Kb[at], Kl[i * n + j], 0.0, 0.0);
+            ASSERT_CLOSE(Db[at], D[i * n + j], 0.0, 0.0);
         }
 }
 
