@@ -3718,12 +3718,22 @@ typedef struct vlbe_ale_etype {
                            3D chains with spin, a torque about the beam
                            axis acting on the spin angle (eq. 46 of [V],
                            as vlbe_ale3_point_torque); 3D without spin:
-                           VLBE_EARG.  (A bending-moment vector in 3D is
-                           not provided.)
+                           VLBE_EARG;
+     VLBE_ALE_LOAD_MOMENT3 3D chains: a moment vector M = f[0..2] in global
+                           axes, its virtual work on the rotation of the
+                           section, t x dt + dtheta t (t = r'/|r'|, the
+                           spin angle theta being the section's rotation
+                           about t, as its twist theta' says): Q = (dr'/dq)^T
+                           (M x r')/|r'|^2 + (M . t) dtheta/dq -- the
+                           bending part through the slope, the axial part
+                           as eq. 46; without spin the axial part does no
+                           work (no coordinate).  A planar chain: VLBE_EARG;
+                           a zero slope at p: VLBE_ESINGULAR.
    Value: f (constant) when fun is NULL, else fun(user, t, r, rd, f, dfr,
    dfv) with the position r and velocity rd = dr/dt of the point (d each;
    rd = N(p) v + r'(p) p'(t), the load's own travel along the chain
-   included), which writes f (d components for a force, 1 for a moment)
+   included), which writes f (d components for a force, 1 for a moment, 3
+   for MOMENT3)
    and returns 0 (non-zero: the chain's callback fails with
    VLBE_ECALLBACK).  dfr, dfv (nc x d row-major, nc the components of f)
    are NULL in the force call; in the Jacobian call they are zeroed and
@@ -3734,8 +3744,8 @@ typedef struct vlbe_ale_etype {
    makes the callbacks fail with VLBE_EBOUND (fatal, -1); outside = 1: the
    load is absent (no force) while p(t) is outside.
    The chain's force and force_jac check every load before they write
-   anything: an unknown kind or outside flag, a moment in a 3D chain
-   without spin (VLBE_EARG, -1), NaN/Inf in a law, a constant value or
+   anything: an unknown kind or outside flag, a MOMENT in a 3D chain
+   without spin, a MOMENT3 in a planar one (VLBE_EARG, -1), NaN/Inf in a law, a constant value or
    load_factor (VLBE_ENONFINITE, 1), p(t) outside the range (above); the
    load's index goes to ch->err_load (-1 for every other failure).  A
    failing or non-finite fun, or a zero slope under a planar moment
@@ -3743,6 +3753,7 @@ typedef struct vlbe_ale_etype {
    for an element's failure). */
 #define VLBE_ALE_LOAD_FORCE 1
 #define VLBE_ALE_LOAD_MOMENT 2
+#define VLBE_ALE_LOAD_MOMENT3 3
 typedef struct vlbe_ale_load {
     int kind;        /* VLBE_ALE_LOAD_FORCE / _MOMENT                           */
     int outside;     /* 0: outside the material range is an error; 1: no load   */
@@ -4785,8 +4796,11 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
 /* a load's own data: kind, flag, law and constant value */
 static inline vlbe_status vlbe__ale_load_ok(const vlbe_ale_chain *ch, const vlbe_ale_load *ld)
 {
-    if (ld->kind != VLBE_ALE_LOAD_FORCE && ld->kind != VLBE_ALE_LOAD_MOMENT) return VLBE_EARG;
+    if (ld->kind != VLBE_ALE_LOAD_FORCE && ld->kind != VLBE_ALE_LOAD_MOMENT &&
+        ld->kind != VLBE_ALE_LOAD_MOMENT3)
+        return VLBE_EARG;
     if (ld->kind == VLBE_ALE_LOAD_MOMENT && ch->el3 && !ch->spin) return VLBE_EARG;
+    if (ld->kind == VLBE_ALE_LOAD_MOMENT3 && !ch->el3) return VLBE_EARG;
     if (ld->outside != 0 && ld->outside != 1) return VLBE_EARG;
     if (!vlbe_all_finite(ld->p, 3) || (!ld->fun && !vlbe_all_finite(ld->f, 3)))
         return VLBE_ENONFINITE;
@@ -4925,7 +4939,8 @@ static inline void vlbe__ale_ld_gtb(int nc, int ne, const vlbe_real *G, const vl
    of [V]), K = f . d^2 r/dq^2 (the dependence on free p1, p2 at fixed p),
    planar moment M on phi = atan2(y', x'): Q = M dphi/dq, K = M
    d^2 phi/dq^2; 3D torque on the spin angle (eq. 46): the same with theta;
-   a callback's df/dr, df/drd add G^T (df/dr dr/dq + df/drd drd/dq) to K
+   3D moment vector: Q = G^T M, G = [r' x] G1/|r'|^2 + r' dtheta/dq/|r'|
+   (G1 = dr'/dq), K its q-derivative at fixed M; a callback's df/dr, df/drd add G^T (df/dr dr/dq + df/drd drd/dq) to K
    and G^T df/drd dr/dv to D (G = d(r, phi or theta)/dq, rd = N v + r' p').
    Errors: a zero slope under a planar moment (VLBE_ESINGULAR), a moment
    without spin in 3D (VLBE_EARG), fun failing (VLBE_ECALLBACK) or
@@ -4937,17 +4952,18 @@ static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vl
 {
     static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
     const int d = ch->d, nb = 2 * d + ch->spin + 1, ne = 2 * nb;
-    const int mom = ld->kind == VLBE_ALE_LOAD_MOMENT, nc = mom ? 1 : d;
+    const int mom = ld->kind == VLBE_ALE_LOAD_MOMENT, m3 = ld->kind == VLBE_ALE_LOAD_MOMENT3;
+    const int nc = mom ? 1 : d;
     const int jac = Ke != NULL || De != NULL, move = pp[1] != VLBE_R(0.0);
-    const int slope = (mom && !ch->el3) || (ld->fun && move);
+    const int slope = (mom && !ch->el3) || m3 || (ld->fun && move);
     const vlbe_real s = ch->load_factor;
     vlbe_herm_ale b;
     vlbe_real r[3] = {0, 0, 0}, r1[3] = {0, 0, 0}, f[3] = {0, 0, 0}, g[2] = {0, 0};
     vlbe_real dfr[9], dfv[9], Gr[3 * VLBE_ALE3_NQ], G1[3 * VLBE_ALE3_NQ];
-    vlbe_real Gu[VLBE_ALE3_NQ], W[3 * VLBE_ALE3_NQ];
+    vlbe_real Gu[3 * VLBE_ALE3_NQ], W[3 * VLBE_ALE3_NQ], rho2 = VLBE_R(0.0), rho = VLBE_R(0.0);
     const vlbe_real *G = Gr;
     int a, c, j, k, l;
-    if (mom && ch->el3 && !ch->spin) return VLBE_EARG;
+    if ((mom && ch->el3 && !ch->spin) || (m3 && !ch->el3)) return VLBE_EARG;
     if (ch->el3) vlbe_herm_ale_eval(pp[0], qe[nb - 1], qe[ne - 1], 1, 2, &b);
     else vlbe__ale_chain_basis(ch, e, pp[0], qe[nb - 1], qe[ne - 1], 1, 2, &b);
     vlbe__ale_ld_field(d, nb, &b, 0, qe, r, Gr);
@@ -4967,7 +4983,7 @@ static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vl
         for (c = 0; c < nc; ++c) f[c] = ld->f[c];
     }
     if (mom && !ch->el3) { /* dphi/dr' = (-y', x')/|r'|^2 */
-        const vlbe_real rho2 = r1[0] * r1[0] + r1[1] * r1[1];
+        rho2 = r1[0] * r1[0] + r1[1] * r1[1];
         if (!(rho2 > VLBE_R(0.0))) return VLBE_ESINGULAR;
         g[0] = -r1[1] / rho2;
         g[1] = r1[0] / rho2;
@@ -4975,6 +4991,20 @@ static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vl
         G = Gu;
     } else if (mom) {
         vlbe__ale_ld_spin(d, nb, &b, qe, Gu, f[0], s, NULL);
+        G = Gu;
+    } else if (m3) { /* G = [r' x] dr'/dq / |r'|^2 + r' dtheta/dq / |r'| */
+        rho2 = vlbe_v3_dot(r1, r1);
+        rho = vlbe_sqrt(rho2);
+        if (!(rho2 > VLBE_R(0.0))) return VLBE_ESINGULAR;
+        if (ch->spin) vlbe__ale_ld_spin(d, nb, &b, qe, W, VLBE_R(0.0), s, NULL);
+        else
+            for (a = 0; a < ne; ++a) W[a] = VLBE_R(0.0);
+        for (a = 0; a < ne; ++a) {
+            const vlbe_real x0 = G1[a], x1 = G1[ne + a], x2 = G1[2 * ne + a], th = W[a] / rho;
+            Gu[a] = (r1[1] * x2 - r1[2] * x1) / rho2 + r1[0] * th;
+            Gu[ne + a] = (r1[2] * x0 - r1[0] * x2) / rho2 + r1[1] * th;
+            Gu[2 * ne + a] = (r1[0] * x1 - r1[1] * x0) / rho2 + r1[2] * th;
+        }
         G = Gu;
     }
     for (a = 0; a < ne; ++a) {
@@ -4985,11 +5015,10 @@ static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vl
     if (!jac) return VLBE_OK;
     if (Ke) {
         for (a = 0; a < ne * ne; ++a) Ke[a] = VLBE_R(0.0);
-        if (!mom) {
+        if (!mom && !m3) {
             vlbe__ale_ld_hess(d, nb, &b, 0, qe, f, s, Ke);
-        } else if (!ch->el3) { /* M (G1^T A G1 + g . d^2 r'/dq^2), A = d^2 phi/dr'^2 */
-            const vlbe_real x = r1[0], y = r1[1], rho2 = x * x + y * y;
-            const vlbe_real i4 = VLBE_R(1.0) / (rho2 * rho2);
+        } else if (mom && !ch->el3) { /* M (G1^T A G1 + g . d^2 r'/dq^2), A = d^2 phi/dr'^2 */
+            const vlbe_real x = r1[0], y = r1[1], i4 = VLBE_R(1.0) / (rho2 * rho2);
             const vlbe_real axx = VLBE_R(2.0) * x * y * i4, axy = (y * y - x * x) * i4;
             vlbe__ale_ld_hess(d, nb, &b, 1, qe, g, s * f[0], Ke);
             for (a = 0; a < ne; ++a) {
@@ -4997,6 +5026,35 @@ static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vl
                 W[ne + a] = axy * G1[a] - axx * G1[ne + a];
             }
             vlbe__ale_ld_gtb(2, ne, G1, W, s * f[0], Ke);
+        } else if (m3) {
+            /* bending: a = (M x r')/|r'|^2, K += a . d^2 r'/dq^2 + G1^T da/dr' G1,
+               da/dr' = [M x]/|r'|^2 - 2 a r'^T/|r'|^2 */
+            vlbe_real av[3], A3[9], bm = VLBE_R(0.0), bs[3];
+            vlbe_v3_cross(f, r1, av);
+            for (c = 0; c < 3; ++c) av[c] /= rho2;
+            A3[0] = A3[4] = A3[8] = VLBE_R(0.0);
+            A3[1] = -f[2] / rho2;
+            A3[2] = f[1] / rho2;
+            A3[3] = f[2] / rho2;
+            A3[5] = -f[0] / rho2;
+            A3[6] = -f[1] / rho2;
+            A3[7] = f[0] / rho2;
+            for (c = 0; c < 3; ++c)
+                for (j = 0; j < 3; ++j) A3[c * 3 + j] -= VLBE_R(2.0) * av[c] * r1[j] / rho2;
+            vlbe__ale_ld_hess(d, nb, &b, 1, qe, av, s, Ke);
+            for (c = 0; c < 3; ++c)
+                for (a = 0; a < ne; ++a)
+                    W[c * ne + a] = A3[c * 3] * G1[a] + A3[c * 3 + 1] * G1[ne + a] +
+                                    A3[c * 3 + 2] * G1[2 * ne + a];
+            vlbe__ale_ld_gtb(3, ne, G1, W, s, Ke);
+            if (ch->spin) { /* axial part bm = M . r'/|r'| on theta (eq. 46) */
+                bm = vlbe_v3_dot(f, r1) / rho;
+                for (c = 0; c < 3; ++c) bs[c] = f[c] / rho - bm * r1[c] / rho2;
+                vlbe__ale_ld_spin(d, nb, &b, qe, W, bm, s, Ke); /* W: dtheta/dq */
+                for (a = 0; a < ne; ++a)
+                    W[ne + a] = bs[0] * G1[a] + bs[1] * G1[ne + a] + bs[2] * G1[2 * ne + a];
+                vlbe__ale_ld_gtb(1, ne, W, W + ne, s, Ke);
+            }
         } else {
             vlbe__ale_ld_spin(d, nb, &b, qe, Gu, f[0], s, Ke);
         }

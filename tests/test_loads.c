@@ -30,11 +30,14 @@
                              chain energy's V changes by that V
      chain_moment_potential  planar moment M: Q = -dV/dq, V = -M atan2(y', x')
                              of vlbe_ale_chain_point's slope
+     chain_moment3           the 3D moment vector: in the plane z = 0 the
+                             planar moment's Q, along the slope the torque's
      chain_jacobian          K, D of every load kind (constant force and
                              moment, moving callback force and moment
                              depending on r and rd with their derivatives;
-                             3D: the torque on the spin angle) against central
-                             differences of Q in q and v; three chain types
+                             3D: the torque on the spin angle, the moment
+                             vector with and without spin) against central
+                             differences of Q in q and v; four chain types
      chain_kernel            a moving constant force's (and 3D torque's) Q, K
                              equal the element kernel (vlbe_ale_point_force,
                              vlbe_rancf_point_force, vlbe_ale3_point_force,
@@ -151,7 +154,7 @@ typedef struct tch {
     vlbe_ale_node node[5];
     vlbe_ale_chain ch;
     vlbe_real q[NMAX], v[NMAX];
-    int type; /* 0 planar, 1 rational, 2 3D */
+    int type; /* 0 planar, 1 rational, 2 3D, 3 3D without spin */
 } tch;
 
 static tch g_c; /* large (element tables): static */
@@ -173,7 +176,7 @@ static void chain_make(tch *c, int type)
     c->node[2].pd = VLBE_R(0.05);
     c->node[2].pdd = VLBE_R(0.1);
     c->node[3].mass = VLBE_R(0.3);
-    if (type == 2) {
+    if (type >= 2) {
         assert_int_equal(vlbe_ale3_mat_circle(&c->mat3, VLBE_R(1.0), VLBE_R(30.0), VLBE_R(12.0),
                                               VLBE_R(0.1)),
                          VLBE_OK);
@@ -181,7 +184,9 @@ static void chain_make(tch *c, int type)
         c->mat3.c_kap = VLBE_R(0.02);
         c->mat3.f[0] = VLBE_R(0.2);
         c->mat3.f[2] = VLBE_R(-0.9);
-        assert_int_equal(vlbe_ale3_elem_init(&c->el3, &c->mat3, 0u, 0, 0), VLBE_OK);
+        assert_int_equal(
+            vlbe_ale3_elem_init(&c->el3, &c->mat3, type == 3 ? VLBE_ALE3_NO_SPIN : 0u, 0, 0),
+            VLBE_OK);
         assert_int_equal(vlbe_ale_chain_init3(&c->ch, &c->el3, c->node, 4, 5, NULL, 0), VLBE_OK);
     } else {
         c->mat = mat_std();
@@ -340,6 +345,70 @@ static void test_chain_moment_potential(void **state)
     }
 }
 
+/* The 3D moment vector against the planar moment and the 3D torque: a 3D
+   chain with spin in the plane z = 0 (theta = 0, state and nodes of the
+   planar chain) under M = (0, 0, Mz) has the planar chain's Q under the
+   moment Mz on the x, y, x', y', p entries and none on z, z', theta; M =
+   m t (t the unit slope at p) has the torque m's Q (VLBE_ALE_LOAD_MOMENT) */
+static void test_chain_moment3(void **state)
+{
+    static tch c2;
+    tch *c = &g_c;
+    vlbe_real Q2[NMAX], Q3[NMAX], Qt[NMAX], q3[NMAX], v3[NMAX], rp[3];
+    vlbe_ale_load ld;
+    const vlbe_real t = VLBE_R(0.6), p = VLBE_R(0.57);
+    int i, k;
+    (void)state;
+    chain_make(&c2, 0);
+    ld = load_make(VLBE_ALE_LOAD_MOMENT, (double)p, 0, 0, 0.9, 0, 0);
+    assert_int_equal(vlbe_ale_chain_loads(&c2.ch, &ld, 1), VLBE_OK);
+    chain_Qload(&c2, t, c2.q, c2.v, Q2);
+    chain_make(c, 2);
+    memset(q3, 0, sizeof q3);
+    memset(v3, 0, sizeof v3);
+    for (i = 0; i < 4; ++i) {
+        const int o2 = c2.node[i].ofs, o3 = c->node[i].ofs;
+        for (k = 0; k < 2; ++k) {
+            q3[o3 + k] = c2.q[o2 + k];
+            q3[o3 + 3 + k] = c2.q[o2 + 2 + k];
+            v3[o3 + k] = c2.v[o2 + k];
+            v3[o3 + 3 + k] = c2.v[o2 + 2 + k];
+        }
+        if (i == 1) {
+            q3[o3 + 7] = c2.q[o2 + 4];
+            v3[o3 + 7] = c2.v[o2 + 4];
+        }
+    }
+    ld = load_make(VLBE_ALE_LOAD_MOMENT3, (double)p, 0, 0, 0, 0, 0.9);
+    assert_int_equal(vlbe_ale_chain_loads(&c->ch, &ld, 1), VLBE_OK);
+    chain_Qload(c, t, q3, v3, Q3);
+    for (i = 0; i < 4; ++i) {
+        const int o2 = c2.node[i].ofs, o3 = c->node[i].ofs;
+        for (k = 0; k < 2; ++k) {
+            ASSERT_CLOSE(Q3[o3 + k], Q2[o2 + k], 0.0, RTOL * maxabs(c2.ch.n, Q2));
+            ASSERT_CLOSE(Q3[o3 + 3 + k], Q2[o2 + 2 + k], 0.0, RTOL * maxabs(c2.ch.n, Q2));
+        }
+        assert_true(Q3[o3 + 2] == VLBE_R(0.0) && Q3[o3 + 5] == VLBE_R(0.0));
+        ASSERT_CLOSE(Q3[o3 + 6], 0.0, 0.0, RTOL * maxabs(c2.ch.n, Q2));
+        if (i == 1) ASSERT_CLOSE(Q3[o3 + 7], Q2[o2 + 4], 0.0, RTOL * maxabs(c2.ch.n, Q2));
+    }
+    /* axial: M = 1.3 t against the torque 1.3 */
+    assert_int_equal(vlbe_ale_chain_point(&c->ch, t, c->q, p, NULL, rp), VLBE_OK);
+    ld = load_make(VLBE_ALE_LOAD_MOMENT, (double)p, 0, 0, 1.3, 0, 0);
+    assert_int_equal(vlbe_ale_chain_loads(&c->ch, &ld, 1), VLBE_OK);
+    chain_Qload(c, t, c->q, c->v, Qt);
+    {
+        const double nr = sqrt((double)vlbe_v3_dot(rp, rp));
+        ld = load_make(VLBE_ALE_LOAD_MOMENT3, (double)p, 0, 0, 1.3 * (double)rp[0] / nr,
+                       1.3 * (double)rp[1] / nr, 1.3 * (double)rp[2] / nr);
+    }
+    assert_int_equal(vlbe_ale_chain_loads(&c->ch, &ld, 1), VLBE_OK);
+    chain_Qload(c, t, c->q, c->v, Q3);
+    ASSERT_VEC_CLOSE(Q3, Qt, c->ch.n, 0.0, RTOL * maxabs(c->ch.n, Qt));
+    /* a planar chain refuses it */
+    assert_int_equal(vlbe_ale_chain_loads(&c2.ch, &ld, 1), VLBE_EARG);
+}
+
 /* K, D of the loads vs central differences of their Q */
 static void chain_jac_check(tch *c, vlbe_real t)
 {
@@ -376,12 +445,13 @@ static void test_chain_jacobian(void **state)
 {
     int type, k;
     (void)state;
-    for (type = 0; type < 3; ++type)
-        for (k = 0; k < 4; ++k) {
+    for (type = 0; type < 4; ++type)
+        for (k = 0; k < 5; ++k) {
             tch *c = &g_c;
             cbload cb;
             vlbe_ale_load ld[2];
-            const int d = type == 2 ? 3 : 2;
+            const int d = type >= 2 ? 3 : 2;
+            if ((k == 4 && type < 2) || (type == 3 && k != 2 && k != 4)) continue;
             chain_make(c, type);
             cb_make(&cb, k == 3 || (k == 1 && type == 2) ? 1 : d, d, 0.3 + 0.1 * k);
             switch (k) {
@@ -392,6 +462,12 @@ static void test_chain_jacobian(void **state)
             case 1: /* moving constant loads */
                 ld[0] = load_make(VLBE_ALE_LOAD_FORCE, 0.1, 0.3, 0.2, -0.4, 1.1, 0.6);
                 ld[1] = load_make(VLBE_ALE_LOAD_MOMENT, 0.9, 0.2, -0.1, -1.2, 0, 0);
+                break;
+            case 4: /* 3D moment vector: constant and moving callback */
+                ld[0] = load_make(VLBE_ALE_LOAD_MOMENT3, 0.57, 0, 0, 0.7, -1.3, 0.4);
+                ld[1] = load_make(VLBE_ALE_LOAD_MOMENT3, 0.2, 0.35, 0.1, 0, 0, 0);
+                ld[1].fun = cb_fun;
+                ld[1].user = &cb;
                 break;
             default: /* callback force (2) or moment (3), moving, with a constant one */
                 ld[0] = load_make(k == 2 ? VLBE_ALE_LOAD_FORCE : VLBE_ALE_LOAD_MOMENT, 0.2, 0.35,
@@ -1254,6 +1330,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_chain_force_potential),
         cmocka_unit_test(test_chain_moment_potential),
+        cmocka_unit_test(test_chain_moment3),
         cmocka_unit_test(test_chain_jacobian),
         cmocka_unit_test(test_chain_kernel),
         cmocka_unit_test(test_chain_factor),
