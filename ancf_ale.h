@@ -4940,11 +4940,13 @@ static inline void vlbe__ale_ld_gtb(int nc, int ne, const vlbe_real *G, const vl
    planar moment M on phi = atan2(y', x'): Q = M dphi/dq, K = M
    d^2 phi/dq^2; 3D torque on the spin angle (eq. 46): the same with theta;
    3D moment vector: Q = G^T M, G = [r' x] G1/|r'|^2 + r' dtheta/dq/|r'|
-   (G1 = dr'/dq), K its q-derivative at fixed M; a callback's df/dr, df/drd add G^T (df/dr dr/dq + df/drd drd/dq) to K
-   and G^T df/drd dr/dv to D (G = d(r, phi or theta)/dq, rd = N v + r' p').
-   Errors: a zero slope under a planar moment (VLBE_ESINGULAR), a moment
-   without spin in 3D (VLBE_EARG), fun failing (VLBE_ECALLBACK) or
-   non-finite (VLBE_ENONFINITE). */
+   (G1 = dr'/dq), K its q-derivative at fixed M; a callback's df/dr,
+   df/drd add G^T (df/dr dr/dq + df/drd drd/dq) to K and G^T df/drd dr/dv
+   to D (G = d(r, phi, theta or the rotation)/dq, rd = N v + r' p').
+   Errors: a zero slope under a planar moment or a moment vector
+   (VLBE_ESINGULAR), a moment without spin in 3D or a moment vector in a
+   planar chain (VLBE_EARG), fun failing (VLBE_ECALLBACK) or non-finite
+   (VLBE_ENONFINITE). */
 static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vlbe_ale_load *ld,
                                               int e, vlbe_real t, const vlbe_real *pp,
                                               const vlbe_real *qe, const vlbe_real *ve,
