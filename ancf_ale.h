@@ -229,6 +229,9 @@ API
    vlbe_status vlbe_ale_chain_locate / _point(ch, t, q, p, ...)  element of p, r(p)
    vlbe_status vlbe_ale_chain_energy(ch, t, q, v, E)        T, U, V of the chain
    vlbe_status vlbe_ale_chain_length(ch, t, q, v, len, rate)  arc length, its rate
+   vlbe_status vlbe_ale_chain_loads(ch, loads, n)           point loads (vlbe_ale_load: forces,
+                                                            moments; fixed or moving, constant
+                                                            or callback); ch->load_factor
    int vlbe_ale_chain_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc / _constr_hess(user = ch, ...)         vlbe_dae callbacks
    vlbe_status vlbe_ale_chain_dae(ch, sys)                  fill a vlbe_dae with them
@@ -1334,8 +1337,8 @@ static inline void vlbe__ale_inv_load(const vlbe_ale_inv *iv, vlbe_real L, const
    (v = S e', O_v its slope part).  The material rate of r^(c) (the
    damping) is v^(c) + (p2' - p1') Y2_c - p1' r^(c+1).  Agrees with the
    Gauss-point route of the Jacobian calls to rounding (test). */
-static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp, int bend,
-                                      int shared, int inv, const vlbe_real *Lp,
+static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, const vlbe_real *f, int pm,
+                                      int damp, int bend, int shared, int inv, const vlbe_real *Lp,
                                       const vlbe_real *pd, const vlbe_real *q, const vlbe_real *qd,
                                       vlbe_real *Q)
 {
@@ -1350,7 +1353,7 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
 
     /* transport inertia and distributed load: z = f - rhoA r_v (eqs. 15, 19);
        fixed length with invariants: the load alone, from the tables */
-    if (inv && !pm) vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
+    if (inv && !pm) vlbe__ale_inv_load(&el->inv, L, f, Q);
     for (g = 0; !(inv && !pm) && g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         const vlbe_real *b0 = gp->b[0][0], *b1 = gp->b[1][0], *b2 = gp->b[2][0];
@@ -1358,7 +1361,7 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
         const vlbe_real n0 = b0[0], n1 = b0[1] * L, n2 = b0[2], n3 = b0[3] * L;
         vlbe_real z[2], Y1[2] = {0, 0}, Y2[2] = {0, 0};
         for (b = 0; b < 2; ++b) {
-            z[b] = mt->f[b];
+            z[b] = f[b];
             if (pm) {
                 const vlbe_real E1 = Li * (b1[0] * e0[b] + b1[2] * e2[b]);
                 const vlbe_real r1 = E1 + b1[1] * e1[b] + b1[3] * e3[b];
@@ -1467,9 +1470,11 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, int pm, int damp,
 
 /* The inertia/load, axial and bending terms: Q always, and K and D when K is
    given (e- and p'-columns directly, then the p-columns by the scaling
-   identity).  Q, K, D are the caller's zeroed locals. */
+   identity).  Q, K, D are the caller's zeroed locals; f the distributed
+   load (el->mat.f, or the chain's scaled copy). */
 static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mode,
-                                           const vlbe_real *q, const vlbe_real *qd,
+                                           const vlbe_real *f, const vlbe_real *q,
+                                           const vlbe_real *qd,
                                            vlbe_real *Q, vlbe_real *K, vlbe_real *D)
 {
     const vlbe_ale_mat *mt = &el->mat;
@@ -1486,7 +1491,7 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
     pd[0] = (pm & 1) ? qd[4] : VLBE_R(0.0);
     pd[1] = (pm & 2) ? qd[9] : VLBE_R(0.0);
     if (!jac) {
-        if ((st = vlbe__ale_q(el, pm, damp, bend, shared, inv, Lp, pd, q, qd, Q)) != VLBE_OK)
+        if ((st = vlbe__ale_q(el, f, pm, damp, bend, shared, inv, Lp, pd, q, qd, Q)) != VLBE_OK)
             return st;
         if (mode & VLBE_ALE_CONSERVATIVE) return vlbe__ale_flux(el, pm, bend, q, L, Q, NULL, NULL);
         return VLBE_OK;
@@ -1502,15 +1507,15 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
         vlbe__ale_inv_axial(&el->inv, mt->EA, damp ? mt->c_eps : VLBE_R(0.0), L, pm, pd, q, qd, Q,
                             K, D, dQx, Ke, De);
     for (i = 0; i < 80; ++i) Ke[i] = De[i] = VLBE_R(0.0);
-    if (tload) vlbe__ale_inv_load(&el->inv, L, mt->f, Q);
+    if (tload) vlbe__ale_inv_load(&el->inv, L, f, Q);
     for (g = 0; !tload && g < el->rm.n; ++g) {
         const vlbe_ale_gp *gp = &el->rm.g[g];
         const vlbe_real w = gp->w * L;
         vlbe_real z[2], c[4], dd[4];
         vlbe__ale_pt pt; /* per point: its storage is shared with the strain points' */
         vlbe__ale_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, q, pm ? qd : NULL, 3, &pt);
-        z[0] = mt->f[0];
-        z[1] = mt->f[1];
+        z[0] = f[0];
+        z[1] = f[1];
         if (pm) {
             for (i = 0; i < 2; ++i)
                 z[i] -= mt->rhoA * (VLBE_R(2.0) * (pd[0] * pt.V[0][1][i] + pd[1] * pt.V[0][2][i]) +
@@ -1591,10 +1596,11 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
 
 /* vlbe_ale_force with the final mode (element flags already ORed in);
    fin = 0 skips the final finiteness check of the outputs (for a caller
-   that bounded them from the data, vlbe_ale_inv_chain_force) */
+   that bounded them from the data, vlbe_ale_inv_chain_force); f: the
+   distributed load (NULL: el->mat.f) */
 static inline vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode,
                                           const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
-                                          vlbe_real *K, vlbe_real *D, int fin)
+                                          vlbe_real *K, vlbe_real *D, int fin, const vlbe_real *f)
 {
     vlbe_real Qt[10], Kt[100], Dt[100];
     const int jac = K != NULL || D != NULL;
@@ -1604,7 +1610,8 @@ static inline vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode
     for (i = 0; i < 10; ++i) Qt[i] = VLBE_R(0.0);
     if (jac)
         for (i = 0; i < 100; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
-    st = vlbe__ale_forces(el, mode, q, qd, Qt, jac ? Kt : NULL, jac ? Dt : NULL);
+    st = vlbe__ale_forces(el, mode, f ? f : el->mat.f, q, qd, Qt, jac ? Kt : NULL,
+                          jac ? Dt : NULL);
     if (st != VLBE_OK) return st;
     /* finite inputs can still overflow (huge slopes, rates, L^3 of a huge
        element): nothing is written then */
@@ -1624,7 +1631,7 @@ VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, cons
                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
 {
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
-    return vlbe__ale_force(el, mode | el->flags, q, qd, Q, K, D, 1);
+    return vlbe__ale_force(el, mode | el->flags, q, qd, Q, K, D, 1, NULL);
 }
 
 /* One point's part w G^T G of M (eq. 19): e-e blocks and p1-p2 for
@@ -2087,7 +2094,7 @@ VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, 
 {
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
     mode |= el->flags | VLBE_ALE_FIX_P1 | VLBE_ALE_FIX_P2 | VLBE_ALE_INV_AXIAL;
-    return vlbe__ale_force(el, mode, q, qd, Q, K, D, 1);
+    return vlbe__ale_force(el, mode, q, qd, Q, K, D, 1, NULL);
 }
 
 /* n x n band storage (VLBE_ALE_INV_BW per row): entry (i, j) */
@@ -2231,9 +2238,9 @@ VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned 
         /* K and D come together; the Q-only route without; the outputs are
            bounded above, so the element's own final check is skipped */
         if (K || D)
-            st = vlbe__ale_force(el, mode, qe, ve, Qe, Ke, De, 0);
+            st = vlbe__ale_force(el, mode, qe, ve, Qe, Ke, De, 0, NULL);
         else
-            st = vlbe__ale_force(el, mode, qe, ve, Qe, NULL, NULL, 0);
+            st = vlbe__ale_force(el, mode, qe, ve, Qe, NULL, NULL, 0, NULL);
         if (st != VLBE_OK) return st; /* excluded by the checks above */
         for (i = 0; i < 8; ++i) {
             const int ri = i + (i >= 4), gi = o + i;
@@ -3069,7 +3076,8 @@ static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlb
    field (z = f - rhoA eta_p, eqs. 17, 29, 44) and the spin field (z =
    -rhoI eta_p); with K: e/theta-columns of K, and D (e', theta' and p'
    columns).  pt holds k = 0 with all partials when pm != 0. */
-static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe__ale_lay *ly,
+static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe_real *f,
+                                       const vlbe__ale_lay *ly,
                                        const vlbe__a3_pt *pt, int pm, const vlbe_real *pd,
                                        vlbe_real w, const vlbe_real *q, const vlbe_real *qd,
                                        vlbe_real *Q, vlbe_real *K, vlbe_real *D)
@@ -3080,7 +3088,7 @@ static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe__ale_
     vlbe_real Xt[2] = {0, 0}, Vt[2] = {0, 0}, Xtl[3] = {0, 0, 0}, zt = VLBE_R(0.0), c2[2], d2[2];
     int i, j, k, l, c;
     const int spin = ly->spin && mt->rhoI != VLBE_R(0.0) && pm;
-    for (c = 0; c < 3; ++c) z[c] = mt->f[c];
+    for (c = 0; c < 3; ++c) z[c] = f[c];
     if (pm) {
         for (k = 0; k < 2; ++k) {
             vlbe__a3_sum(ly, pt->N[0][1 + k], q, X[k]);
@@ -3177,7 +3185,8 @@ static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe__ale_
 }
 
 static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
-                                          unsigned mode, const vlbe_real *q, const vlbe_real *qd,
+                                          unsigned mode, const vlbe_real *f,
+                                          const vlbe_real *q, const vlbe_real *qd,
                                           vlbe_real *Q, vlbe_real *K, vlbe_real *D)
 {
     const vlbe_ale3_mat *mt = &el->mat;
@@ -3189,7 +3198,7 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
     vlbe_real pd[2], Lp[6], dQ[VLBE_ALE3_NQ], dQx[VLBE_ALE3_NQ];
     vlbe_status st;
     int g, i;
-    const int f0 = mt->f[0] != VLBE_R(0.0) || mt->f[1] != VLBE_R(0.0) || mt->f[2] != VLBE_R(0.0);
+    const int f0 = f[0] != VLBE_R(0.0) || f[1] != VLBE_R(0.0) || f[2] != VLBE_R(0.0);
     vlbe__ale_lpow(L, Lp);
     pd[0] = (pm & 1) ? qd[ly->p[0]] : VLBE_R(0.0);
     pd[1] = (pm & 2) ? qd[ly->p[1]] : VLBE_R(0.0);
@@ -3199,7 +3208,7 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
             const vlbe_ale_gp *gp = &el->rm.g[g];
             vlbe__a3_pt pt; /* per point: its storage is shared with the strain points' */
             vlbe__a3_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
-            vlbe__a3_inertia_pt(mt, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
+            vlbe__a3_inertia_pt(mt, f, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
         }
     if (mt->EA != VLBE_R(0.0) || bend || twist)
         for (g = 0; g < el->rs.n; ++g)
@@ -3214,9 +3223,11 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
     return VLBE_OK;
 }
 
-VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
-                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
+/* vlbe_ale3_force with the distributed load f (NULL: el->mat.f; a chain's
+   scaled copy) */
+static inline vlbe_status vlbe__a3_force(const vlbe_ale3_elem *el, unsigned mode,
+                                         const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
+                                         vlbe_real *K, vlbe_real *D, const vlbe_real *f)
 {
     vlbe_real Qt[VLBE_ALE3_NQ], Kt[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Dt[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
     vlbe_real *Kp = NULL, *Dp = NULL; /* the local K, D when wanted */
@@ -3235,7 +3246,8 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
         Kp = Kt;
         Dp = Dt;
     }
-    if ((st = vlbe__a3_forces(el, &ly, mode, q, qd, Qt, Kp, Dp)) != VLBE_OK) return st;
+    if ((st = vlbe__a3_forces(el, &ly, mode, f ? f : el->mat.f, q, qd, Qt, Kp, Dp)) != VLBE_OK)
+        return st;
     if (!vlbe_all_finite(Qt, ly.n) || (K && !vlbe_all_finite(Kt, nn)) ||
         (D && !vlbe_all_finite(Dt, nn)))
         return VLBE_ENONFINITE; /* overflow from finite input: nothing written */
@@ -3245,6 +3257,13 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
     if (D)
         for (i = 0; i < nn; ++i) D[i] = Dt[i];
     return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
+{
+    return vlbe__a3_force(el, mode, q, qd, Q, K, D, NULL);
 }
 
 /* largest position or spin-angle component (they scale with 1/L in the
@@ -3758,6 +3777,69 @@ typedef struct vlbe_ale_etype {
     void (*commit)(void *els, int ne, int e, int op, const vlbe_real *aux);
 } vlbe_ale_etype;
 
+/* A point load on a chain (an array of them is given to the chain with
+   vlbe_ale_chain_loads; the chain keeps the pointer, never a copy).  It
+   acts at the material point p(t) = p[0] + p[1] t + p[2] t^2/2 (p[1] = p[2]
+   = 0: a fixed material point; else a load moving along the chain, e.g. a
+   vehicle on a bridge or a carriage), located at each call in the first
+   element whose [p1, p2] holds it at the current q, t (at a node shared by
+   two elements: the left one; at a sliding node: its left slope).  Kinds:
+     VLBE_ALE_LOAD_FORCE   a force in global axes, d components;
+                           Q += N(p)^T f (eq. 45 of [V]), the virtual work
+                           at the material point (p-rows: f . dr/dp_k at
+                           fixed p, as vlbe_ale_point_force);
+     VLBE_ALE_LOAD_MOMENT  f[0]: planar chains, a moment about z acting on
+                           the slope angle phi = atan2(y', x') (Q +=
+                           f0 dphi/dq; a zero slope at p: VLBE_ESINGULAR);
+                           3D chains with spin, a torque about the beam
+                           axis acting on the spin angle (eq. 46 of [V],
+                           as vlbe_ale3_point_torque); 3D without spin:
+                           VLBE_EARG;
+     VLBE_ALE_LOAD_MOMENT3 3D chains: a moment vector M = f[0..2] in global
+                           axes, its virtual work on the rotation of the
+                           section, t x dt + dtheta t (t = r'/|r'|, the
+                           spin angle theta being the section's rotation
+                           about t, as its twist theta' says): Q = (dr'/dq)^T
+                           (M x r')/|r'|^2 + (M . t) dtheta/dq -- the
+                           bending part through the slope, the axial part
+                           as eq. 46; without spin the axial part does no
+                           work (no coordinate).  A planar chain: VLBE_EARG;
+                           a zero slope at p: VLBE_ESINGULAR.
+   Value: f (constant) when fun is NULL, else fun(user, t, r, rd, f, dfr,
+   dfv) with the position r and velocity rd = dr/dt of the point (d each;
+   rd = N(p) v + r'(p) p'(t), the load's own travel along the chain
+   included), which writes f (d components for a force, 1 for a moment, 3
+   for MOMENT3)
+   and returns 0 (non-zero: the chain's callback fails with
+   VLBE_ECALLBACK).  dfr, dfv (nc x d row-major, nc the components of f)
+   are NULL in the force call; in the Jacobian call they are zeroed and
+   fun may write df/dr, df/drd there (the chain's K and D then carry the
+   load's dependence on the state; left zero, the load counts as a dead
+   load in K and D).  The chain's load factor scales the value (and its
+   derivatives).  outside = 0: a p(t) outside the chain's material range
+   makes the callbacks fail with VLBE_EBOUND (fatal, -1); outside = 1: the
+   load is absent (no force) while p(t) is outside.
+   The chain's force and force_jac check every load before they write
+   anything: an unknown kind or outside flag, a MOMENT in a 3D chain
+   without spin, a MOMENT3 in a planar one (VLBE_EARG, -1), NaN/Inf in a law, a constant value or
+   load_factor (VLBE_ENONFINITE, 1), p(t) outside the range (above); the
+   load's index goes to ch->err_load (-1 for every other failure).  A
+   failing or non-finite fun, or a zero slope under a planar moment
+   (VLBE_ESINGULAR), shows during the assembly (outputs unspecified, as
+   for an element's failure). */
+#define VLBE_ALE_LOAD_FORCE 1
+#define VLBE_ALE_LOAD_MOMENT 2
+#define VLBE_ALE_LOAD_MOMENT3 3
+typedef struct vlbe_ale_load {
+    int kind;        /* VLBE_ALE_LOAD_FORCE / _MOMENT                           */
+    int outside;     /* 0: outside the material range is an error; 1: no load   */
+    vlbe_real p[3];  /* material point p(t) = p[0] + p[1] t + p[2] t^2/2         */
+    vlbe_real f[3];  /* constant value (force d components, moment f[0])        */
+    int (*fun)(void *user, vlbe_real t, const vlbe_real *r, const vlbe_real *rd,
+               vlbe_real *f, vlbe_real *dfr, vlbe_real *dfv);
+    void *user;      /* fun's own pointer                                       */
+} vlbe_ale_load;
+
 /* A chain: nodes 0..nn-1, element e between nodes e and e+1 with increasing
    material coordinates.  Global coordinates node by node:
    planar  [x, y, x', y' (, x'(2), y'(2) if sliding) (, p if free)],
@@ -3786,7 +3868,17 @@ typedef struct vlbe_ale_etype {
    (a clamped Lagrangian cantilever: 7, its clamp rows before node 0).  It does not grow
    with the number of elements, except that an equal-length group ending
    at a free p couples all its rows to that end.  Storage: (n + m)(kl + ku
-   + 1) reals a matrix instead of n^2. */
+   + 1) reals a matrix instead of n^2.
+   Loads: the distributed loads mat.f of the element types, gravity g on the
+   point masses and the point loads (vlbe_ale_load) are all multiplied by
+   load_factor (1 after init): load stepping with vlbe_dae_static.  Between
+   two calls (steps, load increments) a caller may change load_factor, g,
+   the point loads' values, laws and callbacks (in the array given to
+   vlbe_ale_chain_loads, or another array through that call), pfun, afun,
+   user and Lmin; mat.f lives in the element type, which the chain reads
+   at every call (changing it changes every chain using that type).  Only
+   followed by vlbe_ale_chain_layout: the nodes' pmode and slide, the
+   number of nodes and constraints, mode, the banded switch. */
 typedef struct vlbe_ale_chain {
     const vlbe_ale_elem *el;    /* planar element type (NULL in a 3D chain)      */
     const vlbe_ale_etype *et;   /* per-element types (NULL: el for every element) */
@@ -3815,6 +3907,11 @@ typedef struct vlbe_ale_chain {
     int order_cap;
     int kl, ku;          /* set by layout in banded mode: half-bandwidths of the
                             augmented matrix (kl == ku)                            */
+    /* loads (see above) */
+    vlbe_real load_factor;      /* scales mat.f, g and the point loads (init: 1)   */
+    const vlbe_ale_load *loads; /* point loads (vlbe_ale_chain_loads; NULL: none)   */
+    int nloads;
+    int err_load;        /* the point load of the last failure (-1: not a load)    */
 } vlbe_ale_chain;
 
 /* -- API prototypes ----------------------------------------------------- */
@@ -3846,6 +3943,7 @@ VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, cons
 VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v, vlbe_real *len,
                                            vlbe_real *rate);
+VLBE_API vlbe_status vlbe_ale_chain_loads(vlbe_ale_chain *ch, const vlbe_ale_load *loads, int n);
 /* vlbe_dae callbacks (user = the chain).  They return 0, or on failure
    the value of vlbe__ale_fail (1: the state is outside the model's domain,
    the integrator may retry; -1: fatal) with the status and the element (-1:
@@ -3924,6 +4022,10 @@ static inline vlbe_status vlbe__ale_chain_init(vlbe_ale_chain *ch, const vlbe_al
     ch->order = NULL;
     ch->order_cap = 0;
     ch->kl = ch->ku = 0;
+    ch->load_factor = VLBE_R(1.0);
+    ch->loads = NULL;
+    ch->nloads = 0;
+    ch->err_load = -1;
     return VLBE_OK;
 }
 
@@ -4543,9 +4645,13 @@ VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t,
 }
 
 /* Kinetic, strain and potential energy E = {T, U, V} (loads and gravity on
-   point masses); v is required.  Errors of vlbe_ale_chain_gather and the
-   element energies; a sum that overflows: VLBE_ENONFINITE.  On failure E
-   is not written. */
+   point masses); v is required.  V is that of the distributed loads and
+   gravity times the load factor, and of the constant point forces at fixed
+   material points (-load_factor f . r(p); moments, moving or callback
+   loads have none here).  Errors of vlbe_ale_chain_gather and the element
+   energies, of vlbe_ale_chain_point for a point force (an `outside` one
+   outside the range counts 0); a sum that overflows: VLBE_ENONFINITE.  On
+   failure E is not written. */
 VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
                                            const vlbe_real *v, vlbe_real *E)
 {
@@ -4560,14 +4666,27 @@ VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, cons
         st = ch->el3 ? vlbe_ale3_energy(ch->el3, md, qe, ve, Ee)
                      : vlbe_ale_energy(vlbe__ale_el(ch, e), md, qe, ve, Ee);
         if (st != VLBE_OK) return st;
-        for (i = 0; i < 3; ++i) Es[i] += Ee[i];
+        Es[0] += Ee[0];
+        Es[1] += Ee[1];
+        Es[2] += ch->load_factor * Ee[2];
     }
     for (i = 0; i < ch->nn; ++i) {
         const vlbe_real m = ch->node[i].mass, *r = q + ch->node[i].ofs, *rd = v + ch->node[i].ofs;
         for (k = 0; k < ch->d; ++k) {
             Es[0] += VLBE_R(0.5) * m * rd[k] * rd[k];
-            Es[2] -= m * ch->g[k] * r[k];
+            Es[2] -= ch->load_factor * m * ch->g[k] * r[k];
         }
+    }
+    for (i = 0; i < ch->nloads; ++i) { /* constant forces at fixed material points */
+        const vlbe_ale_load *ld = &ch->loads[i];
+        vlbe_real r[3];
+        if (ld->kind != VLBE_ALE_LOAD_FORCE || ld->fun || ld->p[1] != VLBE_R(0.0) ||
+            ld->p[2] != VLBE_R(0.0))
+            continue;
+        st = vlbe_ale_chain_point(ch, t, q, ld->p[0], r, NULL);
+        if (st == VLBE_EBOUND && ld->outside) continue;
+        if (st != VLBE_OK) return st;
+        for (k = 0; k < ch->d; ++k) Es[2] -= ch->load_factor * ld->f[k] * r[k];
     }
     if (!vlbe_all_finite(Es, 3)) return VLBE_ENONFINITE;
     E[0] = Es[0];
@@ -4638,6 +4757,7 @@ static inline int vlbe__ale_fail(vlbe_ale_chain *ch, vlbe_status st, int where)
 {
     ch->err = st;
     ch->err_elem = where;
+    ch->err_load = -1;
     return (st == VLBE_ELENGTH || st == VLBE_ESINGULAR || st == VLBE_ENONFINITE) ? 1 : -1;
 }
 
@@ -4663,12 +4783,18 @@ static inline vlbe_status vlbe__ale_el_mass_jac(const vlbe_ale_chain *ch, int e,
                    : vlbe_ale_mass_jac(vlbe__ale_el(ch, e), md, qe, ae, Je);
 }
 
+/* (the force with the distributed load mat.f times the chain's load factor) */
 static inline vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, int e, unsigned md,
                                              const vlbe_real *qe, const vlbe_real *ve,
                                              vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
 {
-    return ch->el3 ? vlbe_ale3_force(ch->el3, md, qe, ve, Qe, Ke, De)
-                   : vlbe_ale_force(vlbe__ale_el(ch, e), md, qe, ve, Qe, Ke, De);
+    const vlbe_ale_elem *el = ch->el3 ? NULL : vlbe__ale_el(ch, e);
+    const vlbe_real *f = el ? el->mat.f : ch->el3->mat.f;
+    vlbe_real fl[3] = {0, 0, 0};
+    int c;
+    for (c = 0; c < ch->d; ++c) fl[c] = ch->load_factor * f[c];
+    return el ? vlbe__ale_force(el, md | el->flags, qe, ve, Qe, Ke, De, 1, fl)
+              : vlbe__a3_force(ch->el3, md, qe, ve, Qe, Ke, De, fl);
 }
 
 /* The index map of the chain's matrices: entry (i, j) -- i, j < n
@@ -4857,6 +4983,339 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
     return vlbe__ale_mdiag_finite(ch, M) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
 
+/* -- point loads and the load factor (vlbe_ale_load) -------------------- */
+/* a load's own data: kind, flag, law and constant value */
+static inline vlbe_status vlbe__ale_load_ok(const vlbe_ale_chain *ch, const vlbe_ale_load *ld)
+{
+    if (ld->kind != VLBE_ALE_LOAD_FORCE && ld->kind != VLBE_ALE_LOAD_MOMENT &&
+        ld->kind != VLBE_ALE_LOAD_MOMENT3)
+        return VLBE_EARG;
+    if (ld->kind == VLBE_ALE_LOAD_MOMENT && ch->el3 && !ch->spin) return VLBE_EARG;
+    if (ld->kind == VLBE_ALE_LOAD_MOMENT3 && !ch->el3) return VLBE_EARG;
+    if (ld->outside != 0 && ld->outside != 1) return VLBE_EARG;
+    if (!vlbe_all_finite(ld->p, 3) || (!ld->fun && !vlbe_all_finite(ld->f, 3)))
+        return VLBE_ENONFINITE;
+    return VLBE_OK;
+}
+
+/* Gives the chain its point loads: the caller's array of n (n = 0: none),
+   kept by pointer.  Each is checked (kind and outside: VLBE_EARG, a MOMENT
+   in a 3D chain without spin too; NaN/Inf in p or, without fun, in f:
+   VLBE_ENONFINITE; n < 0 or a NULL array with n > 0: VLBE_EARG); on
+   failure the chain is unchanged.  The callbacks check them again at
+   every call (the caller may change them between calls). */
+VLBE_API vlbe_status vlbe_ale_chain_loads(vlbe_ale_chain *ch, const vlbe_ale_load *loads, int n)
+{
+    int k;
+    vlbe_status st;
+    VLBE_ASSERT(ch != NULL);
+    if (n < 0 || (n > 0 && loads == NULL)) return VLBE_EARG;
+    for (k = 0; k < n; ++k)
+        if ((st = vlbe__ale_load_ok(ch, &loads[k])) != VLBE_OK) return st;
+    ch->loads = n > 0 ? loads : NULL;
+    ch->nloads = n;
+    return VLBE_OK;
+}
+
+/* p(t), p'(t) of load ld in pp and the element holding p(t) in *e (-1: an
+   `outside` load outside the material range) */
+static inline vlbe_status vlbe__ale_load_at(const vlbe_ale_chain *ch, const vlbe_ale_load *ld,
+                                            vlbe_real t, const vlbe_real *q, vlbe_real *pp, int *e)
+{
+    vlbe_status st;
+    pp[0] = ld->p[0] + (ld->p[1] + VLBE_R(0.5) * ld->p[2] * t) * t;
+    pp[1] = ld->p[1] + ld->p[2] * t;
+    if (!vlbe_all_finite(pp, 2)) return VLBE_ENONFINITE;
+    st = vlbe_ale_chain_locate(ch, t, q, pp[0], e);
+    if (st == VLBE_EBOUND && ld->outside) {
+        *e = -1;
+        return VLBE_OK;
+    }
+    return st;
+}
+
+/* column of slot j (0: r1, 1: r1', 2: r2, 3: r2') in gathered element
+   coordinates (nb per node, d per vector); p_k at nb k + nb - 1, theta_i
+   at nb i + 2 d */
+static inline int vlbe__ale_lso(int d, int nb, int j)
+{
+    return nb * (j >> 1) + d * (j & 1);
+}
+
+/* u = r^(kk)(p) (kk = 0: position, 1: slope; d components) of a gathered
+   element from its basis b (k <= kk, p1/p2 partials to second order), and
+   G = du/dq (d x ne, written whole) */
+static inline void vlbe__ale_ld_field(int d, int nb, const vlbe_herm_ale *b, int kk,
+                                      const vlbe_real *qe, vlbe_real *u, vlbe_real *G)
+{
+    const int ne = 2 * nb;
+    int c, j, k;
+    for (c = 0; c < d * ne; ++c) G[c] = VLBE_R(0.0);
+    for (c = 0; c < d; ++c) {
+        u[c] = VLBE_R(0.0);
+        for (j = 0; j < 4; ++j) {
+            const int o = vlbe__ale_lso(d, nb, j) + c;
+            u[c] += b->h[kk][0][j] * qe[o];
+            G[c * ne + o] = b->h[kk][0][j];
+            for (k = 0; k < 2; ++k) G[c * ne + nb * k + nb - 1] += b->h[kk][1 + k][j] * qe[o];
+        }
+    }
+}
+
+/* Ke += s sum_c w_c d^2 u_c/dq^2 for u = r^(kk)(p): the e-p and p-p blocks
+   (u is linear in the slots e) */
+static inline void vlbe__ale_ld_hess(int d, int nb, const vlbe_herm_ale *b, int kk,
+                                     const vlbe_real *qe, const vlbe_real *w, vlbe_real s,
+                                     vlbe_real *Ke)
+{
+    static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
+    const int ne = 2 * nb;
+    int c, j, k, l;
+    for (j = 0; j < 4; ++j) {
+        const int o = vlbe__ale_lso(d, nb, j);
+        vlbe_real ws = VLBE_R(0.0);
+        for (c = 0; c < d; ++c) ws += w[c] * qe[o + c];
+        for (k = 0; k < 2; ++k) {
+            const int pk = nb * k + nb - 1;
+            for (c = 0; c < d; ++c) {
+                const vlbe_real h = s * b->h[kk][1 + k][j] * w[c];
+                Ke[(o + c) * ne + pk] += h;
+                Ke[pk * ne + o + c] += h;
+            }
+            for (l = 0; l < 2; ++l) Ke[pk * ne + nb * l + nb - 1] += s * b->h[kk][dd[k][l]][j] * ws;
+        }
+    }
+}
+
+/* The spin angle's Jacobian G (1 x ne, written whole) at the point of b
+   (linear H basis, eq. 46 of [V]) and, with Ke, Ke += s w d^2 theta/dq^2 */
+static inline void vlbe__ale_ld_spin(int d, int nb, const vlbe_herm_ale *b, const vlbe_real *qe,
+                                     vlbe_real *G, vlbe_real w, vlbe_real s, vlbe_real *Ke)
+{
+    static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
+    const int ne = 2 * nb;
+    int i, k, l;
+    for (i = 0; i < ne; ++i) G[i] = VLBE_R(0.0);
+    for (i = 0; i < 2; ++i) {
+        const int o = nb * i + 2 * d;
+        G[o] = b->l[0][0][i];
+        for (k = 0; k < 2; ++k) {
+            const int pk = nb * k + nb - 1;
+            G[pk] += b->l[0][1 + k][i] * qe[o];
+            if (!Ke) continue;
+            Ke[o * ne + pk] += s * w * b->l[0][1 + k][i];
+            Ke[pk * ne + o] += s * w * b->l[0][1 + k][i];
+            for (l = 0; l < 2; ++l)
+                Ke[pk * ne + nb * l + nb - 1] += s * w * b->l[0][dd[k][l]][i] * qe[o];
+        }
+    }
+}
+
+/* A += s G^T B for G (nc x ne), B (nc x ne) */
+static inline void vlbe__ale_ld_gtb(int nc, int ne, const vlbe_real *G, const vlbe_real *B,
+                                    vlbe_real s, vlbe_real *A)
+{
+    int a, c, j;
+    for (c = 0; c < nc; ++c)
+        for (a = 0; a < ne; ++a) {
+            const vlbe_real g = s * G[c * ne + a];
+            if (g == VLBE_R(0.0)) continue;
+            for (j = 0; j < ne; ++j) A[a * ne + j] += g * B[c * ne + j];
+        }
+}
+
+/* Point load ld on element e of the chain (gathered qe, ve), at p = pp[0]
+   moving with p' = pp[1]: the element vectors Qe and, when given, Ke and
+   De (written whole), all times the load factor.  Force: Q = N^T f (eq. 45
+   of [V]), K = f . d^2 r/dq^2 (the dependence on free p1, p2 at fixed p),
+   planar moment M on phi = atan2(y', x'): Q = M dphi/dq, K = M
+   d^2 phi/dq^2; 3D torque on the spin angle (eq. 46): the same with theta;
+   3D moment vector: Q = G^T M, G = [r' x] G1/|r'|^2 + r' dtheta/dq/|r'|
+   (G1 = dr'/dq), K its q-derivative at fixed M; a callback's df/dr,
+   df/drd add G^T (df/dr dr/dq + df/drd drd/dq) to K and G^T df/drd dr/dv
+   to D (G = d(r, phi, theta or the rotation)/dq, rd = N v + r' p').
+   Errors: a zero slope under a planar moment or a moment vector
+   (VLBE_ESINGULAR), a moment without spin in 3D or a moment vector in a
+   planar chain (VLBE_EARG), fun failing (VLBE_ECALLBACK) or non-finite
+   (VLBE_ENONFINITE). */
+static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vlbe_ale_load *ld,
+                                              int e, vlbe_real t, const vlbe_real *pp,
+                                              const vlbe_real *qe, const vlbe_real *ve,
+                                              vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
+{
+    static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
+    const int d = ch->d, nb = 2 * d + ch->spin + 1, ne = 2 * nb;
+    const int mom = ld->kind == VLBE_ALE_LOAD_MOMENT, m3 = ld->kind == VLBE_ALE_LOAD_MOMENT3;
+    const int nc = mom ? 1 : d;
+    const int jac = Ke != NULL || De != NULL, move = pp[1] != VLBE_R(0.0);
+    const int slope = (mom && !ch->el3) || m3 || (ld->fun && move);
+    const vlbe_real s = ch->load_factor;
+    vlbe_herm_ale b;
+    vlbe_real r[3] = {0, 0, 0}, r1[3] = {0, 0, 0}, f[3] = {0, 0, 0}, g[2] = {0, 0};
+    vlbe_real dfr[9], dfv[9], Gr[3 * VLBE_ALE3_NQ], G1[3 * VLBE_ALE3_NQ];
+    vlbe_real Gu[3 * VLBE_ALE3_NQ], W[3 * VLBE_ALE3_NQ], rho2 = VLBE_R(0.0), rho = VLBE_R(0.0);
+    const vlbe_real *G = Gr;
+    int a, c, j, k, l;
+    if ((mom && ch->el3 && !ch->spin) || (m3 && !ch->el3)) return VLBE_EARG;
+    if (ch->el3) vlbe_herm_ale_eval(pp[0], qe[nb - 1], qe[ne - 1], 1, 2, &b);
+    else vlbe__ale_chain_basis(ch, e, pp[0], qe[nb - 1], qe[ne - 1], 1, 2, &b);
+    vlbe__ale_ld_field(d, nb, &b, 0, qe, r, Gr);
+    if (slope) vlbe__ale_ld_field(d, nb, &b, 1, qe, r1, G1);
+    for (c = 0; c < 9; ++c) dfr[c] = dfv[c] = VLBE_R(0.0);
+    if (ld->fun) { /* the value at the point's position and velocity */
+        vlbe_real rd[3] = {0, 0, 0};
+        for (c = 0; c < d; ++c) {
+            for (a = 0; a < ne; ++a) rd[c] += Gr[c * ne + a] * ve[a];
+            if (move) rd[c] += r1[c] * pp[1];
+        }
+        if (ld->fun(ld->user, t, r, rd, f, jac ? dfr : NULL, jac ? dfv : NULL))
+            return VLBE_ECALLBACK;
+        if (!vlbe_all_finite(f, nc) || !vlbe_all_finite(dfr, 9) || !vlbe_all_finite(dfv, 9))
+            return VLBE_ENONFINITE;
+    } else {
+        for (c = 0; c < nc; ++c) f[c] = ld->f[c];
+    }
+    if (mom && !ch->el3) { /* dphi/dr' = (-y', x')/|r'|^2 */
+        rho2 = r1[0] * r1[0] + r1[1] * r1[1];
+        if (!(rho2 > VLBE_R(0.0))) return VLBE_ESINGULAR;
+        g[0] = -r1[1] / rho2;
+        g[1] = r1[0] / rho2;
+        for (a = 0; a < ne; ++a) Gu[a] = g[0] * G1[a] + g[1] * G1[ne + a];
+        G = Gu;
+    } else if (mom) {
+        vlbe__ale_ld_spin(d, nb, &b, qe, Gu, f[0], s, NULL);
+        G = Gu;
+    } else if (m3) { /* G = [r' x] dr'/dq / |r'|^2 + r' dtheta/dq / |r'| */
+        rho2 = vlbe_v3_dot(r1, r1);
+        rho = vlbe_sqrt(rho2);
+        if (!(rho2 > VLBE_R(0.0))) return VLBE_ESINGULAR;
+        if (ch->spin) vlbe__ale_ld_spin(d, nb, &b, qe, W, VLBE_R(0.0), s, NULL);
+        else
+            for (a = 0; a < ne; ++a) W[a] = VLBE_R(0.0);
+        for (a = 0; a < ne; ++a) {
+            const vlbe_real x0 = G1[a], x1 = G1[ne + a], x2 = G1[2 * ne + a], th = W[a] / rho;
+            Gu[a] = (r1[1] * x2 - r1[2] * x1) / rho2 + r1[0] * th;
+            Gu[ne + a] = (r1[2] * x0 - r1[0] * x2) / rho2 + r1[1] * th;
+            Gu[2 * ne + a] = (r1[0] * x1 - r1[1] * x0) / rho2 + r1[2] * th;
+        }
+        G = Gu;
+    }
+    for (a = 0; a < ne; ++a) {
+        vlbe_real x = VLBE_R(0.0);
+        for (c = 0; c < nc; ++c) x += G[c * ne + a] * f[c];
+        Qe[a] = s * x;
+    }
+    if (!jac) return VLBE_OK;
+    if (Ke) {
+        for (a = 0; a < ne * ne; ++a) Ke[a] = VLBE_R(0.0);
+        if (!mom && !m3) {
+            vlbe__ale_ld_hess(d, nb, &b, 0, qe, f, s, Ke);
+        } else if (mom && !ch->el3) { /* M (G1^T A G1 + g . d^2 r'/dq^2), A = d^2 phi/dr'^2 */
+            const vlbe_real x = r1[0], y = r1[1], i4 = VLBE_R(1.0) / (rho2 * rho2);
+            const vlbe_real axx = VLBE_R(2.0) * x * y * i4, axy = (y * y - x * x) * i4;
+            vlbe__ale_ld_hess(d, nb, &b, 1, qe, g, s * f[0], Ke);
+            for (a = 0; a < ne; ++a) {
+                W[a] = axx * G1[a] + axy * G1[ne + a];
+                W[ne + a] = axy * G1[a] - axx * G1[ne + a];
+            }
+            vlbe__ale_ld_gtb(2, ne, G1, W, s * f[0], Ke);
+        } else if (m3) {
+            /* bending: a = (M x r')/|r'|^2, K += a . d^2 r'/dq^2 + G1^T da/dr' G1,
+               da/dr' = [M x]/|r'|^2 - 2 a r'^T/|r'|^2 */
+            vlbe_real av[3], A3[9], bm = VLBE_R(0.0), bs[3];
+            vlbe_v3_cross(f, r1, av);
+            for (c = 0; c < 3; ++c) av[c] /= rho2;
+            A3[0] = A3[4] = A3[8] = VLBE_R(0.0);
+            A3[1] = -f[2] / rho2;
+            A3[2] = f[1] / rho2;
+            A3[3] = f[2] / rho2;
+            A3[5] = -f[0] / rho2;
+            A3[6] = -f[1] / rho2;
+            A3[7] = f[0] / rho2;
+            for (c = 0; c < 3; ++c)
+                for (j = 0; j < 3; ++j) A3[c * 3 + j] -= VLBE_R(2.0) * av[c] * r1[j] / rho2;
+            vlbe__ale_ld_hess(d, nb, &b, 1, qe, av, s, Ke);
+            for (c = 0; c < 3; ++c)
+                for (a = 0; a < ne; ++a)
+                    W[c * ne + a] = A3[c * 3] * G1[a] + A3[c * 3 + 1] * G1[ne + a] +
+                                    A3[c * 3 + 2] * G1[2 * ne + a];
+            vlbe__ale_ld_gtb(3, ne, G1, W, s, Ke);
+            if (ch->spin) { /* axial part bm = M . r'/|r'| on theta (eq. 46) */
+                bm = vlbe_v3_dot(f, r1) / rho;
+                for (c = 0; c < 3; ++c) bs[c] = f[c] / rho - bm * r1[c] / rho2;
+                vlbe__ale_ld_spin(d, nb, &b, qe, W, bm, s, Ke); /* W: dtheta/dq */
+                for (a = 0; a < ne; ++a)
+                    W[ne + a] = bs[0] * G1[a] + bs[1] * G1[ne + a] + bs[2] * G1[2 * ne + a];
+                vlbe__ale_ld_gtb(1, ne, W, W + ne, s, Ke);
+            }
+        } else {
+            vlbe__ale_ld_spin(d, nb, &b, qe, Gu, f[0], s, Ke);
+        }
+    }
+    if (De) {
+        for (a = 0; a < ne * ne; ++a) De[a] = VLBE_R(0.0);
+        if (ld->fun) { /* df/drd dr/dv: rd = N v + r' p' */
+            for (c = 0; c < nc; ++c)
+                for (a = 0; a < ne; ++a) {
+                    vlbe_real x = VLBE_R(0.0);
+                    for (j = 0; j < d; ++j) x += dfv[c * d + j] * Gr[j * ne + a];
+                    W[c * ne + a] = x;
+                }
+            vlbe__ale_ld_gtb(nc, ne, G, W, s, De);
+        }
+    }
+    if (Ke && ld->fun) { /* df/dr dr/dq + df/drd drd/dq */
+        vlbe_real Grd[3 * VLBE_ALE3_NQ];
+        for (c = 0; c < d; ++c) {
+            for (a = 0; a < ne; ++a) Grd[c * ne + a] = move ? pp[1] * G1[c * ne + a] : VLBE_R(0.0);
+            for (j = 0; j < 4; ++j) { /* d(N v)/dq: N depends on p1, p2, and on e through dr/dp_k */
+                const int o = vlbe__ale_lso(d, nb, j) + c;
+                for (k = 0; k < 2; ++k) {
+                    const int pk = nb * k + nb - 1;
+                    Grd[c * ne + o] += b.h[0][1 + k][j] * ve[pk];
+                    Grd[c * ne + pk] += b.h[0][1 + k][j] * ve[o];
+                    for (l = 0; l < 2; ++l)
+                        Grd[c * ne + nb * l + nb - 1] += b.h[0][dd[k][l]][j] * qe[o] * ve[pk];
+                }
+            }
+        }
+        for (c = 0; c < nc; ++c)
+            for (a = 0; a < ne; ++a) {
+                vlbe_real x = VLBE_R(0.0);
+                for (j = 0; j < d; ++j)
+                    x += dfr[c * d + j] * Gr[j * ne + a] + dfv[c * d + j] * Grd[j * ne + a];
+                W[c * ne + a] = x;
+            }
+        vlbe__ale_ld_gtb(nc, ne, G, W, s, Ke);
+    }
+    return VLBE_OK;
+}
+
+/* records a failure of point load k (element e, -1: none) */
+static inline int vlbe__ale_load_fail(vlbe_ale_chain *ch, vlbe_status st, int e, int k)
+{
+    const int rc = vlbe__ale_fail(ch, st, e);
+    ch->err_load = k;
+    return rc;
+}
+
+/* Checks every point load before anything is written: its data, a finite
+   load factor, its place on the chain at (q, t).  0 or the callback's
+   failure value. */
+static inline int vlbe__ale_loads_check(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q)
+{
+    int k, e;
+    vlbe_real pp[2];
+    vlbe_status st;
+    if (!isfinite(ch->load_factor)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
+    if (ch->nloads < 0 || (ch->nloads > 0 && !ch->loads)) return vlbe__ale_fail(ch, VLBE_EARG, -1);
+    for (k = 0; k < ch->nloads; ++k)
+        if ((st = vlbe__ale_load_ok(ch, &ch->loads[k])) != VLBE_OK ||
+            (st = vlbe__ale_load_at(ch, &ch->loads[k], t, q, pp, &e)) != VLBE_OK)
+            return vlbe__ale_load_fail(ch, st, -1, k);
+    return 0;
+}
+
 /* Q and/or K, D (the chain's matrices: n x n, or band arrays; any of the three
    may be NULL) */
 static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
@@ -4871,6 +5330,7 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
     VLBE_ASSERT(ch != NULL && q != NULL && v != NULL);
     ne = vlbe__ale_ne(ch);
     if ((rc = vlbe__ale_in_check(ch, q, v, NULL)) != 0) return rc;
+    if (ch->nloads && (rc = vlbe__ale_loads_check(ch, t, q)) != 0) return rc;
     if (Q)
         for (i = 0; i < ch->n; ++i) Q[i] = VLBE_R(0.0);
     if (K) vlbe__ale_zero_mat(ch, K);
@@ -4897,11 +5357,27 @@ static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const 
         if (K) vlbe__ale_scatter(ch, ne, idx, Ke, K);
         if (D) vlbe__ale_scatter(ch, ne, idx, De, D);
     }
+    for (k = 0; k < ch->nloads; ++k) { /* point loads, on their elements */
+        vlbe_real pp[2];
+        if ((st = vlbe__ale_load_at(ch, &ch->loads[k], t, q, pp, &e)) != VLBE_OK)
+            return vlbe__ale_load_fail(ch, st, -1, k);
+        if (e < 0) continue; /* outside, and allowed to be */
+        if ((st = vlbe__ale_gather(ch, e, t, q, v, qe, ve, idx, &md)) != VLBE_OK ||
+            (st = vlbe__ale_load_elem(ch, &ch->loads[k], e, t, pp, qe, ve, Qe, K ? Ke : NULL,
+                                      D ? De : NULL)) != VLBE_OK)
+            return vlbe__ale_load_fail(ch, st, e, k);
+        if (Q)
+            for (i = 0; i < ne; ++i)
+                if (idx[i] >= 0) Q[idx[i]] += Qe[i];
+        if (K) vlbe__ale_scatter(ch, ne, idx, Ke, K);
+        if (D) vlbe__ale_scatter(ch, ne, idx, De, D);
+    }
     if ((K && !vlbe__ale_band_finite(ch, K)) || (D && !vlbe__ale_band_finite(ch, D)))
         return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
     if (Q) {
         for (i = 0; i < ch->nn; ++i)
-            for (k = 0; k < ch->d; ++k) Q[ch->node[i].ofs + k] += ch->node[i].mass * ch->g[k];
+            for (k = 0; k < ch->d; ++k)
+                Q[ch->node[i].ofs + k] += ch->node[i].mass * ch->g[k] * ch->load_factor;
         if (!vlbe_all_finite(Q, ch->n)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
     }
     return 0;

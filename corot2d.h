@@ -137,7 +137,8 @@ CONVENTIONS
    Stack (float, Cortex-M4F, gcc -O2, tests/m4/stack.awk; double about
    twice): vlbe_cr2d_force, _force_ff and _trans_force with K and D at
    most 1944 B, the other element calls at most 1.1 kB; the beam
-   callbacks up to 2.4 kB (force with the element views).
+   callbacks up to 3.3 kB (force with the element views and the loads'
+   frames).
 
 API
    vlbe_status vlbe_cr2d_elem_init(el, mat, X1, X2, flags)   element (geometry, material)
@@ -157,6 +158,9 @@ API
    vlbe_status vlbe_cr2d_beam_init(b, el, ne, fix, nfix)     n = 3 (ne + 1), m = nfix
    vlbe_status vlbe_cr2d_beam_band(b, order, order_cap)      banded callbacks (order: n + m
                                                              of the caller) or dense (NULL)
+   vlbe_status vlbe_cr2d_beam_loads(b, loads, n)             point loads between the nodes
+                                                             (vlbe_cr2d_load); b->dist, dist_e:
+                                                             distributed dead load
    void vlbe_cr2d_fix_eval(f, t, g3)                         g, g', g'' of a prescribed coordinate
    int vlbe_cr2d_beam_mass / _force / _force_jac / _mass_jac / _constr / _constr_jac
        / _constr_acc (user = beam, ...)                      vlbe_dae callbacks
@@ -1377,7 +1381,23 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
    q[3 i .. 3 i + 2] = (u, v, phi) of node i, n = 3 (ne + 1).  Constant nodal
    loads P (n, scaled by `load`) and prescribed coordinates (holonomic,
    rheonomic constraints q[dof] = g(t), m = nfix) complete the vlbe_dae
-   problem; the callbacks below take the beam as `user`.  A callback that
+   problem; the callbacks below take the beam as `user` (b->user is the
+   caller's own pointer, which the beam never reads).  Loads between the
+   nodes: point loads (vlbe_cr2d_load, vlbe_cr2d_beam_loads) and a dead
+   load per unit reference length (dist, plus dist_e per element) with
+   consistent nodal forces and moments Q = int (dr/dq)^T w dx over the
+   element's interpolation (for small rotations q L/2 and q L^2/12 at the
+   nodes) and their stiffness; `load` scales P, dist, dist_e and the point
+   loads (load stepping with vlbe_dae_static).  Between calls a caller may
+   change load, P, dist, dist_e and the point loads (their array, or
+   another through vlbe_cr2d_beam_loads): the callbacks read them at every
+   call.  The force
+   callbacks check the loads before they write anything (a bad kind or
+   outside flag, a load on the transition element or a LINEAR element in a
+   floating frame: VLBE_EARG, -1; NaN/Inf in load, dist, dist_e, a law or a
+   constant value: VLBE_ENONFINITE, 1; s(t) outside the beam: VLBE_EBOUND,
+   -1), with the load's index in err_load (-1: the distributed load, or no
+   load).  The beam's energies have no load potential.  A callback that
    fails returns 1 for VLBE_ELENGTH, VLBE_ENONFINITE, VLBE_EBOUND and
    VLBE_ESINGULAR (the point lies outside the model's domain, e.g. a
    Newton iterate moved a node of the transition element across the
@@ -1424,6 +1444,46 @@ typedef struct vlbe_cr2d_fix {
     void *ctx;
 } vlbe_cr2d_fix;
 
+/* A point load on a beam (vlbe_cr2d_beam_loads: the caller's array, kept
+   by pointer) at the material point s(t) = s[0] + s[1] t + s[2] t^2/2, s
+   the reference arc length from node 0 along the elements (element e
+   spans the sum of the earlier lengths L plus [0, L_e]; at a node shared
+   by two elements the left one): fixed (s[1] = s[2] = 0) or moving (a
+   vehicle crossing a bridge).  Inside element e, at xi = (s - s_e)/L_e,
+   it follows the element's interpolation (eqs. 7-9 of [H]): position
+   r(xi) = x1 + xi (x2 - x1) + L (N2 theta1 + N4 theta2) e2 (N2 = xi (1 -
+   xi)^2, N4 = xi^2 (xi - 1), the local deflection in the current frame e1,
+   e2 of the chord), section rotation psi(xi) = beta + N2' theta1 + N4'
+   theta2 (beta the chord angle; psi = a0 + phi_j at the nodes).
+     VLBE_CR2D_LOAD_FORCE   force f[0..1], global axes: Q = (dr/dq)^T f,
+                            K = f . d^2 r/dq^2 (the frame turns with the
+                            nodes: a load stiffness);
+     VLBE_CR2D_LOAD_MOMENT  moment f[0] about z: Q = f0 dpsi/dq, K = f0
+                            d^2 psi/dq^2.
+   At a node both are the nodal load of P (same Q, K = 0 there: r and psi
+   of a node are linear in q).  LINEAR elements (without a floating frame)
+   use the linearised interpolation (reference frame; Q constant, K = 0);
+   the transition element and LINEAR elements in a floating frame take no
+   loads between their nodes (VLBE_EARG).  Value: f, or fun(user, t, r,
+   rd, f, dfr, dfv) of the point's position r and velocity rd = (dr/dq) v
+   + (dr/dxi) xi' (2 each), writing f (2 for a force, 1 for a moment),
+   returning 0 (else VLBE_ECALLBACK); dfr, dfv (nc x 2) are NULL in the
+   force call and zeroed in the Jacobian call, where fun may write df/dr,
+   df/drd (K and D then carry them).  Scaled by the beam's `load` factor.
+   outside = 0: s(t) outside [0, sum L] fails with VLBE_EBOUND (-1: the
+   range does not depend on the state); 1: the load is absent there. */
+#define VLBE_CR2D_LOAD_FORCE 1
+#define VLBE_CR2D_LOAD_MOMENT 2
+typedef struct vlbe_cr2d_load {
+    int kind;        /* VLBE_CR2D_LOAD_FORCE / _MOMENT                         */
+    int outside;     /* 0: outside the beam is an error; 1: no load there       */
+    vlbe_real s[3];  /* material coordinate s(t) = s[0] + s[1] t + s[2] t^2/2    */
+    vlbe_real f[3];  /* constant value (force f[0..1], moment f[0])             */
+    int (*fun)(void *user, vlbe_real t, const vlbe_real *r, const vlbe_real *rd,
+               vlbe_real *f, vlbe_real *dfr, vlbe_real *dfv);
+    void *user;      /* fun's own pointer                                      */
+} vlbe_cr2d_load;
+
 typedef struct vlbe_cr2d_beam {
     const vlbe_cr2d_elem *el; /* ne elements                              */
     int ne, n;                /* elements, coordinates 3 (ne + 1)         */
@@ -1446,11 +1506,22 @@ typedef struct vlbe_cr2d_beam {
     int order_cap;            /* length of order                          */
     int kl, ku;               /* half-bandwidths of the banded mode       */
     int band_m_;              /* private: the nfix order was made for     */
+    /* loads between the nodes (all scaled by `load`, as P): */
+    vlbe_real dist[2];        /* distributed dead load per unit reference
+                                 length, global axes (gravity: rhoA g)     */
+    const vlbe_real *dist_e;  /* per element, added to dist (2 ne; NULL)  */
+    const vlbe_cr2d_load *loads; /* point loads (vlbe_cr2d_beam_loads)    */
+    int nloads;
+    int err_load;             /* point load of the last failure (-1: none
+                                 or the distributed load's element)        */
+    void *user;               /* the caller's own data (init: NULL); the
+                                 callbacks' user stays the beam             */
 } vlbe_cr2d_beam;
 
 VLBE_API vlbe_status vlbe_cr2d_beam_init(vlbe_cr2d_beam *b, const vlbe_cr2d_elem *el, int ne,
                                          const vlbe_cr2d_fix *fix, int nfix);
 VLBE_API vlbe_status vlbe_cr2d_beam_band(vlbe_cr2d_beam *b, int *order, int order_cap);
+VLBE_API vlbe_status vlbe_cr2d_beam_loads(vlbe_cr2d_beam *b, const vlbe_cr2d_load *loads, int n);
 VLBE_API void vlbe_cr2d_fix_eval(const vlbe_cr2d_fix *f, vlbe_real t, vlbe_real *g3);
 VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
                                  vlbe_real *M);
@@ -1517,6 +1588,12 @@ VLBE_API vlbe_status vlbe_cr2d_beam_init(vlbe_cr2d_beam *b, const vlbe_cr2d_elem
     b->order_cap = 0;
     b->kl = b->ku = 0;
     b->band_m_ = 0;
+    b->dist[0] = b->dist[1] = VLBE_R(0.0);
+    b->dist_e = NULL;
+    b->loads = NULL;
+    b->nloads = 0;
+    b->err_load = -1;
+    b->user = NULL;
     return VLBE_OK;
 }
 
@@ -1625,6 +1702,7 @@ static inline int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
 {
     b->err = st;
     b->err_elem = e;
+    b->err_load = -1;
     return (st == VLBE_ELENGTH || st == VLBE_ENONFINITE || st == VLBE_EBOUND ||
             st == VLBE_ESINGULAR)
                ? 1
@@ -1746,6 +1824,409 @@ VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, co
     return 0;
 }
 
+/* -- loads between the nodes: point loads (vlbe_cr2d_load), distributed
+   dead load ------------------------------------------------------------ */
+/* The frame of element e at q for its loads (see vlbe_cr2d_load):
+   d = x2 - x1, e1, e2, the rotations theta1, theta2, db = dbeta/dd and the
+   Hessian A = d^2 beta/dd^2 (xx, xy, yy); LINEAR elements: the reference
+   frame, beta = a0 + e2.(u2 - u1)/L to first order, A = 0. */
+typedef struct vlbe__cr2d_lf {
+    vlbe_real L, e1[2], e2[2], d[2], th[2], db[2], A[3];
+    int lin;
+} vlbe__cr2d_lf;
+
+static inline vlbe_status vlbe__cr2d_lframe(const vlbe_cr2d_elem *el, unsigned mode,
+                                            const vlbe_real *q, vlbe__cr2d_lf *f)
+{
+    int j;
+    f->L = el->L;
+    f->lin = (mode & VLBE_CR2D_LINEAR) != 0;
+    f->d[0] = el->X[2] - el->X[0] + q[3] - q[0];
+    f->d[1] = el->X[3] - el->X[1] + q[4] - q[1];
+    if (f->lin) {
+        const vlbe_real db = (-el->s0 * (q[3] - q[0]) + el->c0 * (q[4] - q[1])) / el->L;
+        f->e1[0] = el->c0;
+        f->e1[1] = el->s0;
+        f->th[0] = q[2] - db;
+        f->th[1] = q[5] - db;
+        f->A[0] = f->A[1] = f->A[2] = VLBE_R(0.0);
+    } else {
+        const vlbe_real x = f->d[0], y = f->d[1], l2 = x * x + y * y, l = vlbe_sqrt(l2);
+        vlbe_real i4;
+        if (!(l > VLBE_R(1e-6) * el->L) || !isfinite(l)) return VLBE_ELENGTH;
+        i4 = VLBE_R(1.0) / (l2 * l2);
+        f->e1[0] = x / l;
+        f->e1[1] = y / l;
+        for (j = 0; j < 2; ++j) { /* wrapped: the angle of a0 + phi_j against e1 */
+            const vlbe_real c = vlbe_cos(el->a0 + q[3 * j + 2]);
+            const vlbe_real s = vlbe_sin(el->a0 + q[3 * j + 2]);
+            f->th[j] = vlbe_atan2(f->e1[0] * s - f->e1[1] * c, f->e1[0] * c + f->e1[1] * s);
+        }
+        f->A[0] = VLBE_R(2.0) * x * y * i4;
+        f->A[1] = (y * y - x * x) * i4;
+        f->A[2] = -f->A[0];
+    }
+    f->e2[0] = -f->e1[1];
+    f->e2[1] = f->e1[0];
+    { /* dbeta/dd = e2 / l (LINEAR: e2 / L) */
+        const vlbe_real l = f->lin ? el->L : vlbe_sqrt(f->d[0] * f->d[0] + f->d[1] * f->d[1]);
+        f->db[0] = f->e2[0] / l;
+        f->db[1] = f->e2[1] / l;
+    }
+    return VLBE_OK;
+}
+
+/* adds H_dd (2x2, symmetric) and H_dphi_j (2 x 2: column j) of a function of
+   (x1, d, phi1, phi2) to the 6x6 K in q (d = u2 - u1 + const) */
+static inline void vlbe__cr2d_lhess(const vlbe_real *Hdd, const vlbe_real *Hdp, vlbe_real *K)
+{
+    int a, c, j;
+    for (a = 0; a < 2; ++a) {
+        for (c = 0; c < 2; ++c) {
+            const vlbe_real h = Hdd[a * 2 + c];
+            K[a * 6 + c] += h;
+            K[a * 6 + 3 + c] -= h;
+            K[(3 + a) * 6 + c] -= h;
+            K[(3 + a) * 6 + 3 + c] += h;
+        }
+        for (j = 0; j < 2; ++j) {
+            const vlbe_real h = Hdp[a * 2 + j];
+            K[a * 6 + 3 * j + 2] -= h;
+            K[(3 * j + 2) * 6 + a] -= h;
+            K[(3 + a) * 6 + 3 * j + 2] += h;
+            K[(3 * j + 2) * 6 + 3 + a] += h;
+        }
+    }
+}
+
+/* The field R = a x1 + c d + L (n2 theta1 + n4 theta2) e2 of the element's
+   interpolation (position at xi: a = 1, c = xi, n2 = xi (1 - xi)^2, n4 =
+   xi^2 (xi - 1), eqs. 8-9 of [H]; its xi-derivative: 0, 1, dn2, dn4):
+   G += s d(w.R)/dq (6) and, with K, K += s d^2(w.R)/dq^2.  w.R =
+   a w.x1 + c w.d + Phi(beta, phi), Phi = L W (w.e2), W = n2 theta1 + n4
+   theta2, theta_j = a0 + phi_j - beta, de2/dbeta = -e1, de1/dbeta = e2. */
+static inline void vlbe__cr2d_lfield(const vlbe__cr2d_lf *f, vlbe_real a, vlbe_real c,
+                                     vlbe_real n2, vlbe_real n4, const vlbe_real *w, vlbe_real s,
+                                     vlbe_real *G, vlbe_real *K)
+{
+    const vlbe_real L = f->L, W = n2 * f->th[0] + n4 * f->th[1];
+    const vlbe_real we1 = f->lin ? VLBE_R(0.0) : w[0] * f->e1[0] + w[1] * f->e1[1];
+    const vlbe_real we2 = w[0] * f->e2[0] + w[1] * f->e2[1];
+    const vlbe_real Pb = -L * (n2 + n4) * we2 - L * W * we1; /* dPhi/dbeta */
+    int k;
+    for (k = 0; k < 2; ++k) {
+        const vlbe_real gd = c * w[k] + Pb * f->db[k];
+        G[k] += s * (a * w[k] - gd);
+        G[3 + k] += s * gd;
+    }
+    G[2] += s * L * n2 * we2;
+    G[5] += s * L * n4 * we2;
+    if (K && !f->lin) {
+        const vlbe_real Pbb = VLBE_R(2.0) * L * (n2 + n4) * we1 - L * W * we2;
+        const vlbe_real Pbp[2] = {-L * n2 * we1, -L * n4 * we1};
+        vlbe_real Hdd[4], Hdp[4];
+        Hdd[0] = s * (Pbb * f->db[0] * f->db[0] + Pb * f->A[0]);
+        Hdd[1] = Hdd[2] = s * (Pbb * f->db[0] * f->db[1] + Pb * f->A[1]);
+        Hdd[3] = s * (Pbb * f->db[1] * f->db[1] + Pb * f->A[2]);
+        for (k = 0; k < 2; ++k) {
+            Hdp[k * 2 + 0] = s * Pbp[0] * f->db[k];
+            Hdp[k * 2 + 1] = s * Pbp[1] * f->db[k];
+        }
+        vlbe__cr2d_lhess(Hdd, Hdp, K);
+    }
+}
+
+/* The rotation of the section at xi, psi = beta + dn2 theta1 + dn4 theta2
+   (slope of eqs. 8-9; psi = a0 + phi_j at the nodes), times a moment m:
+   G += s m dpsi/dq, K += s m d^2 psi/dq^2 (through beta(d) only) */
+static inline void vlbe__cr2d_lrot(const vlbe__cr2d_lf *f, vlbe_real dn2, vlbe_real dn4,
+                                   vlbe_real m, vlbe_real s, vlbe_real *G, vlbe_real *K)
+{
+    const vlbe_real pb = VLBE_R(1.0) - dn2 - dn4;
+    int k;
+    for (k = 0; k < 2; ++k) {
+        G[k] -= s * m * pb * f->db[k];
+        G[3 + k] += s * m * pb * f->db[k];
+    }
+    G[2] += s * m * dn2;
+    G[5] += s * m * dn4;
+    if (K && !f->lin) {
+        const vlbe_real Hdd[4] = {s * m * pb * f->A[0], s * m * pb * f->A[1], s * m * pb * f->A[1],
+                                  s * m * pb * f->A[2]};
+        const vlbe_real Hdp[4] = {0, 0, 0, 0};
+        vlbe__cr2d_lhess(Hdd, Hdp, K);
+    }
+}
+
+/* Hermite numbers at xi: n2, n4 and their xi-derivatives */
+static inline void vlbe__cr2d_lherm(vlbe_real xi, vlbe_real *h)
+{
+    const vlbe_real x1 = VLBE_R(1.0) - xi;
+    h[0] = xi * x1 * x1;
+    h[1] = -xi * xi * x1;
+    h[2] = x1 * (VLBE_R(1.0) - VLBE_R(3.0) * xi);
+    h[3] = xi * (VLBE_R(3.0) * xi - VLBE_R(2.0));
+}
+
+/* a load's own data: kind, flag, law, constant value */
+static inline vlbe_status vlbe__cr2d_load_ok(const vlbe_cr2d_load *ld)
+{
+    if (ld->kind != VLBE_CR2D_LOAD_FORCE && ld->kind != VLBE_CR2D_LOAD_MOMENT) return VLBE_EARG;
+    if (ld->outside != 0 && ld->outside != 1) return VLBE_EARG;
+    if (!vlbe_all_finite(ld->s, 3) || (!ld->fun && !vlbe_all_finite(ld->f, 3)))
+        return VLBE_ENONFINITE;
+    return VLBE_OK;
+}
+
+/* Gives the beam its point loads (the caller's array of n, kept by
+   pointer; n = 0: none).  Each is checked: kind, outside (VLBE_EARG), NaN/
+   Inf in s or, without fun, in f (VLBE_ENONFINITE); n < 0 or a NULL array
+   with n > 0: VLBE_EARG.  On failure b is unchanged. */
+VLBE_API vlbe_status vlbe_cr2d_beam_loads(vlbe_cr2d_beam *b, const vlbe_cr2d_load *loads, int n)
+{
+    int k;
+    vlbe_status st;
+    VLBE_ASSERT(b != NULL);
+    if (n < 0 || (n > 0 && loads == NULL)) return VLBE_EARG;
+    for (k = 0; k < n; ++k)
+        if ((st = vlbe__cr2d_load_ok(&loads[k])) != VLBE_OK) return st;
+    b->loads = n > 0 ? loads : NULL;
+    b->nloads = n;
+    return VLBE_OK;
+}
+
+/* s(t), s'(t) of load ld, its element *e and xi there (*e = -1: an
+   `outside` load outside [0, total reference length]) */
+static inline vlbe_status vlbe__cr2d_load_at(const vlbe_cr2d_beam *b, const vlbe_cr2d_load *ld,
+                                             vlbe_real t, vlbe_real *ss, int *e, vlbe_real *xi)
+{
+    vlbe_real a = VLBE_R(0.0);
+    int k;
+    ss[0] = ld->s[0] + (ld->s[1] + VLBE_R(0.5) * ld->s[2] * t) * t;
+    ss[1] = ld->s[1] + ld->s[2] * t;
+    if (!vlbe_all_finite(ss, 2)) return VLBE_ENONFINITE;
+    for (k = 0; k < b->ne; ++k) {
+        const vlbe_real c = a + b->el[k].L;
+        if (ss[0] >= a && ss[0] <= c) {
+            *e = k;
+            *xi = (ss[0] - a) / b->el[k].L;
+            if (*xi > VLBE_R(1.0)) *xi = VLBE_R(1.0);
+            return VLBE_OK;
+        }
+        a = c;
+    }
+    *e = -1;
+    return ld->outside ? VLBE_OK : VLBE_EBOUND;
+}
+
+/* element e's mode, and whether loads between its nodes are available
+   (not the transition element, not a LINEAR element in a floating frame) */
+static inline vlbe_status vlbe__cr2d_lmode(const vlbe_cr2d_beam *b, int e, unsigned *mode)
+{
+    *mode = b->mode | b->el[e].flags;
+    if (vlbe__cr2d_jt(b, e) || (b->frame && (*mode & VLBE_CR2D_LINEAR))) return VLBE_EARG;
+    return VLBE_OK;
+}
+
+/* Point load ld on element e at xi moving with xi' (xd): Qe (6) and, when
+   given, Ke, De (6x6), all written whole, times the load factor.  Force:
+   Q = (dr/dq)^T f, K = f . d^2 r/dq^2; moment: Q = m dpsi/dq, K = m
+   d^2 psi/dq^2; a callback's derivatives add G^T (df/dr dr/dq + df/drd
+   drd/dq) to K and G^T df/drd dr/dq to D, rd = (dr/dq) v + (dr/dxi) xi'. */
+static inline vlbe_status vlbe__cr2d_load_elem(const vlbe_cr2d_beam *b, const vlbe_cr2d_load *ld,
+                                               int e, vlbe_real t, vlbe_real xi, vlbe_real xd,
+                                               const vlbe_real *q, const vlbe_real *v,
+                                               vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
+{
+    static const vlbe_real ex[2][2] = {{1, 0}, {0, 1}};
+    const int mom = ld->kind == VLBE_CR2D_LOAD_MOMENT, nc = mom ? 1 : 2;
+    const int jac = Ke != NULL || De != NULL;
+    const vlbe_real s = b->load;
+    vlbe__cr2d_lf fr;
+    vlbe_real h[4], f[2] = {0, 0}, dfr[4] = {0, 0, 0, 0}, dfv[4] = {0, 0, 0, 0};
+    vlbe_real Gr[12], G[12], W[12];
+    unsigned mode;
+    vlbe_status st;
+    int a, c, j;
+    if ((st = vlbe__cr2d_lmode(b, e, &mode)) != VLBE_OK) return st;
+    if ((st = vlbe__cr2d_lframe(&b->el[e], mode, q, &fr)) != VLBE_OK) return st;
+    vlbe__cr2d_lherm(xi, h);
+    for (a = 0; a < 12; ++a) Gr[a] = G[a] = VLBE_R(0.0);
+    for (c = 0; c < 2; ++c) vlbe__cr2d_lfield(&fr, 1, xi, h[0], h[1], ex[c], 1, Gr + 6 * c, NULL);
+    if (ld->fun) { /* position and velocity of the point */
+        vlbe_real r[2], rd[2];
+        const vlbe_real Wv = h[0] * fr.th[0] + h[1] * fr.th[1];
+        const vlbe_real Wx = h[2] * fr.th[0] + h[3] * fr.th[1];
+        for (c = 0; c < 2; ++c) {
+            r[c] = b->el[e].X[c] + q[c] + xi * fr.d[c] + fr.L * Wv * fr.e2[c];
+            rd[c] = (fr.d[c] + fr.L * Wx * fr.e2[c]) * xd;
+            for (a = 0; a < 6; ++a) rd[c] += Gr[6 * c + a] * v[a];
+        }
+        if (ld->fun(ld->user, t, r, rd, f, jac ? dfr : NULL, jac ? dfv : NULL))
+            return VLBE_ECALLBACK;
+        if (!vlbe_all_finite(f, nc) || !vlbe_all_finite(dfr, 4) || !vlbe_all_finite(dfv, 4))
+            return VLBE_ENONFINITE;
+    } else {
+        for (c = 0; c < nc; ++c) f[c] = ld->f[c];
+    }
+    if (Ke)
+        for (a = 0; a < 36; ++a) Ke[a] = VLBE_R(0.0);
+    if (De)
+        for (a = 0; a < 36; ++a) De[a] = VLBE_R(0.0);
+    for (a = 0; a < 6; ++a) Qe[a] = VLBE_R(0.0);
+    if (mom) {
+        vlbe__cr2d_lrot(&fr, h[2], h[3], f[0], s, Qe, Ke);
+        vlbe__cr2d_lrot(&fr, h[2], h[3], 1, 1, G, NULL);
+    } else {
+        vlbe__cr2d_lfield(&fr, 1, xi, h[0], h[1], f, s, Qe, Ke);
+        for (a = 0; a < 12; ++a) G[a] = Gr[a];
+    }
+    if (!jac || !ld->fun) return VLBE_OK;
+    if (De) { /* df/drd dr/dv */
+        for (c = 0; c < nc; ++c)
+            for (a = 0; a < 6; ++a) {
+                vlbe_real x = VLBE_R(0.0);
+                for (j = 0; j < 2; ++j) x += dfv[c * 2 + j] * Gr[6 * j + a];
+                W[6 * c + a] = x;
+            }
+        for (c = 0; c < nc; ++c)
+            for (a = 0; a < 6; ++a)
+                for (j = 0; j < 6; ++j) De[a * 6 + j] += s * G[6 * c + a] * W[6 * c + j];
+    }
+    if (Ke) { /* df/dr dr/dq + df/drd drd/dq, drd/dq = d^2 r/dq^2 v + xi' d(dr/dxi)/dq */
+        vlbe_real Grd[12], Hc[36];
+        for (a = 0; a < 12; ++a) W[a] = VLBE_R(0.0);
+        for (c = 0; c < 2; ++c) {
+            for (a = 0; a < 36; ++a) Hc[a] = VLBE_R(0.0);
+            for (a = 0; a < 6; ++a) Grd[6 * c + a] = VLBE_R(0.0);
+            vlbe__cr2d_lfield(&fr, 1, xi, h[0], h[1], ex[c], 1, W, Hc); /* W: scratch */
+            for (a = 0; a < 6; ++a)
+                for (j = 0; j < 6; ++j) Grd[6 * c + a] += Hc[a * 6 + j] * v[j];
+            vlbe__cr2d_lfield(&fr, 0, 1, h[2], h[3], ex[c], xd, Grd + 6 * c, NULL);
+        }
+        for (c = 0; c < nc; ++c)
+            for (a = 0; a < 6; ++a) {
+                vlbe_real x = VLBE_R(0.0);
+                for (j = 0; j < 2; ++j)
+                    x += dfr[c * 2 + j] * Gr[6 * j + a] + dfv[c * 2 + j] * Grd[6 * j + a];
+                W[6 * c + a] = x;
+            }
+        for (c = 0; c < nc; ++c)
+            for (a = 0; a < 6; ++a)
+                for (j = 0; j < 6; ++j) Ke[a * 6 + j] += s * G[6 * c + a] * W[6 * c + j];
+    }
+    return VLBE_OK;
+}
+
+/* The distributed dead load w (global, per unit reference length) on
+   element e: Qe = load int_0^L (dr/dq)^T w dx, Ke its q-derivative (3-point
+   Gauss rule: the integrands are cubic in xi, exact); Qe, Ke written whole
+   (Ke may be NULL) */
+static inline vlbe_status vlbe__cr2d_dist_elem(const vlbe_cr2d_beam *b, int e, const vlbe_real *w,
+                                               const vlbe_real *q, vlbe_real *Qe, vlbe_real *Ke)
+{
+    const vlbe_real *x, *wg;
+    vlbe__cr2d_lf fr;
+    unsigned mode;
+    vlbe_status st;
+    int g, a;
+    if ((st = vlbe__cr2d_lmode(b, e, &mode)) != VLBE_OK) return st;
+    if ((st = vlbe__cr2d_lframe(&b->el[e], mode, q, &fr)) != VLBE_OK) return st;
+    if ((st = vlbe_gl_rule(3, &x, &wg)) != VLBE_OK) return st;
+    for (a = 0; a < 6; ++a) Qe[a] = VLBE_R(0.0);
+    if (Ke)
+        for (a = 0; a < 36; ++a) Ke[a] = VLBE_R(0.0);
+    for (g = 0; g < 3; ++g) {
+        const vlbe_real xi = VLBE_R(0.5) * (x[g] + VLBE_R(1.0));
+        vlbe_real h[4];
+        vlbe__cr2d_lherm(xi, h);
+        vlbe__cr2d_lfield(&fr, 1, xi, h[0], h[1], w, b->load * VLBE_R(0.5) * wg[g] * fr.L, Qe, Ke);
+    }
+    return VLBE_OK;
+}
+
+/* the distributed load of element e into w (beam-wide dist plus dist_e);
+   0 when it is zero */
+static inline int vlbe__cr2d_dist_of(const vlbe_cr2d_beam *b, int e, vlbe_real *w)
+{
+    w[0] = b->dist[0] + (b->dist_e ? b->dist_e[2 * e] : VLBE_R(0.0));
+    w[1] = b->dist[1] + (b->dist_e ? b->dist_e[2 * e + 1] : VLBE_R(0.0));
+    return w[0] != VLBE_R(0.0) || w[1] != VLBE_R(0.0);
+}
+
+/* records a failure of point load k (-1: the distributed load): as
+   vlbe__cr2d_fail, but a load outside the beam is fatal (-1) -- the range
+   does not depend on the state */
+static inline int vlbe__cr2d_load_fail(vlbe_cr2d_beam *b, vlbe_status st, int e, int k)
+{
+    const int rc = vlbe__cr2d_fail(b, st, e);
+    b->err_load = k;
+    return st == VLBE_EBOUND ? -1 : rc;
+}
+
+/* Checks the loads before anything is written: factor, distributed
+   values, each point load's data and place.  0 or the callback's value. */
+static inline int vlbe__cr2d_loads_check(vlbe_cr2d_beam *b, vlbe_real t)
+{
+    vlbe_real ss[2], xi, w[2];
+    int k, e;
+    vlbe_status st;
+    if (!isfinite(b->load)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
+    if (b->nloads < 0 || (b->nloads > 0 && !b->loads)) return vlbe__cr2d_fail(b, VLBE_EARG, -1);
+    if (!vlbe_all_finite(b->dist, 2) || (b->dist_e && !vlbe_all_finite(b->dist_e, 2 * b->ne)))
+        return vlbe__cr2d_load_fail(b, VLBE_ENONFINITE, -1, -1);
+    for (e = 0; e < b->ne; ++e) {
+        unsigned md;
+        if (vlbe__cr2d_dist_of(b, e, w) && vlbe__cr2d_lmode(b, e, &md) != VLBE_OK)
+            return vlbe__cr2d_load_fail(b, VLBE_EARG, e, -1);
+    }
+    for (k = 0; k < b->nloads; ++k) {
+        unsigned md;
+        if ((st = vlbe__cr2d_load_ok(&b->loads[k])) != VLBE_OK ||
+            (st = vlbe__cr2d_load_at(b, &b->loads[k], t, ss, &e, &xi)) != VLBE_OK ||
+            (e >= 0 && (st = vlbe__cr2d_lmode(b, e, &md)) != VLBE_OK))
+            return vlbe__cr2d_load_fail(b, st, e, k);
+    }
+    return 0;
+}
+
+/* adds the loads between the nodes to Q and/or K, D (Qe, Ke, De: the
+   caller's element scratch) */
+static inline int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vlbe_real *q,
+                                        const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
+                                        vlbe_real *D, vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
+{
+    vlbe_real w[2], ss[2], xi;
+    size_t map[12];
+    vlbe_status st;
+    int e, i, k;
+    for (e = 0; e < b->ne; ++e) {
+        if (!vlbe__cr2d_dist_of(b, e, w)) continue;
+        if ((st = vlbe__cr2d_dist_elem(b, e, w, q + 3 * e, Qe, K ? Ke : NULL)) != VLBE_OK)
+            return vlbe__cr2d_load_fail(b, st, e, -1);
+        if (Q)
+            for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
+        if (K) {
+            vlbe__cr2d_map(b, e, map);
+            if (!vlbe__cr2d_scatter(map, Ke, K)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
+        }
+    }
+    for (k = 0; k < b->nloads; ++k) {
+        if ((st = vlbe__cr2d_load_at(b, &b->loads[k], t, ss, &e, &xi)) != VLBE_OK)
+            return vlbe__cr2d_load_fail(b, st, -1, k);
+        if (e < 0) continue; /* outside, and allowed to be */
+        if ((st = vlbe__cr2d_load_elem(b, &b->loads[k], e, t, xi, ss[1] / b->el[e].L, q + 3 * e,
+                                       v + 3 * e, Qe, K ? Ke : NULL, D ? De : NULL)) != VLBE_OK)
+            return vlbe__cr2d_load_fail(b, st, e, k);
+        if (Q)
+            for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
+        if (K || D) vlbe__cr2d_map(b, e, map);
+        if ((K && !vlbe__cr2d_scatter(map, Ke, K)) || (D && !vlbe__cr2d_scatter(map, De, D)))
+            return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
+    }
+    return 0;
+}
+
 static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const vlbe_real *q,
                                          const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                          vlbe_real *D)
@@ -1757,6 +2238,7 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const v
     VLBE_ASSERT(b != NULL && q != NULL && v != NULL);
     if ((K || D) && (rc = vlbe__cr2d_band_check(b)) != 0) return rc;
     if ((rc = vlbe__cr2d_in_check(b, q, v, NULL)) != 0) return rc;
+    if ((rc = vlbe__cr2d_loads_check(b, t)) != 0) return rc;
     if (Q) {
         vlbe_vec_zero(b->n, Q);
         if (b->P)
@@ -1775,6 +2257,7 @@ static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const v
         if ((K && !vlbe__cr2d_scatter(map, Ke, K)) || (D && !vlbe__cr2d_scatter(map, De, D)))
             return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
+    if ((rc = vlbe__cr2d_beam_loads(b, t, q, v, Q, K, D, Qe, Ke, De)) != 0) return rc;
     if (Q && !vlbe_all_finite(Q, b->n)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, -1);
     return 0;
 }
