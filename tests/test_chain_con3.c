@@ -45,7 +45,6 @@
 #include "../ancf_ale.h"
 #include "ale_fixtures.h"
 #include "../integrators.h"
-#include "../examples/ex_ale.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -104,7 +103,7 @@ static void c3_wire(c3 *c)
 {
     assert_int_equal(vlbe_ale_chain_layout(&c->ch), VLBE_OK);
     assert_true(c->ch.n <= N_MAX && c->ch.m <= M_MAX);
-    ex_ale_wire(&c->sys, &c->ch);
+    assert_int_equal(vlbe_ale_chain_dae(&c->ch, &c->sys), VLBE_OK);
 }
 
 /* Rodrigues in double: y = R(k, a) x, k unit */
@@ -613,7 +612,7 @@ static void test_hub_reproduction(void **state)
         assert_int_equal(vlbe_ale_chain_add(&p.ch, &ka), VLBE_OK);
     }
     assert_int_equal(vlbe_ale_chain_layout(&p.ch), VLBE_OK);
-    ex_ale_wire(&p.sys, &p.ch);
+    assert_int_equal(vlbe_ale_chain_dae(&p.ch, &p.sys), VLBE_OK);
     /* 3D with spin */
     c3_init(&s, &m3, 0u, HUB_NE + 1, 1.0 / HUB_NE);
     c3_add(&s, con_make(VLBE_ALE_CON_POS, 0, 0, 0, 0, 0, 0));

@@ -752,7 +752,7 @@ static void test_chain_static(void **state)
         memset(con, 0, sizeof con);
         con[0].type = VLBE_ALE_CON_POS;
         con[1].type = VLBE_ALE_CON_SLOPE;
-        con[1].v[0] = VLBE_R(1.0);
+        con[1].d[0] = VLBE_R(1.0);
         assert_int_equal(vlbe_ale_chain_add(&c->ch, &con[0]), VLBE_OK);
         assert_int_equal(vlbe_ale_chain_add(&c->ch, &con[1]), VLBE_OK);
         assert_int_equal(vlbe_ale_chain_layout(&c->ch), VLBE_OK);
