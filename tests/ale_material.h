@@ -1,4 +1,4 @@
-/* ale_material.h -- the O(1) planar ALE-ANCF material of the random tests,
+/* ale_material.h -- the O(1) planar and 3D ALE-ANCF materials of the random tests,
    shared by the cmocka suites (through ale_fixtures.h) and the fuzz
    harnesses (no cmocka here).
    -- part of vlbe                                  SPDX-License-Identifier: MIT
@@ -18,6 +18,25 @@ static inline vlbe_ale_mat mat_std(void)
     m.c_kap = VLBE_R(0.25);
     m.f[0] = VLBE_R(0.4);
     m.f[1] = VLBE_R(-2.1);
+    return m;
+}
+
+/* The 3D one (vlbe_ale3_mat): mat_std plus the spin inertia, the
+   torsional stiffness, its damping and an out-of-plane load. */
+static inline vlbe_ale3_mat mat3_std(void)
+{
+    vlbe_ale3_mat m;
+    m.rhoA = VLBE_R(1.3);
+    m.rhoI = VLBE_R(0.45);
+    m.EA = VLBE_R(5.0);
+    m.EJ = VLBE_R(0.7);
+    m.GI = VLBE_R(0.9);
+    m.c_eps = VLBE_R(0.15);
+    m.c_kap = VLBE_R(0.25);
+    m.c_phi = VLBE_R(0.2);
+    m.f[0] = VLBE_R(0.4);
+    m.f[1] = VLBE_R(-2.1);
+    m.f[2] = VLBE_R(0.8);
     return m;
 }
 

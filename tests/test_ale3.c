@@ -253,26 +253,6 @@ static unsigned mode_of(int k)
    layout lay (0 or VLBE_ALE3_NO_SPIN). */
 static unsigned mode_lay(int k, unsigned lay) { return mode_of((k & 15) | ((k & 16) << 1)) | lay; }
 
-/* Material of the random tests: every term O(1) so that no contribution
-   hides below the rounding of another (the planar mat_std plus the spin
-   inertia, the torsional stiffness, its damping and an out-of-plane load). */
-static vlbe_ale3_mat mat3_std(void)
-{
-    vlbe_ale3_mat m;
-    m.rhoA = VLBE_R(1.3);
-    m.rhoI = VLBE_R(0.45);
-    m.EA = VLBE_R(5.0);
-    m.EJ = VLBE_R(0.7);
-    m.GI = VLBE_R(0.9);
-    m.c_eps = VLBE_R(0.15);
-    m.c_kap = VLBE_R(0.25);
-    m.c_phi = VLBE_R(0.2);
-    m.f[0] = VLBE_R(0.4);
-    m.f[1] = VLBE_R(-2.1);
-    m.f[2] = VLBE_R(0.8);
-    return m;
-}
-
 static void elem_make(vlbe_ale3_elem *el, const vlbe_ale3_mat *m, unsigned flags, int nm, int ns)
 {
     assert_int_equal(vlbe_ale3_elem_init(el, m, flags, nm, ns), VLBE_OK);

@@ -67,24 +67,6 @@ typedef struct c3 {
     vlbe_dae sys;
 } c3;
 
-/* O(1) material, every term present */
-static vlbe_ale3_mat mat3_o1(void)
-{
-    vlbe_ale3_mat m;
-    m.rhoA = VLBE_R(1.3);
-    m.rhoI = VLBE_R(0.45);
-    m.EA = VLBE_R(5.0);
-    m.EJ = VLBE_R(0.7);
-    m.GI = VLBE_R(0.9);
-    m.c_eps = VLBE_R(0.15);
-    m.c_kap = VLBE_R(0.25);
-    m.c_phi = VLBE_R(0.2);
-    m.f[0] = VLBE_R(0.4);
-    m.f[1] = VLBE_R(-2.1);
-    m.f[2] = VLBE_R(0.8);
-    return m;
-}
-
 /* nn nodes with fixed p = Le i; the chain, no constraint yet */
 static void c3_init(c3 *c, const vlbe_ale3_mat *m, unsigned flags, int nn, double Le)
 {
@@ -165,7 +147,7 @@ static void test_basis(void **state)
         {1, 0, 0}, {0, 1, 0}, {0, 0, -1}, {1, 1e-9, 0}, {1e-9, -1, 1e-9}, {1, 2, 2},
         {-0.3, 0.5, 0.81}, {1, 1, 1}, {3e-30, 4e-30, 0}, {3e30, 0, -4e30}, {0.7, -0.7, 0.1}};
     static c3 c;
-    const vlbe_ale3_mat m = mat3_o1();
+    const vlbe_ale3_mat m = mat3_std();
     const double tol = 8.0 * EPS, k0[3] = {0.3, -0.8, 0.5};
     double worst = 0.0, wrot = 0.0;
     int k, i;
@@ -226,7 +208,7 @@ static int afun_hub(void *user, int con, vlbe_real t, vlbe_real *a3)
 static void fd_chain(c3 *c, int use_afun)
 {
     static const double e0[3] = {0.9, 0.3, -0.2}, k[3] = {0.2, 0.5, 0.8};
-    const vlbe_ale3_mat m = mat3_o1();
+    const vlbe_ale3_mat m = mat3_std();
     c3_init(c, &m, 0u, 5, 0.3);
     c->node[2].pmode = VLBE_ALE_PFREE;
     if (use_afun) c->ch.afun = afun_hub;
@@ -415,7 +397,7 @@ static int tip_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real
 static void axial_solve(c3 *c, int dir_only, double F, vlbe_real *q)
 {
     static const double dr[3] = {1.0, 2.0, 2.0};
-    vlbe_ale3_mat m = mat3_o1();
+    vlbe_ale3_mat m = mat3_std();
     vlbe_static_params par;
     vlbe_real lam[M_MAX], r0[3] = {0, 0, 0}, u[3];
     vlbe_real *w;
@@ -582,7 +564,7 @@ static void test_hub_reproduction(void **state)
     static c2 p;
     static c3 s;
     const vlbe_ale_mat m2 = mat_std();
-    vlbe_ale3_mat m3 = mat3_o1();
+    vlbe_ale3_mat m3 = mat3_std();
     const double e0[3] = {1, 0, 0}, kz[3] = {0, 0, 1}, g0 = 0.2, g2 = 3.0, h = 2e-3;
     const double tol = 64.0 * EPS, tolz = 64.0 * EPS;
     vlbe_real q2[N_MAX], q3[N_MAX], r0[3] = {0, 0, 0}, dir[3];
@@ -681,7 +663,7 @@ static void test_bad_inputs(void **state)
     static c3 c;
     static c2 p;
     snap s0;
-    const vlbe_ale3_mat m = mat3_o1();
+    const vlbe_ale3_mat m = mat3_std();
     const double z3[3] = {0, 0, 0}, e0[3] = {0.6, 0.8, 0}, k0[3] = {0, 0, 2};
     vlbe_ale_con k;
     vlbe_real q[N_MAX], Ct[M_MAX];
