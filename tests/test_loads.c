@@ -90,6 +90,37 @@
 #define RTOL (256.0 * EPSD)
 #define NMAX 40
 
+/* Central differences of a load's Q(t, q, v) in q and in v at (q0, v0), n
+   coordinates: Kf = dQ/dq, Df = dQ/dv (n x n, double), steps EPSD^(1/3)
+   max(1, |x_j|). */
+typedef void (*qload_fn)(void *ctx, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                         vlbe_real *Q);
+static void fd_qv(qload_fn f, void *ctx, vlbe_real t, const vlbe_real *q0, const vlbe_real *v0,
+                  int n, double *Kf, double *Df)
+{
+    vlbe_real q[64], v[64], Qp[64], Qm[64];
+    int i, j;
+    assert_true(n <= 64);
+    memcpy(q, q0, (size_t)n * sizeof q[0]);
+    memcpy(v, v0, (size_t)n * sizeof v[0]);
+    for (j = 0; j < n; ++j) {
+        const double hq = cbrt(EPSD) * fmax(1.0, fabs((double)q0[j]));
+        const double hv = cbrt(EPSD) * fmax(1.0, fabs((double)v0[j]));
+        q[j] = (vlbe_real)((double)q0[j] + hq);
+        f(ctx, t, q, v0, Qp);
+        q[j] = (vlbe_real)((double)q0[j] - hq);
+        f(ctx, t, q, v0, Qm);
+        q[j] = q0[j];
+        for (i = 0; i < n; ++i) Kf[i * n + j] = ((double)Qp[i] - (double)Qm[i]) / (2.0 * hq);
+        v[j] = (vlbe_real)((double)v0[j] + hv);
+        f(ctx, t, q0, v, Qp);
+        v[j] = (vlbe_real)((double)v0[j] - hv);
+        f(ctx, t, q0, v, Qm);
+        v[j] = v0[j];
+        for (i = 0; i < n; ++i) Df[i * n + j] = ((double)Qp[i] - (double)Qm[i]) / (2.0 * hv);
+    }
+}
+
 static double maxabs(int n, const vlbe_real *a)
 {
     double m = 0.0;
@@ -232,6 +263,11 @@ static void chain_Qload(tch *c, vlbe_real t, const vlbe_real *q, const vlbe_real
     c->ch.loads = ld;
     c->ch.nloads = nl;
     for (i = 0; i < c->ch.n; ++i) Q[i] -= Q0[i];
+}
+static void chain_Qload_fn(void *c, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                           vlbe_real *Q)
+{
+    chain_Qload((tch *)c, t, q, v, Q);
 }
 
 static void chain_Kload(tch *c, vlbe_real t, vlbe_real *K, vlbe_real *D)
@@ -413,27 +449,11 @@ static void test_chain_moment3(void **state)
 static void chain_jac_check(tch *c, vlbe_real t)
 {
     static vlbe_real K[NMAX * NMAX], D[NMAX * NMAX];
-    vlbe_real q[NMAX], v[NMAX], Qp[NMAX], Qm[NMAX];
+    vlbe_real Qp[NMAX];
     double Kf[NMAX * NMAX], Df[NMAX * NMAX], sc;
     const int n = c->ch.n;
-    int i, j;
     chain_Kload(c, t, K, D);
-    for (j = 0; j < n; ++j) {
-        const double hq = cbrt(EPSD) * fmax(1.0, fabs((double)c->q[j]));
-        const double hv = cbrt(EPSD) * fmax(1.0, fabs((double)c->v[j]));
-        memcpy(q, c->q, sizeof q);
-        q[j] = (vlbe_real)((double)c->q[j] + hq);
-        chain_Qload(c, t, q, c->v, Qp);
-        q[j] = (vlbe_real)((double)c->q[j] - hq);
-        chain_Qload(c, t, q, c->v, Qm);
-        for (i = 0; i < n; ++i) Kf[i * n + j] = ((double)Qp[i] - (double)Qm[i]) / (2.0 * hq);
-        memcpy(v, c->v, sizeof v);
-        v[j] = (vlbe_real)((double)c->v[j] + hv);
-        chain_Qload(c, t, c->q, v, Qp);
-        v[j] = (vlbe_real)((double)c->v[j] - hv);
-        chain_Qload(c, t, c->q, v, Qm);
-        for (i = 0; i < n; ++i) Df[i * n + j] = ((double)Qp[i] - (double)Qm[i]) / (2.0 * hv);
-    }
+    fd_qv(chain_Qload_fn, c, t, c->q, c->v, n, Kf, Df);
     assert_true(maxabs(n * n, K) > 0.01);
     assert_int_equal(chain_Q(c, t, c->q, c->v, Qp), 0);
     sc = fmax(maxabs(n, Qp), fmax(maxabs(n * n, D), maxabs(n * n, K)));
@@ -869,6 +889,11 @@ static void beam_Qload(tbeam *b, vlbe_real t, const vlbe_real *q, const vlbe_rea
     assert_int_equal(vlbe_cr2d_beam_force(&b0, t, q, v, Q0), 0);
     for (i = 0; i < b->b.n; ++i) Q[i] -= Q0[i];
 }
+static void beam_Qload_fn(void *b, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                          vlbe_real *Q)
+{
+    beam_Qload((tbeam *)b, t, q, v, Q);
+}
 
 static void test_cr2d_force_potential(void **state)
 {
@@ -907,11 +932,11 @@ static void beam_jac_check(tbeam *b, vlbe_real t)
 {
     static vlbe_real K[51 * 51], D[51 * 51], K0[51 * 51], D0[51 * 51];
     static double Kf[51 * 51], Df[51 * 51];
-    vlbe_real q[3 * 17], v[3 * 17], Qp[3 * 17], Qm[3 * 17];
+    vlbe_real Qp[3 * 17];
     vlbe_cr2d_beam b0 = b->b;
     const int n = b->b.n;
     double sc;
-    int i, j;
+    int i;
     assert_int_equal(vlbe_cr2d_beam_force_jac(&b->b, t, b->q, b->v, K, D), 0);
     b0.loads = NULL;
     b0.nloads = 0;
@@ -922,22 +947,7 @@ static void beam_jac_check(tbeam *b, vlbe_real t)
         K[i] -= K0[i];
         D[i] -= D0[i];
     }
-    for (j = 0; j < n; ++j) {
-        const double hq = cbrt(EPSD) * fmax(1.0, fabs((double)b->q[j]));
-        const double hv = cbrt(EPSD) * fmax(1.0, fabs((double)b->v[j]));
-        memcpy(q, b->q, sizeof q);
-        q[j] = (vlbe_real)((double)b->q[j] + hq);
-        beam_Qload(b, t, q, b->v, Qp);
-        q[j] = (vlbe_real)((double)b->q[j] - hq);
-        beam_Qload(b, t, q, b->v, Qm);
-        for (i = 0; i < n; ++i) Kf[i * n + j] = ((double)Qp[i] - (double)Qm[i]) / (2.0 * hq);
-        memcpy(v, b->v, sizeof v);
-        v[j] = (vlbe_real)((double)b->v[j] + hv);
-        beam_Qload(b, t, b->q, v, Qp);
-        v[j] = (vlbe_real)((double)b->v[j] - hv);
-        beam_Qload(b, t, b->q, v, Qm);
-        for (i = 0; i < n; ++i) Df[i * n + j] = ((double)Qp[i] - (double)Qm[i]) / (2.0 * hv);
-    }
+    fd_qv(beam_Qload_fn, b, t, b->q, b->v, n, Kf, Df);
     assert_true(maxabs(n * n, K) > 0.01);
     assert_int_equal(vlbe_cr2d_beam_force(&b->b, t, b->q, b->v, Qp), 0);
     sc = fmax(maxabs(n, Qp), fmax(maxabs(n * n, D), maxabs(n * n, K)));
