@@ -40,4 +40,18 @@ static inline vlbe_ale3_mat mat3_std(void)
     return m;
 }
 
+/* m3 takes the planar section m2 (rho A, EA, EI, the damping, the load in
+   the x-y plane); its spin and torsion terms stay as they are. */
+static inline void mat3_planar(vlbe_ale3_mat *m3, const vlbe_ale_mat *m2)
+{
+    m3->rhoA = m2->rhoA;
+    m3->EA = m2->EA;
+    m3->EJ = m2->EI;
+    m3->c_eps = m2->c_eps;
+    m3->c_kap = m2->c_kap;
+    m3->f[0] = m2->f[0];
+    m3->f[1] = m2->f[1];
+    m3->f[2] = VLBE_R(0.0);
+}
+
 #endif /* VLBE_TEST_ALE_MATERIAL_H */

@@ -1007,14 +1007,7 @@ static void test_planar_reproduction(void **state)
     double wq = 0.0, wk = 0.0, wd = 0.0, wmm = 0.0, wx = 0.0, wq1 = 0.0;
     int s, k, i, j;
     (void)state;
-    m3.rhoA = m2.rhoA;
-    m3.EA = m2.EA;
-    m3.EJ = m2.EI;
-    m3.c_eps = m2.c_eps;
-    m3.c_kap = m2.c_kap;
-    m3.f[0] = m2.f[0];
-    m3.f[1] = m2.f[1];
-    m3.f[2] = VLBE_R(0.0);
+    mat3_planar(&m3, &m2);
     assert_int_equal(vlbe_ale_elem_init(&e2, &m2, 0, 0, 0, 0), VLBE_OK);
     elem_make(&e3, &m3, 0, 0, 0);
     for (s = 0; s < 4; ++s) {

@@ -572,14 +572,7 @@ static void test_hub_reproduction(void **state)
     double worst = 0.0, wz = 0.0;
     int i, k, st;
     (void)state;
-    m3.rhoA = m2.rhoA;
-    m3.EA = m2.EA;
-    m3.EJ = m2.EI;
-    m3.c_eps = m2.c_eps;
-    m3.c_kap = m2.c_kap;
-    m3.f[0] = m2.f[0];
-    m3.f[1] = m2.f[1];
-    m3.f[2] = VLBE_R(0.0);
+    mat3_planar(&m3, &m2);
     /* planar */
     memset(&p, 0, sizeof p);
     p.mat = m2;
