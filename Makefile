@@ -187,7 +187,7 @@ test-build: $(TEST_BINS)
 # valgrind, so a hang fails the run and names the suite.  The log is kept
 # next to its binary, printed whole when the run ends (without the MEASURED
 # lines), followed by a FAILED line when it failed; the exit status goes to
-# <log>.rc.  A failing run does not stop the others.  make check-m4 runs
+# <log>.rc.  A failing run leaves the others running.  make check-m4 runs
 # beside them into BUILD/m4/check-m4.log.  When everything has run:
 # tests/measured.sh (when every run passed), then cmocka's closing lines
 # "[  PASSED  ] N test(s).", "[  SKIPPED ] N test(s)" and "[  FAILED  ] N
