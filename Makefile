@@ -1,11 +1,17 @@
 # vlbe -- build, test, benchmark.  GNU make + a C99 compiler.
 #
-#   make test           header checks, then every tests/test_*.c in four builds
-#                       (double -O2, double -O0, float -O2, ASan+UBSan), the
+#   make test           header checks, the C blocks of the docs (check-docs),
+#                       the first program in double and float (check-first),
+#                       every tests/test_*.c in four builds
+#                       (double -O2, double -O0, float -O2, ASan+UBSan -O0)
+#                       and run, the double -O2 binaries of VALGRIND_SUITES
+#                       under valgrind when it is installed, make check-m4;
+#                       all through make's job server (-j<cores> unless -j
+#                       is given), each binary under a time limit; then the
 #                       measured numbers of the test comments against their
-#                       logs, and the double -O2 build under valgrind when it
-#                       is installed; each binary under a time limit,
-#                       then make check-m4
+#                       logs and the summary
+#   make vg-cover       the library lines each suite executes (gcov), and
+#                       those the valgrind set leaves (tests/vgcover.sh)
 #   make demo           build the examples and run the paper scenes (out/demo/),
 #                       then the work-precision charts (out/wp_*.svg, every
 #                       bench/wp_*.c at -O2)
@@ -79,7 +85,19 @@ TEST_CFGS := dbl dbl-O0 flt san
 CFG_dbl := -O2
 CFG_dbl-O0 := -O0
 CFG_flt := -O2 -DVLBE_USE_FLOAT
-CFG_san := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all
+# The sanitizer build is -O0.  Its point is the checks: ASan and UBSan
+# instrument the program as gcc sees it before optimising, and at -O0 every
+# load, store and operation of the source keeps its check (-O1 drops those of
+# the accesses it folds away); the optimised code is what the dbl and flt
+# builds run, and valgrind.  What -O0 gives up is UBSan's object-size check,
+# which needs the optimiser to know sizes; out-of-bounds accesses are still
+# ASan's (between objects) and -fsanitize=bounds' (indices of declared
+# arrays).  gcc 12, 36 suites, one core: -O0 -g compiles in ~110 s of CPU,
+# -O1 -g in ~600 s (variable tracking and register allocation of the
+# instrumented code); the runs take ~100 s instead of ~45 s.  Both count as
+# slow builds (tu_slow_run), so the same test variants run, and the measured
+# numbers of the san build agree.
+CFG_san := -O0 -g -fsanitize=address,undefined -fno-sanitize-recover=all
 TEST_BINS := $(foreach c,$(TEST_CFGS),$(addprefix $(BUILD)/$(c)/,$(TEST_NAMES)))
 
 # -- examples and benchmarks ------------------------------------------------
@@ -114,7 +132,7 @@ BENCH_LAPACKE_BINS := $(if $(LAPACKE_H),$(BUILD)/bench/bench_lu_lapacke)
 
 .PHONY: all check test check-headers check-first cmocka test-build examples demo bench \
         bench-portable bench-scale lint clean fuzz fuzz-build fuzz-clang measured-update mutate \
-        check-m4 m4-tools
+        check-m4 m4-tools test-run vg-cover FORCE
 
 all: test examples
 
@@ -169,15 +187,36 @@ $(foreach c,$(TEST_CFGS),$(eval $(call TEST_RULE,$(c))))
 
 test-build: $(TEST_BINS)
 
-# Runs every binary, build by build, with VLBE_TEST_REPORT=1 (the logs carry
-# the MEASURED lines that tests/measured.sh checks against the comments) and
-# under a time limit: TEST_TIMEOUT seconds per binary (valgrind runs get
-# TEST_VG_TIMEOUT), so a hang fails the run and names the suite.  Each log is
-# kept next to its binary.  cmocka's closing lines "[  PASSED  ] N test(s).",
-# "[  SKIPPED ] N test(s)" and "[  FAILED  ] N test(s)" are summed per build
-# and in total in the last lines.  Stops at the first failing run.
+# make test runs through make's job server: every build and every run is a
+# target of its own, so on N cores N jobs go at once and a suite runs as
+# soon as its binary exists.  `make test` alone re-invokes make with
+# -j$(TEST_JOBS) (default: the number of cores) unless -j was given, and
+# with -Otarget, so each target's output comes out whole when it finishes.
+#
+# Each run (target BUILD/<cfg>/<suite>.log; valgrind runs
+# BUILD/dbl/<suite>.vg.log) has VLBE_TEST_REPORT=1 (the logs carry the
+# MEASURED lines that tests/measured.sh checks against the comments) and a
+# time limit: TEST_TIMEOUT seconds per binary, TEST_VG_TIMEOUT under
+# valgrind, so a hang fails the run and names the suite.  The log is kept
+# next to its binary, printed whole when the run ends (without the MEASURED
+# lines), followed by a FAILED line when it failed; the exit status goes to
+# <log>.rc.  A failing run leaves the others running.  make check-m4 runs
+# beside them into BUILD/m4/check-m4.log.  When everything has run:
+# tests/measured.sh (when every run passed), then cmocka's closing lines
+# "[  PASSED  ] N test(s).", "[  SKIPPED ] N test(s)" and "[  FAILED  ] N
+# test(s)" summed per build and in total, then the check-m4 log; the exit
+# status is non-zero on any failure.
+#
+# Order: make starts the jobs of a target list from its left, so the lists
+# below put the costly suites first (CPU seconds on one core, gcc 12 -O2:
+# compile up to ~8 s, the longest runs ~20 s in the san build and ~15 s
+# under valgrind); the short ones fill in at the end.  From a clean clone on
+# two cores (gcc 12): 322 s, 638 s of CPU time, of which the builds ~445 s
+# (dbl ~134, dbl-O0 ~28, flt ~170, san ~110), check-m4 ~40, the runs ~155
+# (dbl 16, dbl-O0 34, flt 6, san 98) and valgrind ~47.
 TEST_TIMEOUT ?= 300
 TEST_VG_TIMEOUT ?= 1200
+TEST_JOBS ?= $(shell nproc 2>/dev/null || getconf _NPROCESSORS_ONLN 2>/dev/null || echo 2)
 TEST_SUMMARY = awk '{ b = FILENAME; sub(/\/[^\/]*$$/, "", b); sub(/.*\//, "", b); \
     if (FILENAME ~ /\.vg\.log$$/) b = b "+valgrind"; if (!(b in seen)) { seen[b] = 1; order[++nb] = b } } \
   /^\[  PASSED  \] [0-9]+ test/ { p[b] += $$4; P += $$4 } \
@@ -186,31 +225,93 @@ TEST_SUMMARY = awk '{ b = FILENAME; sub(/\/[^\/]*$$/, "", b); sub(/.*\//, "", b)
   END { for (i = 1; i <= nb; ++i) printf "  %-14s %4d passed, %d failed, %d skipped\n", order[i], p[order[i]], f[order[i]], s[order[i]]; \
     if (F == 0 && fail != 0) F = 1; printf "tests: %d passed, %d failed, %d skipped\n", P, F, S }'
 
-test: check-headers check-docs test-build
-	@set -u; fail=0; logs=""; \
+# the suites by falling cost of build and run; the others follow
+TEST_COSTLY = test_scenes_band test_scenes_spin test_sliding_xcheck test_fuzz_corpus \
+  test_spin_damping test_chain_ale test_scenes_shaft test_scenes_sliding test_katz \
+  test_scenes_cable test_scenes_ale test_scenes_semicircle test_scenes_torsion \
+  test_contract_chain test_scenes_moving3d test_contract_elem
+TEST_ORDER := $(filter $(TEST_NAMES),$(TEST_COSTLY)) $(filter-out $(TEST_COSTLY),$(TEST_NAMES))
+
+# Valgrind (memcheck) runs what it adds over ASan+UBSan, which run every
+# suite: the use of uninitialised values, and the -O2 code.  Both are about
+# the library's lines that a run executes, so the set below is chosen by
+# line coverage: every suite built with --coverage (-O0, whose runs take the
+# same slow-build variants as a run under valgrind) and the lines of vlbe.h,
+# ancf_ale.h, rancf.h, corot2d.h and integrators.h that each executes
+# (tests/vgcover.sh, make vg-cover).  All 36 suites execute 5782 lines; the
+# 20 suites below execute 5766 of them, at ~47 s of valgrind CPU time
+# instead of ~500 s.  They leave 16 lines: vlbe_dae_stats_add (integrators.h,
+# sums two counter records; run by test_scenes_sliding, test_scenes_band,
+# test_sliding_xcheck), the slope-constraint case of the planar chain's
+# constraint row count and one vlbe_ale3_point call of the 3D chain
+# (ancf_ale.h; test_scenes_band, test_scenes_shaft).  The suites left out
+# are long integrations that go over the same lines again (test_scenes_spin,
+# test_scenes_band and test_sliding_xcheck alone take ~210 s) and
+# test_katz, which checks the examples' reference solutions and executes
+# no library line.  VALGRIND_SUITES=all runs every suite under valgrind.
+VALGRIND_SUITES ?= test_chain_ale test_integrators test_bdf test_energy3d test_ale3 \
+  test_ale_inv test_rancf test_contract_core test_dae_band test_vlbe test_corot2d \
+  test_chain_band test_fuzz_corpus test_contract_elem test_rancf_chain test_contract_chain \
+  test_cr2d_band test_static test_band test_cr2d_trans
+VG_NAMES := $(if $(filter all,$(VALGRIND_SUITES)),$(TEST_ORDER),$(filter $(TEST_NAMES),$(VALGRIND_SUITES)))
+HAVE_VALGRIND := $(shell command -v $(VALGRIND) 2>/dev/null || true)
+TEST_LOGS := $(foreach c,$(TEST_CFGS),$(addprefix $(BUILD)/$(c)/,$(addsuffix .log,$(TEST_NAMES))))
+VG_LOGS := $(if $(HAVE_VALGRIND),$(addprefix $(BUILD)/dbl/,$(addsuffix .vg.log,$(VG_NAMES))))
+M4_LOG = $(BUILD)/m4/check-m4.log
+# the order the jobs start in: check-m4 (its own builds through the job
+# server), the valgrind runs, then the builds by their longest runs
+TEST_RUN_CFGS := $(filter $(TEST_CFGS),san dbl-O0 dbl flt) $(filter-out san dbl-O0 dbl flt,$(TEST_CFGS))
+TEST_SCHEDULE := $(M4_LOG) $(VG_LOGS) \
+  $(foreach c,$(TEST_RUN_CFGS),$(addprefix $(BUILD)/$(c)/,$(addsuffix .log,$(TEST_ORDER))))
+
+# $(1) time limit, $(2) log, $(3) command: the run, its log, its verdict
+exe_path = $(if $(filter /%,$(1)),$(1),./$(1))
+TEST_RUN = rm -f $(2).rc; rc=0; \
+  VLBE_TEST_REPORT=1 timeout -k 10 $(1) $(3) > $(2) 2>&1 < /dev/null || rc=$$?; \
+  echo "== $(3)"; grep -v '^MEASURED ' $(2); \
+  if [ $$rc -eq 124 ] || [ $$rc -eq 137 ]; then echo "FAILED (time limit $(1) s exceeded): $(3)"; \
+  elif [ $$rc -ne 0 ]; then echo "FAILED (exit $$rc): $(3)"; fi; \
+  echo $$rc > $(2).rc
+
+define TEST_RUN_RULE
+$(BUILD)/$(1)/%.log: $(BUILD)/$(1)/% FORCE
+	@$$(call TEST_RUN,$(TEST_TIMEOUT),$$@,$$(call exe_path,$$<))
+endef
+$(foreach c,$(TEST_CFGS),$(eval $(call TEST_RUN_RULE,$(c))))
+
+$(BUILD)/dbl/%.vg.log: $(BUILD)/dbl/% FORCE
+	@$(call TEST_RUN,$(TEST_VG_TIMEOUT),$@,$(VALGRIND) -q --error-exitcode=1 --leak-check=full $(call exe_path,$<))
+
+$(M4_LOG): FORCE
+	@mkdir -p $(@D); rm -f $@.rc; rc=0; \
+	$(MAKE) --no-print-directory check-m4 > $@ 2>&1 < /dev/null || rc=$$?; echo $$rc > $@.rc
+
+FORCE:
+
+test:
+	@+$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS)) -Otarget test-run
+
+# (the binaries named too: built through the logs' pattern rule they would
+# count as intermediate files and be deleted)
+test-run: check-headers check-docs check-first $(TEST_SCHEDULE) $(TEST_BINS) $(addprefix $(BUILD)/dbl/,$(VG_NAMES))
+	@set -u; fail=0; \
 	if [ -z "$(TEST_NAMES)" ]; then echo "test: no $(TEST_DIR)/test_*.c yet"; fi; \
-	run() { lim=$$1; log=$$2; shift 2; logs="$$logs $$log"; rc=0; \
-	  echo "== $$*"; VLBE_TEST_REPORT=1 timeout -k 10 $$lim "$$@" > "$$log" 2>&1 || rc=$$?; \
-	  grep -v '^MEASURED ' "$$log"; \
-	  if [ $$rc -eq 124 ] || [ $$rc -eq 137 ]; then echo "FAILED (time limit $$lim s exceeded): $$*"; fail=1; \
-	  elif [ $$rc -ne 0 ]; then echo "FAILED (exit $$rc): $$*"; fail=1; fi; }; \
-	for c in $(TEST_CFGS); do for t in $(TEST_NAMES); do \
-	  [ $$fail = 0 ] || break 2; \
-	  run $(TEST_TIMEOUT) $(BUILD)/$$c/$$t.log ./$(BUILD)/$$c/$$t; \
-	done; done; \
-	if [ $$fail = 0 ]; then echo "== sh $(TEST_DIR)/measured.sh $(BUILD)"; \
+	for l in $(TEST_LOGS) $(VG_LOGS); do [ "$$(cat $$l.rc 2>/dev/null)" = 0 ] || fail=1; done; \
+	if [ $$fail = 0 ] && [ -n "$(TEST_NAMES)" ]; then echo "== sh $(TEST_DIR)/measured.sh $(BUILD)"; \
 	  sh $(TEST_DIR)/measured.sh $(BUILD) || { echo "FAILED: measured numbers in test comments (make measured-update rewrites them)"; fail=1; }; fi; \
-	if [ $$fail = 0 ] && command -v $(VALGRIND) >/dev/null 2>&1; then \
-	  for t in $(TEST_NAMES); do \
-	    [ $$fail = 0 ] || break; \
-	    run $(TEST_VG_TIMEOUT) $(BUILD)/dbl/$$t.vg.log $(VALGRIND) -q --error-exitcode=1 --leak-check=full ./$(BUILD)/dbl/$$t; \
-	  done; \
-	elif [ $$fail = 0 ]; then echo "test: valgrind not found, valgrind runs skipped"; fi; \
-	if [ -n "$$logs" ]; then $(TEST_SUMMARY) fail=$$fail $$logs; \
+	$(if $(HAVE_VALGRIND),,echo "test: valgrind not found, valgrind runs skipped";) \
+	if [ -n "$(strip $(TEST_LOGS) $(VG_LOGS))" ]; then $(TEST_SUMMARY) fail=$$fail $(TEST_LOGS) $(VG_LOGS); \
 	else echo "tests: 0 passed, 0 failed, 0 skipped"; fi; \
-	if [ $$fail = 0 ]; then echo "== make check-m4"; \
-	  $(MAKE) --no-print-directory check-m4 || { echo "FAILED: make check-m4"; fail=1; }; fi; \
+	echo "== make check-m4"; cat $(M4_LOG); \
+	[ "$$(cat $(M4_LOG).rc 2>/dev/null)" = 0 ] || { echo "FAILED: make check-m4"; fail=1; }; \
 	exit $$fail
+
+# the line coverage behind VALGRIND_SUITES (tests/vgcover.sh): per header the
+# library lines all suites execute and those the valgrind set executes, and
+# each line the set leaves
+vg-cover: cmocka
+	@CC='$(CC)' CFLAGS='$(CSTD) $(WARN) $(CFG_dbl-O0) $(MEMCHECK_DEF) -I. $(CMOCKA_CFLAGS)' \
+	  LIBS='$(CMOCKA_LIBS) -lm' BUILD='$(BUILD)' sh $(TEST_DIR)/vgcover.sh $(VG_NAMES)
 
 # Runs the double and float builds with VLBE_TEST_REPORT=1 and rewrites every
 # measured number of a test comment that no longer agrees with its log.
