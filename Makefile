@@ -238,13 +238,11 @@ TEST_ORDER := $(filter $(TEST_NAMES),$(TEST_COSTLY)) $(filter-out $(TEST_COSTLY)
 # line coverage: every suite built with --coverage (-O0, whose runs take the
 # same slow-build variants as a run under valgrind) and the lines of vlbe.h,
 # ancf_ale.h, rancf.h, corot2d.h and integrators.h that each executes
-# (tests/vgcover.sh, make vg-cover).  All 36 suites execute 5782 lines; the
-# 20 suites below execute 5766 of them, at ~47 s of valgrind CPU time
-# instead of ~500 s.  They leave 16 lines: vlbe_dae_stats_add (integrators.h,
+# (tests/vgcover.sh, make vg-cover).  All 39 suites execute 6420 lines; the
+# 23 suites below execute 6406 of them, at ~52 s of valgrind CPU time
+# instead of ~500 s.  They leave 14 lines: vlbe_dae_stats_add (integrators.h,
 # sums two counter records; run by test_scenes_sliding, test_scenes_band,
-# test_sliding_xcheck), the slope-constraint case of the planar chain's
-# constraint row count and one vlbe_ale3_point call of the 3D chain
-# (ancf_ale.h; test_scenes_band, test_scenes_shaft).  The suites left out
+# test_sliding_xcheck).  The suites left out
 # are long integrations that go over the same lines again (test_scenes_spin,
 # test_scenes_band and test_sliding_xcheck alone take ~210 s) and
 # test_katz, which checks the examples' reference solutions and executes
@@ -252,7 +250,7 @@ TEST_ORDER := $(filter $(TEST_NAMES),$(TEST_COSTLY)) $(filter-out $(TEST_COSTLY)
 VALGRIND_SUITES ?= test_chain_ale test_integrators test_bdf test_energy3d test_ale3 \
   test_ale_inv test_rancf test_contract_core test_dae_band test_vlbe test_corot2d \
   test_chain_band test_fuzz_corpus test_contract_elem test_rancf_chain test_contract_chain \
-  test_cr2d_band test_static test_band test_cr2d_trans
+  test_cr2d_band test_static test_band test_cr2d_trans test_loads test_chain_con3 test_prestress
 VG_NAMES := $(if $(filter all,$(VALGRIND_SUITES)),$(TEST_ORDER),$(filter $(TEST_NAMES),$(VALGRIND_SUITES)))
 HAVE_VALGRIND := $(shell command -v $(VALGRIND) 2>/dev/null || true)
 TEST_LOGS := $(foreach c,$(TEST_CFGS),$(addprefix $(BUILD)/$(c)/,$(addsuffix .log,$(TEST_NAMES))))
