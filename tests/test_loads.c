@@ -1105,7 +1105,7 @@ static void test_cr2d_cantilever(void **state)
 {
     tbeam *b = &g_b;
     vlbe_cr2d_fix fx[3];
-    vlbe_real lam[3];
+    vlbe_real lam[3] = {0, 0, 0}; /* the multipliers start at 0 */
     const int ne = 8;
     const double L = 0.5 * ne, qd = -1e-5, EI = 2.0;
     int i;
@@ -1128,7 +1128,7 @@ static void test_cr2d_simply_supported(void **state)
 {
     tbeam *b = &g_b;
     vlbe_cr2d_fix fx[3];
-    vlbe_real lam[3];
+    vlbe_real lam[3] = {0, 0, 0};
     const int ne = 8;
     const double L = 0.5 * ne, qd = -1e-5, EI = 2.0;
     (void)state;
