@@ -4655,7 +4655,7 @@ VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t,
 VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
                                            const vlbe_real *v, vlbe_real *E)
 {
-    vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ], Ee[3], Es[3];
+    vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ], Ee[3] = {0, 0, 0}, Es[3];
     int e, i, k, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;

@@ -271,8 +271,8 @@ static inline int st_geig(int n, const vlbe_real *K0, const vlbe_real *M, const 
                           const int *tmask, double *f, double *share)
 {
     const size_t K = (size_t)k, lw = ex_eig_work_len(k);
-    vlbe_real *A = (vlbe_real *)malloc(K * K * sizeof *A);
-    vlbe_real *B = (vlbe_real *)malloc(K * K * sizeof *B);
+    vlbe_real *A = (vlbe_real *)calloc(K * K, sizeof *A); /* calloc: gcc -O1 cannot see */
+    vlbe_real *B = (vlbe_real *)calloc(K * K, sizeof *B); /* the loops below fill them  */
     vlbe_real *X = (vlbe_real *)malloc(K * K * sizeof *X);
     vlbe_real *lam = (vlbe_real *)malloc(K * sizeof *lam);
     vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w);
