@@ -836,9 +836,9 @@ static void en_print(const char *what, const en_result *r)
    (0.09 .. 0.42 over 20 starts), growing; asserted only to be 1000 times
    the conservative drift (2e6 (m~:paper_ratio) times here).
    Slow builds run 0.2 s (p already covers 0.17 .. 0.70):
-   8.9e-8 (m@dbl-O0:drift9) Tmax (1e-9), 5.3e-6 (m@dbl-O0:drift7) Tmax
-   (1e-7, ratio 60 (m@dbl-O0:ratio79)), paper form
-   5.1e-2 (m@dbl-O0:paper) Tmax (over the 60 starts 7.5e-8 .. 1.2e-7 Tmax
+   8.9e-8 (m@san:drift9) Tmax (1e-9), 5.3e-6 (m@san:drift7) Tmax
+   (1e-7, ratio 60 (m@san:ratio79)), paper form
+   5.1e-2 (m@san:paper) Tmax (over the 60 starts 7.5e-8 .. 1.2e-7 Tmax
    and ratio 47 .. 75: no near-singular passage yet); the same bounds
    apply.  -O0, -O2, the sanitizer build and valgrind give the same
    numbers to the printed digits.
@@ -1117,7 +1117,7 @@ static void peak_freq_synthetic(void)
      steps (1e-4, 5e-5), move it between 5e-9 and 2e-8, as have changes of
      the element code's rounding.  1e-7 is 5 times the largest of these.
    - slow builds run 8 elements instead (0.14 s at -O2 against 0.33 s):
-     9.2e-7 (m@dbl-O0:ms_err8), held to 2e-6.
+     9.2e-7 (m@san:ms_err8), held to 2e-6.
    - 4 elements: 3.95e-5 (m:ms_err4), held to 1e-4 of exact; the paper's
      VLBE value 22.6786 is 5.4e-4 (m:ms_paper) away (held to 6e-4: our
      reading of the data, see moving_string.c, gives a prestretch 1.8e-4

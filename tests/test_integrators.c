@@ -1403,7 +1403,7 @@ static void test_andrews_jacobians(void **state)
    (Newton rtol 1e-12); h = 1e-6 leaves a factor 6.  A 24-bit mantissa
    cannot hold the 15.8 rad angle to 1e-6 over 3e4 steps: double only.
    Slow builds (tu_slow_run: -O0, sanitizers, valgrind) check h = 5e-6 at
-   1e-5 instead (4.5e-6 (m@dbl-O0:andr_quick), the worse method) and skip
+   1e-5 instead (4.5e-6 (m@san:andr_quick), the worse method) and skip
    the runs at h = 1e-5. */
 static void test_andrews_reference(void **state)
 {
@@ -1425,7 +1425,7 @@ static void test_andrews_reference(void **state)
         qworst = fmax(qworst, r.max_rel_err);
         ASSERT_VEC_CLOSE(r.q, andr_qref(), ANDR_N, tol, 0.0);
         /* multipliers are O(h^2) as well: 5.9e-7 (m:andr_lam) (lambda_1,
-           the worse method) at h = 1e-6, 1.3e-5 (m@dbl-O0:andr_lam_quick)
+           the worse method) at h = 1e-6, 1.3e-5 (m@san:andr_lam_quick)
            at 5e-6; 100 tol */
         lworst = fmax(lworst, fabs(r.lambda[0] - andr_lambda_ref()[0]) /
                                   fabs(andr_lambda_ref()[0]));

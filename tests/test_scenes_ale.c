@@ -309,8 +309,8 @@ static void test_suspended_beam(void **state)
    tolerance is far above rounding (a rounding difference that changes one
    iteration count leaves a difference of the order of that tolerance, not
    of EPS).  Measured: 0 (m~:rancf_unit_diff), bit for bit, in the dbl
-   build, 0 (m@dbl-O0~:rancf_unit_diff) in dbl-O0 and 0
-   (m@san~:rancf_unit_diff) under the sanitizers.  Asserted, so
+   build and 0 (m@san~:rancf_unit_diff) in the unoptimised sanitizer
+   build.  Asserted, so
    that a compiler contracting the two paths differently (FMA) does not
    fail it: 1e-9 relative to each history's largest magnitude (1e-9 stands
    for "the same trajectory": the rounding

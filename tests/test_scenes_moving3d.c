@@ -123,7 +123,7 @@ static void check_cmp(const char *what, const char *key, int kind_a, int kind_b,
 }
 
 /* 3D (theta = 0) vs planar, string and beam, 0.5 s at h = 2e-4 (slow
-   builds 0.1 s: measured 3.3e-12 (m@dbl-O0~:ps_hist_rel) of the amplitude
+   builds 0.1 s: measured 3.3e-12 (m@san~:ps_hist_rel) of the amplitude
    for the string).  In fast builds also the 3D chain without the spin
    angle against the one with it: measured bit for bit equal, largest
    differences 0 (m~:ns_diff) in double and 0 (m@flt~:ns_diff) in float
@@ -149,7 +149,7 @@ static void test_planar_agreement(void **state)
      measured 3.95e-5 (m:f4_exact), held to 1e-4 (spatial error; the
      integration error left by Richardson, O(h^4), is far below it); slow
      builds take 0.25 s of response at h = 8e-4, 4e-4 (an eighth of the
-     steps): measured 4.02e-5 (m@dbl-O0:f4_exact) (a larger h^4 term, the
+     steps): measured 4.02e-5 (m@san:f4_exact) (a larger h^4 term, the
      estimator on 5.7 periods).
    - the same against eq. (56) as printed (22.6857):
      measured 2.25e-4 (m:f4_eq56), held to 3e-4 (the prestretch 1.86e-4 of
