@@ -798,6 +798,12 @@ static void test_chain_static(void **state)
         assert_int_equal(vlbe_ale_chain_point(&c->ch, 0, q, (vlbe_real)L, NULL, rp), VLBE_OK);
         wt = k ? M * L * L / (2 * EI) : -P * a * a * (3 * L - a) / (6 * EI);
         st = k ? M * L / EI : -P * a * a / (2 * EI);
+        tu_report(k ? "chain, tip moment: tip deflection vs M L^2 / 2EI (rel.)"
+                    : "chain, force at a: tip deflection vs P a^2 (3L - a) / 6EI (rel.)",
+                  fabs((double)q[c->node[4].ofs + 1] - wt) / fabs(wt), 1e-5 + 1e3 * EPSD);
+        tu_report(k ? "chain, tip moment: tip slope vs M L / EI (rel.)"
+                    : "chain, force at a: tip slope vs P a^2 / 2EI (rel.)",
+                  fabs(atan2((double)rp[1], (double)rp[0]) - st) / fabs(st), 1e-5 + 1e3 * EPSD);
         ASSERT_CLOSE(q[c->node[4].ofs + 1], wt, 1e-5 + 1e3 * EPSD, 0.0);
         ASSERT_CLOSE(atan2((double)rp[1], (double)rp[0]), st, 1e-5 + 1e3 * EPSD, 0.0);
     }
@@ -1119,6 +1125,9 @@ static void test_cr2d_cantilever(void **state)
     beam_static(b, lam);
     /* linear theory, nodally exact for cubic elements with consistent loads;
        w/L = 6e-4: the geometric nonlinearity is ~(w/L)^2, below 1e-6 */
+    tu_report("cr2d cantilever, uniform load: tip vs q L^4 / 8EI (rel.)",
+              fabs((double)b->q[3 * ne + 1] - qd * pow(L, 4) / (8 * EI)) / fabs(qd * pow(L, 4) / (8 * EI)),
+              1e-5 + 1e3 * EPSD);
     ASSERT_CLOSE(b->q[3 * ne + 1], qd * pow(L, 4) / (8 * EI), 1e-5 + 1e3 * EPSD, 0.0);
     ASSERT_CLOSE(b->q[3 * ne + 2], qd * pow(L, 3) / (6 * EI), 1e-5 + 1e3 * EPSD, 0.0);
     ASSERT_CLOSE(-lam[1], -qd * L, 1e-5 + 1e3 * EPSD, 0.0); /* support reaction */
@@ -1140,6 +1149,10 @@ static void test_cr2d_simply_supported(void **state)
     b->b.dist[1] = (vlbe_real)qd;
     memset(b->q, 0, sizeof b->q);
     beam_static(b, lam);
+    tu_report("cr2d simply supported, uniform load: midspan vs 5 q L^4 / 384EI (rel.)",
+              fabs((double)b->q[3 * (ne / 2) + 1] - 5 * qd * pow(L, 4) / (384 * EI)) /
+                  fabs(5 * qd * pow(L, 4) / (384 * EI)),
+              1e-5 + 1e3 * EPSD);
     ASSERT_CLOSE(b->q[3 * (ne / 2) + 1], 5 * qd * pow(L, 4) / (384 * EI), 1e-5 + 1e3 * EPSD, 0.0);
     ASSERT_CLOSE(b->q[2], qd * pow(L, 3) / (24 * EI), 1e-5 + 1e3 * EPSD, 0.0);
 }
