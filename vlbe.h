@@ -287,7 +287,8 @@ typedef struct vlbe_herm_ale {
    and the element (or node, constraint) in their err and err_elem fields:
    1 for VLBE_ELENGTH, VLBE_ESINGULAR and VLBE_ENONFINITE (co-rotational
    beams: also VLBE_EBOUND, a node outside the prismatic joint), -1 for any
-   other status (VLBE_ECALLBACK of a failing user function, VLBE_EARG).
+   other status (VLBE_ECALLBACK of a failing user function, VLBE_EARG, a
+   chain's point load off the chain: VLBE_EBOUND).
    The solvers keep the last failing value in vlbe_dae_stats.callback_rc. */
 /* vlbe_dae.flags */
 #define VLBE_DAE_MASS_CONST 1u /* M does not depend on t, q or v: no dM/dq terms, and
