@@ -180,7 +180,7 @@ cmocka:
 	@if $(CMOCKA_PROBE); then exit 0; fi; \
 	if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
 	  echo "cmocka: not found, installing libcmocka-dev with apt-get"; \
-	  { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y libcmocka-dev; } || true; \
+	  { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y libcmocka-dev; } || true; \
 	fi; \
 	if $(CMOCKA_PROBE); then exit 0; fi; \
 	echo "vlbe tests need cmocka (Debian: apt-get install libcmocka-dev; or set CMOCKA_CFLAGS/CMOCKA_LIBS)" >&2; \
@@ -291,7 +291,9 @@ $(foreach c,$(TEST_CFGS),$(eval $(call TEST_RUN_RULE,$(c))))
 $(BUILD)/dbl/%.vg.log: $(BUILD)/dbl/% FORCE
 	@$(call TEST_RUN,$(TEST_VG_TIMEOUT),$@,$(VALGRIND) -q --error-exitcode=1 --leak-check=full $(call exe_path,$<))
 
-$(M4_LOG): FORCE
+# after cmocka: both may install packages, and two apt-get runs at once
+# collide on dpkg's lock on a fresh machine
+$(M4_LOG): FORCE | cmocka
 	@mkdir -p $(@D); rm -f $@.rc; rc=0; \
 	$(MAKE) --no-print-directory check-m4 > $@ 2>&1 < /dev/null || rc=$$?; echo $$rc > $@.rc
 
@@ -452,7 +454,7 @@ fuzz-clang:
 	@if $(FUZZ_PROBE); then exit 0; fi; \
 	if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
 	  echo "fuzz: $(FUZZ_CC) with libFuzzer not usable, installing clang with apt-get"; \
-	  { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y clang; } || true; \
+	  { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y clang; } || true; \
 	fi; \
 	if $(FUZZ_PROBE); then exit 0; fi; \
 	echo "make fuzz needs clang with libFuzzer and the ASan/UBSan runtimes (Debian: apt-get install clang," >&2; \
@@ -548,7 +550,7 @@ m4-tools:
 	@$(M4_MISSING); if [ -z "$$m" ]; then exit 0; fi; \
 	if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
 	  echo "m4-tools: missing:$$m; installing with apt-get"; \
-	  { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y $$m; } || true; \
+	  { apt-get update && DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y $$m; } || true; \
 	  $(M4_MISSING); if [ -z "$$m" ]; then exit 0; fi; \
 	fi; \
 	echo "make check-m4 needs the Debian packages:$$m (apt-get install$$m;" >&2; \
