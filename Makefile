@@ -169,7 +169,8 @@ check-headers:
 # examples/*.c are compiled); relative links and quoted names checked
 .PHONY: check-docs
 check-docs:
-	@CC='$(CC)' CSTD='$(CSTD)' WARN='$(WARN)' BUILD='$(BUILD)' sh tests/doc_blocks.sh
+	@CC='$(CC)' CSTD='$(CSTD)' WARN='$(WARN)' BUILD='$(BUILD)' MIRRORS_BUILT=first_chain.c \
+	  sh tests/doc_blocks.sh
 
 # -- cmocka -------------------------------------------------------------------
 CMOCKA_PROBE = printf '\#include <stdarg.h>\n\#include <stddef.h>\n\#include <setjmp.h>\n\#include <stdint.h>\n\#include <cmocka.h>\nint main(void) { print_message("%%s", ""); return 0; }\n' | \
