@@ -139,10 +139,12 @@ static inline double ms_f1_exact(void)
     return (c * c - MS_V0 * MS_V0) / (2.0 * MS_L * c);
 }
 
-/* Builds the window of ne elements of the given kind (MS_*); q0, v0 (size
+/* Builds the window of ne elements of the given kind (MS_*), the material
+   flowing through at `speed` (ms_build: the paper's v0); q0, v0 (size
    m->ch.n, at most MS_NQ_NODE (ne + 1)) get the straight prestretched state
    with the initial transverse velocities. */
-static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_real *v0)
+static inline int ms_build_at(ms_model *m, int ne, int kind, double speed, vlbe_real *q0,
+                              vlbe_real *v0)
 {
     const double PI = 3.14159265358979323846;
     const int d3 = (kind & MS_3D) != 0;
@@ -184,7 +186,7 @@ static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_re
     /* the window: nodes at x_i = l i / ne, the material flowing through at
        v0 with the stretch lam (p_i = (x_i - v0 t) / lam) */
     for (i = 0; i <= ne; ++i) s[i] = (vlbe_real)(MS_L * i / ne);
-    if (vlbe_ale_chain_window(&m->ch, s, (vlbe_real)m->lam, (vlbe_real)MS_V0)) return -1;
+    if (vlbe_ale_chain_window(&m->ch, s, (vlbe_real)m->lam, (vlbe_real)speed)) return -1;
     memset(&c, 0, sizeof c);
     c.type = VLBE_ALE_CON_POS; /* supports: positions fixed (pinned; 3D: all 3 components) */
     c.node = 0;
@@ -206,6 +208,11 @@ static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_re
         for (i = 1; i < ne; ++i) v0[m->node[i].ofs + m->tr] = (vlbe_real)(1e-4 * sin(PI * i / ne));
     }
     return 0;
+}
+
+static inline int ms_build(ms_model *m, int ne, int kind, vlbe_real *q0, vlbe_real *v0)
+{
+    return ms_build_at(m, ne, kind, MS_V0, q0, v0);
 }
 
 /* Samples of one run: the transverse displacement of the middle node (y),
@@ -361,6 +368,121 @@ static inline int ms_compare(int ne, int kind_a, int kind_b, double h, double t_
     return rc;
 }
 
+/* -- the eigen route -------------------------------------------------------
+   Frequencies of the window without a time history: the straight
+   prestretched state at rest (q0, v = 0) is a steady state of the flowing
+   chain; q'' and lambda there by vlbe_dae_consistent_acc, then the
+   linearisation (vlbe_dae_linearize: M, D with the transport's Coriolis
+   term 2 rhoA v0 w_xt, K with the tension and the -rhoA v0^2 w_xx of eq.
+   54, the supports' null space) and the gyroscopic eigenproblem
+   (vlbe_eig_quad, shift sigma = -2 pi 5 rad/s: the lowest |s| first).
+   f[0..nf-1] get the lowest frequencies Im s / 2 pi [Hz] (-1 if fewer),
+   *amax the largest |q''| of the steady state (0 to rounding: it is an
+   equilibrium of the flowing chain). */
+static inline vlbe_status ms_eig(int ne, int kind, double speed, int nf, double *f, double *amax,
+                                 double *cpu)
+{
+    ms_model *m = (ms_model *)malloc(sizeof *m);
+    const clock_t c0 = clock();
+    vlbe_real *q = NULL, *v = NULL, *a = NULL, *lam = NULL, *Mr = NULL, *Dr = NULL, *Kr = NULL,
+              *sre = NULL, *sim = NULL, *w = NULL;
+    int *iw = NULL, n = 0, nr = 0, k, j;
+    size_t lw = 0, liw = 0, N2;
+    vlbe_status st = VLBE_EWORK;
+    for (k = 0; k < nf; ++k) f[k] = -1.0;
+    if (amax) *amax = 0;
+    if (!m) return VLBE_EWORK;
+    q = (vlbe_real *)malloc(MS_NQ_NODE * (MS_NE_MAX + 1) * sizeof *q);
+    v = (vlbe_real *)calloc(MS_NQ_NODE * (MS_NE_MAX + 1), sizeof *v);
+    if (!q || !v || ms_build_at(m, ne, kind, speed, q, NULL)) {
+        st = VLBE_EARG;
+        goto done;
+    }
+    n = m->sys.n;
+    N2 = (size_t)n * (size_t)n;
+    lw = vlbe_dae_lin_work_len_sys(&m->sys);
+    if (vlbe_dae_work_len_sys(&m->sys) > lw) lw = vlbe_dae_work_len_sys(&m->sys);
+    if (vlbe_eig_quad_work_len(n) > lw) lw = vlbe_eig_quad_work_len(n);
+    liw = vlbe_dae_lin_iwork_len_sys(&m->sys);
+    if (vlbe_dae_iwork_len_sys(&m->sys) > liw) liw = vlbe_dae_iwork_len_sys(&m->sys);
+    if (vlbe_eig_quad_iwork_len(n) > liw) liw = vlbe_eig_quad_iwork_len(n);
+    a = (vlbe_real *)malloc((size_t)n * sizeof *a);
+    lam = (vlbe_real *)malloc(((size_t)m->sys.m + 1) * sizeof *lam);
+    Mr = (vlbe_real *)malloc(N2 * sizeof *Mr);
+    Dr = (vlbe_real *)malloc(N2 * sizeof *Dr);
+    Kr = (vlbe_real *)malloc(N2 * sizeof *Kr);
+    sre = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sre);
+    sim = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sim);
+    w = (vlbe_real *)malloc(lw * sizeof *w);
+    iw = (int *)malloc(liw * sizeof *iw + sizeof *iw);
+    if (!a || !lam || !Mr || !Dr || !Kr || !sre || !sim || !w || !iw) goto done;
+    st = vlbe_dae_consistent_acc(&m->sys, 0, q, v, a, lam, NULL, w, lw, iw, liw);
+    if (st != VLBE_OK) goto done;
+    if (amax) *amax = (double)vlbe_vec_norm_inf(n, a);
+    st = vlbe_dae_linearize(&m->sys, 0, q, v, a, lam, NULL, &nr, NULL, Mr, Dr, Kr, NULL, w, lw,
+                            iw, liw);
+    if (st != VLBE_OK) goto done;
+    st = vlbe_eig_quad(nr, Mr, Dr, Kr, (vlbe_real)(-2.0 * 3.14159265358979323846 * 5.0), sre,
+                       sim, NULL, NULL, w, lw, iw, liw);
+    if (st != VLBE_OK) goto done;
+    for (k = j = 0; k < 2 * nr && j < nf; ++k)
+        if (sim[k] > 0) f[j++] = (double)sim[k] / (2.0 * 3.14159265358979323846);
+done:
+    if (cpu) *cpu = (double)(clock() - c0) / (double)CLOCKS_PER_SEC;
+    free(q), free(v), free(a), free(lam), free(Mr), free(Dr), free(Kr);
+    free(sre), free(sim), free(w), free(iw), free(m);
+    return st;
+}
+
+/* The continuum reference of the pinned-pinned moving beam (eq. 54, with
+   rho A -> rhoA / lam, F -> T of the prestretched window): Galerkin on
+   nm sine modes phi_k = sin(k pi x / l) (Wickert and Mote 1990):
+        M = (rho l / 2) I,   K = diag((l / 2) [EI (k pi/l)^4 + (T - rho v^2)(k pi/l)^2]),
+        G_jk = 2 rho v int phi_j phi_k' dx = 2 rho v 2 j k / (j^2 - k^2)  (j + k odd),
+   (s^2 M + s G + K) a = 0 by vlbe_eig_quad; the lowest nf frequencies
+   [Hz].  EI = 0: the string, whose every mode is exact in closed form,
+   f_k = k (c^2 - v^2) / (2 l c); the sine modes are then exact for v = 0
+   only (G couples them), and the series converges as 1/nm^2 (checked
+   against the closed form: 1e-6 at nm = 48).  With EI the series
+   converges faster (the modes are the beam's at v = 0). */
+#define MS_GAL_MAX 48
+static inline vlbe_status ms_galerkin(int bend, double speed, int nm, int nf, double *f)
+{
+    static vlbe_real M[MS_GAL_MAX * MS_GAL_MAX], G[MS_GAL_MAX * MS_GAL_MAX],
+        K[MS_GAL_MAX * MS_GAL_MAX], sre[2 * MS_GAL_MAX], sim[2 * MS_GAL_MAX];
+    const double PI = 3.14159265358979323846, l = MS_L;
+    double rhoA, EA, EI, eps, lam, rho;
+    vlbe_real *w;
+    int *iw, j, k;
+    vlbe_status st;
+    if (nm < 1 || nm > MS_GAL_MAX) return VLBE_EARG;
+    ms_section(&rhoA, &EA, &EI, &eps, &lam);
+    if (!bend) EI = 0;
+    rho = rhoA / lam;
+    for (j = 0; j < nm; ++j)
+        for (k = 0; k < nm; ++k) {
+            const double kj = (j + 1) * PI / l;
+            const int a = j + 1, b = k + 1;
+            M[j * nm + k] = (vlbe_real)(j == k ? 0.5 * rho * l : 0.0);
+            K[j * nm + k] = (vlbe_real)(j == k ? 0.5 * l * (EI * kj * kj * kj * kj +
+                                                            (MS_F - rho * speed * speed) * kj * kj)
+                                               : 0.0);
+            G[j * nm + k] =
+                (vlbe_real)((a + b) % 2 ? 2.0 * rho * speed * 2.0 * a * b / (double)(a * a - b * b)
+                                        : 0.0);
+        }
+    w = (vlbe_real *)malloc(vlbe_eig_quad_work_len(nm) * sizeof *w);
+    iw = (int *)malloc(vlbe_eig_quad_iwork_len(nm) * sizeof *iw + sizeof *iw);
+    st = w && iw ? vlbe_eig_quad(nm, M, G, K, (vlbe_real)(-2.0 * PI * 5.0), sre, sim, NULL, NULL, w,
+                                 vlbe_eig_quad_work_len(nm), iw, vlbe_eig_quad_iwork_len(nm))
+                 : VLBE_EWORK;
+    for (k = j = 0; st == VLBE_OK && k < 2 * nm && j < nf; ++k)
+        if (sim[k] > 0) f[j++] = (double)sim[k] / (2.0 * PI);
+    free(w);
+    free(iw);
+    return st;
+}
+
 #ifndef VLBE_EXAMPLE_NO_MAIN
 #include "../bench/svgplot.h"
 
@@ -448,6 +570,176 @@ static void ms_table(const char *tag, int kind3, const char *name, double paper_
     }
 }
 
+/* Is the window of ne elements (kind) unstable at `speed`: an eigenvalue
+   with Re s > 0 (divergence: a real pair +-s)?  -1 if the analysis fails. */
+static int ms_unstable(int ne, int kind, double speed)
+{
+    ms_model *m = (ms_model *)malloc(sizeof *m);
+    vlbe_real *q = (vlbe_real *)malloc(MS_NQ_NODE * (MS_NE_MAX + 1) * sizeof *q);
+    vlbe_real *v = (vlbe_real *)calloc(MS_NQ_NODE * (MS_NE_MAX + 1), sizeof *v);
+    vlbe_real *a = NULL, *lam = NULL, *Mr = NULL, *Dr = NULL, *Kr = NULL, *sre = NULL,
+              *sim = NULL, *w = NULL;
+    int *iw = NULL, n, nr = 0, k, rc = -1;
+    size_t lw, liw;
+    if (!m || !q || !v || ms_build_at(m, ne, kind, speed, q, NULL)) goto done;
+    n = m->sys.n;
+    lw = vlbe_dae_lin_work_len_sys(&m->sys);
+    if (vlbe_dae_work_len_sys(&m->sys) > lw) lw = vlbe_dae_work_len_sys(&m->sys);
+    if (vlbe_eig_quad_work_len(n) > lw) lw = vlbe_eig_quad_work_len(n);
+    liw = vlbe_dae_lin_iwork_len_sys(&m->sys);
+    if (vlbe_dae_iwork_len_sys(&m->sys) > liw) liw = vlbe_dae_iwork_len_sys(&m->sys);
+    if (vlbe_eig_quad_iwork_len(n) > liw) liw = vlbe_eig_quad_iwork_len(n);
+    a = (vlbe_real *)malloc((size_t)n * sizeof *a);
+    lam = (vlbe_real *)malloc(((size_t)m->sys.m + 1) * sizeof *lam);
+    Mr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Mr);
+    Dr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Dr);
+    Kr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Kr);
+    sre = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sre);
+    sim = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sim);
+    w = (vlbe_real *)malloc(lw * sizeof *w);
+    iw = (int *)malloc(liw * sizeof *iw + sizeof *iw);
+    if (!a || !lam || !Mr || !Dr || !Kr || !sre || !sim || !w || !iw ||
+        vlbe_dae_consistent_acc(&m->sys, 0, q, v, a, lam, NULL, w, lw, iw, liw) ||
+        vlbe_dae_linearize(&m->sys, 0, q, v, a, lam, NULL, &nr, NULL, Mr, Dr, Kr, NULL, w, lw,
+                           iw, liw) ||
+        vlbe_eig_quad(nr, Mr, Dr, Kr, (vlbe_real)-10.0, sre, sim, NULL, NULL, w, lw, iw, liw))
+        goto done;
+    rc = 0; /* a gyroscopic conservative system: Re s = 0 to rounding while stable */
+    for (k = 0; k < 2 * nr; ++k)
+        if ((double)sre[k] > 1e-6 * fabs((double)sre[k] + (double)sim[k]) + 1e-6) rc = 1;
+done:
+    free(q), free(v), free(a), free(lam), free(Mr), free(Dr), free(Kr);
+    free(sre), free(sim), free(w), free(iw), free(m);
+    return rc;
+}
+
+/* The divergence speed of the model by bisection between lo (stable) and
+   hi (unstable), to 1e-9 relative; -1 if the bracket is not one. */
+static double ms_divergence(int ne, int kind, double lo, double hi)
+{
+    int it;
+    if (ms_unstable(ne, kind, lo) != 0 || ms_unstable(ne, kind, hi) != 1) return -1.0;
+    for (it = 0; it < 60 && hi - lo > 1e-9 * hi; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        const int u = ms_unstable(ne, kind, mid);
+        if (u < 0) return -1.0;
+        if (u) hi = mid;
+        else lo = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+/* Campbell diagram of the window (16 elements): the lowest three
+   frequencies of string and beam against the transport speed, up to the
+   analytic divergence speed (string: c; beam: rho v^2 = T + EI pi^2/l^2,
+   the first mode's stiffness gone), with the closed form of the string and
+   the Galerkin series of the beam; ROW lines at v0 and near divergence. */
+#define MS_NV 23
+static void ms_campbell(const char *dir)
+{
+    static const double r[MS_NV] = {0,   .05, .1,  .15, .2,  .25, .3,  .35, .4,  .45, .5,  .55,
+                                    .6,  .65, .7,  .75, .8,  .85, .9,  .95, .98, .99, .995};
+    static double v[2][MS_NV], fe[2][3][MS_NV], fr[2][3][MS_NV], X[2][3 * MS_NV + 2],
+        YE[2][3 * MS_NV + 2], YR[2][3 * MS_NV + 2], vd[2];
+    const double PI = 3.14159265358979323846;
+    double rhoA, EA, EI, eps, lam, c, cpu = 0, cpu_all = 0, f[3], g[3], vdm;
+    char path[512], q[200];
+    svgp_chart ch;
+    int b, k, i;
+    ms_section(&rhoA, &EA, &EI, &eps, &lam);
+    c = sqrt(MS_F * lam / rhoA);
+    vd[0] = c;
+    vd[1] = sqrt((MS_F + EI * PI * PI / (MS_L * MS_L)) * lam / rhoA);
+    for (b = 0; b < 2; ++b)
+        for (i = 0; i < MS_NV; ++i) {
+            v[b][i] = r[i] * vd[b];
+            if (ms_eig(16, b, v[b][i], 3, f, NULL, &cpu) != VLBE_OK ||
+                (b ? ms_galerkin(1, v[b][i], MS_GAL_MAX, 3, g) != VLBE_OK : 0)) {
+                printf("# campbell: the analysis at %g m/s failed\n", v[b][i]);
+                return;
+            }
+            cpu_all += cpu;
+            for (k = 0; k < 3; ++k) {
+                fe[b][k][i] = f[k];
+                fr[b][k][i] = b ? g[k] : (k + 1) * (c * c - v[b][i] * v[b][i]) / (2.0 * MS_L * c);
+            }
+        }
+    printf("# Campbell diagram, 16 elements, %d speeds each: %.3f s (linearisation and "
+           "eigen-solve)\n#   v/v_d   string f1..f3 [Hz] (closed form)            beam f1..f3 "
+           "[Hz] (Galerkin, 48 sine modes)\n", MS_NV, cpu_all);
+    for (i = 0; i < MS_NV; i += 2)
+        printf("#   %.3f  %8.4f %8.4f %8.4f (%8.4f)   %8.4f %8.4f %8.4f (%8.4f)\n", r[i],
+               fe[0][0][i], fe[0][1][i], fe[0][2][i], fr[0][0][i], fe[1][0][i], fe[1][1][i],
+               fe[1][2][i], fr[1][0][i]);
+    for (b = 0; b < 2; ++b) {
+        const char *nm = b ? "beam" : "string";
+        for (i = 0; i < MS_NV; i += 10) {
+            snprintf(q, sizeof q, "eigen route, %s f1 at %.0f %% of the divergence speed, "
+                                  "16 elements, vs %s [Hz]", nm, 100.0 * r[i],
+                     b ? "Galerkin series" : "closed form");
+            svgp_compare_row(stdout, "moving", q, fr[b][0][i], fe[b][0][i],
+                             fabs(fe[b][0][i] - fr[b][0][i]) / fr[b][0][i], cpu_all / (2 * MS_NV));
+        }
+        i = MS_NV - 1;
+        snprintf(q, sizeof q, "eigen route, %s f1 at 99.5 %% of the divergence speed, 16 "
+                              "elements, vs %s [Hz]", nm, b ? "Galerkin series" : "closed form");
+        svgp_compare_row(stdout, "moving", q, fr[b][0][i], fe[b][0][i],
+                         fabs(fe[b][0][i] - fr[b][0][i]) / fr[b][0][i], cpu_all / (2 * MS_NV));
+        vdm = ms_divergence(16, b, 0.9 * vd[b], 1.1 * vd[b]);
+        snprintf(q, sizeof q, "divergence speed of the %s (f1 -> 0), 16 elements, vs %s [m/s]",
+                 nm, b ? "rho v^2 = T + EI pi^2/l^2" : "c = sqrt(T lam / rhoA)");
+        svgp_compare_row(stdout, "moving", q, vd[b], vdm, fabs(vdm - vd[b]) / vd[b], (double)NAN);
+    }
+    for (b = 0; b < 2; ++b) { /* three modes as one series each, NaN between */
+        int j = 0;
+        for (k = 0; k < 3; ++k) {
+            for (i = 0; i < MS_NV; ++i, ++j) {
+                X[b][j] = v[b][i];
+                YE[b][j] = fe[b][k][i];
+                YR[b][j] = fr[b][k][i];
+            }
+            if (k < 2) {
+                X[b][j] = YE[b][j] = YR[b][j] = NAN;
+                ++j;
+            }
+        }
+    }
+    {
+        const double *cols[13];
+        cols[0] = r;
+        for (b = 0; b < 2; ++b) {
+            cols[1 + 6 * b] = v[b];
+            for (k = 0; k < 3; ++k) cols[2 + 6 * b + k] = fe[b][k];
+            cols[5 + 6 * b] = fr[b][0];
+            cols[6 + 6 * b] = fr[b][1];
+        }
+        snprintf(path, sizeof path, "%s/moving_campbell.csv", dir);
+        if (svgp_csv_write(path,
+                           "v_over_vd,v_string,f1_string,f2_string,f3_string,f1_string_exact,"
+                           "f2_string_exact,v_beam,f1_beam,f2_beam,f3_beam,f1_beam_galerkin,"
+                           "f2_beam_galerkin",
+                           13, MS_NV, cols))
+            printf("# could not write %s\n", path);
+    }
+    svgp_init(&ch, "Axially moving string and beam (vlbse 4.1): Campbell diagram, 16 elements",
+              "transport speed v0 [m/s]", "frequency [Hz]", 0, 0);
+    svgp_series(&ch, "string, closed form f_k = k (c^2 - v^2) / (2 l c)", 3 * MS_NV + 2, X[0],
+                YR[0], 0);
+    svgp_series(&ch, "string, eigen route", 3 * MS_NV + 2, X[0], YE[0], SVGP_NOLINE);
+    svgp_series(&ch, "beam, Galerkin series (48 modes)", 3 * MS_NV + 2, X[1], YR[1], SVGP_DASH);
+    svgp_series(&ch, "beam, eigen route", 3 * MS_NV + 2, X[1], YE[1], SVGP_NOLINE);
+    {
+        static double xs[2], xb[2], yv[2] = {0, 150};
+        xs[0] = xs[1] = vd[0];
+        xb[0] = xb[1] = vd[1];
+        svgp_series(&ch, "divergence speed, string (v0 = c)", 2, xs, yv, SVGP_DOT);
+        svgp_series(&ch, "divergence speed, beam", 2, xb, yv, SVGP_DOT);
+    }
+    svgp_yrange(&ch, 0, 150);
+    snprintf(path, sizeof path, "%s/moving_campbell.svg", dir);
+    if (svgp_write_file(&ch, path)) printf("# could not write %s\n", path);
+}
+
 /* ROW lines of ms_compare(4 elements) of model a against model b. */
 static void ms_compare_rows(const char *what, int kind_a, int kind_b, double h, double T)
 {
@@ -517,6 +809,33 @@ int main(int argc, char **argv)
     ms_compare_rows("3D without vs with spin angle string", MS_3D | MS_NOSPIN, MS_3D, h, T);
     ms_compare_rows("3D x-z vs x-y plane string", MS_3D | MS_XZ, MS_3D, h, T);
     ms_compare_rows("3D x-z vs x-y plane beam", MS_3D | MS_XZ | MS_BEND, MS_3D | MS_BEND, h, T);
+    printf("# Table 1 by the eigen route (linearisation about the steady flow, vlbe_eig_quad),\n"
+           "# 4 elements as the paper, against the paper and the time histories above\n");
+    for (k = 0; k < 4; ++k) {
+        const int d3 = k >= 2, bend = k & 1;
+        const double paper = d3 ? (bend ? MS_F1_PAPER_BEAM3 : MS_F1_PAPER_VLBSE)
+                                : (bend ? MS_F1_PAPER_BEAM : MS_F1_PAPER_VLBE);
+        const double th = d3 ? f3[bend][0] : f[bend][0];
+        double fe = 0, amax = 0, ce = 0;
+        if (ms_eig(4, (d3 ? MS_3D : 0) | bend, MS_V0, 1, &fe, &amax, &ce) != VLBE_OK) {
+            printf("# eigen route failed\n");
+            continue;
+        }
+        snprintf(q, sizeof q, "eigen route: %s%s f1, 4 elements, vs paper %s [Hz]", d3 ? "3D " : "",
+                 bend ? "beam" : "string", d3 ? "VLBSE" : "VLBE");
+        svgp_compare_row(stdout, "moving", q, paper, fe, fabs(fe - paper) / paper, ce);
+        snprintf(q, sizeof q, "eigen route: %s%s f1, 4 elements, vs the time history [Hz]",
+                 d3 ? "3D " : "", bend ? "beam" : "string");
+        svgp_compare_row(stdout, "moving", q, th, fe, fabs(fe - th) / th, ce);
+        if (!bend) {
+            snprintf(q, sizeof q, "eigen route: %sstring f1, 4 elements, vs exact (prestretched) "
+                                  "[Hz]", d3 ? "3D " : "");
+            svgp_compare_row(stdout, "moving", q, fx, fe, fabs(fe - fx) / fx, ce);
+        }
+        printf("# %s%s: steady state max |q''| = %.3g\n", d3 ? "3D " : "", bend ? "beam" : "string",
+               amax);
+    }
+    ms_campbell(dir);
     ms_chart(dir);
     return 0;
 }
