@@ -1449,12 +1449,12 @@ VLBE_INLINE void vlbe__lin_unband(const vlbe_dae *s, const vlbe_real *B, vlbe_re
         }
 }
 
-/* n x n matrices finite, row by row */
-VLBE_INLINE int vlbe__lin_finite(int n, const vlbe_real *X)
+/* x[0..len-1] finite (len a size_t: n^2 may pass an int) */
+VLBE_INLINE int vlbe__lin_finite(size_t len, const vlbe_real *x)
 {
-    int i;
-    for (i = 0; i < n; ++i)
-        if (!vlbe_all_finite(X + (size_t)i * (size_t)n, n)) return 0;
+    size_t i;
+    for (i = 0; i < len; ++i)
+        if (!isfinite(x[i])) return 0;
     return 1;
 }
 
@@ -1539,13 +1539,6 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
     if ((rc = vlbe__int_force(&sl, stats, t, q, v, Q)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_cjac(&sl, stats, t, q, band ? Cqb : T, NULL)) != VLBE_OK) return rc;
     if (!vlbe_all_finite(Q, n)) return VLBE_ENONFINITE;
-    if (band) {
-        if (!vlbe_all_finite(Mb, (int)vlbe__int_mlen(sys, 0)) ||
-            (m > 0 && !vlbe_all_finite(Cqb, (int)vlbe__int_mlen(sys, 1))))
-            return VLBE_ENONFINITE;
-    } else if (!vlbe__lin_finite(n, M) || (m > 0 && !vlbe_all_finite(T, m * n))) {
-        return VLBE_ENONFINITE;
-    }
     for (k = 0; k < m; ++k)
         for (j = 0; j < n; ++j) {
             vlbe_real x;
@@ -1559,6 +1552,9 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
             }
             A[(size_t)j * (size_t)m + (size_t)k] = x;
         }
+    if (!vlbe__lin_finite((size_t)n * (size_t)m, A)) return VLBE_ENONFINITE;
+    if (band) vlbe__lin_unband(sys, Mb, M); /* (only the entries inside the matrix are read) */
+    if (!vlbe__lin_finite(nn, M)) return VLBE_ENONFINITE;
     /* K = -dQ/dq + d(M a)/dq + d(C_q^T lambda)/dq, D = -dQ/dv + d(M a)/dv */
     if (band) {
         const size_t ml = vlbe__int_mlen(sys, 0);
@@ -1578,11 +1574,10 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
                             VLBE_R(1.0), &bk, VLBE_R(1.0), &bd, inv, scr);
     if (rc != VLBE_OK) return rc;
     if (band) {
-        vlbe__lin_unband(sys, Mb, M);
         vlbe__lin_unband(sys, Kb, K);
         vlbe__lin_unband(sys, Db, D);
     }
-    if (!vlbe__lin_finite(n, K) || !vlbe__lin_finite(n, D)) return VLBE_ENONFINITE;
+    if (!vlbe__lin_finite(nn, K) || !vlbe__lin_finite(nn, D)) return VLBE_ENONFINITE;
     /* the rotating frame: D~ = D + 2 M G, K~ = K + M G^2 + D G */
     if (rot) {
         for (e = 0; e < nn; ++e) T[e] = VLBE_R(0.0);
@@ -1600,8 +1595,7 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
         vlbe__lin_reduce(n, nred, Nb, D, T);
         vlbe__lin_reduce(n, nred, Nb, K, T);
         e = (size_t)nred * (size_t)nred;
-        if (!vlbe_all_finite(M, (int)e) || !vlbe_all_finite(D, (int)e) ||
-            !vlbe_all_finite(K, (int)e))
+        if (!vlbe__lin_finite(e, M) || !vlbe__lin_finite(e, D) || !vlbe__lin_finite(e, K))
             return VLBE_ENONFINITE;
         vlbe_vec_copy((int)e, M, Mr);
         vlbe_vec_copy((int)e, D, Dr);
