@@ -1195,7 +1195,7 @@ VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const
    The last term is the geometric stiffness of the constraints: the
    reaction C_q^T lambda turning with the constraint's normal (a pendulum
    owes its g / L to it).  The Jacobians come from the integrators'
-   helper vlbe__int_btangent: force_jac, mass_jac and constr_hess where the
+   routine vlbe__int_btangent: force_jac, mass_jac and constr_hess where the
    model gives them, forward differences of force, of M(q) a and of
    C_q^T lambda where it does not (dQ/dv by differences only without
    force_jac; d(M a)/dq only without VLBE_DAE_MASS_CONST, d(M a)/dv only
@@ -1345,7 +1345,7 @@ VLBE_INLINE vlbe_real vlbe__lin_cnorm(int len, const vlbe_real *x, size_t ld)
 }
 
 /* Householder QR with column pivoting of A (n x m, row-major, ld m; GvL
-   alg. 5.4.1), stopped at the numerical rank, which it returns: step k
+   alg. 5.4.1), ended at the numerical rank, which it returns: step k
    reflects the trailing column of largest norm (piv: the columns' order),
    H_k = I - tau_k v v^T on rows k..n-1 with v_k = 1 and v_i (i > k) kept
    in A below the diagonal; R above.  cn: m reals of scratch. */
