@@ -98,6 +98,9 @@ API
    size_t vlbe_*_work_len_sys(sys), vlbe_*_iwork_len_sys(sys)   the same for the problem's
                                                           storage (dae, static, hht, bdf)
    vlbe_status vlbe_dae_consistent_acc(sys,t,q,v,a,lam,st,w,lw,iw,liw)  q'', lambda at start
+   size_t vlbe_dae_lin_work_len_sys(sys), vlbe_dae_lin_iwork_len_sys(sys)  linearisation workspace
+   vlbe_status vlbe_dae_linearize(sys,t,q,v,a,lam,frame,nr,N,Mr,Dr,Kr,st,w,lw,iw,liw)
+                                                          reduced M, D, K about a state
    void vlbe_dae_stats_add(a, b)                          a += b, counter by counter (restarts)
    void vlbe_static_params_default(p)                     static solver defaults
    size_t vlbe_static_work_len(n, m), vlbe_static_iwork_len(n, m)
@@ -174,6 +177,17 @@ typedef struct vlbe_dae_stats {
     long lu_solves;      /* LU solves (one per right-hand side set)         */
     int callback_rc;     /* value returned by the last failing callback     */
 } vlbe_dae_stats;
+
+/* A uniformly rotating frame for vlbe_dae_linearize: its angular velocity
+   and the coordinates that turn with it (see the linearisation section). */
+typedef struct vlbe_lin_frame {
+    vlbe_real omega[3]; /* angular velocity of the frame [rad/s] (planar: omega[2]) */
+    int dim;            /* 2 (planar vectors, rotation about z) or 3                */
+    int nvec;           /* number of vectors of q that turn with the frame          */
+    const int *vec;     /* vec[k]: index in q of the first component of vector k
+                           (positions, slopes, directions); the other coordinates
+                           (angles, material coordinates) are scalars              */
+} vlbe_lin_frame;
 
 /* Generalized-alpha family parameters (Arnold-Bruls form):
    (1-alpha_m) a_{n+1} + alpha_m a_n = (1-alpha_f) q''_{n+1} + alpha_f q''_n. */
@@ -332,6 +346,14 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
                                              vlbe_real *lambda, vlbe_dae_stats *stats,
                                              vlbe_real *work, size_t work_len, int *iwork,
                                              size_t iwork_len);
+VLBE_API size_t vlbe_dae_lin_work_len_sys(const vlbe_dae *sys);
+VLBE_API size_t vlbe_dae_lin_iwork_len_sys(const vlbe_dae *sys);
+VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const vlbe_real *q,
+                                        const vlbe_real *v, const vlbe_real *a,
+                                        const vlbe_real *lambda, const vlbe_lin_frame *frame,
+                                        int *nr, vlbe_real *N, vlbe_real *Mr, vlbe_real *Dr,
+                                        vlbe_real *Kr, vlbe_dae_stats *stats, vlbe_real *work,
+                                        size_t work_len, int *iwork, size_t iwork_len);
 
 VLBE_API void vlbe_static_params_default(vlbe_static_params *p);
 VLBE_API size_t vlbe_static_work_len(int n, int m);
@@ -1154,6 +1176,434 @@ VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const
 {
     return vlbe__int_hypot(vlbe_vec_norm2(n, r), vlbe_vec_norm2(m, c)) /
            vlbe_sqrt((vlbe_real)(n + m));
+}
+
+/* ===== linearisation ===================================================== */
+/* vlbe_dae_linearize: the linearised equations of motion of a vlbe_dae
+   about a given state (t, q, v, a = q'', lambda), reduced to the tangent
+   space of the constraint manifold -- the matrices of eigen-, stability and
+   controller-design studies.
+
+   Perturbing M(q) q'' + C_q(q)^T lambda = Q(q, v) about the reference
+   (q, v, a, lambda) at fixed t and fixed multipliers, and writing the
+   admissible perturbations as dq = N eta with C_q N = 0 (the columns of N
+   span the null space of C_q, so that the reaction C_q^T dlambda drops out
+   of N^T times the equations):
+       Mr eta'' + Dr eta' + Kr eta = 0,          Mr = N^T M N,
+       Dr = N^T ( -dQ/dv + d(M a)/dv ) N,
+       Kr = N^T ( -dQ/dq + d(M a)/dq + d(C_q^T lambda)/dq ) N.
+   The last term is the geometric stiffness of the constraints: the
+   reaction C_q^T lambda turning with the constraint's normal (a pendulum
+   owes its g / L to it).  The Jacobians come from the integrators'
+   routine vlbe__int_btangent: force_jac, mass_jac and constr_hess where the
+   model gives them, forward differences of force, of M(q) a and of
+   C_q^T lambda where it does not (dQ/dv by differences only without
+   force_jac; d(M a)/dq only without VLBE_DAE_MASS_CONST, d(M a)/dv only
+   with VLBE_DAE_MASS_V).  VLBE_DAE_NO_CHESS is ignored here: it drops the
+   constraint term from an iteration matrix, where it only slows Newton,
+   whereas here it is physics.
+
+   The basis N.  Householder QR with column pivoting of C_q^T (n x m;
+   Golub & Van Loan, Matrix Computations, 4th ed., alg. 5.4.1), C_q^T P =
+   Q R, column norms recomputed at each step (the downdating formula of
+   the algorithm loses its digits after cancellation; recomputing costs the
+   order of the factorisation itself).  Step k picks the trailing column of
+   largest norm, which becomes |R_kk|; the rank r is the first k with
+       |R_kk| <= n eps |R_11|       (eps = VLBE_EPS),
+   the rounding level of a Householder factorisation of a matrix of norm
+   about |R_11|.  N = the last n - r columns of Q = H_1 ... H_r: orthonormal
+   columns (to rounding), so Mr, Kr keep the conditioning of M and K.
+   Redundant constraint rows are allowed and counted out of the rank (their
+   multipliers need not be split in any particular way: only C_q^T lambda
+   enters).  m = 0: N = I, nr = n.
+
+   Rotating frame (frame != NULL).  A frame turning uniformly at omega
+   whose axes are the inertial ones at the instant t: the listed vectors of
+   q are q = R(s) q~, R(s) = exp(G (s - t)), G constant and block diagonal
+   (omega x . on each listed vector of dim components, 0 on the scalar
+   coordinates).  With R G = G R,
+       q' = R (q~' + G q~),     q'' = R (q~'' + 2 G q~' + G^2 q~),
+   and dq = R dq~ in M dq'' + D dq' + K dq = 0 at s = t (R = I) gives
+       M~ = M,   D~ = D + 2 M G,   K~ = K + M G^2 + D G,
+   (2 M G: Coriolis, M G^2: centrifugal softening, D G: damping of the
+   frame's own motion), then reduced with N.  The caller's state must be a
+   rotating steady state, v = G q and a = G^2 q at its reference, with the
+   multipliers that hold it.
+
+   Exactness.  About an equilibrium (v = 0, a = 0 of a model that does not
+   depend on t) the result is the exact linearisation: small motions dq = N
+   eta obey it to first order; so about a frame-steady state of a model
+   invariant under the frame's rotation, in the frame.  About a general
+   moving state it is the frozen-time linearisation at t: it neglects the
+   time variation of N (dq' = N eta' + N' eta: the N' terms, the velocity
+   of the state times the curvature of the constraint manifold) and of the
+   matrices along the reference motion.
+
+   Banded problems (VLBE_DAE_BANDED) are supported by unpacking the bands of
+   M, K, D and C_q into dense n x n and n x m arrays in the workspace (the
+   reduced matrices are dense anyway); the Jacobians are formed in band
+   form (one evaluation per kl + ku + 1 columns where differences are
+   needed).
+
+   Arguments: lambda (m; may be NULL when m = 0) as given, e.g. from
+   vlbe_dae_consistent_acc; frame NULL: inertial.  Outputs: *nr = n - r;
+   N (may be NULL) n x nr, row-major, leading dimension nr; Mr, Dr, Kr
+   nr x nr each, leading dimension nr (the caller sizes N for n*n and the
+   others for n*n reals, or for (n - m)^2 when the constraints are known to
+   be independent).  stats (may be NULL) is added to.  Workspace:
+   vlbe_dae_lin_work_len_sys(sys) reals, vlbe_dae_lin_iwork_len_sys(sys)
+   ints (scratch).  Cost: one Jacobian evaluation, O(n^2 m) for the QR and
+   O(n^2 nr) for the products.
+   Returns VLBE_OK; VLBE_EARG (problem, t not finite, q, v, a, nr, Mr, Dr,
+   Kr NULL, lambda NULL with m > 0, m > n, n > 46340 (n^2 must fit an int),
+   frame: dim not 2 or 3, nvec < 0, vec NULL with nvec > 0, a vector
+   reaching outside 0..n-1 or overlapping another, omega not finite;
+   banded: order not a permutation); VLBE_EWORK; VLBE_ENONFINITE (q, v, a,
+   lambda, or a matrix or result); VLBE_ECALLBACK (any callback != 0: a
+   linearisation has no smaller step to retry with; stats->callback_rc
+   holds the value).  Outputs untouched on failure. */
+
+/* at most this many coordinates: n^2 fits an int */
+#define VLBE__LIN_NMAX 46340
+
+VLBE_API size_t vlbe_dae_lin_work_len_sys(const vlbe_dae *sys)
+{
+    size_t n, m, r;
+    VLBE_ASSERT(sys != NULL);
+    if (sys->n < 1 || sys->n > VLBE__LIN_NMAX || sys->m < 0) return SIZE_MAX;
+    n = (size_t)sys->n;
+    m = (size_t)sys->m;
+    /* M, K, D, scratch T, basis N (n^2 each); Q; C_q^T, tau, column norms;
+       Jacobian scratch; banded: the bands of M, K, D and C_q */
+    r = 5 * n * n + n + n * m + 2 * m + vlbe__int_btangent_len(sys);
+    if (vlbe__int_banded(sys)) r += 3 * vlbe__int_mlen(sys, 0) + vlbe__int_mlen(sys, 1);
+    return r;
+}
+/* pivots (or the marks of the frame's vectors) n; banded: inv[] */
+VLBE_API size_t vlbe_dae_lin_iwork_len_sys(const vlbe_dae *sys)
+{
+    VLBE_ASSERT(sys != NULL);
+    return (size_t)(sys->n > 0 ? sys->n : 0) + vlbe__int_ilen(sys);
+}
+
+/* the frame's generator on one vector: S x = omega x x (planar: omega[2]
+   about z) */
+VLBE_INLINE void vlbe__lin_skew(const vlbe_lin_frame *f, vlbe_real S[3][3])
+{
+    int i, j;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) S[i][j] = VLBE_R(0.0);
+    if (f->dim == 2) {
+        S[0][1] = -f->omega[2];
+        S[1][0] = f->omega[2];
+        return;
+    }
+    S[0][1] = -f->omega[2];
+    S[0][2] = f->omega[1];
+    S[1][0] = f->omega[2];
+    S[1][2] = -f->omega[0];
+    S[2][0] = -f->omega[1];
+    S[2][1] = f->omega[0];
+}
+
+/* Y += c X G (X, Y n x n, row-major; G of the frame, block diagonal) */
+VLBE_INLINE void vlbe__lin_xg(int n, const vlbe_lin_frame *f, vlbe_real c, const vlbe_real *X,
+                              vlbe_real *Y)
+{
+    vlbe_real S[3][3];
+    int d = f->dim, k, i, a, b;
+    vlbe__lin_skew(f, S);
+    for (k = 0; k < f->nvec; ++k) {
+        const size_t o = (size_t)f->vec[k];
+        for (i = 0; i < n; ++i) {
+            const vlbe_real *x = X + (size_t)i * (size_t)n + o;
+            vlbe_real *y = Y + (size_t)i * (size_t)n + o;
+            for (b = 0; b < d; ++b) {
+                vlbe_real s = VLBE_R(0.0);
+                for (a = 0; a < d; ++a) s += x[a] * S[a][b];
+                y[b] += c * s;
+            }
+        }
+    }
+}
+
+/* 2-norm of x[0], x[ld], ..., x[(len-1) ld] (scaled: no overflow) */
+VLBE_INLINE vlbe_real vlbe__lin_cnorm(int len, const vlbe_real *x, size_t ld)
+{
+    vlbe_real s = VLBE_R(0.0), sum = VLBE_R(0.0);
+    int i;
+    for (i = 0; i < len; ++i) {
+        vlbe_real ax = vlbe_fabs(x[(size_t)i * ld]);
+        if (ax > s) s = ax;
+    }
+    if (s == VLBE_R(0.0)) return s;
+    for (i = 0; i < len; ++i) {
+        vlbe_real y = x[(size_t)i * ld] / s;
+        sum += y * y;
+    }
+    return s * vlbe_sqrt(sum);
+}
+
+/* Householder QR with column pivoting of A (n x m, row-major, ld m; GvL
+   alg. 5.4.1), ended at the numerical rank, which it returns: step k
+   reflects the trailing column of largest norm (piv: the columns' order),
+   H_k = I - tau_k v v^T on rows k..n-1 with v_k = 1 and v_i (i > k) kept
+   in A below the diagonal; R above.  cn: m reals of scratch. */
+VLBE_INLINE int vlbe__lin_qrcp(int n, int m, vlbe_real *A, vlbe_real *tau, vlbe_real *cn, int *piv)
+{
+    int k, j, i, kmax = m < n ? m : n;
+    const size_t ld = (size_t)m;
+    vlbe_real tol = VLBE_R(0.0);
+    for (j = 0; j < m; ++j) piv[j] = j;
+    for (k = 0; k < kmax; ++k) {
+        vlbe_real best = VLBE_R(-1.0), alpha, beta, sc;
+        vlbe_real *ak = A + (size_t)k * ld;
+        int p = k;
+        for (j = k; j < m; ++j) {
+            cn[j] = vlbe__lin_cnorm(n - k, ak + j, ld);
+            if (cn[j] > best) {
+                best = cn[j];
+                p = j;
+            }
+        }
+        if (k == 0) tol = (vlbe_real)n * VLBE_EPS * best; /* n eps |R_11| */
+        if (!(best > tol)) return k;
+        if (p != k) {
+            for (i = 0; i < n; ++i) {
+                vlbe_real *ai = A + (size_t)i * ld, x = ai[k];
+                ai[k] = ai[p];
+                ai[p] = x;
+            }
+            j = piv[k];
+            piv[k] = piv[p];
+            piv[p] = j;
+        }
+        alpha = ak[k];
+        beta = alpha >= VLBE_R(0.0) ? -best : best; /* H x = beta e_k */
+        tau[k] = (beta - alpha) / beta;
+        sc = VLBE_R(1.0) / (alpha - beta);   /* |alpha - beta| >= best: no cancellation */
+        for (i = k + 1; i < n; ++i) A[(size_t)i * ld + (size_t)k] *= sc;
+        ak[k] = beta;
+        for (j = k + 1; j < m; ++j) {
+            vlbe_real w = ak[j];
+            for (i = k + 1; i < n; ++i) w += A[(size_t)i * ld + (size_t)k] * A[(size_t)i * ld + (size_t)j];
+            w *= tau[k];
+            ak[j] -= w;
+            for (i = k + 1; i < n; ++i) A[(size_t)i * ld + (size_t)j] -= w * A[(size_t)i * ld + (size_t)k];
+        }
+    }
+    return kmax;
+}
+
+/* N (n x nr, ld nr, nr = n - r) = H_0 ... H_{r-1} [0; I]: the last nr
+   columns of Q of vlbe__lin_qrcp's factor */
+VLBE_INLINE void vlbe__lin_basis(int n, int m, int r, const vlbe_real *A, const vlbe_real *tau,
+                                 vlbe_real *N)
+{
+    const int nr = n - r;
+    const size_t ld = (size_t)m, ldn = (size_t)nr;
+    int k, i, c;
+    for (i = 0; i < n; ++i)
+        for (c = 0; c < nr; ++c) N[(size_t)i * ldn + (size_t)c] = i == r + c ? VLBE_R(1.0) : VLBE_R(0.0);
+    for (k = r - 1; k >= 0; --k)
+        for (c = 0; c < nr; ++c) {
+            vlbe_real w = N[(size_t)k * ldn + (size_t)c];
+            for (i = k + 1; i < n; ++i) w += A[(size_t)i * ld + (size_t)k] * N[(size_t)i * ldn + (size_t)c];
+            w *= tau[k];
+            N[(size_t)k * ldn + (size_t)c] -= w;
+            for (i = k + 1; i < n; ++i) N[(size_t)i * ldn + (size_t)c] -= w * A[(size_t)i * ld + (size_t)k];
+        }
+}
+
+/* X (n x n) <- N^T X N (nr x nr, ld nr) in place; T: n nr reals of scratch */
+VLBE_INLINE void vlbe__lin_reduce(int n, int nr, const vlbe_real *N, vlbe_real *X, vlbe_real *T)
+{
+    const size_t ln = (size_t)nr, lx = (size_t)n;
+    int i, j, k;
+    for (i = 0; i < n; ++i)
+        for (j = 0; j < nr; ++j) {
+            vlbe_real s = VLBE_R(0.0);
+            for (k = 0; k < n; ++k) s += X[(size_t)i * lx + (size_t)k] * N[(size_t)k * ln + (size_t)j];
+            T[(size_t)i * ln + (size_t)j] = s;
+        }
+    for (i = 0; i < nr; ++i)
+        for (j = 0; j < nr; ++j) {
+            vlbe_real s = VLBE_R(0.0);
+            for (k = 0; k < n; ++k) s += N[(size_t)k * ln + (size_t)i] * T[(size_t)k * ln + (size_t)j];
+            X[(size_t)i * ln + (size_t)j] = s;
+        }
+}
+
+/* the dense n x n matrix X of a model band B (augmented order; rows and
+   columns of q only) */
+VLBE_INLINE void vlbe__lin_unband(const vlbe_dae *s, const vlbe_real *B, vlbe_real *X)
+{
+    const int n = s->n, ld = vlbe__int_bld(s);
+    int i, j;
+    for (i = 0; i < n; ++i)
+        for (j = 0; j < n; ++j) {
+            const int oi = s->order[i], oj = s->order[j];
+            X[(size_t)i * (size_t)n + (size_t)j] =
+                (oj - oi <= s->ku && oi - oj <= s->kl) ? B[VLBE_BAND_IDX(ld, s->kl, oi, oj)]
+                                                       : VLBE_R(0.0);
+        }
+}
+
+/* x[0..len-1] finite (len a size_t: n^2 may pass an int) */
+VLBE_INLINE int vlbe__lin_finite(size_t len, const vlbe_real *x)
+{
+    size_t i;
+    for (i = 0; i < len; ++i)
+        if (!isfinite(x[i])) return 0;
+    return 1;
+}
+
+VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const vlbe_real *q,
+                                        const vlbe_real *v, const vlbe_real *a,
+                                        const vlbe_real *lambda, const vlbe_lin_frame *frame,
+                                        int *nr, vlbe_real *N, vlbe_real *Mr, vlbe_real *Dr,
+                                        vlbe_real *Kr, vlbe_dae_stats *stats, vlbe_real *work,
+                                        size_t work_len, int *iwork, size_t iwork_len)
+{
+    int n, m, i, j, k, r, nred, band, rot;
+    size_t nn, e;
+    vlbe_real *M, *K, *D, *T, *Nb, *Q, *A, *tau, *cn, *scr, *Mb = NULL, *Kb = NULL, *Db = NULL,
+              *Cqb = NULL;
+    int *inv = NULL;
+    vlbe__int_blk bk, bd;
+    vlbe_dae sl;
+    vlbe_dae_stats dummy;
+    vlbe_status rc;
+    if (!sys || vlbe_dae_check(sys) != VLBE_OK) return VLBE_EARG;
+    n = sys->n;
+    m = sys->m;
+    if (n > VLBE__LIN_NMAX || !isfinite(t) || !q || !v || !a || (m > 0 && !lambda) || !nr ||
+        !Mr || !Dr || !Kr)
+        return VLBE_EARG;
+    rot = 0;
+    if (frame) {
+        if ((frame->dim != 2 && frame->dim != 3) || frame->nvec < 0 ||
+            (frame->nvec > 0 && !frame->vec) || !isfinite(frame->omega[0]) ||
+            !isfinite(frame->omega[1]) || !isfinite(frame->omega[2]))
+            return VLBE_EARG;
+        rot = frame->nvec > 0;
+    }
+    if (!work || !iwork || work_len < vlbe_dae_lin_work_len_sys(sys) ||
+        iwork_len < vlbe_dae_lin_iwork_len_sys(sys))
+        return VLBE_EWORK;
+    if (rot) { /* the vectors inside q, none overlapping another (marks in iwork) */
+        for (i = 0; i < n; ++i) iwork[i] = 0;
+        for (k = 0; k < frame->nvec; ++k) {
+            const int o = frame->vec[k];
+            if (o < 0 || o > n - frame->dim) return VLBE_EARG;
+            for (j = o; j < o + frame->dim; ++j) {
+                if (iwork[j]) return VLBE_EARG;
+                iwork[j] = 1;
+            }
+        }
+    }
+    band = vlbe__int_banded(sys);
+    if (band) {
+        inv = iwork + n;
+        if (vlbe__int_inv(sys, inv) != VLBE_OK) return VLBE_EARG;
+    }
+    if (!vlbe_all_finite(q, n) || !vlbe_all_finite(v, n) || !vlbe_all_finite(a, n) ||
+        (m > 0 && !vlbe_all_finite(lambda, m)))
+        return VLBE_ENONFINITE;
+    if (!stats) {
+        stats = &dummy;
+        vlbe__int_stats_zero(&dummy);
+    }
+    nn = (size_t)n * (size_t)n;
+    M = work;
+    K = M + nn;
+    D = K + nn;
+    T = D + nn;
+    Nb = T + nn;
+    Q = Nb + nn;
+    A = Q + n;
+    tau = A + (size_t)n * (size_t)m;
+    cn = tau + m;
+    scr = cn + m;
+    if (band) {
+        Mb = scr + vlbe__int_btangent_len(sys);
+        Kb = Mb + vlbe__int_mlen(sys, 0);
+        Db = Kb + vlbe__int_mlen(sys, 0);
+        Cqb = Db + vlbe__int_mlen(sys, 0);
+    }
+    /* the constraint term is physics here (see above) */
+    sl = *sys;
+    sl.flags &= ~VLBE_DAE_NO_CHESS;
+    /* M, Q, C_q (dense C_q into T, m x n, then C_q^T into A) */
+    if ((rc = vlbe__int_mass(&sl, stats, t, q, v, band ? Mb : M)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_force(&sl, stats, t, q, v, Q)) != VLBE_OK) return rc;
+    if ((rc = vlbe__int_cjac(&sl, stats, t, q, band ? Cqb : T, NULL)) != VLBE_OK) return rc;
+    if (!vlbe_all_finite(Q, n)) return VLBE_ENONFINITE;
+    for (k = 0; k < m; ++k)
+        for (j = 0; j < n; ++j) {
+            vlbe_real x;
+            if (band) {
+                const int ok = sys->order[n + k], oj = sys->order[j];
+                x = (oj - ok <= sys->ku && ok - oj <= sys->kl)
+                        ? Cqb[VLBE_BAND_IDX(vlbe__int_bld(sys), sys->kl, ok, oj)]
+                        : VLBE_R(0.0);
+            } else {
+                x = T[(size_t)k * (size_t)n + (size_t)j];
+            }
+            A[(size_t)j * (size_t)m + (size_t)k] = x;
+        }
+    if (!vlbe__lin_finite((size_t)n * (size_t)m, A)) return VLBE_ENONFINITE;
+    if (band) vlbe__lin_unband(sys, Mb, M); /* (only the entries inside the matrix are read) */
+    if (!vlbe__lin_finite(nn, M)) return VLBE_ENONFINITE;
+    /* K = -dQ/dq + d(M a)/dq + d(C_q^T lambda)/dq, D = -dQ/dv + d(M a)/dv */
+    if (band) {
+        const size_t ml = vlbe__int_mlen(sys, 0);
+        for (e = 0; e < ml; ++e) Kb[e] = Db[e] = VLBE_R(0.0);
+        bk.A = Kb;
+        bd.A = Db;
+        bk.ld = bd.ld = (size_t)vlbe__int_bld(sys);
+        bk.kl = bd.kl = sys->kl;
+        bk.f = bd.f = 1;
+        bk.ro = bk.co = bd.ro = bd.co = 0;
+    } else {
+        for (e = 0; e < nn; ++e) K[e] = D[e] = VLBE_R(0.0);
+        bk = vlbe__int_dblk(K, n, 0);
+        bd = vlbe__int_dblk(D, n, 0);
+    }
+    rc = vlbe__int_btangent(&sl, stats, t, q, v, a, m > 0 ? lambda : NULL, Q, band ? Mb : M,
+                            VLBE_R(1.0), &bk, VLBE_R(1.0), &bd, inv, scr);
+    if (rc != VLBE_OK) return rc;
+    if (band) {
+        vlbe__lin_unband(sys, Kb, K);
+        vlbe__lin_unband(sys, Db, D);
+    }
+    if (!vlbe__lin_finite(nn, K) || !vlbe__lin_finite(nn, D)) return VLBE_ENONFINITE;
+    /* the rotating frame: D~ = D + 2 M G, K~ = K + M G^2 + D G */
+    if (rot) {
+        for (e = 0; e < nn; ++e) T[e] = VLBE_R(0.0);
+        vlbe__lin_xg(n, frame, VLBE_R(1.0), M, T); /* T = M G */
+        vlbe__lin_xg(n, frame, VLBE_R(1.0), T, K); /* K += M G^2 */
+        vlbe__lin_xg(n, frame, VLBE_R(1.0), D, K); /* K += D G */
+        for (e = 0; e < nn; ++e) D[e] += VLBE_R(2.0) * T[e];
+    }
+    /* N: null space of C_q from the QR of C_q^T */
+    r = m > 0 ? vlbe__lin_qrcp(n, m, A, tau, cn, iwork) : 0;
+    nred = n - r;
+    vlbe__lin_basis(n, m, r, A, tau, Nb);
+    if (nred > 0) {
+        vlbe__lin_reduce(n, nred, Nb, M, T);
+        vlbe__lin_reduce(n, nred, Nb, D, T);
+        vlbe__lin_reduce(n, nred, Nb, K, T);
+        e = (size_t)nred * (size_t)nred;
+        if (!vlbe__lin_finite(e, M) || !vlbe__lin_finite(e, D) || !vlbe__lin_finite(e, K))
+            return VLBE_ENONFINITE;
+        vlbe_vec_copy((int)e, M, Mr);
+        vlbe_vec_copy((int)e, D, Dr);
+        vlbe_vec_copy((int)e, K, Kr);
+        if (N) vlbe_vec_copy((int)((size_t)n * (size_t)nred), Nb, N);
+    }
+    *nr = nred;
+    return VLBE_OK;
 }
 
 /* ===== static equilibrium ================================================ */
