@@ -82,7 +82,7 @@
    rounding, an axial force N ~ EA EPS, whose geometric stiffness moves
    w_n by N / (2 EJ k_n^2) = EPS / (2 (n beta_1)^2) relative (beta_1 = k_1
    r_g = 0.02: 1250 EPS for mode 1); 64 times that.  The largest error
-   was 5.4 (m:frozen_vs_textbook) of these units.  The eigenvalue solver
+   was 5.6 (m:frozen_vs_textbook) of these units.  The eigenvalue solver
    adds a few EPS (vlbe_eig_gsym, shift-invert with sigma = 0).
    Float: the scene's time runs fail (VLBE_ENOCONV: see SHAFT_DOUBLE_ONLY)
    and are skipped; the chain checks and the frozen frequencies run. */
