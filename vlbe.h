@@ -35,8 +35,9 @@ CONVENTIONS
    (0 = VLBE_OK, negative = a specific failure); a failed call leaves the
    caller's data as it was before the call.  Programmer errors (NULL, n < 1)
    are caught by VLBE_ASSERT.  Nothing here allocates, prints or aborts.
-   Stack: at most 384 bytes per function (vlbe_herm_ale_eval; float on a
-   Cortex-M4F, gcc -O2, make check-m4; double about twice; README, Embedded).
+   Stack: at most 408 bytes per function (vlbe_eig_quad, 384 for
+   vlbe_herm_ale_eval; float on a Cortex-M4F, gcc -O2, make check-m4;
+   double about twice; README, Embedded).
 
    FAILURE CONTRACT (every vlbe module keeps it).  (1) A routine returning
    vlbe_status never returns VLBE_OK with a NaN or Inf in an output when its
