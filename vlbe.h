@@ -35,7 +35,7 @@ CONVENTIONS
    (0 = VLBE_OK, negative = a specific failure); a failed call leaves the
    caller's data as it was before the call.  Programmer errors (NULL, n < 1)
    are caught by VLBE_ASSERT.  Nothing here allocates, prints or aborts.
-   Stack: at most 408 bytes per function (vlbe_eig_quad, 384 for
+   Stack: at most 416 bytes per function (vlbe_eig_quad, 384 for
    vlbe_herm_ale_eval; float on a Cortex-M4F, gcc -O2, make check-m4;
    double about twice; README, Embedded).
 
@@ -1329,31 +1329,28 @@ VLBE_INLINE vlbe_status vlbe__eig_jacobi(size_t N, vlbe_real *C, vlbe_real *V)
     return VLBE_ENOCONV;
 }
 
-/* lam = diag(C), ascending (desc = 0) or descending (desc = 1); X (or NULL)
-   = the columns of V in that order (selection sort: n^2 compares, at most
-   n column swaps; the first of equal values stays first) */
-VLBE_INLINE void vlbe__eig_sorted(size_t N, const vlbe_real *C, const vlbe_real *V, int desc,
-                                  vlbe_real *lam, vlbe_real *X)
+/* Sorts the diagonal of C ascending (desc = 0) or descending (desc = 1)
+   in place and the columns of V (or NULL) with it (selection sort: n^2
+   compares, at most n column swaps; the first of equal values stays
+   first) */
+VLBE_INLINE void vlbe__eig_sort(size_t N, vlbe_real *C, vlbe_real *V, int desc)
 {
     size_t i, j, k;
-    for (i = 0; i < N; ++i) lam[i] = C[i * N + i];
-    if (X)
-        for (i = 0; i < N * N; ++i) X[i] = V[i];
     for (i = 0; i + 1 < N; ++i) {
         size_t m = i;
         for (j = i + 1; j < N; ++j)
-            if (desc ? lam[j] > lam[m] : lam[j] < lam[m]) m = j;
+            if (desc ? C[j * N + j] > C[m * N + m] : C[j * N + j] < C[m * N + m]) m = j;
         if (m == i) continue;
         {
-            const vlbe_real t = lam[i];
-            lam[i] = lam[m];
-            lam[m] = t;
+            const vlbe_real t = C[i * N + i];
+            C[i * N + i] = C[m * N + m];
+            C[m * N + m] = t;
         }
-        if (X)
+        if (V)
             for (k = 0; k < N; ++k) {
-                const vlbe_real t = X[k * N + i];
-                X[k * N + i] = X[k * N + m];
-                X[k * N + m] = t;
+                const vlbe_real t = V[k * N + i];
+                V[k * N + i] = V[k * N + m];
+                V[k * N + m] = t;
             }
     }
 }
@@ -1372,7 +1369,7 @@ VLBE_API size_t vlbe_eig_work_len(int n)
    component i of the vector of lam[k], columns orthonormal (X^T X = I to
    a few n EPS).  Accuracy: each eigenvalue to a few n EPS ||A||.
    work: vlbe_eig_work_len(n) reals (2 n^2 are used).  Status: VLBE_EARG,
-   VLBE_EWORK, VLBE_ENONFINITE (A), VLBE_ENOCONV (no convergence in 60
+   VLBE_EWORK, VLBE_ENONFINITE (A, or an overflow), VLBE_ENOCONV (no convergence in 60
    sweeps; not seen); on failure lam and X are untouched. */
 VLBE_API vlbe_status vlbe_eig_sym(int n, const vlbe_real *A, vlbe_real *lam, vlbe_real *X,
                                   vlbe_real *work, size_t work_len)
@@ -1390,7 +1387,13 @@ VLBE_API vlbe_status vlbe_eig_sym(int n, const vlbe_real *A, vlbe_real *lam, vlb
     for (i = 0; i < N; ++i)
         for (j = 0; j < N; ++j) C[i * N + j] = VLBE_R(0.5) * (A[i * N + j] + A[j * N + i]);
     if ((st = vlbe__eig_jacobi(N, C, X ? V : NULL)) != VLBE_OK) return st;
-    vlbe__eig_sorted(N, C, V, 0, lam, X);
+    vlbe__eig_sort(N, C, X ? V : NULL, 0);
+    for (i = 0; i < N; ++i)
+        if (!vlbe_all_finite(C + i * N + i, 1) || (X && !vlbe_all_finite(V + i * N, n)))
+            return VLBE_ENONFINITE;
+    for (i = 0; i < N; ++i) lam[i] = C[i * N + i];
+    if (X)
+        for (i = 0; i < N * N; ++i) X[i] = V[i];
     return VLBE_OK;
 }
 
@@ -1478,19 +1481,26 @@ VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M
             if (info) *info += n;
             return VLBE_ESINGULAR;
         }
-    /* mu descending = lam ascending; sort into lam (as mu), X (as y) */
-    vlbe__eig_sorted(N, C, V, 1, lam, X);
+    /* mu descending = lam ascending */
+    vlbe__eig_sort(N, C, X ? V : NULL, 1);
     if (X) /* x = L^-T y / sqrt(mu): back substitution, column by column */
         for (j = 0; j < N; ++j) {
-            const vlbe_real r = VLBE_R(1.0) / vlbe_sqrt(lam[j]);
+            const vlbe_real r = VLBE_R(1.0) / vlbe_sqrt(C[j * N + j]);
             for (i = N; i-- > 0;) {
-                vlbe_real s = X[i * N + j];
-                for (k = i + 1; k < N; ++k) s -= L[k * N + i] * X[k * N + j];
-                X[i * N + j] = s / L[i * N + i];
+                vlbe_real s = V[i * N + j];
+                for (k = i + 1; k < N; ++k) s -= L[k * N + i] * V[k * N + j];
+                V[i * N + j] = s / L[i * N + i];
             }
-            for (i = 0; i < N; ++i) X[i * N + j] *= r;
+            for (i = 0; i < N; ++i) V[i * N + j] *= r;
         }
-    for (i = 0; i < N; ++i) lam[i] = sigma + VLBE_R(1.0) / lam[i];
+    for (i = 0; i < N; ++i) {
+        C[i] = sigma + VLBE_R(1.0) / C[i * N + i]; /* row 0 is free: lam */
+        if (!vlbe_all_finite(C + i, 1) || (X && !vlbe_all_finite(V + i * N, n)))
+            return VLBE_ENONFINITE;
+    }
+    for (i = 0; i < N; ++i) lam[i] = C[i];
+    if (X)
+        for (i = 0; i < N * N; ++i) X[i] = V[i];
     return VLBE_OK;
 }
 
@@ -1723,7 +1733,9 @@ VLBE_INLINE void vlbe__eig_2x2(vlbe_real a, vlbe_real b, vlbe_real c, vlbe_real 
    work: vlbe_eig_real_work_len(n) reals.  Status (wr and wi untouched on
    failure): VLBE_EARG, VLBE_EWORK, VLBE_ENONFINITE (A, before anything is
    written), VLBE_ENOCONV when 30 n double-shift steps pass without a
-   deflation (exceptional shifts at the 10th and 20th; not seen). */
+   deflation (exceptional shifts at the 10th and 20th; not seen);
+   VLBE_ENONFINITE also for an overflow in the iteration (entries near
+   VLBE_REAL_MAX). */
 VLBE_API vlbe_status vlbe_eig_real(int n, vlbe_real *A, vlbe_real *wr, vlbe_real *wi,
                                    vlbe_real *work, size_t work_len)
 {
@@ -1774,6 +1786,7 @@ VLBE_API vlbe_status vlbe_eig_real(int n, vlbe_real *A, vlbe_real *wr, vlbe_real
             vlbe__eig_francis(N, A, lo, hi, (int)(its % 30));
         }
     }
+    if (!vlbe_all_finite(er, n) || !vlbe_all_finite(ei, n)) return VLBE_ENONFINITE;
     for (i = 0; i < N; ++i) {
         wr[i] = er[i];
         wi[i] = ei[i];

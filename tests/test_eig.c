@@ -1162,6 +1162,10 @@ static void test_fail_quad(void **state)
                      VLBE_EWORK);
     assert_int_equal(vlbe_eig_quad(0, M, D, K, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi, w, 200, iw, 8),
                      VLBE_EARG);
+    /* 2n must fit int: refused before any buffer is touched */
+    assert_int_equal(vlbe_eig_quad(INT_MAX / 2 + 1, M, D, K, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi,
+                                   w, 200, iw, 8),
+                     VLBE_EARG);
     untouched(4, o.sr);
     untouched(4, o.si);
     untouched(8, o.Xr);
