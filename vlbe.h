@@ -1,6 +1,7 @@
 /* vlbe.h -- core of vlbe: configuration, status codes, small vector ops,
    Gauss-Legendre rules, the cubic Hermite / linear basis in ALE form, dense
-   and banded LU -- part of vlbe v0.1.0            SPDX-License-Identifier: MIT
+   and banded LU, dense eigen-solvers
+   -- part of vlbe v0.1.0                           SPDX-License-Identifier: MIT
 
 USAGE
    #include "vlbe.h"        (every vlbe module includes it; keep the files
@@ -34,8 +35,9 @@ CONVENTIONS
    (0 = VLBE_OK, negative = a specific failure); a failed call leaves the
    caller's data as it was before the call.  Programmer errors (NULL, n < 1)
    are caught by VLBE_ASSERT.  Nothing here allocates, prints or aborts.
-   Stack: at most 384 bytes per function (vlbe_herm_ale_eval; float on a
-   Cortex-M4F, gcc -O2, make check-m4; double about twice; README, Embedded).
+   Stack: at most 416 bytes per function (vlbe_eig_quad, 384 for
+   vlbe_herm_ale_eval; float on a Cortex-M4F, gcc -O2, make check-m4;
+   double about twice; README, Embedded).
 
    FAILURE CONTRACT (every vlbe module keeps it).  (1) A routine returning
    vlbe_status never returns VLBE_OK with a NaN or Inf in an output when its
@@ -96,6 +98,14 @@ API (one line each)
    void  vlbe_band_lu_solve(n, kl, ku, LU, piv, nrhs, B)  solve with a band factor
    void  vlbe_band_mat_vec(n, kl, ku, A, lda, x, y) / vlbe_band_mat_tvec  y = A x, A^T x (band)
    vlbe_real vlbe_band_lu_flops(n, kl, ku)             ~ n kl (2 ku + 1) (for benchmarks)
+   size_t vlbe_eig_work_len(n)                         3 n^2: work of eig_sym, eig_gsym
+   vlbe_status vlbe_eig_sym(n, A, lam, X, work, lw)     A x = lam x, A symmetric (Jacobi)
+   vlbe_status vlbe_eig_gsym(n, K, M, sigma, lam, X, info, work, lw)  K x = lam M x, shift-invert
+   size_t vlbe_eig_real_work_len(n)                    4 n: work of eig_real
+   vlbe_status vlbe_eig_real(n, A, wr, wi, work, lw)    eigenvalues of a general real A (QR)
+   size_t vlbe_eig_quad_work_len(n), vlbe_eig_quad_iwork_len(n)  9 n^2 + 20 n, 4 n
+   vlbe_status vlbe_eig_quad(n, M, D, K, sigma, sre, sim, Xre, Xim, work, lw, iwork, liw)
+                                                       (s^2 M + s D + K) x = 0, shift-invert
 
 REFERENCES
    [V] S. Yang et al., A variable-length beam element incorporating the effect
@@ -106,6 +116,18 @@ REFERENCES
    pivoting); sec. 4.3, banded systems: alg. 4.3.1 (band Gaussian
    elimination), the band forward and back substitutions, and band
    elimination with partial pivoting (U gains kl super-diagonals).
+   Eigenproblems (Golub & Van Loan, 4th ed.): alg. 8.5.1 (2-by-2 symmetric
+   Schur decomposition) and 8.5.3 (cyclic Jacobi), with the threshold of
+   J. Demmel and K. Veselic, Jacobi's method is more accurate than QR,
+   SIAM J. Matrix Anal. Appl. 13 (1992) 1204-1245; alg. 4.2.2 (gaxpy
+   Cholesky); sec. 8.7.2 (the symmetric-definite problem by Cholesky);
+   sec. 7.5.7 (balancing, after Parlett and Reinsch); alg. 7.4.2
+   (Householder reduction to Hessenberg form); alg. 7.5.1 (Francis QR
+   step) and 7.5.2 (the QR algorithm with deflation); sec. 7.6.1 (inverse
+   iteration).  The quadratic problem and its first-order form:
+   F. Tisseur and K. Meerbergen, The quadratic eigenvalue problem, SIAM
+   Review 43 (2001) 235-286, sec. 3.4 (linearisation) and 6 (shift-and-
+   invert).
 */
 #ifndef VLBE_H
 #define VLBE_H
@@ -120,6 +142,7 @@ REFERENCES
 #include <string.h>
 #include <float.h>
 #include <math.h>
+#include <limits.h>
 /* Preconditions (programmer errors).  On a hosted system: the C assert
    (message, abort; off under NDEBUG).  Elsewhere (a bare-metal target, no
    OS macro): a trap without message, so that an embedded image does not
@@ -231,7 +254,7 @@ typedef enum vlbe_status {
     VLBE_EARG = -1,       /* argument out of range (n < 1, Gauss order, ...)   */
     VLBE_EWORK = -2,      /* workspace too small: see the *_work_len() query   */
     VLBE_ESINGULAR = -3,  /* zero or relatively zero pivot in LU               */
-    VLBE_ENOCONV = -4,    /* Newton iteration diverged or hit max_iter         */
+    VLBE_ENOCONV = -4,    /* an iteration (Newton, QR) diverged or hit its limit */
     VLBE_ENONFINITE = -5, /* NaN or Inf in state, residual or Jacobian         */
     VLBE_ESTEP = -6,      /* step size fell below the minimum                  */
     VLBE_ELENGTH = -7,    /* element length p2 - p1 <= 0 or out of range      */
@@ -408,6 +431,23 @@ VLBE_API void vlbe_band_mat_tvec(int n, int kl, int ku, const vlbe_real *A, int 
                                  const vlbe_real *x, vlbe_real *VLBE_RESTRICT y);
 VLBE_API vlbe_real vlbe_band_lu_flops(int n, int kl, int ku);
 
+VLBE_API size_t vlbe_eig_work_len(int n);
+VLBE_API vlbe_status vlbe_eig_sym(int n, const vlbe_real *A, vlbe_real *lam, vlbe_real *X,
+                                  vlbe_real *work, size_t work_len);
+VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M,
+                                   vlbe_real sigma, vlbe_real *lam, vlbe_real *X, int *info,
+                                   vlbe_real *work, size_t work_len);
+VLBE_API size_t vlbe_eig_real_work_len(int n);
+VLBE_API vlbe_status vlbe_eig_real(int n, vlbe_real *A, vlbe_real *wr, vlbe_real *wi,
+                                   vlbe_real *work, size_t work_len);
+VLBE_API size_t vlbe_eig_quad_work_len(int n);
+VLBE_API size_t vlbe_eig_quad_iwork_len(int n);
+VLBE_API vlbe_status vlbe_eig_quad(int n, const vlbe_real *M, const vlbe_real *D,
+                                   const vlbe_real *K, vlbe_real sigma, vlbe_real *sre,
+                                   vlbe_real *sim, vlbe_real *Xre, vlbe_real *Xim,
+                                   vlbe_real *work, size_t work_len, int *iwork,
+                                   size_t iwork_len);
+
 /* ===== implementation =================================================== */
 
 VLBE_API const char *vlbe_status_str(vlbe_status s)
@@ -417,7 +457,7 @@ VLBE_API const char *vlbe_status_str(vlbe_status s)
     case VLBE_EARG: return "argument out of range";
     case VLBE_EWORK: return "workspace too small";
     case VLBE_ESINGULAR: return "singular matrix";
-    case VLBE_ENOCONV: return "Newton iteration did not converge";
+    case VLBE_ENOCONV: return "iteration did not converge";
     case VLBE_ENONFINITE: return "non-finite value";
     case VLBE_ESTEP: return "step size below minimum";
     case VLBE_ELENGTH: return "element length out of range (p2 <= p1, too small or too large)";
@@ -1137,6 +1177,912 @@ VLBE_API vlbe_real vlbe_band_lu_flops(int n, int kl, int ku)
         f += m * (VLBE_R(2.0) * u + VLBE_R(1.0));
     }
     return f + (vlbe_real)(n - tmax) * (vlbe_real)kl * (VLBE_R(2.0) * (vlbe_real)ku + VLBE_R(1.0));
+}
+
+/* -- eigenproblems ------------------------------------------------------ */
+/* Dense eigen-solvers on caller storage (sizes from the *_work_len
+   queries), in vlbe_real.  Every one checks n (VLBE_EARG for n < 1 and for
+   sizes that do not fit size_t or, for the 2n x 2n problems, int), the
+   workspace (VLBE_EWORK) and its inputs (VLBE_ENONFINITE for NaN or Inf)
+   before it writes anything, computes in the workspace and copies the
+   results out at the end, so a failed call leaves every output as it was.
+   No recursion, no VLAs.
+   Which one:
+     vlbe_eig_sym   A x = lam x, A symmetric: cyclic Jacobi
+     vlbe_eig_gsym  K x = lam M x, M symmetric positive definite: shift-
+                    invert with a Cholesky factor, then Jacobi (the LOWEST
+                    modes to a few eps relative)
+     vlbe_eig_real  eigenvalues of a general real matrix: Hessenberg +
+                    Francis double-shift QR
+     vlbe_eig_quad  (s^2 M + s D + K) x = 0: shift-invert of the first-order
+                    form by one LU of P(sigma), vlbe_eig_real, eigenvectors
+                    by inverse iteration */
+
+#define VLBE__EIG_SWEEPS 60 /* Jacobi: limit of sweeps (6-10 are needed) */
+
+/* a N^2 + b N in *len; 0 when n < 1 or the count overflows size_t */
+VLBE_INLINE int vlbe__eig_len(int n, size_t a, size_t b, size_t *len)
+{
+    size_t N, NN;
+    if (n < 1) return 0;
+    N = (size_t)n;
+    if (N > ((size_t)-1) / N) return 0;
+    NN = N * N;
+    if (a != 0 && NN > ((size_t)-1) / a) return 0;
+    if (b != 0 && N > ((size_t)-1) / b) return 0;
+    if (a * NN > ((size_t)-1) - b * N) return 0;
+    *len = a * NN + b * N;
+    return 1;
+}
+
+/* 1 when the n x n matrix A (row-major, rows of int length) is finite */
+VLBE_INLINE int vlbe__mat_finite(int n, const vlbe_real *A)
+{
+    vlbe__bits b = 0;
+    size_t i, N = (size_t)n;
+    for (i = 0; i < N; ++i) b |= vlbe__fin_bits(A + i * N, n);
+    return (b & VLBE__BITS_SIGN) == 0;
+}
+
+/* Cholesky B = L L^T in place (Golub & Van Loan alg. 4.2.2, gaxpy form):
+   the lower triangle of L holds B on entry and the factor on return, the
+   upper triangle is zeroed.  The pivot test: B_jj - sum_k L_jk^2 carries a
+   rounding error up to about j EPS B_jj (the sum is at most B_jj for a
+   positive definite B), so a pivot not above n EPS |B_jj| cannot be told
+   from zero: VLBE_ESINGULAR with *info = j + 1 (1-based, as
+   vlbe_lu_factor), L partial. */
+VLBE_INLINE vlbe_status vlbe__chol(size_t N, vlbe_real *L, int *info)
+{
+    size_t i, j, k;
+    for (j = 0; j < N; ++j) {
+        const vlbe_real bjj = L[j * N + j];
+        vlbe_real d = bjj;
+        for (k = 0; k < j; ++k) d -= L[j * N + k] * L[j * N + k];
+        if (!(d > (vlbe_real)N * VLBE_EPS * vlbe_fabs(bjj))) {
+            if (info) *info = (int)j + 1;
+            return VLBE_ESINGULAR;
+        }
+        d = vlbe_sqrt(d);
+        L[j * N + j] = d;
+        for (i = j + 1; i < N; ++i) {
+            vlbe_real s = L[i * N + j];
+            for (k = 0; k < j; ++k) s -= L[i * N + k] * L[j * N + k];
+            L[i * N + j] = s / d;
+        }
+        for (i = 0; i < j; ++i) L[i * N + j] = VLBE_R(0.0);
+    }
+    return VLBE_OK;
+}
+
+/* One Jacobi rotation of the symmetric C (N x N, full storage) in the
+   plane (p, q), p < q, that zeroes c_pq (GvL alg. 8.5.1, the 2-by-2
+   symmetric Schur decomposition); V (or NULL) accumulates the rotations
+   as columns. */
+VLBE_INLINE void vlbe__eig_rot(size_t N, size_t p, size_t q, vlbe_real *C, vlbe_real *V)
+{
+    const vlbe_real apq = C[p * N + q];
+    const vlbe_real th = (C[q * N + q] - C[p * N + p]) / (VLBE_R(2.0) * apq);
+    vlbe_real t, c, s;
+    size_t k;
+    /* t = tan of the rotation angle, the smaller root of t^2 + 2 th t - 1 = 0,
+       written without forming th^2 for large |th| (no overflow) */
+    if (vlbe_fabs(th) > VLBE_R(1.0)) {
+        const vlbe_real r = VLBE_R(1.0) / th;
+        t = VLBE_R(1.0) / (vlbe_fabs(th) * (VLBE_R(1.0) + vlbe_sqrt(VLBE_R(1.0) + r * r)));
+    } else
+        t = VLBE_R(1.0) / (vlbe_fabs(th) + vlbe_sqrt(VLBE_R(1.0) + th * th));
+    if (th < VLBE_R(0.0)) t = -t;
+    c = VLBE_R(1.0) / vlbe_sqrt(VLBE_R(1.0) + t * t);
+    s = t * c;
+    C[p * N + p] -= t * apq;
+    C[q * N + q] += t * apq;
+    C[p * N + q] = C[q * N + p] = VLBE_R(0.0);
+    for (k = 0; k < N; ++k) {
+        vlbe_real g, h;
+        if (k == p || k == q) continue;
+        g = C[k * N + p];
+        h = C[k * N + q];
+        C[k * N + p] = C[p * N + k] = c * g - s * h;
+        C[k * N + q] = C[q * N + k] = s * g + c * h;
+    }
+    if (V)
+        for (k = 0; k < N; ++k) {
+            const vlbe_real g = V[k * N + p], h = V[k * N + q];
+            V[k * N + p] = c * g - s * h;
+            V[k * N + q] = s * g + c * h;
+        }
+}
+
+/* Cyclic Jacobi on C in place (N x N symmetric; GvL alg. 8.5.3): a sweep
+   visits every p < q in row order.  A pair is skipped when |c_pq| <= EPS
+   sqrt(|c_pp c_qq|) (the threshold of Demmel and Veselic: it keeps the
+   small eigenvalues of a graded positive definite matrix to high relative
+   accuracy) or when |c_pq| is below EPS^2 times the largest |c_ij| of the
+   input (nothing left at the working precision); converged when a sweep
+   rotates nothing (quadratic convergence: 6-10 sweeps).  V (or NULL)
+   starts as the identity and ends with the eigenvectors as columns; the
+   diagonal of C holds the eigenvalues, unsorted. */
+VLBE_INLINE vlbe_status vlbe__eig_jacobi(size_t N, vlbe_real *C, vlbe_real *V)
+{
+    vlbe_real amax = VLBE_R(0.0), floor_abs;
+    size_t i, j;
+    int sw;
+    for (i = 0; i < N * N; ++i)
+        if (vlbe_fabs(C[i]) > amax) amax = vlbe_fabs(C[i]);
+    floor_abs = VLBE_EPS * VLBE_EPS * amax;
+    if (V)
+        for (i = 0; i < N; ++i)
+            for (j = 0; j < N; ++j) V[i * N + j] = i == j ? VLBE_R(1.0) : VLBE_R(0.0);
+    for (sw = 0; sw < VLBE__EIG_SWEEPS; ++sw) {
+        long rotations = 0;
+        for (i = 0; i + 1 < N; ++i)
+            for (j = i + 1; j < N; ++j) {
+                const vlbe_real a = vlbe_fabs(C[i * N + j]);
+                if (a <= floor_abs ||
+                    a <= VLBE_EPS * vlbe_sqrt(vlbe_fabs(C[i * N + i]) * vlbe_fabs(C[j * N + j])))
+                    continue;
+                vlbe__eig_rot(N, i, j, C, V);
+                ++rotations;
+            }
+        if (rotations == 0) return VLBE_OK;
+    }
+    return VLBE_ENOCONV;
+}
+
+/* Sorts the diagonal of C ascending (desc = 0) or descending (desc = 1)
+   in place and the columns of V (or NULL) with it (selection sort: n^2
+   compares, at most n column swaps; the first of equal values stays
+   first) */
+VLBE_INLINE void vlbe__eig_sort(size_t N, vlbe_real *C, vlbe_real *V, int desc)
+{
+    size_t i, j, k;
+    for (i = 0; i + 1 < N; ++i) {
+        size_t m = i;
+        for (j = i + 1; j < N; ++j)
+            if (desc ? C[j * N + j] > C[m * N + m] : C[j * N + j] < C[m * N + m]) m = j;
+        if (m == i) continue;
+        {
+            const vlbe_real t = C[i * N + i];
+            C[i * N + i] = C[m * N + m];
+            C[m * N + m] = t;
+        }
+        if (V)
+            for (k = 0; k < N; ++k) {
+                const vlbe_real t = V[k * N + i];
+                V[k * N + i] = V[k * N + m];
+                V[k * N + m] = t;
+            }
+    }
+}
+
+/* Reals of workspace for vlbe_eig_sym and vlbe_eig_gsym: 3 n^2 (0 for
+   n < 1 or a count beyond size_t; the solvers then return VLBE_EARG). */
+VLBE_API size_t vlbe_eig_work_len(int n)
+{
+    size_t len = 0;
+    return vlbe__eig_len(n, 3, 0, &len) ? len : 0;
+}
+
+/* A x = lam x, A n x n symmetric (both triangles read, used as (A +
+   A^T)/2), by cyclic Jacobi (see vlbe__eig_jacobi).
+   lam[n]: the eigenvalues ascending; X (n x n, may be NULL): X[i*n + k] =
+   component i of the vector of lam[k], columns orthonormal (X^T X = I to
+   a few n EPS).  Accuracy: each eigenvalue to a few n EPS ||A||.
+   work: vlbe_eig_work_len(n) reals (2 n^2 are used).  Status: VLBE_EARG,
+   VLBE_EWORK, VLBE_ENONFINITE (A, or an overflow), VLBE_ENOCONV (no convergence in 60
+   sweeps; not seen); on failure lam and X are untouched. */
+VLBE_API vlbe_status vlbe_eig_sym(int n, const vlbe_real *A, vlbe_real *lam, vlbe_real *X,
+                                  vlbe_real *work, size_t work_len)
+{
+    size_t N, i, j, len = 0;
+    vlbe_real *C, *V;
+    vlbe_status st;
+    VLBE_ASSERT(A != NULL && lam != NULL && work != NULL);
+    if (!vlbe__eig_len(n, 3, 0, &len)) return VLBE_EARG;
+    if (work_len < len) return VLBE_EWORK;
+    if (!vlbe__mat_finite(n, A)) return VLBE_ENONFINITE;
+    N = (size_t)n;
+    C = work;
+    V = work + N * N;
+    for (i = 0; i < N; ++i)
+        for (j = 0; j < N; ++j) C[i * N + j] = VLBE_R(0.5) * (A[i * N + j] + A[j * N + i]);
+    if ((st = vlbe__eig_jacobi(N, C, X ? V : NULL)) != VLBE_OK) return st;
+    vlbe__eig_sort(N, C, X ? V : NULL, 0);
+    for (i = 0; i < N; ++i)
+        if (!vlbe_all_finite(C + i * N + i, 1) || (X && !vlbe_all_finite(V + i * N, n)))
+            return VLBE_ENONFINITE;
+    for (i = 0; i < N; ++i) lam[i] = C[i * N + i];
+    if (X)
+        for (i = 0; i < N * N; ++i) X[i] = V[i];
+    return VLBE_OK;
+}
+
+/* K x = lam M x, K and M n x n symmetric (both triangles read, used as
+   (K + K^T)/2, (M + M^T)/2), M positive definite, by SHIFT-INVERT: with
+   K - sigma M = L L^T (Cholesky; it must be positive definite: sigma
+   below the lowest eigenvalue; sigma = 0 for a positive definite K, sigma
+   < 0 for a K with rigid modes), Jacobi on the symmetric positive definite
+   C = L^-1 M L^-T (GvL sec. 8.7.2, the reduction of the symmetric-definite
+   problem, here of the pencil M - mu (K - sigma M)) gives mu = 1/(lam -
+   sigma) and y; lam = sigma + 1/mu, x = L^-T y / sqrt(mu).
+   Why: Jacobi's error in mu is a few EPS ||C|| = EPS max mu, and the
+   largest mu belong to the LOWEST lam, which therefore come out to a few
+   EPS relative (times the conditioning of K - sigma M against M).
+   Solving K x = lam M x directly (the Cholesky of M, Jacobi on L^-1 K L^-T)
+   makes the error EPS lam_max instead, lam_max / lam_1 times larger: 1e4
+   and more for the fundamental of a stiff beam, whose axial and high
+   bending modes are 1e8 .. 1e11 times its lam.  A sigma far below the
+   spectrum does the same harm (mu_k = 1/(lam_k - sigma) all near -1/sigma,
+   lam_1 - sigma then has the rounding of |sigma|).
+   lam[n]: ascending; X (n x n, may be NULL): the eigenvectors as columns
+   (X[i*n + k], vector of lam[k]), normalised to X^T M X = I (then X^T K X
+   = diag(lam)).  info (may be NULL): 0, or the failing column (below).
+   work: vlbe_eig_work_len(n) reals.
+   Status (on failure lam and X are untouched; *info is written by every
+   call that gets past the argument checks):
+     VLBE_EARG, VLBE_EWORK
+     VLBE_ENONFINITE  NaN or Inf in K, M or sigma; or an eigenvalue lam -
+                      sigma beyond 1/(EPS max mu) (M positive definite,
+                      but lam_max / lam_1 out of the working precision: a
+                      computed mu not above 0)
+     VLBE_ESINGULAR   K - sigma M is not positive definite: a Cholesky
+                      pivot not above n EPS of its diagonal entry, *info =
+                      its 1-based column j; or M is not positive definite
+                      (found when a computed mu is not above 0, by the
+                      Cholesky of M): *info = n + j (LAPACK's xSYGV)
+     VLBE_ENOCONV     Jacobi did not converge in 60 sweeps (not seen). */
+VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M,
+                                   vlbe_real sigma, vlbe_real *lam, vlbe_real *X, int *info,
+                                   vlbe_real *work, size_t work_len)
+{
+    size_t N, i, j, k, len = 0;
+    vlbe_real *C, *V, *L;
+    vlbe_status st;
+    VLBE_ASSERT(K != NULL && M != NULL && lam != NULL && work != NULL);
+    if (!vlbe__eig_len(n, 3, 0, &len) || n > INT_MAX / 2) return VLBE_EARG;
+    if (work_len < len) return VLBE_EWORK;
+    if (info) *info = 0;
+    if (!vlbe__mat_finite(n, K) || !vlbe__mat_finite(n, M) || !vlbe_all_finite(&sigma, 1))
+        return VLBE_ENONFINITE;
+    N = (size_t)n;
+    C = work;
+    V = work + N * N;
+    L = work + 2 * N * N;
+    for (i = 0; i < N; ++i) /* the lower triangle of K - sigma M */
+        for (j = 0; j <= i; ++j)
+            L[i * N + j] = VLBE_R(0.5) * (K[i * N + j] + K[j * N + i]) -
+                           sigma * (VLBE_R(0.5) * (M[i * N + j] + M[j * N + i]));
+    if ((st = vlbe__chol(N, L, info)) != VLBE_OK) return st;
+    /* V = L^-1 M (forward substitution, column by column of M) */
+    for (j = 0; j < N; ++j)
+        for (i = 0; i < N; ++i) {
+            vlbe_real s = VLBE_R(0.5) * (M[i * N + j] + M[j * N + i]);
+            for (k = 0; k < i; ++k) s -= L[i * N + k] * V[k * N + j];
+            V[i * N + j] = s / L[i * N + i];
+        }
+    /* C = L^-1 V^T = L^-1 M L^-T (M symmetric), symmetrised */
+    for (j = 0; j < N; ++j)
+        for (i = 0; i < N; ++i) {
+            vlbe_real s = V[j * N + i];
+            for (k = 0; k < i; ++k) s -= L[i * N + k] * C[k * N + j];
+            C[i * N + j] = s / L[i * N + i];
+        }
+    for (i = 0; i < N; ++i)
+        for (j = i + 1; j < N; ++j)
+            C[i * N + j] = C[j * N + i] = VLBE_R(0.5) * (C[i * N + j] + C[j * N + i]);
+    if ((st = vlbe__eig_jacobi(N, C, X ? V : NULL)) != VLBE_OK) return st;
+    for (i = 0; i < N; ++i)
+        if (!(C[i * N + i] > VLBE_R(0.0))) {
+            /* C is positive definite when M is: tell the two failures apart */
+            for (j = 0; j < N; ++j)
+                for (k = 0; k <= j; ++k)
+                    L[j * N + k] = VLBE_R(0.5) * (M[j * N + k] + M[k * N + j]);
+            if (vlbe__chol(N, L, info) == VLBE_OK) return VLBE_ENONFINITE;
+            if (info) *info += n;
+            return VLBE_ESINGULAR;
+        }
+    /* mu descending = lam ascending */
+    vlbe__eig_sort(N, C, X ? V : NULL, 1);
+    if (X) /* x = L^-T y / sqrt(mu): back substitution, column by column */
+        for (j = 0; j < N; ++j) {
+            const vlbe_real r = VLBE_R(1.0) / vlbe_sqrt(C[j * N + j]);
+            for (i = N; i-- > 0;) {
+                vlbe_real s = V[i * N + j];
+                for (k = i + 1; k < N; ++k) s -= L[k * N + i] * V[k * N + j];
+                V[i * N + j] = s / L[i * N + i];
+            }
+            for (i = 0; i < N; ++i) V[i * N + j] *= r;
+        }
+    for (i = 0; i < N; ++i) {
+        C[i] = sigma + VLBE_R(1.0) / C[i * N + i]; /* row 0 is free: lam */
+        if (!vlbe_all_finite(C + i, 1) || (X && !vlbe_all_finite(V + i * N, n)))
+            return VLBE_ENONFINITE;
+    }
+    for (i = 0; i < N; ++i) lam[i] = C[i];
+    if (X)
+        for (i = 0; i < N * N; ++i) X[i] = V[i];
+    return VLBE_OK;
+}
+
+/* Reals of workspace for vlbe_eig_real: 4 n (0 for n < 1 or beyond
+   size_t). */
+VLBE_API size_t vlbe_eig_real_work_len(int n)
+{
+    size_t len = 0;
+    return vlbe__eig_len(n, 0, 4, &len) ? len : 0;
+}
+
+/* Balancing of A in place (Parlett and Reinsch; GvL sec. 7.5.7): A <-
+   D^-1 A D with D diagonal of powers of 2 (exact), each row and column
+   pair scaled towards equal 1-norms off the diagonal until no scaling
+   lowers their sum by 5 %.  The eigenvalues are unchanged; the rounding
+   of QR, relative to ||A||, gets smaller. */
+VLBE_INLINE void vlbe__eig_balance(size_t N, vlbe_real *A)
+{
+    int changed = 1, sweeps = 0;
+    size_t i, j;
+    while (changed && sweeps++ < 100) {
+        changed = 0;
+        for (i = 0; i < N; ++i) {
+            vlbe_real c = VLBE_R(0.0), r = VLBE_R(0.0), f = VLBE_R(1.0), g, s;
+            int e = 0;
+            for (j = 0; j < N; ++j)
+                if (j != i) {
+                    c += vlbe_fabs(A[j * N + i]);
+                    r += vlbe_fabs(A[i * N + j]);
+                }
+            if (c == VLBE_R(0.0) || r == VLBE_R(0.0)) continue;
+            s = c + r;
+            g = r * VLBE_R(0.5);
+            while (c < g && e < 60) { /* |e| < 60: f^2 stays inside the range */
+                f *= VLBE_R(2.0);
+                c *= VLBE_R(4.0);
+                ++e;
+            }
+            g = r * VLBE_R(2.0);
+            while (c >= g && e > -60) {
+                f *= VLBE_R(0.5);
+                c *= VLBE_R(0.25);
+                --e;
+            }
+            if ((c + r) / f < VLBE_R(0.95) * s) {
+                const vlbe_real fi = VLBE_R(1.0) / f;
+                for (j = 0; j < N; ++j) A[i * N + j] *= fi;
+                for (j = 0; j < N; ++j) A[j * N + i] *= f;
+                changed = 1;
+            }
+        }
+    }
+}
+
+/* Householder reduction to upper Hessenberg form in place (GvL alg.
+   7.4.2): H = Q^T A Q, entries below the subdiagonal set to 0.  v, w:
+   n reals each. */
+VLBE_INLINE void vlbe__eig_hess(size_t N, vlbe_real *A, vlbe_real *v, vlbe_real *w)
+{
+    size_t i, j, k;
+    for (k = 0; k + 2 < N; ++k) {
+        const size_t m = N - k - 1; /* rows k+1 .. N-1 */
+        vlbe_real nrm, alpha, beta, t;
+        for (i = 0; i < m; ++i) v[i] = A[(k + 1 + i) * N + k];
+        nrm = vlbe_vec_norm2((int)m, v);
+        if (nrm == VLBE_R(0.0)) continue;
+        /* v scaled to unit norm first: no overflow in v^T v */
+        for (i = 0; i < m; ++i) v[i] /= nrm;
+        alpha = v[0] >= VLBE_R(0.0) ? -VLBE_R(1.0) : VLBE_R(1.0);
+        v[0] -= alpha;                             /* |v0| = 1 + |x0|/|x|: no cancellation */
+        beta = VLBE_R(1.0) / vlbe_fabs(v[0]);      /* 2 / v^T v */
+        A[(k + 1) * N + k] = alpha * nrm;
+        for (i = 1; i < m; ++i) A[(k + 1 + i) * N + k] = VLBE_R(0.0);
+        /* left: rows k+1.., columns k+1..: A -= beta v (v^T A) */
+        for (j = k + 1; j < N; ++j) w[j] = VLBE_R(0.0);
+        for (i = 0; i < m; ++i) {
+            const vlbe_real *ai = A + (k + 1 + i) * N;
+            for (j = k + 1; j < N; ++j) w[j] += v[i] * ai[j];
+        }
+        for (i = 0; i < m; ++i) {
+            vlbe_real *ai = A + (k + 1 + i) * N;
+            t = beta * v[i];
+            for (j = k + 1; j < N; ++j) ai[j] -= t * w[j];
+        }
+        /* right: all rows, columns k+1..: A -= beta (A v) v^T */
+        for (i = 0; i < N; ++i) {
+            vlbe_real *ai = A + i * N + k + 1;
+            vlbe_real s = VLBE_R(0.0);
+            for (j = 0; j < m; ++j) s += ai[j] * v[j];
+            s *= beta;
+            for (j = 0; j < m; ++j) ai[j] -= s * v[j];
+        }
+    }
+}
+
+/* The reflector P = I - beta v v^T, v = (v0, y, z) (z = 0 for 2 rows), that
+   maps (x, y, z) to (alpha, 0, 0); 0 when (x, y, z) = 0 (no reflection) */
+VLBE_INLINE int vlbe__eig_house3(vlbe_real x, vlbe_real y, vlbe_real z, vlbe_real *v,
+                                 vlbe_real *beta, vlbe_real *alpha)
+{
+    const vlbe_real sc = vlbe_fabs(x) + vlbe_fabs(y) + vlbe_fabs(z);
+    vlbe_real nrm, a;
+    if (sc == VLBE_R(0.0)) return 0;
+    x /= sc;
+    y /= sc;
+    z /= sc;
+    nrm = vlbe_sqrt(x * x + y * y + z * z);
+    a = x >= VLBE_R(0.0) ? -nrm : nrm;
+    v[0] = x - a;
+    v[1] = y;
+    v[2] = z;
+    *beta = VLBE_R(1.0) / (nrm * vlbe_fabs(v[0]));
+    *alpha = a * sc;
+    return 1;
+}
+
+/* One Francis double-shift step on the active block lo..hi (hi - lo >= 2)
+   of the Hessenberg H (GvL alg. 7.5.1): the shifts are the eigenvalues of
+   the trailing 2 x 2 (sum s, product t), or an exceptional pair at
+   iterations 10 and 20 since the last deflation (the 2 x 2 [a b; c a], a =
+   h_hh + 0.75 w, b = -0.4375 w, c = w, w = |h_h,h-1| + |h_h-1,h-2|, the
+   values of LAPACK's xLAHQR).  The reflectors are applied to the block's
+   rows and columns only (the eigenvalues need no more). */
+VLBE_INLINE void vlbe__eig_francis(size_t N, vlbe_real *H, size_t lo, size_t hi, int its)
+{
+    vlbe_real s, t, x, y, z, v[3], beta, alpha;
+    size_t k, j, r, nr;
+#define VLBE__H(i, j) H[(i) * N + (j)]
+    if (its == 10 || its == 20) {
+        const vlbe_real w = vlbe_fabs(VLBE__H(hi, hi - 1)) + vlbe_fabs(VLBE__H(hi - 1, hi - 2));
+        const vlbe_real a = VLBE__H(hi, hi) + VLBE_R(0.75) * w;
+        s = VLBE_R(2.0) * a;
+        t = a * a + VLBE_R(0.4375) * w * w;
+    } else {
+        const vlbe_real a = VLBE__H(hi - 1, hi - 1), b = VLBE__H(hi - 1, hi);
+        const vlbe_real c = VLBE__H(hi, hi - 1), d = VLBE__H(hi, hi);
+        s = a + d;
+        t = a * d - b * c;
+    }
+    /* first column of (H - s1 I)(H - s2 I) = H^2 - s H + t I */
+    x = VLBE__H(lo, lo) * VLBE__H(lo, lo) + VLBE__H(lo, lo + 1) * VLBE__H(lo + 1, lo) -
+        s * VLBE__H(lo, lo) + t;
+    y = VLBE__H(lo + 1, lo) * (VLBE__H(lo, lo) + VLBE__H(lo + 1, lo + 1) - s);
+    z = VLBE__H(lo + 1, lo) * VLBE__H(lo + 2, lo + 1);
+    for (k = lo; k + 1 <= hi; ++k) { /* reflector on rows k .. k+nr-1 */
+        nr = k + 2 <= hi ? 3 : 2;
+        if (nr == 2) z = VLBE_R(0.0);
+        if (vlbe__eig_house3(x, y, z, v, &beta, &alpha)) {
+            const size_t j0 = k > lo ? k : lo;
+            if (k > lo) { /* column k - 1: the bulge chased down */
+                VLBE__H(k, k - 1) = alpha;
+                VLBE__H(k + 1, k - 1) = VLBE_R(0.0);
+                if (nr == 3) VLBE__H(k + 2, k - 1) = VLBE_R(0.0);
+            }
+            for (j = j0; j <= hi; ++j) {
+                vlbe_real u = v[0] * VLBE__H(k, j) + v[1] * VLBE__H(k + 1, j);
+                if (nr == 3) u += v[2] * VLBE__H(k + 2, j);
+                u *= beta;
+                VLBE__H(k, j) -= u * v[0];
+                VLBE__H(k + 1, j) -= u * v[1];
+                if (nr == 3) VLBE__H(k + 2, j) -= u * v[2];
+            }
+            r = k + 3 < hi ? k + 3 : hi;
+            for (j = lo; j <= r; ++j) {
+                vlbe_real *hj = H + j * N + k;
+                vlbe_real u = v[0] * hj[0] + v[1] * hj[1];
+                if (nr == 3) u += v[2] * hj[2];
+                u *= beta;
+                hj[0] -= u * v[0];
+                hj[1] -= u * v[1];
+                if (nr == 3) hj[2] -= u * v[2];
+            }
+        }
+        if (k + 1 < hi) {
+            x = VLBE__H(k + 1, k);
+            y = VLBE__H(k + 2, k);
+            z = k + 3 <= hi ? VLBE__H(k + 3, k) : VLBE_R(0.0);
+        }
+    }
+#undef VLBE__H
+}
+
+/* eigenvalues of the 2 x 2 [a b; c d]: real (wi = 0) or a complex pair
+   (w0 = re + i im, w1 = re - i im, im > 0), scaled against overflow */
+VLBE_INLINE void vlbe__eig_2x2(vlbe_real a, vlbe_real b, vlbe_real c, vlbe_real d, vlbe_real *wr,
+                               vlbe_real *wi)
+{
+    vlbe_real sc = vlbe_fabs(a), p, bc, disc;
+    if (vlbe_fabs(b) > sc) sc = vlbe_fabs(b);
+    if (vlbe_fabs(c) > sc) sc = vlbe_fabs(c);
+    if (vlbe_fabs(d) > sc) sc = vlbe_fabs(d);
+    wi[0] = wi[1] = VLBE_R(0.0);
+    if (sc == VLBE_R(0.0)) {
+        wr[0] = wr[1] = VLBE_R(0.0);
+        return;
+    }
+    a /= sc;
+    b /= sc;
+    c /= sc;
+    d /= sc;
+    p = VLBE_R(0.5) * (a - d);
+    bc = b * c;
+    disc = p * p + bc; /* (lam - d)^2 - 2 p (lam - d) - bc = 0 */
+    if (disc >= VLBE_R(0.0)) {
+        const vlbe_real r = vlbe_sqrt(disc), zz = p + (p >= VLBE_R(0.0) ? r : -r);
+        wr[0] = (d + zz) * sc;                                 /* no cancellation in zz */
+        wr[1] = (zz != VLBE_R(0.0) ? d - bc / zz : d) * sc; /* product of the roots: -bc */
+    } else {
+        wr[0] = wr[1] = (d + p) * sc;
+        wi[0] = vlbe_sqrt(-disc) * sc;
+        wi[1] = -wi[0];
+    }
+}
+
+/* Eigenvalues of a general real n x n matrix A (row-major, OVERWRITTEN:
+   scratch on success and failure).  Balancing (vlbe__eig_balance),
+   Householder reduction to Hessenberg form (GvL alg. 7.4.2), then the
+   Francis implicit double-shift QR iteration with deflation (GvL algs.
+   7.5.1 and 7.5.2): a subdiagonal entry with |h_k,k-1| <= EPS (|h_k-1,k-1|
+   + |h_kk|) (or below VLBE_REAL_MIN) is set to 0 and the matrix splits;
+   a 1 x 1 block is a real eigenvalue, a 2 x 2 block a real pair or a
+   complex conjugate pair.
+   wr[n], wi[n]: real and imaginary parts, in the order of the diagonal of
+   the final quasi-triangular form; a complex pair sits in two adjacent
+   entries, the one with positive imaginary part first.
+   Accuracy: the QR iteration is backward stable, each eigenvalue is exact
+   for a matrix within a few n EPS ||A|| (balanced) of A: its error is
+   that times its condition number (a multiple eigenvalue of a defective
+   matrix, of multiplicity m, loses a factor 1/m of the digits).
+   work: vlbe_eig_real_work_len(n) reals.  Status (wr and wi untouched on
+   failure): VLBE_EARG, VLBE_EWORK, VLBE_ENONFINITE (A, before anything is
+   written), VLBE_ENOCONV when 30 n double-shift steps pass without a
+   deflation (exceptional shifts at the 10th and 20th; not seen);
+   VLBE_ENONFINITE also for an overflow in the iteration (entries near
+   VLBE_REAL_MAX). */
+VLBE_API vlbe_status vlbe_eig_real(int n, vlbe_real *A, vlbe_real *wr, vlbe_real *wi,
+                                   vlbe_real *work, size_t work_len)
+{
+    size_t N, i, lo, hi, len = 0;
+    vlbe_real *er, *ei, hnorm = VLBE_R(0.0);
+    long its = 0, itmax;
+    VLBE_ASSERT(A != NULL && wr != NULL && wi != NULL && work != NULL);
+    if (!vlbe__eig_len(n, 0, 4, &len) || !vlbe__eig_len(n, 1, 0, &i)) return VLBE_EARG;
+    if (work_len < len) return VLBE_EWORK;
+    if (!vlbe__mat_finite(n, A)) return VLBE_ENONFINITE;
+    N = (size_t)n;
+    er = work + 2 * N;
+    ei = work + 3 * N;
+    itmax = 30L * (long)n;
+    vlbe__eig_balance(N, A);
+    vlbe__eig_hess(N, A, work, work + N);
+    for (i = 0; i < N * N; ++i)
+        if (vlbe_fabs(A[i]) > hnorm) hnorm = vlbe_fabs(A[i]);
+    hi = N - 1;
+    for (;;) {
+        size_t l;
+        /* the lowest l <= hi with a negligible h_l,l-1 (l = 0: none) */
+        for (l = hi; l > 0; --l) {
+            const vlbe_real h = vlbe_fabs(A[l * N + l - 1]);
+            vlbe_real tst = vlbe_fabs(A[(l - 1) * N + l - 1]) + vlbe_fabs(A[l * N + l]);
+            if (tst == VLBE_R(0.0)) tst = hnorm;
+            if (h <= VLBE_EPS * tst || h < VLBE_REAL_MIN) {
+                A[l * N + l - 1] = VLBE_R(0.0);
+                break;
+            }
+        }
+        lo = l;
+        if (lo == hi) { /* 1 x 1 */
+            er[hi] = A[hi * N + hi];
+            ei[hi] = VLBE_R(0.0);
+            its = 0;
+            if (hi == 0) break;
+            --hi;
+        } else if (lo + 1 == hi) { /* 2 x 2 */
+            vlbe__eig_2x2(A[lo * N + lo], A[lo * N + hi], A[hi * N + lo], A[hi * N + hi], er + lo,
+                          ei + lo);
+            its = 0;
+            if (lo == 0) break;
+            hi = lo - 1;
+        } else {
+            if (its >= itmax) return VLBE_ENOCONV;
+            ++its;
+            vlbe__eig_francis(N, A, lo, hi, (int)(its % 30));
+        }
+    }
+    if (!vlbe_all_finite(er, n) || !vlbe_all_finite(ei, n)) return VLBE_ENONFINITE;
+    for (i = 0; i < N; ++i) {
+        wr[i] = er[i];
+        wi[i] = ei[i];
+    }
+    return VLBE_OK;
+}
+
+/* Reals and ints of workspace for vlbe_eig_quad: 9 n^2 + 20 n and 4 n (0
+   for n < 1 or when 2n does not fit int or the count size_t). */
+VLBE_API size_t vlbe_eig_quad_work_len(int n)
+{
+    size_t len = 0;
+    if (n > INT_MAX / 2) return 0;
+    return vlbe__eig_len(n, 9, 20, &len) ? len : 0;
+}
+VLBE_API size_t vlbe_eig_quad_iwork_len(int n)
+{
+    size_t len = 0;
+    if (n > INT_MAX / 2) return 0;
+    return vlbe__eig_len(n, 0, 4, &len) ? len : 0;
+}
+
+/* |a + i b| without overflow or underflow of the squares */
+VLBE_INLINE vlbe_real vlbe__cabs(vlbe_real a, vlbe_real b)
+{
+    vlbe_real x = vlbe_fabs(a), y = vlbe_fabs(b), t;
+    if (x < y) {
+        t = x;
+        x = y;
+        y = t;
+    }
+    if (x == VLBE_R(0.0)) return x;
+    t = y / x;
+    return x * vlbe_sqrt(VLBE_R(1.0) + t * t);
+}
+
+/* The order of vlbe_eig_quad's output: 1 when eigenvalue k comes before
+   eigenvalue m.  am = |mu| = 1 / |s - sigma| (descending: nearest the
+   shift first), then |Im s| descending (a conjugate pair before a real
+   eigenvalue of the same distance), Re s ascending, then the pair: grp[k]
+   = the index in vlbe_eig_real's output of the pair's first member (of k
+   itself when real), ascending, so that a repeated pair comes out as +, -,
+   +, -; last Im s descending (+imag first). */
+VLBE_INLINE int vlbe__eig_quad_before(const vlbe_real *am, const vlbe_real *sr,
+                                      const vlbe_real *si, const int *grp, int k, int m)
+{
+    if (am[k] != am[m]) return am[k] > am[m];
+    if (vlbe_fabs(si[k]) != vlbe_fabs(si[m])) return vlbe_fabs(si[k]) > vlbe_fabs(si[m]);
+    if (sr[k] != sr[m]) return sr[k] < sr[m];
+    if (grp[k] != grp[m]) return grp[k] < grp[m];
+    return si[k] > si[m];
+}
+
+/* The eigenvector x of (s^2 M + s D + K) x = 0 at s = a + i b by inverse
+   iteration with a fixed shift s' = s + del rho (rho = max(|s|, |s -
+   sigma|) > 0, del = EPS^(2/3), times 64 on each retry while P(s') is
+   singular to the LU's test), in the nonlinear form of Ruhe (GvL sec.
+   7.6.1 for the linear case; A. Ruhe, Algorithms for the nonlinear
+   eigenvalue problem, SIAM J. Numer. Anal. 10 (1973) 674-689):
+        P(s') x_(k+1) = P'(s') x_k,   P'(s) = 2 s M + D.
+   Its fixed point solves P(s') x = nu P'(s') x, nu ~ s' - s, which is
+   P(s' - nu) x = O(nu^2): the eigenvector of s to O(del^2) (plain inverse
+   iteration, P(s') x_(k+1) = x_k, would stop at the vector of the linear
+   problem P(s') x = nu x, an O(del) away).  Each step multiplies the
+   component along x by 1/(del rho) against 1/|s_other - s'| for the
+   others: three steps leave (del rho / gap)^3.  P(s') as a real system:
+   real s (b = 0) the n x n P(s'); else the 2n x 2n [Pr -Pi; Pi Pr] on
+   (xr, xi), Pr = (a'^2 - b^2) M + a' D + K, Pi = 2 a' b M + b D (and
+   P'(s') alike: Qr = 2 a' M + D, Qi = 2 b M).  The iterate is scaled to
+   unit max-norm before each solve.  Result in xr[j*ld], xi[j*ld]: unit
+   2-norm, the component of largest modulus real and positive (the first
+   of equal moduli).  G: 4 n^2 reals, x: 4n, piv: 2n. */
+VLBE_INLINE vlbe_status vlbe__eig_quad_vec(int n, const vlbe_real *M, const vlbe_real *D,
+                                           const vlbe_real *K, vlbe_real sigma, vlbe_real a,
+                                           vlbe_real b, vlbe_real *G, vlbe_real *x, int *piv,
+                                           vlbe_real *xr, vlbe_real *xi, size_t ld)
+{
+    const size_t N = (size_t)n;
+    const int cplx = b != VLBE_R(0.0), m = cplx ? 2 * n : n;
+    const size_t Mm = (size_t)m;
+    vlbe_real rho = vlbe__cabs(a, b), del, ap = a, nrm, cr, ci, big;
+    vlbe_real *y = x + Mm;
+    size_t i, j, jm;
+    int it, tries;
+    vlbe_status st = VLBE_ESINGULAR;
+    del = vlbe_pow(VLBE_EPS, VLBE_R(2.0) / VLBE_R(3.0));
+    if (vlbe__cabs(a - sigma, b) > rho) rho = vlbe__cabs(a - sigma, b);
+    for (tries = 0; tries < 4 && st == VLBE_ESINGULAR; ++tries, del *= VLBE_R(64.0)) {
+        vlbe_real c2, c1;
+        ap = a + del * rho;
+        c2 = ap * ap - b * b;
+        c1 = VLBE_R(2.0) * ap * b;
+        for (i = 0; i < N; ++i)
+            for (j = 0; j < N; ++j) {
+                const size_t e = i * N + j;
+                const vlbe_real d = D ? D[e] : VLBE_R(0.0);
+                const vlbe_real pr = c2 * M[e] + ap * d + K[e];
+                G[i * Mm + j] = pr;
+                if (cplx) {
+                    const vlbe_real pi = c1 * M[e] + b * d;
+                    G[i * Mm + N + j] = -pi;
+                    G[(N + i) * Mm + j] = pi;
+                    G[(N + i) * Mm + N + j] = pr;
+                }
+            }
+        st = vlbe_lu_factor(m, G, G, piv, NULL);
+    }
+    if (st != VLBE_OK) return st == VLBE_ESINGULAR ? VLBE_ENOCONV : st;
+    for (j = 0; j < Mm; ++j) /* start: no symmetry of the problem makes it orthogonal */
+        x[j] = j < N ? VLBE_R(1.0) + (vlbe_real)j / (vlbe_real)n : VLBE_R(0.0);
+    for (it = 0; it < 3; ++it) {
+        for (i = 0; i < N; ++i) { /* y = P'(s') x */
+            vlbe_real yr = VLBE_R(0.0), yi = VLBE_R(0.0);
+            for (j = 0; j < N; ++j) {
+                const size_t e = i * N + j;
+                const vlbe_real qr = VLBE_R(2.0) * ap * M[e] + (D ? D[e] : VLBE_R(0.0));
+                yr += qr * x[j];
+                if (cplx) {
+                    const vlbe_real qi = VLBE_R(2.0) * b * M[e];
+                    yr -= qi * x[N + j];
+                    yi += qi * x[j] + qr * x[N + j];
+                }
+            }
+            y[i] = yr;
+            if (cplx) y[N + i] = yi;
+        }
+        big = vlbe_vec_norm_inf(m, y);
+        if (!(big > VLBE_R(0.0)) || !(big <= VLBE_REAL_MAX)) return VLBE_ENONFINITE;
+        for (j = 0; j < Mm; ++j) x[j] = y[j] / big;
+        vlbe_lu_solve(m, G, piv, 1, x);
+    }
+    /* the phase: the largest component real positive; then unit 2-norm */
+    jm = 0;
+    big = VLBE_R(-1.0);
+    for (j = 0; j < N; ++j) {
+        const vlbe_real t = vlbe__cabs(x[j], cplx ? x[N + j] : VLBE_R(0.0));
+        if (t > big) {
+            big = t;
+            jm = j;
+        }
+    }
+    nrm = vlbe_vec_norm2(m, x);
+    if (!(big > VLBE_R(0.0)) || !(nrm <= VLBE_REAL_MAX)) return VLBE_ENONFINITE;
+    cr = x[jm] / big; /* conj(x_jm) / |x_jm| = cr - i ci */
+    ci = cplx ? x[N + jm] / big : VLBE_R(0.0);
+    for (j = 0; j < N; ++j) {
+        const vlbe_real u = x[j], v = cplx ? x[N + j] : VLBE_R(0.0);
+        xr[j * ld] = (u * cr + v * ci) / nrm;
+        xi[j * ld] = (v * cr - u * ci) / nrm;
+    }
+    xr[jm * ld] = big / nrm;
+    xi[jm * ld] = VLBE_R(0.0);
+    return VLBE_OK;
+}
+
+/* The quadratic eigenproblem (s^2 M + s D + K) x = 0, M, D, K n x n real
+   (any structure: M nonsingular, D may be NULL for 0; e.g. a gyroscopic
+   G, skew, plus damping), by SHIFT-INVERT of the first-order form.
+   With z = (x, s x) the problem is A z = s z, A = [0 I; -M^-1 K, -M^-1 D]
+   (2n eigenvalues s = sre + i sim).  Its inverse about sigma,
+   T = (A - sigma I)^-1, needs no M^-1: (A - sigma I)(u, v) = (f, g) reads
+   v = f + sigma u and -K u - (D + sigma M) v = M g, so
+        P(sigma) u = -(M g + (D + sigma M) f),   v = f + sigma u,
+   P(sigma) = sigma^2 M + sigma D + K: T = [U; [I 0] + sigma U] with
+   U = -P(sigma)^-1 [D + sigma M, M] (n x 2n), from ONE LU of P(sigma)
+   (vlbe_lu_factor) and a solve with 2n right-hand sides.  vlbe_eig_real
+   on T gives mu = 1/(s - sigma), so s = sigma + 1/mu.
+   Why: QR is backward stable, each mu has an error of a few EPS ||T||
+   (times its condition), and ||T|| is about the largest |mu| = 1 /
+   min|s - sigma|: the eigenvalues NEAREST the shift, the lowest modes of
+   a stiff beam for sigma = 0 or just below, come out to a few EPS
+   relative, and the far ones (the high modes, 1e4 .. 1e6 times the
+   fundamental's |s| in a beam) carry the rounding instead.  QR on A
+   itself would make the error EPS max|s| for every eigenvalue, a loss of
+   max|s| / |s_1| in the fundamental, and forming M^-1 K more on top.
+   sigma: real, not an eigenvalue (VLBE_ESINGULAR when P(sigma) is
+   singular to vlbe_lu_factor's test: move the shift).
+   sre[2n], sim[2n]: the eigenvalues, by |s - sigma| ascending (nearest
+   the shift first); ties: a conjugate pair adjacent, +imag first; then
+   |Im s| descending, Re s ascending, then vlbe_eig_real's order of the
+   pairs (a repeated pair comes out +, -, +, -) (deterministic).
+   Xre, Xim (n x 2n each, may be NULL; both are computed when either is
+   asked for, each written when non-NULL): column k, Xre[i*2n + k] + i
+   Xim[i*2n + k], the x of eigenvalue k, unit 2-norm, its component of
+   largest modulus real and positive (the vector of a conjugate s is the
+   conjugate vector), by inverse iteration (vlbe__eig_quad_vec): ||P(s) x||
+   is then a few EPS (|s|^2 ||M|| + |s| ||D|| + ||K||) for a well separated
+   eigenvalue.  Cost: an LU of 2n (n for real s) per pair, about 5 n^3
+   flops each: eigenvectors cost 10 n^4 against the eigenvalues' ~ 100 n^3.
+   work: vlbe_eig_quad_work_len(n) reals, iwork: vlbe_eig_quad_iwork_len(n)
+   ints.  Status (outputs untouched on failure): VLBE_EARG, VLBE_EWORK
+   (either buffer), VLBE_ENONFINITE (NaN or Inf in M, D, K or sigma; or a
+   mu = 0, an infinite s: M singular), VLBE_ESINGULAR (P(sigma)),
+   VLBE_ENOCONV (vlbe_eig_real, or inverse iteration whose P(s') stayed
+   singular; not seen). */
+VLBE_API vlbe_status vlbe_eig_quad(int n, const vlbe_real *M, const vlbe_real *D,
+                                   const vlbe_real *K, vlbe_real sigma, vlbe_real *sre,
+                                   vlbe_real *sim, vlbe_real *Xre, vlbe_real *Xim,
+                                   vlbe_real *work, size_t work_len, int *iwork,
+                                   size_t iwork_len)
+{
+    size_t N, N2, i, j, len = 0, ilen = 0;
+    vlbe_real *T, *XR, *XI, *PL, *mr, *mi, *sr, *si, *xv, *ew;
+    int *piv, *perm, *grp, k, q, m2;
+    vlbe_status st;
+    VLBE_ASSERT(M != NULL && K != NULL && sre != NULL && sim != NULL);
+    VLBE_ASSERT(work != NULL && iwork != NULL);
+    if (n > INT_MAX / 2 || !vlbe__eig_len(n, 9, 20, &len) || !vlbe__eig_len(n, 0, 4, &ilen))
+        return VLBE_EARG;
+    if (work_len < len || iwork_len < ilen) return VLBE_EWORK;
+    if (!vlbe__mat_finite(n, M) || !vlbe__mat_finite(n, K) || (D && !vlbe__mat_finite(n, D)) ||
+        !vlbe_all_finite(&sigma, 1))
+        return VLBE_ENONFINITE;
+    N = (size_t)n;
+    N2 = 2 * N;
+    m2 = 2 * n;
+    T = work;
+    XR = T + 4 * N * N;
+    XI = XR + 2 * N * N;
+    PL = XI + 2 * N * N;
+    mr = PL + N * N;
+    mi = mr + N2;
+    sr = mi + N2;
+    si = sr + N2;
+    xv = si + N2;
+    ew = xv + 2 * N2;
+    piv = iwork;
+    perm = iwork + N2;
+    grp = piv; /* piv is free between the LU of P(sigma) and the vectors */
+    /* P(sigma) and its LU */
+    for (i = 0; i < N * N; ++i)
+        PL[i] = (sigma * M[i] + (D ? D[i] : VLBE_R(0.0))) * sigma + K[i];
+    if ((st = vlbe_lu_factor(n, PL, PL, piv, NULL)) != VLBE_OK) return st;
+    /* T = [U; [I 0] + sigma U], U = -P^-1 [D + sigma M, M] (rows 0..n-1) */
+    for (i = 0; i < N; ++i)
+        for (j = 0; j < N; ++j) {
+            const size_t e = i * N + j;
+            T[i * N2 + j] = -((D ? D[e] : VLBE_R(0.0)) + sigma * M[e]);
+            T[i * N2 + N + j] = -M[e];
+        }
+    vlbe_lu_solve(n, PL, piv, m2, T);
+    for (i = 0; i < N; ++i)
+        for (j = 0; j < N2; ++j)
+            T[(N + i) * N2 + j] = sigma * T[i * N2 + j] + (j == i ? VLBE_R(1.0) : VLBE_R(0.0));
+    if ((st = vlbe_eig_real(m2, T, mr, mi, ew, 4 * N2)) != VLBE_OK) return st;
+    /* s = sigma + 1/mu (Smith's division), |mu| into mr */
+    for (k = 0; k < m2; ++k) {
+        const vlbe_real a = mr[k], b = mi[k];
+        vlbe_real r, den;
+        if (a == VLBE_R(0.0) && b == VLBE_R(0.0)) return VLBE_ENONFINITE;
+        if (vlbe_fabs(a) >= vlbe_fabs(b)) {
+            r = b / a;
+            den = a + b * r;
+            sr[k] = sigma + VLBE_R(1.0) / den;
+            si[k] = -r / den;
+        } else {
+            r = a / b;
+            den = b + a * r;
+            sr[k] = sigma + r / den;
+            si[k] = -VLBE_R(1.0) / den;
+        }
+        mr[k] = vlbe__cabs(a, b);
+        perm[k] = k;
+        grp[k] = b < VLBE_R(0.0) && k > 0 ? k - 1 : k; /* eig_real: a pair's + first */
+    }
+    if (!vlbe_all_finite(sr, m2) || !vlbe_all_finite(si, m2)) return VLBE_ENONFINITE;
+    for (k = 1; k < m2; ++k) { /* insertion sort of the indices */
+        const int p = perm[k];
+        for (q = k; q > 0 && vlbe__eig_quad_before(mr, sr, si, grp, p, perm[q - 1]); --q)
+            perm[q] = perm[q - 1];
+        perm[q] = p;
+    }
+    if (Xre || Xim)
+        for (q = 0; q < m2; ++q) {
+            const int p = perm[q];
+            if (q > 0 && si[p] < VLBE_R(0.0) && si[p] == -si[perm[q - 1]] &&
+                sr[p] == sr[perm[q - 1]]) { /* the conjugate of the previous one */
+                for (i = 0; i < N; ++i) {
+                    XR[i * N2 + (size_t)q] = XR[i * N2 + (size_t)q - 1];
+                    XI[i * N2 + (size_t)q] = -XI[i * N2 + (size_t)q - 1];
+                }
+                continue;
+            }
+            st = vlbe__eig_quad_vec(n, M, D, K, sigma, sr[p], si[p], T, xv, piv, XR + q, XI + q,
+                                    N2);
+            if (st != VLBE_OK) return st;
+        }
+    for (q = 0; q < m2; ++q) {
+        sre[q] = sr[perm[q]];
+        sim[q] = si[perm[q]];
+    }
+    for (i = 0; i < N * N2; ++i) {
+        if (Xre) Xre[i] = XR[i];
+        if (Xim) Xim[i] = XI[i];
+    }
+    return VLBE_OK;
 }
 
 #endif /* VLBE_H */

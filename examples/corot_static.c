@@ -41,7 +41,7 @@
    (b) Natural frequencies of the cantilever from the linearised system at
    rest: K0 = -dQ/dq (vlbe_cr2d_beam_force_jac at q = 0, q' = 0) and M
    (vlbe_cr2d_beam_mass), the clamped coordinates removed, K0 x = w^2 M x
-   (examples/ex_eig.h).  Bending modes against Euler-Bernoulli,
+   (vlbe_eig_gsym of vlbe.h).  Bending modes against Euler-Bernoulli,
    w = (beta L)^2 sqrt(EI / (rhoA L^4)), beta L the roots of
    1 + cos(bL) cosh(bL) = 0 (computed here by Newton to full precision;
    1.8751, 4.6941, 7.8548 to five digits); the first axial mode against
@@ -50,15 +50,19 @@
    is axial when its u components carry most of its M-norm.  The
    consistent-mass Hermite element converges as h^4 in frequency (from
    above: Rayleigh-Ritz), the linear axial element as h^2.
-   Reduction: the eigenproblem is solved as M x = (1/w^2) K0 x, so that the
-   low modes are the LARGE eigenvalues of L^-1 M L^-T (K0 = L L^T).  In the
-   form K0 x = w^2 M x the rounding of the reduction and of Jacobi is
-   relative to ||L^-1 K0 L^-T||, the highest (axial) mode, 1e9 .. 1e11
-   times the fundamental's w^2 = 66: measured against a long-double
-   Rayleigh quotient of the same matrices, w1^2 is off by 1.6e-9 at N = 32
-   (a tenth of w1's discretisation error) and 9e-8 at N = 64; the
-   reciprocal form by 9e-11 and 6e-10.  Both are printed; the N = 64 w1
-   is rounding-limited even so (its h^4 error, 5e-10, is below that).
+   Reduction: the eigenproblem is solved by shift-invert with sigma = 0
+   (vlbe_eig_gsym: Jacobi on L^-1 M L^-T, K0 = L L^T, eigenvalues mu =
+   1/w^2), so that the low modes are the LARGE eigenvalues of the reduced
+   matrix.  Solved with a shift far below the spectrum instead (sigma =
+   -max K0_ii / M_ii, what makes K0 - sigma M safely positive definite
+   without knowing the spectrum, like the direct form K0 x = w^2 M x) the
+   rounding is relative to |sigma|, of the order of the highest (axial)
+   mode, 1e9 .. 1e11 times the fundamental's w^2 = 66: the last column of
+   the table printed below shows w1's error of that form, off the shift-
+   invert one by 1.5e-8 at N = 8 and 1.3e-6 at N = 64 (rounding-limited
+   from N = 8 on).  The N = 64 w1
+   is rounding-limited even with sigma = 0 (its h^4 error, 5e-10, is about
+   the reduction's rounding).
 
    (c) Rigid rotation: the beam turned about a point by psi from -2 to +6
    turns (phi = psi, unbounded): Q is rounding.  Reported as the largest
@@ -71,7 +75,6 @@
    the CSV files corot_static_shapes.csv, corot_static_conv.csv. */
 #include "../corot2d.h"
 #include "../integrators.h"
-#include "ex_eig.h"
 #include "ex_cant.h"
 #include "ex_cr2d.h"
 
@@ -260,15 +263,15 @@ static inline cs_arc_err cs_arc_errors(const cs_model *m, const vlbe_real *q, do
 
 /* Frequencies [rad/s] of the clamped beam of ne elements: the first nb
    bending modes into wb, the first axial mode into *wa (either may be
-   NULL).  recip = 1: solved as M x = (1/w^2) K0 x (see the top); 0: as
-   K0 x = w^2 M x.  Returns VLBE_OK, a status of the callbacks (as
-   VLBE_ECALLBACK) or of ex_eig_gsym. */
+   NULL).  recip = 1: shift-invert with sigma = 0 (see the top); 0: with
+   sigma = -max K0_ii / M_ii, far below the spectrum.  Returns VLBE_OK, a
+   status of the callbacks (as VLBE_ECALLBACK) or of vlbe_eig_gsym. */
 static inline vlbe_status cs_freqs(int ne, int recip, int nb, double *wb, double *wa)
 {
     cs_model *m = (cs_model *)malloc(sizeof *m);
     const int n = 3 * (ne + 1), r = n - 3;
     vlbe_real *q = NULL, *K = NULL, *M = NULL, *Kr = NULL, *Mr = NULL, *lam = NULL, *X = NULL,
-              *w = NULL;
+              *w = NULL, sigma = VLBE_R(0.0);
     vlbe_status st = VLBE_EWORK;
     int i, j, kb = 0, ka = 0;
     if (!m || cs_build(m, ne, 0u)) goto done;
@@ -279,7 +282,7 @@ static inline vlbe_status cs_freqs(int ne, int recip, int nb, double *wb, double
     Mr = (vlbe_real *)malloc((size_t)r * (size_t)r * sizeof *Mr);
     lam = (vlbe_real *)malloc((size_t)r * sizeof *lam);
     X = (vlbe_real *)malloc((size_t)r * (size_t)r * sizeof *X);
-    w = (vlbe_real *)malloc(ex_eig_work_len(r) * sizeof *w);
+    w = (vlbe_real *)malloc(vlbe_eig_work_len(r) * sizeof *w);
     if (!q || !K || !M || !Kr || !Mr || !lam || !X || !w) goto done;
     st = VLBE_ECALLBACK;
     if (vlbe_cr2d_beam_force_jac(&m->beam, VLBE_R(0.0), q, q, K, NULL)) goto done;
@@ -289,13 +292,15 @@ static inline vlbe_status cs_freqs(int ne, int recip, int nb, double *wb, double
             Kr[i * r + j] = -K[(size_t)(i + 3) * (size_t)n + (size_t)(j + 3)];
             Mr[i * r + j] = M[(size_t)(i + 3) * (size_t)n + (size_t)(j + 3)];
         }
-    st = recip ? ex_eig_gsym(r, Mr, Kr, lam, X, NULL, w, ex_eig_work_len(r))
-               : ex_eig_gsym(r, Kr, Mr, lam, X, NULL, w, ex_eig_work_len(r));
+    if (!recip)
+        for (i = 0; i < r; ++i)
+            if (-Kr[i * r + i] / Mr[i * r + i] < sigma) sigma = -Kr[i * r + i] / Mr[i * r + i];
+    st = vlbe_eig_gsym(r, Kr, Mr, sigma, lam, X, NULL, w, vlbe_eig_work_len(r));
     if (st != VLBE_OK) goto done;
-    /* modes from the lowest frequency up: recip -> eigenvalues descending */
+    /* modes from the lowest frequency up */
     for (j = 0; j < r; ++j) {
-        const int c = recip ? r - 1 - j : j;
-        const double om = recip ? 1.0 / sqrt((double)lam[c]) : sqrt((double)lam[c]);
+        const int c = j;
+        const double om = sqrt((double)lam[c]);
         double su = 0.0, sa = 0.0;
         for (i = 0; i < r; ++i) {
             const double x2 = (double)X[i * r + c] * (double)X[i * r + c];
@@ -560,12 +565,12 @@ int main(int argc, char **argv)
         wex[k] = bl[k] * bl[k] * sqrt(EI / (rA * CS_L * CS_L * CS_L * CS_L));
     }
     printf("# (b) cantilever frequencies, K0 x = w^2 M x at rest (clamped coordinates removed), "
-           "solved as M x = (1/w^2) K0 x; "
+           "solved by shift-invert, sigma = 0; "
            "beta L = %.12f %.12f %.12f (1 + cos cosh = 0; to five digits %.4f %.4f %.4f); exact "
            "w = %.9g %.9g %.9g rad/s, first axial w = %.9g rad/s\n",
            bl[0], bl[1], bl[2], ref5[0], ref5[1], ref5[2], wex[0], wex[1], wex[2], wax);
     printf("#  N   rel. error of w1        w2              w3              axial w1     "
-           "(w1 with K0 x = w^2 M x directly)\n");
+           "(w1 with sigma = -max K0_ii/M_ii)\n");
     for (i = 0; i < CS_NN; ++i) {
         clock_t c0 = clock();
         vlbe_status st = cs_freqs(Ns[i], 1, 3, wb[0][i], &wa[i]);

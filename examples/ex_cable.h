@@ -76,9 +76,10 @@
    and O(N) for the projection: the measurement scales with the banded
    path.  Independent cross-check at small N (ex_cable_eig): the lateral
    block of the linearisation at the static state (it decouples from the
-   axial one on a straight vertical cable), M x = (1 / omega^2) (-K) x by
-   examples/ex_eig.h (the lowest modes as the largest eigenvalues, accurate
-   relative to them).
+   axial one on a straight vertical cable), -K x = omega^2 M x by
+   vlbe_eig_gsym of vlbe.h, shift-invert with sigma = 0 (the lowest modes
+   as the largest eigenvalues of the reduced problem, accurate relative to
+   them).
 
    Choice of EA, of the amplitude and of the step control.  A nearly
    inextensible cable is hard on the arithmetic: its nodes sit at |y| ~ L
@@ -112,7 +113,6 @@
 #include "../ancf_ale.h"
 #include "../integrators.h"
 #include "ex_ale.h"
-#include "ex_eig.h"
 #include "ex_run.h"
 
 #include <math.h>
@@ -657,7 +657,8 @@ static inline ex_cable_freq_out ex_cable_freq(ex_cable *m, const vlbe_real *qs, 
 /* The lowest nmodes lateral frequencies [rad/s] of the linearisation at q
    (a static state of the straight vertical cable), dense: M and K from the
    chain's callbacks, the lateral coordinates (x, x' of every node but those
-   the top's constraints hold), M x = (1/omega^2)(-K) x by ex_eig_gsym.
+   the top's constraints hold), -K x = omega^2 M x by vlbe_eig_gsym with
+   sigma = 0 (shift-invert: the lowest modes to a few EPS).
    shape (may be NULL): nmodes x nn, the lateral positions of the nodes in
    each mode, scaled to 1 at the free end.  Dense models only (cfg.banded =
    0, else VLBE_EARG). */
@@ -686,7 +687,7 @@ static inline vlbe_status ex_cable_eig(ex_cable *m, const vlbe_real *q, int nmod
     }
     v = (vlbe_real *)calloc((size_t)n, sizeof *v);
     A = (vlbe_real *)malloc((2 * (size_t)nl * (size_t)nl + (size_t)nl) * sizeof *A);
-    w = (vlbe_real *)malloc(ex_eig_work_len(nl) * sizeof *w);
+    w = (vlbe_real *)malloc(vlbe_eig_work_len(nl) * sizeof *w);
     if (!v || !A || !w) goto done;
     B = A + (size_t)nl * (size_t)nl;
     lam = B + (size_t)nl * (size_t)nl;
@@ -700,12 +701,12 @@ static inline vlbe_status ex_cable_eig(ex_cable *m, const vlbe_real *q, int nmod
             A[i * nl + j] = M[(size_t)li[i] * (size_t)n + (size_t)li[j]];
             B[i * nl + j] = -K[(size_t)li[i] * (size_t)n + (size_t)li[j]];
         }
-    if ((st = ex_eig_gsym(nl, A, B, lam, shape ? M : NULL, NULL, w, ex_eig_work_len(nl))) !=
-        VLBE_OK)
+    if ((st = vlbe_eig_gsym(nl, B, A, VLBE_R(0.0), lam, shape ? M : NULL, NULL, w,
+                            vlbe_eig_work_len(nl))) != VLBE_OK)
         goto done;
-    for (i = 0; i < nmodes; ++i) omega[i] = 1.0 / sqrt((double)lam[nl - 1 - i]);
+    for (i = 0; i < nmodes; ++i) omega[i] = sqrt((double)lam[i]);
     for (i = 0; shape && i < nmodes; ++i) { /* x of the nodes (M holds the vectors now) */
-        const int col = nl - 1 - i, nn = m->ch.nn;
+        const int col = i, nn = m->ch.nn;
         const double xe = (double)M[(size_t)(nl - 2) * (size_t)nl + (size_t)col]; /* free end */
         shape[i * nn] = 0.0;
         for (j = 1; j < nn; ++j) {

@@ -17,8 +17,8 @@
    node carries [r(3), r'(3), theta]; the constraints fix the 7 coordinates
    of node 0, so the linearised problem is K0 x = w^2 M x on the other 7 N
    coordinates, K0 = -dQ/dq (vlbe_ale_chain_force_jac) and M
-   (vlbe_ale_chain_mass) at the straight unloaded state, solved as M x =
-   w^-2 K0 x (ex_eig_gsym; ex_eig.h: the lowest modes accurately).
+   (vlbe_ale_chain_mass) at the straight unloaded state, solved by shift-
+   invert with sigma = 0 (vlbe_eig_gsym: the lowest modes accurately).
 
    Decoupling.  The element's twist is theta' (eq. 23) with the energy
    GI theta'^2 / 2, its spin inertia rhoI theta-dot^2 / 2 (eq. 28), and
@@ -95,7 +95,6 @@
    relative error of f1..f5 against eq. 58 over N, ours and the paper's. */
 #include "../ancf_ale.h"
 #include "ex_ale.h"
-#include "ex_eig.h"
 #include "ex_freq.h"
 #include "ex_run.h"
 
@@ -263,14 +262,14 @@ done:
 }
 
 /* Generalized eigenproblem K x = w^2 M x on the coordinates idx[0..k-1]
-   (solved as M x = (1/w^2) K x, ex_eig.h: the lowest modes accurately);
+   (vlbe_eig_gsym, shift-invert with sigma = 0: the lowest modes accurately);
    f[0..k-1] ascending [Hz]; share (may be NULL): the share of x^T M x
    of each mode on the theta coordinates (tmask[i] != 0 for coordinate i).
    0 on success. */
 static inline int st_geig(int n, const vlbe_real *K0, const vlbe_real *M, const int *idx, int k,
                           const int *tmask, double *f, double *share)
 {
-    const size_t K = (size_t)k, lw = ex_eig_work_len(k);
+    const size_t K = (size_t)k, lw = vlbe_eig_work_len(k);
     vlbe_real *A = (vlbe_real *)calloc(K * K, sizeof *A); /* calloc: gcc -O1 cannot see */
     vlbe_real *B = (vlbe_real *)calloc(K * K, sizeof *B); /* the loops below fill them  */
     vlbe_real *X = (vlbe_real *)malloc(K * K * sizeof *X);
@@ -284,10 +283,11 @@ static inline int st_geig(int n, const vlbe_real *K0, const vlbe_real *M, const 
             A[a * K + b] = M[(size_t)idx[a] * (size_t)n + (size_t)idx[b]];
             B[a * K + b] = K0[(size_t)idx[a] * (size_t)n + (size_t)idx[b]];
         }
-    if (ex_eig_gsym(k, A, B, lam, share ? X : NULL, &info, w, lw) != VLBE_OK) goto done;
-    for (j = 0; j < K; ++j) { /* lam = 1/w^2 ascending: w descending */
-        const size_t c = K - 1 - j;
-        f[j] = 1.0 / (2.0 * ST_PI * sqrt((double)lam[c]));
+    if (vlbe_eig_gsym(k, B, A, VLBE_R(0.0), lam, share ? X : NULL, &info, w, lw) != VLBE_OK)
+        goto done;
+    for (j = 0; j < K; ++j) { /* lam = w^2 ascending */
+        const size_t c = j;
+        f[j] = sqrt((double)lam[c]) / (2.0 * ST_PI);
         if (share) {
             double all = 0.0, th = 0.0;
             for (a = 0; a < K; ++a)

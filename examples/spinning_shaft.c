@@ -63,7 +63,6 @@
    in the traverse and dominates. */
 #include "../ancf_ale.h"
 #include "ex_ale.h"
-#include "ex_eig.h"
 #include "ex_katz.h"
 #include "ex_run.h"
 #include "../bench/svgplot.h"
@@ -485,8 +484,8 @@ static int ss_bending_dofs(const ss_scene *s, int *idx)
    mesh (ne elements) frozen with the load node at z l.  At the straight
    state X1 bending decouples from X2 bending, the axial and the torsional
    coordinates (tests/test_scenes_shaft.c checks it), so the X1 block of M
-   and K gives them, from M x = (1/w^2) K x (ex_eig.h: the lowest modes of
-   a stiff system to a few EPS).  0 on success. */
+   and K gives them, by vlbe_eig_gsym with sigma = 0 (shift-invert: the
+   lowest modes of a stiff system to a few EPS).  0 on success. */
 static inline int ss_frozen_freq(ss_scene *s, int ne, double z, int nf, double *w)
 {
     const size_t n = (size_t)(SS_NE_MAX + 1) * 7;
@@ -503,10 +502,11 @@ static inline int ss_frozen_freq(ss_scene *s, int ne, double z, int nf, double *
                 Mb[i * nb + j] = M[idx[i] * nc + idx[j]];
                 Kb[i * nb + j] = K[idx[i] * nc + idx[j]];
             }
-        wk = (vlbe_real *)malloc(ex_eig_work_len(nb) * sizeof *wk);
+        wk = (vlbe_real *)malloc(vlbe_eig_work_len(nb) * sizeof *wk);
         if (wk && nf <= nb &&
-            ex_eig_gsym(nb, Mb, Kb, lam, NULL, &info, wk, ex_eig_work_len(nb)) == VLBE_OK) {
-            for (i = 0; i < nf; ++i) w[i] = 1.0 / sqrt((double)lam[nb - 1 - i]);
+            vlbe_eig_gsym(nb, Kb, Mb, VLBE_R(0.0), lam, NULL, &info, wk, vlbe_eig_work_len(nb)) ==
+                VLBE_OK) {
+            for (i = 0; i < nf; ++i) w[i] = sqrt((double)lam[i]);
             rc = 0;
         }
     }
