@@ -174,10 +174,11 @@ static int cr_build(cr_model *c, int ne, int d)
 }
 
 /* Frequencies at spin Om about the state q, lambda (the steady state, or
-   with stressed = 0 the straight unstressed beam with lambda = 0): the
-   lowest CR_NW lag and flap frequencies (flap: 3D only, else -1). */
+   the straight unstressed beam with lambda = 0): the lowest CR_NW lag and
+   flap frequencies (flap: 3D only, else -1); *remax (may be NULL) the
+   largest real part of the eigenvalues (> 0: unstable). */
 static vlbe_status cr_freqs(cr_model *c, vlbe_real Om, const vlbe_real *q, const vlbe_real *lam,
-                            double *lag, double *flap)
+                            double *lag, double *flap, double *remax)
 {
     const int n = c->n;
     vlbe_lin_frame fr;
@@ -224,6 +225,8 @@ static vlbe_status cr_freqs(cr_model *c, vlbe_real Om, const vlbe_real *q, const
                        c->d == 3 ? Xre : NULL, c->d == 3 ? Xim : NULL, w,
                        vlbe_eig_quad_work_len(nr), iw, vlbe_eig_quad_iwork_len(nr));
     if (st != VLBE_OK) goto done;
+    if (remax)
+        for (k = 0, *remax = -HUGE_VAL; k < 2 * nr; ++k) *remax = fmax(*remax, (double)sre[k]);
     for (k = 0; k < 2 * nr && (nl < CR_NW || (c->d == 3 && nf < CR_NW)); ++k) {
         int isflap = 0;
         if (sim[k] <= 0) continue;
@@ -260,9 +263,10 @@ done:
 
 /* The sweep over Om[0..nom-1] of ne elements, dimension d: steady states
    by continuation (stressed) or the straight unstressed beam; lag and
-   flap frequencies per speed, the CPU time of the sweep. */
+   flap frequencies per speed, remax (may be NULL) the largest real part
+   of the eigenvalues per speed, the CPU time of the sweep. */
 static int cr_sweep(int ne, int d, int stressed, int nom, const double *Om,
-                    double (*lag)[CR_NW], double (*flap)[CR_NW], double *cpu)
+                    double (*lag)[CR_NW], double (*flap)[CR_NW], double *remax, double *cpu)
 {
     cr_model *c = (cr_model *)malloc(sizeof *c);
     vlbe_static_params sp;
@@ -283,7 +287,8 @@ static int cr_sweep(int ne, int d, int stressed, int nom, const double *Om,
         c->Om = (vlbe_real)Om[j];
         if (stressed && vlbe_dae_static(&c->rot, &sp, 0, q, lam, NULL, w, lw, iw, liw) != VLBE_OK)
             goto done;
-        if (cr_freqs(c, c->Om, q, lam, lag[j], flap[j]) != VLBE_OK) goto done;
+        if (cr_freqs(c, c->Om, q, lam, lag[j], flap[j], remax ? remax + j : NULL) != VLBE_OK)
+            goto done;
     }
     rc = 0;
 done:
@@ -308,7 +313,7 @@ int main(int argc, char **argv)
     const char *dir = argc > 1 ? argv[1] : "out";
     const double u = cr_unit();
     static double Om[CR_NOM], ex[4][CR_NOM], l2[CR_NOM][CR_NW], f2[CR_NOM][CR_NW],
-        l3[CR_NOM][CR_NW], f3[CR_NOM][CR_NW], lu[CR_NOM][CR_NW], fu[CR_NOM][CR_NW];
+        l3[CR_NOM][CR_NW], f3[CR_NOM][CR_NW], lu[CR_NOM][CR_NW], fu[CR_NOM][CR_NW], reu[CR_NOM];
     static double col[12][CR_NOM];
     double cpu2 = 0, cpu3 = 0, cpuu = 0, cpue, w0;
     char what[160], path[512];
@@ -326,8 +331,8 @@ int main(int argc, char **argv)
     w0 = ex[0][0];
     printf("Campbell diagram of a rotating cantilever (L = 10 m, EI = 1.4e4 N m^2, rhoA = 1.2 "
            "kg/m; w0 = %.6f rad/s, unit sqrt(EI/(rhoA L^4)) = %.6f rad/s)\n", w0, u);
-    if (cr_sweep(16, 2, 1, CR_NOM, Om, l2, f2, &cpu2) || cr_sweep(16, 3, 1, CR_NOM, Om, l3, f3, &cpu3) ||
-        cr_sweep(16, 2, 0, CR_NOM, Om, lu, fu, &cpuu)) {
+    if (cr_sweep(16, 2, 1, CR_NOM, Om, l2, f2, NULL, &cpu2) || cr_sweep(16, 3, 1, CR_NOM, Om, l3, f3, NULL, &cpu3) ||
+        cr_sweep(16, 2, 0, CR_NOM, Om, lu, fu, reu, &cpuu)) {
         printf("campbell_rotating: a sweep failed\n");
         return 1;
     }
@@ -364,7 +369,7 @@ int main(int argc, char **argv)
     printf("mesh convergence at Om = 10 rad/s (3D; flap 1, lag 1; relative errors):\n");
     for (ne = 2; ne <= 16; ne *= 2) {
         double o = 10.0, l[1][CR_NW], f[1][CR_NW], cpu = 0;
-        if (cr_sweep(ne, 3, 1, 1, &o, l, f, &cpu)) return 1;
+        if (cr_sweep(ne, 3, 1, 1, &o, l, f, NULL, &cpu)) return 1;
         printf("  %2d elements  flap1 %.9f (%.2e)  lag1 %.9f (%.2e)\n", ne, f[0][0],
                fabs(f[0][0] - ex[0][20]) / ex[0][20], l[0][0], fabs(l[0][0] - ex[2][20]) / ex[2][20]);
         snprintf(what, sizeof what, "flap 1 [rad/s] at Om = 10 rad/s, %d elements", ne);
