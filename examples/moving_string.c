@@ -434,8 +434,11 @@ done:
     return st;
 }
 
-/* The continuum reference of the pinned-pinned moving beam (eq. 54, with
-   rho A -> rhoA / lam, F -> T of the prestretched window): Galerkin on
+/* The continuum reference of the pinned-pinned moving beam (eq. 54 in the
+   prestretched window: per length in space the mass rhoA / lam, the
+   tension T and the bending stiffness EI / lam, since the element's p is
+   the unstretched length; at v = 0, w^2 = k^2 (lam T + EI k^2) / rhoA,
+   which the elements converge to as h^4): Galerkin on
    nm sine modes phi_k = sin(k pi x / l) (Wickert and Mote 1990):
         M = (rho l / 2) I,   K = diag((l / 2) [EI (k pi/l)^4 + (T - rho v^2)(k pi/l)^2]),
         G_jk = 2 rho v int phi_j phi_k' dx = 2 rho v 2 j k / (j^2 - k^2)  (j + k odd),
@@ -457,7 +460,7 @@ static inline vlbe_status ms_galerkin(int bend, double speed, int nm, int nf, do
     vlbe_status st;
     if (nm < 1 || nm > MS_GAL_MAX) return VLBE_EARG;
     ms_section(&rhoA, &EA, &EI, &eps, &lam);
-    if (!bend) EI = 0;
+    EI = bend ? EI / lam : 0.0; /* per length in space (p is the unstretched length) */
     rho = rhoA / lam;
     for (j = 0; j < nm; ++j)
         for (k = 0; k < nm; ++k) {
@@ -481,6 +484,70 @@ static inline vlbe_status ms_galerkin(int bend, double speed, int nm, int nf, do
     free(w);
     free(iw);
     return st;
+}
+
+/* Has the window of ne elements (kind) lost its static stiffness at
+   `speed`: an eigenvalue of the reduced K with a negative real part?  (The
+   divergence: at that speed the lowest frequency is 0.  The beam's
+   gyroscopic system then has a real pair +-s; the string's stays on the
+   imaginary axis beyond it, the gyroscopic stabilisation of a string, so
+   the test is on K and not on the growth of the motion.)  -1 if the
+   analysis fails. */
+static inline int ms_diverged(int ne, int kind, double speed)
+{
+    ms_model *m = (ms_model *)malloc(sizeof *m);
+    vlbe_real *q = (vlbe_real *)malloc(MS_NQ_NODE * (MS_NE_MAX + 1) * sizeof *q);
+    vlbe_real *v = (vlbe_real *)calloc(MS_NQ_NODE * (MS_NE_MAX + 1), sizeof *v);
+    vlbe_real *a = NULL, *lam = NULL, *Mr = NULL, *Dr = NULL, *Kr = NULL, *sre = NULL,
+              *sim = NULL, *w = NULL;
+    int *iw = NULL, n, nr = 0, k, rc = -1;
+    size_t lw, liw;
+    if (!m || !q || !v || ms_build_at(m, ne, kind, speed, q, NULL)) goto done;
+    n = m->sys.n;
+    lw = vlbe_dae_lin_work_len_sys(&m->sys);
+    if (vlbe_dae_work_len_sys(&m->sys) > lw) lw = vlbe_dae_work_len_sys(&m->sys);
+    if (vlbe_eig_quad_work_len(n) > lw) lw = vlbe_eig_quad_work_len(n);
+    liw = vlbe_dae_lin_iwork_len_sys(&m->sys);
+    if (vlbe_dae_iwork_len_sys(&m->sys) > liw) liw = vlbe_dae_iwork_len_sys(&m->sys);
+    if (vlbe_eig_quad_iwork_len(n) > liw) liw = vlbe_eig_quad_iwork_len(n);
+    a = (vlbe_real *)malloc((size_t)n * sizeof *a);
+    lam = (vlbe_real *)malloc(((size_t)m->sys.m + 1) * sizeof *lam);
+    Mr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Mr);
+    Dr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Dr);
+    Kr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Kr);
+    sre = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sre);
+    sim = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sim);
+    w = (vlbe_real *)malloc(lw * sizeof *w);
+    iw = (int *)malloc(liw * sizeof *iw + sizeof *iw);
+    if (!a || !lam || !Mr || !Dr || !Kr || !sre || !sim || !w || !iw ||
+        vlbe_dae_consistent_acc(&m->sys, 0, q, v, a, lam, NULL, w, lw, iw, liw) ||
+        vlbe_dae_linearize(&m->sys, 0, q, v, a, lam, NULL, &nr, NULL, Mr, Dr, Kr, NULL, w, lw,
+                           iw, liw) ||
+        vlbe_eig_real(nr, Kr, sre, sim, w, lw))
+        goto done;
+    rc = 0;
+    for (k = 0; k < nr; ++k)
+        if (sre[k] < 0) rc = 1;
+done:
+    free(q), free(v), free(a), free(lam), free(Mr), free(Dr), free(Kr);
+    free(sre), free(sim), free(w), free(iw), free(m);
+    return rc;
+}
+
+/* The divergence speed of the model by bisection between lo (below) and
+   hi (above), to 1e-9 relative; -1 if the bracket is not one. */
+static inline double ms_divergence(int ne, int kind, double lo, double hi)
+{
+    int it;
+    if (ms_diverged(ne, kind, lo) != 0 || ms_diverged(ne, kind, hi) != 1) return -1.0;
+    for (it = 0; it < 60 && hi - lo > 1e-9 * hi; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        const int u = ms_diverged(ne, kind, mid);
+        if (u < 0) return -1.0;
+        if (u) hi = mid;
+        else lo = mid;
+    }
+    return 0.5 * (lo + hi);
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
@@ -570,69 +637,11 @@ static void ms_table(const char *tag, int kind3, const char *name, double paper_
     }
 }
 
-/* Is the window of ne elements (kind) unstable at `speed`: an eigenvalue
-   with Re s > 0 (divergence: a real pair +-s)?  -1 if the analysis fails. */
-static int ms_unstable(int ne, int kind, double speed)
-{
-    ms_model *m = (ms_model *)malloc(sizeof *m);
-    vlbe_real *q = (vlbe_real *)malloc(MS_NQ_NODE * (MS_NE_MAX + 1) * sizeof *q);
-    vlbe_real *v = (vlbe_real *)calloc(MS_NQ_NODE * (MS_NE_MAX + 1), sizeof *v);
-    vlbe_real *a = NULL, *lam = NULL, *Mr = NULL, *Dr = NULL, *Kr = NULL, *sre = NULL,
-              *sim = NULL, *w = NULL;
-    int *iw = NULL, n, nr = 0, k, rc = -1;
-    size_t lw, liw;
-    if (!m || !q || !v || ms_build_at(m, ne, kind, speed, q, NULL)) goto done;
-    n = m->sys.n;
-    lw = vlbe_dae_lin_work_len_sys(&m->sys);
-    if (vlbe_dae_work_len_sys(&m->sys) > lw) lw = vlbe_dae_work_len_sys(&m->sys);
-    if (vlbe_eig_quad_work_len(n) > lw) lw = vlbe_eig_quad_work_len(n);
-    liw = vlbe_dae_lin_iwork_len_sys(&m->sys);
-    if (vlbe_dae_iwork_len_sys(&m->sys) > liw) liw = vlbe_dae_iwork_len_sys(&m->sys);
-    if (vlbe_eig_quad_iwork_len(n) > liw) liw = vlbe_eig_quad_iwork_len(n);
-    a = (vlbe_real *)malloc((size_t)n * sizeof *a);
-    lam = (vlbe_real *)malloc(((size_t)m->sys.m + 1) * sizeof *lam);
-    Mr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Mr);
-    Dr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Dr);
-    Kr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Kr);
-    sre = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sre);
-    sim = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sim);
-    w = (vlbe_real *)malloc(lw * sizeof *w);
-    iw = (int *)malloc(liw * sizeof *iw + sizeof *iw);
-    if (!a || !lam || !Mr || !Dr || !Kr || !sre || !sim || !w || !iw ||
-        vlbe_dae_consistent_acc(&m->sys, 0, q, v, a, lam, NULL, w, lw, iw, liw) ||
-        vlbe_dae_linearize(&m->sys, 0, q, v, a, lam, NULL, &nr, NULL, Mr, Dr, Kr, NULL, w, lw,
-                           iw, liw) ||
-        vlbe_eig_quad(nr, Mr, Dr, Kr, (vlbe_real)-10.0, sre, sim, NULL, NULL, w, lw, iw, liw))
-        goto done;
-    rc = 0; /* a gyroscopic conservative system: Re s = 0 to rounding while stable */
-    for (k = 0; k < 2 * nr; ++k)
-        if ((double)sre[k] > 1e-6 * fabs((double)sre[k] + (double)sim[k]) + 1e-6) rc = 1;
-done:
-    free(q), free(v), free(a), free(lam), free(Mr), free(Dr), free(Kr);
-    free(sre), free(sim), free(w), free(iw), free(m);
-    return rc;
-}
-
-/* The divergence speed of the model by bisection between lo (stable) and
-   hi (unstable), to 1e-9 relative; -1 if the bracket is not one. */
-static double ms_divergence(int ne, int kind, double lo, double hi)
-{
-    int it;
-    if (ms_unstable(ne, kind, lo) != 0 || ms_unstable(ne, kind, hi) != 1) return -1.0;
-    for (it = 0; it < 60 && hi - lo > 1e-9 * hi; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        const int u = ms_unstable(ne, kind, mid);
-        if (u < 0) return -1.0;
-        if (u) hi = mid;
-        else lo = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
 /* Campbell diagram of the window (16 elements): the lowest three
    frequencies of string and beam against the transport speed, up to the
    analytic divergence speed (string: c; beam: rho v^2 = T + EI pi^2/l^2,
-   the first mode's stiffness gone), with the closed form of the string and
+   the first mode's stiffness gone; per length in space as in ms_galerkin:
+   v_d^2 = (lam T + EI pi^2 / l^2) / rhoA), with the closed form of the string and
    the Galerkin series of the beam; ROW lines at v0 and near divergence. */
 #define MS_NV 23
 static void ms_campbell(const char *dir)
@@ -649,7 +658,7 @@ static void ms_campbell(const char *dir)
     ms_section(&rhoA, &EA, &EI, &eps, &lam);
     c = sqrt(MS_F * lam / rhoA);
     vd[0] = c;
-    vd[1] = sqrt((MS_F + EI * PI * PI / (MS_L * MS_L)) * lam / rhoA);
+    vd[1] = sqrt((lam * MS_F + EI * PI * PI / (MS_L * MS_L)) / rhoA);
     for (b = 0; b < 2; ++b)
         for (i = 0; i < MS_NV; ++i) {
             v[b][i] = r[i] * vd[b];
@@ -687,7 +696,7 @@ static void ms_campbell(const char *dir)
                          fabs(fe[b][0][i] - fr[b][0][i]) / fr[b][0][i], cpu_all / (2 * MS_NV));
         vdm = ms_divergence(16, b, 0.9 * vd[b], 1.1 * vd[b]);
         snprintf(q, sizeof q, "divergence speed of the %s (f1 -> 0), 16 elements, vs %s [m/s]",
-                 nm, b ? "rho v^2 = T + EI pi^2/l^2" : "c = sqrt(T lam / rhoA)");
+                 nm, b ? "v^2 = (lam T + EI pi^2/l^2) / rhoA" : "c = sqrt(T lam / rhoA)");
         svgp_compare_row(stdout, "moving", q, vd[b], vdm, fabs(vdm - vd[b]) / vd[b], (double)NAN);
     }
     for (b = 0; b < 2; ++b) { /* three modes as one series each, NaN between */
