@@ -228,6 +228,12 @@ typedef struct vlbe_static_params {
     int max_iter;      /* Newton iterations, 1..VLBE_INT_MAX_ITER (default 50)     */
     int max_halvings;  /* line search: halvings of a Newton step, 0..50 (default 5);
                           0 = plain Newton, the full step is always taken         */
+    int watchdog;      /* full Newton steps first: the iteration returns to the
+                          start, and backtracks from there, once this many
+                          iterations in a row brought neither a merit nor a
+                          step below every one before, 0..VLBE_INT_MAX_ITER
+                          (default 4); 0 = backtracking from the first
+                          iteration on; without effect when max_halvings = 0 */
 } vlbe_static_params;
 
 /* Integrator state.  q, v, qdd (= q''), a (algorithmic acceleration), lambda
@@ -1179,6 +1185,7 @@ VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
     p->atol = VLBE_TOL_DEFAULT(VLBE_R(1e-12), VLBE_ATOL_EPS);
     p->max_iter = 50;
     p->max_halvings = 5;
+    p->watchdog = 4;
 }
 
 /* Workspace layout (reals), N = n + m: x = (q, lambda), trial x, Psi at x,
@@ -1262,12 +1269,12 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
                                      vlbe_dae_stats *stats, vlbe_real *work, size_t work_len,
                                      int *iwork, size_t iwork_len)
 {
-    int n, m, N, i, it, k, inc_on, inc_ok, band;
+    int n, m, N, i, it, it0 = 0, k, inc_on, inc_ok, band, watch, stall = 0;
     size_t NN, e;
     vlbe_real *x, *xt, *F, *Ft, *d, *z, *Q, *Qt, *Cq, *Cqt, *A, *scr, *tmp, *pw = NULL,
               *X = NULL;
     int *inv = NULL;
-    vlbe_real fnorm, sc, kmax, cmax, merit;
+    vlbe_real fnorm, sc, kmax, cmax, merit, wm = VLBE_R(0.0), ws = VLBE_R(0.0);
     vlbe_dae sl;
     vlbe_dae_stats dummy;
     vlbe_status rc;
@@ -1281,7 +1288,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
         !(par->ftol >= VLBE_R(0.0)) || !isfinite(par->rtol) || !isfinite(par->atol) ||
         !isfinite(par->ftol) || !(par->rtol + par->atol + par->ftol > VLBE_R(0.0)) ||
         par->max_iter < 1 || par->max_iter > VLBE_INT_MAX_ITER || par->max_halvings < 0 ||
-        par->max_halvings > 50)
+        par->max_halvings > 50 || par->watchdog < 0 || par->watchdog > VLBE_INT_MAX_ITER)
         return VLBE_EARG;
     if (!work || !iwork || work_len < vlbe_static_work_len_sys(sys) ||
         iwork_len < vlbe_static_iwork_len_sys(sys))
@@ -1325,12 +1332,14 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     fnorm = vlbe__int_psi_norm(n, F, m, F + n); /* residual test, eq. 53 */
     inc_on = par->rtol + par->atol > VLBE_R(0.0);
     inc_ok = !inc_on;
+    /* the watchdog phase: full Newton steps from the start (see above) */
+    watch = par->max_halvings > 0 && par->watchdog > 0;
     for (it = 0;; ++it) {
-        int full_ok = 0, accepted = 0, full_valid = 0;
+        int full_ok = 0, accepted = 0, full_valid = 0, back = 0;
         vlbe_real alpha = VLBE_R(1.0), mt = VLBE_R(0.0);
         vlbe_status last = VLBE_ENOCONV;
         if (inc_ok && (!(par->ftol > VLBE_R(0.0)) || fnorm <= par->ftol)) break;
-        if (it >= par->max_iter) {
+        if (it - it0 >= par->max_iter) {
             ++stats->newton_fails;
             return VLBE_ENOCONV;
         }
@@ -1340,41 +1349,63 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             const vlbe__int_blk B = band ? vlbe__int_band_blk(sys, A, 1) : vlbe__int_dblk(A, N, 0);
             rc = vlbe__int_btangent(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), &B,
                                     VLBE_R(0.0), NULL, inv, scr);
-            if (rc != VLBE_OK) return rc;
             kmax = vlbe_vec_norm_inf((int)NN, A); /* only the q block is filled yet */
             cmax = vlbe_vec_norm_inf((int)vlbe__int_mlen(sys, 1), Cq);
             sc = (kmax > VLBE_R(0.0) && cmax > VLBE_R(0.0) && isfinite(kmax) && isfinite(cmax))
                      ? kmax / cmax
                      : VLBE_R(1.0);
-            vlbe__int_bsaddle(sys, &B, sc, Cq);
+            if (rc == VLBE_OK) vlbe__int_bsaddle(sys, &B, sc, Cq);
         }
         /* the line search's merit function: ||(Psi_q, s Psi_c)||, the
            constraint rows in the units of force like the iteration matrix
            (with C in its own units a metre of gap would weigh as a newton) */
         merit = vlbe__int_hypot(vlbe_vec_norm2(n, F), sc * vlbe_vec_norm2(m, F + n));
-        for (i = 0; i < n; ++i) d[i] = -F[i];
-        for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
-        if (band) {
-            vlbe__int_perm(sys, 1, d, X);
-            vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), (int)vlbe__int_ald(sys, 1), NULL, X);
-        } else {
-            vlbe__int_equil(N, A, (size_t)N, N, NULL, d);
+        if (rc == VLBE_OK) {
+            for (i = 0; i < n; ++i) d[i] = -F[i];
+            for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
+            if (band) {
+                vlbe__int_perm(sys, 1, d, X);
+                vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), (int)vlbe__int_ald(sys, 1), NULL, X);
+            } else {
+                vlbe__int_equil(N, A, (size_t)N, N, NULL, d);
+            }
+            ++stats->lu_factors;
+            /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
+            rc = vlbe__int_factor(sys, stats, 1, A, iwork);
         }
-        ++stats->lu_factors;
-        /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
-        if ((rc = vlbe__int_factor(sys, stats, 1, A, iwork)) != VLBE_OK) return rc;
-        ++stats->lu_solves;
-        ++stats->newton_iters;
-        if (band) {
-            vlbe__int_solve(sys, 1, A, iwork, X);
-            vlbe__int_unperm(sys, 1, X, d);
-        } else {
-            vlbe__int_solve(sys, 1, A, iwork, d);
+        if (rc == VLBE_OK) {
+            ++stats->lu_solves;
+            ++stats->newton_iters;
+            if (band) {
+                vlbe__int_solve(sys, 1, A, iwork, X);
+                vlbe__int_unperm(sys, 1, X, d);
+            } else {
+                vlbe__int_solve(sys, 1, A, iwork, d);
+            }
+            for (i = 0; i < m; ++i) d[n + i] *= sc;
+            if (!vlbe_all_finite(d, N)) rc = VLBE_ENONFINITE;
         }
-        for (i = 0; i < m; ++i) d[n + i] *= sc;
-        if (!vlbe_all_finite(d, N)) return VLBE_ENONFINITE;
+        if (rc != VLBE_OK) {
+            /* at a watched iterate a singular or non-finite matrix or step,
+               or a point outside the domain, sends the iteration back to
+               the start; elsewhere the call fails */
+            if (!(watch && it > 0) || rc == VLBE_EWORK || rc == VLBE_EARG ||
+                (rc == VLBE_ECALLBACK && stats->callback_rc < 0))
+                return rc;
+            back = 1;
+        } else if (watch) {
+            /* progress: a merit or a step below every one before */
+            vlbe_real sn = vlbe_vec_norm2(n, d);
+            if (it == 0 || merit < wm || sn < ws) {
+                if (it == 0 || merit < wm) wm = merit;
+                if (it == 0 || sn < ws) ws = sn;
+                stall = 0;
+            } else if (++stall >= par->watchdog) {
+                back = 1;
+            }
+        }
         /* increment test on the full step, at the new point */
-        if (inc_on) {
+        if (inc_on && !back) {
             vlbe_real dmax = VLBE_R(0.0), qmax = VLBE_R(0.0);
             full_ok = 1;
             for (i = 0; i < n; ++i) {
@@ -1385,8 +1416,9 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             }
             if (dmax <= VLBE_R(8.0) * VLBE_EPS * qmax) full_ok = 1; /* rounding floor */
         }
-        /* backtracking line search on the merit */
-        for (k = 0; k <= par->max_halvings; ++k) {
+        /* backtracking line search on the merit (the watchdog phase: the
+           full step whatever its merit) */
+        for (k = 0; k <= par->max_halvings && !back; ++k) {
             for (i = 0; i < N; ++i) xt[i] = x[i] + alpha * d[i];
             if (!vlbe_all_finite(xt, N)) {
                 last = VLBE_ENONFINITE;
@@ -1398,14 +1430,34 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             } else {
                 mt = vlbe__int_hypot(vlbe_vec_norm2(n, Ft), sc * vlbe_vec_norm2(m, Ft + n));
                 if (k == 0) full_valid = 1;
-                if (mt < merit || (k == 0 && full_ok) || par->max_halvings == 0) {
+                if (mt < merit || (k == 0 && (full_ok || watch)) || par->max_halvings == 0) {
                     accepted = 1;
                     break;
                 }
                 last = VLBE_ENOCONV;
             }
+            /* a full step that leaves the domain: from a watched iterate
+               back to the start, from the start the backtracking */
+            if (watch && it > 0) {
+                back = 1;
+                break;
+            }
+            watch = 0;
             ++stats->rejected;
             alpha *= VLBE_R(0.5);
+        }
+        if (back) {
+            /* back to the caller's q and lambda; the backtracking search
+               takes over from there, with max_iter iterations of its own */
+            watch = 0;
+            it0 = it + 1;
+            ++stats->rejected;
+            vlbe_vec_copy(n, q, x);
+            if (m > 0) vlbe_vec_copy(m, lambda, x + n);
+            if ((rc = vlbe__sta_resid(&sl, stats, t, x, z, Q, Cq, F, pw)) != VLBE_OK) return rc;
+            fnorm = vlbe__int_psi_norm(n, F, m, F + n);
+            inc_ok = !inc_on;
+            continue;
         }
         if (!accepted && last == VLBE_ENOCONV && full_valid) {
             /* every trial was inside the domain but none lowered the
