@@ -1176,7 +1176,10 @@ VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const
    every row is equilibrated (vlbe__int_equil), as in the integrators. */
 
 /* Defaults: ftol 0 (off), rtol 1e-10, atol 1e-12 (float: VLBE_TOL_DEFAULT),
-   50 iterations, up to 5 halvings of a step. */
+   50 iterations, up to 5 halvings of a step, a watchdog of 4 iterations
+   (the smallest that lets plain Newton through on every load step of
+   bench/bench_static.c: the 64-element co-rotational cantilever in steps
+   of k = 2 needs 4). */
 VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
 {
     if (!p) return;
@@ -1233,37 +1236,81 @@ VLBE_INLINE vlbe_status vlbe__sta_resid(const vlbe_dae *s, vlbe_dae_stats *c, vl
 
 /* Solves Q(t,q,0) - C_q^T lambda = 0, C(t,q) = 0 for q and lambda, from the
    given q and lambda (both in/out; lambda may be NULL when m = 0).  Newton
-   step d from [-K + H, C_q^T; C_q, 0] d = -Psi; trial points x + alpha d,
-   alpha = 1, 1/2, ... (par->max_halvings halvings): a trial is accepted when
-   the merit ||(Psi_q, s Psi_c)||_2 decreases (s: the scaling of the
-   constraint rows above, so that a gap in C weighs as the force that closes
-   it), or at alpha = 1 when d passes the increment test.  A callback
-   returning > 0 or a non-finite Psi at a trial point counts as no
-   decrease.  When no trial lowers the merit but the full step lies inside
-   the domain, the full step is taken: a residual norm is no monotone
-   measure of progress for stiff structures (in a beam, the first Newton
-   step from a linear guess typically raises the axial residual by orders
-   of magnitude while the iteration converges quadratically), and max_iter
-   still bounds a divergence.  Otherwise, when no halving is left, the call
-   fails with the status of the last trial (VLBE_ECALLBACK: outside the
-   domain, VLBE_ENONFINITE).  Convergence: see vlbe_static_params.
+   step d from [-K + H, C_q^T; C_q, 0] d = -Psi, in two phases.
+   Watchdog phase (par->watchdog > 0 and par->max_halvings > 0): the
+   watchdog of Chamberlain et al. with its checkpoint at the start.  Full
+   Newton steps, whatever the merit does, as long as the iteration makes
+   progress: at every iteration the merit ||(Psi_q, s Psi_c)||_2 (below)
+   or the norm of the step's q part ||d_q||_2 below every one before.
+   par->watchdog iterations in a row without progress, or at any iterate
+   but the start a singular or non-finite iteration matrix or step, or a
+   Jacobian or a full step outside the domain or non-finite, send the
+   iteration back to the caller's q and lambda, where the backtracking
+   phase starts with max_iter iterations of its own.  Why: neither the
+   residual nor the step is monotone along a converging Newton iteration
+   of a slender structure.  In a co-rotational cantilever (EA L^2/EI =
+   4e6) under a tip load, each load step's first Newton step rotates the
+   elements and their linearised kinematics stretch them: the axial
+   residual, ~EA theta^2 / 2, exceeds the load's by 10^5; the next step
+   removes it, and the following ones trade axial against bending residual
+   by factors of 10 to 100 while the iterates converge.  Backtracking from
+   the first iteration rejects those full steps and accepts short ones
+   (1/8 to 1/32 of the step) that lower the merit a little: 2 to 3 times
+   the iterations of plain Newton, or VLBE_ENOCONV at max_iter
+   (bench/bench_static.c, docs/benchmarks.md).  A Newton iteration that
+   diverges or cycles stops making progress: it costs the watched
+   iterations, and the backtracking phase then takes exactly the steps it
+   takes with watchdog = 0.
+   Backtracking phase (from the start when par->watchdog = 0; none when
+   par->max_halvings = 0: plain Newton throughout): trial points
+   x + alpha d, alpha = 1, 1/2, ... (par->max_halvings halvings): a trial
+   is accepted when the merit ||(Psi_q, s Psi_c)||_2 decreases (s: the
+   scaling of the constraint rows above, so that a gap in C weighs as the
+   force that closes it), or at alpha = 1 when d passes the increment
+   test.  A callback returning > 0 or a non-finite Psi at a trial point
+   counts as no decrease.  When no trial lowers the merit but the full
+   step lies inside the domain, the full step is taken (the beam's first
+   step above), and max_iter still bounds a divergence.  Otherwise, when
+   no halving is left, the call fails with the status of the last trial
+   (VLBE_ECALLBACK: outside the domain, VLBE_ENONFINITE).  A full step
+   from the start that lies outside the domain or is non-finite ends the
+   watchdog phase at once: its halvings are the backtracking phase's
+   first iteration.  Convergence (in either phase): see
+   vlbe_static_params.
    Returns VLBE_OK; VLBE_EARG (problem, parameters, t, NULL pointers);
    VLBE_EWORK; VLBE_ENONFINITE (start, Psi at the start, iteration matrix,
-   step); VLBE_ECALLBACK (a callback < 0 anywhere, != 0 at the start or in
-   a Jacobian, > 0 at the last trial point of a line search);
-   VLBE_ESINGULAR (iteration matrix: e.g. a structure free to move, or
-   K = 0 with lambda = 0 on a curved constraint); VLBE_ENOCONV (max_iter
-   iterations, or no decrease along the step).  On failure q and lambda are
-   as they were.  stats (may be NULL) is added to, not
-   reset: newton_iters, jac_evals, lu_factors, lu_solves, force_calls,
-   constr_calls count as in the integrators; rejected counts rejected trial
-   points, newton_fails the VLBE_ENOCONV returns, steps the solutions (one
-   per successful call); callback_rc holds the last failing callback value
-   (also one backtracked from).
+   step; the last two not at a watched iterate); VLBE_ECALLBACK (a
+   callback < 0 anywhere, != 0 at the start or in a Jacobian but at a
+   watched iterate, > 0 at the last trial point of a line search);
+   VLBE_ESINGULAR (iteration matrix, not at a watched iterate: e.g. a
+   structure free to move, or K = 0 with lambda = 0 on a curved
+   constraint); VLBE_ENOCONV (max_iter iterations in a phase, or no
+   decrease along the step).  On failure q and lambda are as they were.
+   stats (may be NULL) is added to, not reset: newton_iters, jac_evals,
+   lu_factors, lu_solves, force_calls, constr_calls count as in the
+   integrators (the watched iterations included, and the residual at the
+   start evaluated again after them); rejected counts rejected trial
+   points and returns to the start (one each), newton_fails the
+   VLBE_ENOCONV returns, steps the solutions (one per successful call);
+   callback_rc holds the last failing callback value (also one backtracked
+   or returned from).
    Load stepping (and tracing a path past a limit point with a prescribed
    displacement written as a constraint) is the caller's job: scale the load
    or move the prescribed value in the user data, call again from the last
-   solution. */
+   solution.
+   References: R. Chamberlain, M. Powell, C. Lemarechal, H. Pedersen, The
+   watchdog technique for forcing convergence in algorithms for
+   constrained optimization, Math. Programming Study 16 (1982) 1-17.
+   Measured against it and dropped (docs/benchmarks.md): the non-monotone
+   test of L. Grippo, F. Lampariello, S. Lucidi, SIAM J. Numer. Anal. 23
+   (1986) 707-716, on the merit with a memory of 5 or 10 iterations (in a
+   small load step's first iteration a short step lowers the merit: 20 to
+   30 % more iterations than plain Newton in steps of k = 0.1); the natural
+   monotonicity test of P. Deuflhard, Newton Methods for Nonlinear
+   Problems, Springer 2004, sec. 3.3 (with the Jacobian of the straight
+   beam, the residual after the first full step maps to a correction 10^4
+   times that step: 3 times the iterations of plain Newton, or
+   VLBE_ENOCONV). */
 VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_params *par,
                                      vlbe_real t, vlbe_real *q, vlbe_real *lambda,
                                      vlbe_dae_stats *stats, vlbe_real *work, size_t work_len,
