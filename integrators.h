@@ -1305,7 +1305,7 @@ VLBE_INLINE vlbe_status vlbe__sta_resid(const vlbe_dae *s, vlbe_dae_stats *c, vl
    test of L. Grippo, F. Lampariello, S. Lucidi, SIAM J. Numer. Anal. 23
    (1986) 707-716, on the merit with a memory of 5 or 10 iterations (in a
    small load step's first iteration a short step lowers the merit: 20 to
-   30 % more iterations than plain Newton in steps of k = 0.1); the natural
+   33 % more iterations than plain Newton in steps of k = 0.1); the natural
    monotonicity test of P. Deuflhard, Newton Methods for Nonlinear
    Problems, Springer 2004, sec. 3.3 (with the Jacobian of the straight
    beam, the residual after the first full step maps to a correction 10^4

@@ -311,8 +311,8 @@ static void bs_truss_run(int s, long *iters, long *fails, double *cpu)
 
 int main(int argc, char **argv)
 {
-    static const char *const cname[3] = {"cr2d cantilever, tip load", "ale cantilever, tip load",
-                                         "ale pinned-pinned, distributed load"};
+    static const char *const cname[3] = {"cr2d cantilever: tip load", "ale cantilever: tip load",
+                                         "ale pinned-pinned: distributed load"};
     static const int nes[3][4] = {{16, 32, 64, 128}, {4, 8, 16, 0}, {4, 8, 16, 0}};
     static const double kmax[3] = {10.0, 10.0, 2000.0};
     static const int nsteps[3] = {40, 20, 10};
