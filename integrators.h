@@ -1436,8 +1436,9 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             /* at a watched iterate a singular or non-finite matrix or step,
                or a point outside the domain, sends the iteration back to
                the start; elsewhere the call fails */
-            if (!(watch && it > 0) || rc == VLBE_EWORK || rc == VLBE_EARG ||
-                (rc == VLBE_ECALLBACK && stats->callback_rc < 0))
+            if (!(watch && it > 0) ||
+                !(rc == VLBE_ESINGULAR || rc == VLBE_ENONFINITE ||
+                  (rc == VLBE_ECALLBACK && stats->callback_rc > 0)))
                 return rc;
             back = 1;
         } else if (watch) {

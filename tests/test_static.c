@@ -37,6 +37,9 @@
                                plain Newton (max_halvings = 0) fails, untouched;
                                the defaults' answer is bit for bit that of the
                                backtracking alone (watchdog = 0)
+     static_watchdog_return    atan on |q| < 100: the second full step leaves
+                               the domain -> back to the start, then the
+                               backtracking's steps bit for bit
      static_full_step_fallback Rosenbrock's residual: the full Newton step
                                raises the residual tenfold, no halving lowers
                                it -> the full step is taken, root in 2 steps;
@@ -756,7 +759,8 @@ static void test_static_fd_jacobian(void **state)
 /* n = 1 scalar problems for the line search. */
 typedef struct scal {
     int kind;          /* 0: Q = F - k log(1 + q) (q > -1), 1: Q = c - atan(q),
-                          2: Q = -q - 1/2 (q >= 0), -q + 1/2 (q < 0): no root */
+                          2: Q = -q - 1/2 (q >= 0), -q + 1/2 (q < 0): no root,
+                          3: Q = c - atan(q) on |q| < 100 (callback 1 outside) */
     vlbe_real F, k, c;
 } scal;
 
@@ -768,7 +772,8 @@ static int scal_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real 
     if (s->kind == 0) {
         if (!(q[0] > VLBE_R(-1.0))) return 1; /* outside the domain */
         Q[0] = s->F - s->k * vlbe_log(VLBE_R(1.0) + q[0]);
-    } else if (s->kind == 1) {
+    } else if (s->kind == 1 || s->kind == 3) {
+        if (s->kind == 3 && !(vlbe_fabs(q[0]) < VLBE_R(100.0))) return 1;
         Q[0] = s->c - vlbe_atan2(q[0], VLBE_R(1.0));
     } else {
         Q[0] = -q[0] + (q[0] >= VLBE_R(0.0) ? -VLBE_R(0.5) : VLBE_R(0.5));
@@ -784,7 +789,8 @@ static int scal_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_r
     if (s->kind == 0) {
         if (!(q[0] > VLBE_R(-1.0))) return 1;
         K[0] = -s->k / (VLBE_R(1.0) + q[0]);
-    } else if (s->kind == 1) {
+    } else if (s->kind == 1 || s->kind == 3) {
+        if (s->kind == 3 && !(vlbe_fabs(q[0]) < VLBE_R(100.0))) return 1;
         K[0] = -VLBE_R(1.0) / (VLBE_R(1.0) + q[0] * q[0]);
     } else {
         K[0] = -VLBE_R(1.0);
@@ -894,6 +900,36 @@ static void test_static_line_search(void **state)
             assert_true(st.rejected >= 4);
         }
     }
+}
+
+/* A full step out of the domain at a watched iterate: atan restricted to
+   |q| < 100 (kind 3), from q = 10.  The first full step lands at -88,
+   inside; the second would go to 1.6e4, outside (callback 1): the
+   iteration returns to q = 10 and backtracks from there, the steps of
+   watchdog = 0 (the same q bit for bit; the 2 watched Jacobians and the
+   return, one rejected, on top; callback_rc the domain's 1).  q* = tan
+   1/2 to the bound of test_static_line_search. */
+static void test_static_watchdog_return(void **state)
+{
+    scal s;
+    vlbe_dae sys;
+    vlbe_static_params par, pb;
+    vlbe_dae_stats st, sb;
+    vlbe_real q[1] = {VLBE_R(10.0)}, qb[1] = {VLBE_R(10.0)};
+    (void)state;
+    scal_setup(&sys, &s, 3);
+    vlbe_static_params_default(&par);
+    pb = par;
+    pb.watchdog = 0;
+    assert_int_equal(solve(&sys, &par, q, NULL, &st), VLBE_OK);
+    assert_int_equal(solve(&sys, &pb, qb, NULL, &sb), VLBE_OK);
+    assert_untouched(q, qb, 1);
+    ASSERT_CLOSE(q[0], tan(0.5), 0.0,
+                 (double)par.atol + ((double)par.rtol + 12 * EPS) * tan(0.5));
+    assert_true(st.newton_iters == sb.newton_iters + 2);
+    assert_true(st.rejected == sb.rejected + 1);
+    assert_int_equal(st.callback_rc, 1);
+    assert_int_equal(sb.callback_rc, 0);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -1311,6 +1347,7 @@ int main(void)
         cmocka_unit_test(test_static_truss_snapthrough),
         cmocka_unit_test(test_static_fd_jacobian),
         cmocka_unit_test(test_static_line_search),
+        cmocka_unit_test(test_static_watchdog_return),
         cmocka_unit_test(test_static_full_step_fallback),
         cmocka_unit_test(test_static_snapthrough_load),
         cmocka_unit_test(test_static_residual_test),
