@@ -183,8 +183,8 @@ static void test_elastica_reference(void **state)
      at most about that times L: 1.5 k EI / (EA L) (the converged 64
      elements sit 1.9e-6 L from the elastica at k = 10);
    - the solve: converged to the increment test (rtol 1e-10), far below.
-   Measured: up to 1.2e-6 L (m:ela_err16) at 16 elements (discretisation
-   and extension of opposite sign), 1.9e-6 L (m:ela_err64) at 64. */
+   Measured: up to 1.2e-6 (m:ela_err16) L at 16 elements (discretisation
+   and extension of opposite sign), 1.9e-6 (m:ela_err64) L at 64. */
 #ifndef VLBE_USE_FLOAT
 static void test_elastica_defaults(void **state)
 {
