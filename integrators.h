@@ -1258,7 +1258,7 @@ VLBE_INLINE vlbe_status vlbe__sta_resid(const vlbe_dae *s, vlbe_dae_stats *c, vl
    (1/8 to 1/32 of the step) that lower the merit a little: 2 to 3 times
    the iterations of plain Newton, or VLBE_ENOCONV at max_iter
    (bench/bench_static.c, docs/benchmarks.md).  A Newton iteration that
-   diverges or cycles stops making progress: it costs the watched
+   diverges or cycles ceases to make progress: it costs the watched
    iterations, and the backtracking phase then takes exactly the steps it
    takes with watchdog = 0.
    Backtracking phase (from the start when par->watchdog = 0; none when

@@ -1,10 +1,10 @@
 /* bench_static.c -- Newton iterations, failures and CPU time of the static
    solver vlbe_dae_static (integrators.h) on load-stepped beams, for three
    settings of its step control: plain Newton (max_halvings = 0), the
-   backtracking line search from the first iteration on (watchdog = 0, the
-   defaults of vlbe 0.1.0 before the watchdog), and the defaults
-   (vlbe_static_params_default: backtracking after a watchdog phase of
-   full Newton steps).          -- part of vlbe   SPDX-License-Identifier: MIT
+   backtracking line search from the first iteration on (watchdog = 0),
+   and the defaults (vlbe_static_params_default: backtracking after a
+   watchdog phase of full Newton steps).
+                                   -- part of vlbe  SPDX-License-Identifier: MIT
 
    build (from the repository root; `make bench` does this):
        cc -std=c99 -O3 -march=native bench/bench_static.c -o build/bench/bench_static -lm
@@ -38,7 +38,7 @@
             solves): the equilibrium lies on the inverted branch.
    Per case and setting: the Newton iterations of all load steps, the most
    in one step, the load factor of the first failure (its status; the
-   run stops there) and the CPU time of the whole run (best of REPS). */
+   run ends there) and the CPU time of the whole run (best of REPS). */
 #define _POSIX_C_SOURCE 199309L
 #include "../corot2d.h"
 #include "../ancf_ale.h"

@@ -1011,7 +1011,7 @@ static void test_static_full_step_fallback(void **state)
    lambda(y*) = P (a bisection on [-1, -h0] m, where lambda - P goes from
    5.4e5 N - P to -P).  From the unloaded shape pushed 0.1 m sideways, plain Newton
    cycles between the two branches for 50 iterations (VLBE_ENOCONV, q as
-   it was); under the defaults the watched full steps stop making
+   it was); under the defaults the watched full steps cease to make
    progress, the iteration returns to the start and the backtracking
    search finds y* (measured: 27 (m:snap_it) iterations with the watched
    ones, 17 (m:snap_it_bt) for the backtracking alone, whose q the

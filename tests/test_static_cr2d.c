@@ -34,7 +34,7 @@
                         error (stated at the test)
    The float build skips elastica_defaults: in float the iteration matrix of this section
    mixes EA / L_e = 5e7 N/m with rotational pivots of EI / L_e ~ 12 N m,
-   below the LU's relative-zero test, and the solve stops with
+   below the LU's relative-zero test, and the solve fails with
    VLBE_ESINGULAR at q = 0 from 32 elements (tests/test_scenes_cr2d.c
    states the same for the roll-up). */
 #include "test_util.h"
