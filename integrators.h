@@ -242,6 +242,12 @@ typedef struct vlbe_static_params {
     int max_iter;      /* Newton iterations, 1..VLBE_INT_MAX_ITER (default 50)     */
     int max_halvings;  /* line search: halvings of a Newton step, 0..50 (default 5);
                           0 = plain Newton, the full step is always taken         */
+    int watchdog;      /* full Newton steps first: the iteration returns to the
+                          start, and backtracks from there, once this many
+                          iterations in a row brought neither a merit nor a
+                          step below every one before, 0..VLBE_INT_MAX_ITER
+                          (default 4); 0 = backtracking from the first
+                          iteration on; without effect when max_halvings = 0 */
 } vlbe_static_params;
 
 /* Integrator state.  q, v, qdd (= q''), a (algorithmic acceleration), lambda
@@ -1620,7 +1626,10 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
    every row is equilibrated (vlbe__int_equil), as in the integrators. */
 
 /* Defaults: ftol 0 (off), rtol 1e-10, atol 1e-12 (float: VLBE_TOL_DEFAULT),
-   50 iterations, up to 5 halvings of a step. */
+   50 iterations, up to 5 halvings of a step, a watchdog of 4 iterations
+   (the smallest that lets plain Newton through on every load step of
+   bench/bench_static.c: the 64-element co-rotational cantilever in steps
+   of k = 2 needs 4). */
 VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
 {
     if (!p) return;
@@ -1629,6 +1638,7 @@ VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
     p->atol = VLBE_TOL_DEFAULT(VLBE_R(1e-12), VLBE_ATOL_EPS);
     p->max_iter = 50;
     p->max_halvings = 5;
+    p->watchdog = 4;
 }
 
 /* Workspace layout (reals), N = n + m: x = (q, lambda), trial x, Psi at x,
@@ -1676,48 +1686,92 @@ VLBE_INLINE vlbe_status vlbe__sta_resid(const vlbe_dae *s, vlbe_dae_stats *c, vl
 
 /* Solves Q(t,q,0) - C_q^T lambda = 0, C(t,q) = 0 for q and lambda, from the
    given q and lambda (both in/out; lambda may be NULL when m = 0).  Newton
-   step d from [-K + H, C_q^T; C_q, 0] d = -Psi; trial points x + alpha d,
-   alpha = 1, 1/2, ... (par->max_halvings halvings): a trial is accepted when
-   the merit ||(Psi_q, s Psi_c)||_2 decreases (s: the scaling of the
-   constraint rows above, so that a gap in C weighs as the force that closes
-   it), or at alpha = 1 when d passes the increment test.  A callback
-   returning > 0 or a non-finite Psi at a trial point counts as no
-   decrease.  When no trial lowers the merit but the full step lies inside
-   the domain, the full step is taken: a residual norm is no monotone
-   measure of progress for stiff structures (in a beam, the first Newton
-   step from a linear guess typically raises the axial residual by orders
-   of magnitude while the iteration converges quadratically), and max_iter
-   still bounds a divergence.  Otherwise, when no halving is left, the call
-   fails with the status of the last trial (VLBE_ECALLBACK: outside the
-   domain, VLBE_ENONFINITE).  Convergence: see vlbe_static_params.
+   step d from [-K + H, C_q^T; C_q, 0] d = -Psi, in two phases.
+   Watchdog phase (par->watchdog > 0 and par->max_halvings > 0): the
+   watchdog of Chamberlain et al. with its checkpoint at the start.  Full
+   Newton steps, whatever the merit does, as long as the iteration makes
+   progress: at every iteration the merit ||(Psi_q, s Psi_c)||_2 (below)
+   or the norm of the step's q part ||d_q||_2 below every one before.
+   par->watchdog iterations in a row without progress, or at any iterate
+   but the start a singular or non-finite iteration matrix or step, or a
+   Jacobian or a full step outside the domain or non-finite, send the
+   iteration back to the caller's q and lambda, where the backtracking
+   phase starts with max_iter iterations of its own.  Why: neither the
+   residual nor the step is monotone along a converging Newton iteration
+   of a slender structure.  In a co-rotational cantilever (EA L^2/EI =
+   4e6) under a tip load, each load step's first Newton step rotates the
+   elements and their linearised kinematics stretch them: the axial
+   residual, ~EA theta^2 / 2, exceeds the load's by 10^5; the next step
+   removes it, and the following ones trade axial against bending residual
+   by factors of 10 to 100 while the iterates converge.  Backtracking from
+   the first iteration rejects those full steps and accepts short ones
+   (1/8 to 1/32 of the step) that lower the merit a little: 2 to 3 times
+   the iterations of plain Newton, or VLBE_ENOCONV at max_iter
+   (bench/bench_static.c, docs/benchmarks.md).  A Newton iteration that
+   diverges or cycles ceases to make progress: it costs the watched
+   iterations, and the backtracking phase then takes exactly the steps it
+   takes with watchdog = 0.
+   Backtracking phase (from the start when par->watchdog = 0; none when
+   par->max_halvings = 0: plain Newton throughout): trial points
+   x + alpha d, alpha = 1, 1/2, ... (par->max_halvings halvings): a trial
+   is accepted when the merit ||(Psi_q, s Psi_c)||_2 decreases (s: the
+   scaling of the constraint rows above, so that a gap in C weighs as the
+   force that closes it), or at alpha = 1 when d passes the increment
+   test.  A callback returning > 0 or a non-finite Psi at a trial point
+   counts as no decrease.  When no trial lowers the merit but the full
+   step lies inside the domain, the full step is taken (the beam's first
+   step above), and max_iter still bounds a divergence.  Otherwise, when
+   no halving is left, the call fails with the status of the last trial
+   (VLBE_ECALLBACK: outside the domain, VLBE_ENONFINITE).  A full step
+   from the start that lies outside the domain or is non-finite ends the
+   watchdog phase at once: its halvings are the backtracking phase's
+   first iteration.  Convergence (in either phase): see
+   vlbe_static_params.
    Returns VLBE_OK; VLBE_EARG (problem, parameters, t, NULL pointers);
    VLBE_EWORK; VLBE_ENONFINITE (start, Psi at the start, iteration matrix,
-   step); VLBE_ECALLBACK (a callback < 0 anywhere, != 0 at the start or in
-   a Jacobian, > 0 at the last trial point of a line search);
-   VLBE_ESINGULAR (iteration matrix: e.g. a structure free to move, or
-   K = 0 with lambda = 0 on a curved constraint); VLBE_ENOCONV (max_iter
-   iterations, or no decrease along the step).  On failure q and lambda are
-   as they were.  stats (may be NULL) is added to, not
-   reset: newton_iters, jac_evals, lu_factors, lu_solves, force_calls,
-   constr_calls count as in the integrators; rejected counts rejected trial
-   points, newton_fails the VLBE_ENOCONV returns, steps the solutions (one
-   per successful call); callback_rc holds the last failing callback value
-   (also one backtracked from).
+   step; the last two not at a watched iterate); VLBE_ECALLBACK (a
+   callback < 0 anywhere, != 0 at the start or in a Jacobian but at a
+   watched iterate, > 0 at the last trial point of a line search);
+   VLBE_ESINGULAR (iteration matrix, not at a watched iterate: e.g. a
+   structure free to move, or K = 0 with lambda = 0 on a curved
+   constraint); VLBE_ENOCONV (max_iter iterations in a phase, or no
+   decrease along the step).  On failure q and lambda are as they were.
+   stats (may be NULL) is added to, not reset: newton_iters, jac_evals,
+   lu_factors, lu_solves, force_calls, constr_calls count as in the
+   integrators (the watched iterations included, and the residual at the
+   start evaluated again after them); rejected counts rejected trial
+   points and returns to the start (one each), newton_fails the
+   VLBE_ENOCONV returns, steps the solutions (one per successful call);
+   callback_rc holds the last failing callback value (also one backtracked
+   or returned from).
    Load stepping (and tracing a path past a limit point with a prescribed
    displacement written as a constraint) is the caller's job: scale the load
    or move the prescribed value in the user data, call again from the last
-   solution. */
+   solution.
+   References: R. Chamberlain, M. Powell, C. Lemarechal, H. Pedersen, The
+   watchdog technique for forcing convergence in algorithms for
+   constrained optimization, Math. Programming Study 16 (1982) 1-17.
+   Measured against it and dropped (docs/benchmarks.md): the non-monotone
+   test of L. Grippo, F. Lampariello, S. Lucidi, SIAM J. Numer. Anal. 23
+   (1986) 707-716, on the merit with a memory of 5 or 10 iterations (in a
+   small load step's first iteration a short step lowers the merit: 20 to
+   33 % more iterations than plain Newton in steps of k = 0.1); the natural
+   monotonicity test of P. Deuflhard, Newton Methods for Nonlinear
+   Problems, Springer 2004, sec. 3.3 (with the Jacobian of the straight
+   beam, the residual after the first full step maps to a correction 10^4
+   times that step: 3 times the iterations of plain Newton, or
+   VLBE_ENOCONV). */
 VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_params *par,
                                      vlbe_real t, vlbe_real *q, vlbe_real *lambda,
                                      vlbe_dae_stats *stats, vlbe_real *work, size_t work_len,
                                      int *iwork, size_t iwork_len)
 {
-    int n, m, N, i, it, k, inc_on, inc_ok, band;
+    int n, m, N, i, it, it0 = 0, k, inc_on, inc_ok, band, watch, stall = 0;
     size_t NN, e;
     vlbe_real *x, *xt, *F, *Ft, *d, *z, *Q, *Qt, *Cq, *Cqt, *A, *scr, *tmp, *pw = NULL,
               *X = NULL;
     int *inv = NULL;
-    vlbe_real fnorm, sc, kmax, cmax, merit;
+    vlbe_real fnorm, sc, kmax, cmax, merit, wm = VLBE_R(0.0), ws = VLBE_R(0.0);
     vlbe_dae sl;
     vlbe_dae_stats dummy;
     vlbe_status rc;
@@ -1731,7 +1785,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
         !(par->ftol >= VLBE_R(0.0)) || !isfinite(par->rtol) || !isfinite(par->atol) ||
         !isfinite(par->ftol) || !(par->rtol + par->atol + par->ftol > VLBE_R(0.0)) ||
         par->max_iter < 1 || par->max_iter > VLBE_INT_MAX_ITER || par->max_halvings < 0 ||
-        par->max_halvings > 50)
+        par->max_halvings > 50 || par->watchdog < 0 || par->watchdog > VLBE_INT_MAX_ITER)
         return VLBE_EARG;
     if (!work || !iwork || work_len < vlbe_static_work_len_sys(sys) ||
         iwork_len < vlbe_static_iwork_len_sys(sys))
@@ -1775,12 +1829,14 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     fnorm = vlbe__int_psi_norm(n, F, m, F + n); /* residual test, eq. 53 */
     inc_on = par->rtol + par->atol > VLBE_R(0.0);
     inc_ok = !inc_on;
+    /* the watchdog phase: full Newton steps from the start (see above) */
+    watch = par->max_halvings > 0 && par->watchdog > 0;
     for (it = 0;; ++it) {
-        int full_ok = 0, accepted = 0, full_valid = 0;
+        int full_ok = 0, accepted = 0, full_valid = 0, back = 0;
         vlbe_real alpha = VLBE_R(1.0), mt = VLBE_R(0.0);
         vlbe_status last = VLBE_ENOCONV;
         if (inc_ok && (!(par->ftol > VLBE_R(0.0)) || fnorm <= par->ftol)) break;
-        if (it >= par->max_iter) {
+        if (it - it0 >= par->max_iter) {
             ++stats->newton_fails;
             return VLBE_ENOCONV;
         }
@@ -1790,41 +1846,64 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             const vlbe__int_blk B = band ? vlbe__int_band_blk(sys, A, 1) : vlbe__int_dblk(A, N, 0);
             rc = vlbe__int_btangent(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), &B,
                                     VLBE_R(0.0), NULL, inv, scr);
-            if (rc != VLBE_OK) return rc;
             kmax = vlbe_vec_norm_inf((int)NN, A); /* only the q block is filled yet */
             cmax = vlbe_vec_norm_inf((int)vlbe__int_mlen(sys, 1), Cq);
             sc = (kmax > VLBE_R(0.0) && cmax > VLBE_R(0.0) && isfinite(kmax) && isfinite(cmax))
                      ? kmax / cmax
                      : VLBE_R(1.0);
-            vlbe__int_bsaddle(sys, &B, sc, Cq);
+            if (rc == VLBE_OK) vlbe__int_bsaddle(sys, &B, sc, Cq);
         }
         /* the line search's merit function: ||(Psi_q, s Psi_c)||, the
            constraint rows in the units of force like the iteration matrix
            (with C in its own units a metre of gap would weigh as a newton) */
         merit = vlbe__int_hypot(vlbe_vec_norm2(n, F), sc * vlbe_vec_norm2(m, F + n));
-        for (i = 0; i < n; ++i) d[i] = -F[i];
-        for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
-        if (band) {
-            vlbe__int_perm(sys, 1, d, X);
-            vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), (int)vlbe__int_ald(sys, 1), NULL, X);
-        } else {
-            vlbe__int_equil(N, A, (size_t)N, N, NULL, d);
+        if (rc == VLBE_OK) {
+            for (i = 0; i < n; ++i) d[i] = -F[i];
+            for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
+            if (band) {
+                vlbe__int_perm(sys, 1, d, X);
+                vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), (int)vlbe__int_ald(sys, 1), NULL, X);
+            } else {
+                vlbe__int_equil(N, A, (size_t)N, N, NULL, d);
+            }
+            ++stats->lu_factors;
+            /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
+            rc = vlbe__int_factor(sys, stats, 1, A, iwork);
         }
-        ++stats->lu_factors;
-        /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
-        if ((rc = vlbe__int_factor(sys, stats, 1, A, iwork)) != VLBE_OK) return rc;
-        ++stats->lu_solves;
-        ++stats->newton_iters;
-        if (band) {
-            vlbe__int_solve(sys, 1, A, iwork, X);
-            vlbe__int_unperm(sys, 1, X, d);
-        } else {
-            vlbe__int_solve(sys, 1, A, iwork, d);
+        if (rc == VLBE_OK) {
+            ++stats->lu_solves;
+            ++stats->newton_iters;
+            if (band) {
+                vlbe__int_solve(sys, 1, A, iwork, X);
+                vlbe__int_unperm(sys, 1, X, d);
+            } else {
+                vlbe__int_solve(sys, 1, A, iwork, d);
+            }
+            for (i = 0; i < m; ++i) d[n + i] *= sc;
+            if (!vlbe_all_finite(d, N)) rc = VLBE_ENONFINITE;
         }
-        for (i = 0; i < m; ++i) d[n + i] *= sc;
-        if (!vlbe_all_finite(d, N)) return VLBE_ENONFINITE;
+        if (rc != VLBE_OK) {
+            /* at a watched iterate a singular or non-finite matrix or step,
+               or a point outside the domain, sends the iteration back to
+               the start; elsewhere the call fails */
+            if (!(watch && it > 0) ||
+                !(rc == VLBE_ESINGULAR || rc == VLBE_ENONFINITE ||
+                  (rc == VLBE_ECALLBACK && stats->callback_rc > 0)))
+                return rc;
+            back = 1;
+        } else if (watch) {
+            /* progress: a merit or a step below every one before */
+            vlbe_real sn = vlbe_vec_norm2(n, d);
+            if (it == 0 || merit < wm || sn < ws) {
+                if (it == 0 || merit < wm) wm = merit;
+                if (it == 0 || sn < ws) ws = sn;
+                stall = 0;
+            } else if (++stall >= par->watchdog) {
+                back = 1;
+            }
+        }
         /* increment test on the full step, at the new point */
-        if (inc_on) {
+        if (inc_on && !back) {
             vlbe_real dmax = VLBE_R(0.0), qmax = VLBE_R(0.0);
             full_ok = 1;
             for (i = 0; i < n; ++i) {
@@ -1835,8 +1914,9 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             }
             if (dmax <= VLBE_R(8.0) * VLBE_EPS * qmax) full_ok = 1; /* rounding floor */
         }
-        /* backtracking line search on the merit */
-        for (k = 0; k <= par->max_halvings; ++k) {
+        /* backtracking line search on the merit (the watchdog phase: the
+           full step whatever its merit) */
+        for (k = 0; k <= par->max_halvings && !back; ++k) {
             for (i = 0; i < N; ++i) xt[i] = x[i] + alpha * d[i];
             if (!vlbe_all_finite(xt, N)) {
                 last = VLBE_ENONFINITE;
@@ -1848,14 +1928,34 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             } else {
                 mt = vlbe__int_hypot(vlbe_vec_norm2(n, Ft), sc * vlbe_vec_norm2(m, Ft + n));
                 if (k == 0) full_valid = 1;
-                if (mt < merit || (k == 0 && full_ok) || par->max_halvings == 0) {
+                if (mt < merit || (k == 0 && (full_ok || watch)) || par->max_halvings == 0) {
                     accepted = 1;
                     break;
                 }
                 last = VLBE_ENOCONV;
             }
+            /* a full step that leaves the domain: from a watched iterate
+               back to the start, from the start the backtracking */
+            if (watch && it > 0) {
+                back = 1;
+                break;
+            }
+            watch = 0;
             ++stats->rejected;
             alpha *= VLBE_R(0.5);
+        }
+        if (back) {
+            /* back to the caller's q and lambda; the backtracking search
+               takes over from there, with max_iter iterations of its own */
+            watch = 0;
+            it0 = it + 1;
+            ++stats->rejected;
+            vlbe_vec_copy(n, q, x);
+            if (m > 0) vlbe_vec_copy(m, lambda, x + n);
+            if ((rc = vlbe__sta_resid(&sl, stats, t, x, z, Q, Cq, F, pw)) != VLBE_OK) return rc;
+            fnorm = vlbe__int_psi_norm(n, F, m, F + n);
+            inc_ok = !inc_on;
+            continue;
         }
         if (!accepted && last == VLBE_ENOCONV && full_valid) {
             /* every trial was inside the domain but none lowered the

@@ -159,8 +159,7 @@ static inline int cs_band(cs_model *m)
 
 /* Load steps k = 1..nstep (lambda = k / nstep), each from the previous
    solution.  qh: (nstep + 1) * n, the solutions (row 0: unloaded).  par:
-   the solver's parameters, NULL for the scene's (the defaults with plain
-   Newton, see below).  st (may be NULL) accumulates the solver's
+   the solver's parameters, NULL for the defaults (see below).  st (may be NULL) accumulates the solver's
    counters.  VLBE_OK or the first failing status (qh then holds the
    solutions up to the failing step). */
 static inline vlbe_status cs_rollup(cs_model *m, int nstep, const vlbe_static_params *ppar,
@@ -173,14 +172,15 @@ static inline vlbe_status cs_rollup(cs_model *m, int nstep, const vlbe_static_pa
     int *iw = (int *)malloc(liw * sizeof *iw);
     vlbe_status rc = VLBE_OK;
     int k, i;
+    /* the defaults: their watchdog phase takes the full Newton steps,
+       which converge from every load step, the same iterates as plain
+       Newton (max_halvings = 0).  Backtracking from the first iteration
+       (watchdog = 0) rejects them: the first step of a load step rotates
+       the elements and the linearised kinematics stretch them, an axial
+       residual EA a^2 / 2 (EA / EI = 4e6 m^-2) that dwarfs the moment
+       residual; it takes 2 to 4 times the iterations, and fails with
+       VLBE_ENOCONV at 4 elements */
     vlbe_static_params_default(&par);
-    /* plain Newton: the default backtracking on ||Psi|| rejects the first
-       full step of every load step (it rotates the elements, and the
-       linearised kinematics stretch them: an axial residual EA a^2 / 2,
-       EA / EI = 4e6 m^-2, dwarfs the moment residual), so it never leaves
-       q = 0 (VLBE_ENOCONV after 6 rejected trials); the full Newton steps
-       converge from every load step */
-    par.max_halvings = 0;
     if (ppar) par = *ppar;
     if (!w || !iw) rc = VLBE_EWORK;
     for (i = 0; i < n; ++i) qh[i] = VLBE_R(0.0);

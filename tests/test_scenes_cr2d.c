@@ -225,7 +225,8 @@ static int rollup_build(cs_model *m, int N, unsigned flags)
 #endif
 }
 
-/* The solver's parameters: the scene's (defaults, plain Newton).  Float:
+/* The solver's parameters: plain Newton, whose iterates the scene's
+   defaults take too (see cs_rollup).  Float:
    the default increment test (rtol 1e-10, below FLT_EPSILON, and the
    rounding floor max|dq| <= 8 EPS max|q|) cannot be met when the
    rounding of the Newton increments, about EPS kappa(J) max|q|, is larger
@@ -244,7 +245,7 @@ static vlbe_static_params rollup_params(void)
     return p;
 }
 
-/* 4, 8, 16 elements, 8 load steps (plain Newton, see cs_rollup).  Facts:
+/* 4, 8, 16 elements, 8 load steps (plain Newton, see above).  Facts:
    - every node at every load factor on the discrete closed form.  The
      static solution is found to the solver's tolerance (increment test
      rtol 1e-10, quadratic convergence: the returned iterate is exact to

@@ -34,10 +34,22 @@
                                the FD-K solve agrees with the analytic-K one
      static_line_search        log spring: a trial outside the domain is
                                backtracked; atan: non-decrease backtracked;
-                               plain Newton (max_halvings = 0) fails, untouched
+                               plain Newton (max_halvings = 0) fails, untouched;
+                               the defaults' answer is bit for bit that of the
+                               backtracking alone (watchdog = 0)
+     static_watchdog_return    atan on |q| < 100: the second full step leaves
+                               the domain -> back to the start, then the
+                               backtracking's steps bit for bit
      static_full_step_fallback Rosenbrock's residual: the full Newton step
                                raises the residual tenfold, no halving lowers
-                               it -> the full step is taken, root in 2 steps
+                               it -> the full step is taken, root in 2 steps;
+                               the defaults' watchdog takes it at once
+     static_snapthrough_load   the truss under a dead load twice its limit
+                               load, from the unloaded shape pushed sideways:
+                               plain Newton cycles (ENOCONV), the defaults
+                               return to the start after the watched steps
+                               and backtrack to the inverted equilibrium
+                               (closed form by bisection)
      static_residual_test      ftol alone, ftol with the increment test
                                (at least as many iterations, ||Psi||/sqrt(N) <= ftol),
                                ftol below the rounding floor -> ENOCONV
@@ -210,6 +222,7 @@ static void test_static_params_default(void **state)
 #endif
     assert_int_equal(p.max_iter, 50);
     assert_int_equal(p.max_halvings, 5);
+    assert_int_equal(p.watchdog, 4);
     vlbe_static_params_default(NULL); /* harmless */
     spr_setup(&sys, &s);
     memcpy(q0, q, sizeof q);
@@ -235,6 +248,10 @@ static void test_static_params_default(void **state)
     bad = p, bad.max_halvings = -1;
     EXPECT_EARG(&bad, &sys, q, lam);
     bad = p, bad.max_halvings = 51;
+    EXPECT_EARG(&bad, &sys, q, lam);
+    bad = p, bad.watchdog = -1;
+    EXPECT_EARG(&bad, &sys, q, lam);
+    bad = p, bad.watchdog = VLBE_INT_MAX_ITER + 1;
     EXPECT_EARG(&bad, &sys, q, lam);
     EXPECT_EARG((const vlbe_static_params *)NULL, &sys, q, lam);
     EXPECT_EARG(&p, &sys, q, (vlbe_real *)NULL); /* m > 0 needs lambda */
@@ -479,8 +496,9 @@ static void test_static_bead_on_circle(void **state)
         if (variant == 0) it_hess = st.newton_iters;
         /* Newton with the exact Hessian from the bottom of the circle, 77
            degrees away, lambda = 0: measured 9 (m:bead_it) iterations
-           (8 (m@flt:bead_it) in float; 1 (m:bead_rej) backtrack), bounded
-           by 12; FD Hessian (error sqrt(eps) relative): within one of it */
+           (8 (m@flt:bead_it) in float; 0 (m:bead_rej) backtracks: the
+           watchdog takes the full steps), bounded by 12; FD Hessian (error
+           sqrt(eps) relative): within one of it */
         if (variant == 0) tu_measured("bead_it", (double)st.newton_iters);
         if (variant == 0) tu_measured("bead_rej", (double)st.rejected);
         if (variant == 0) assert_true(st.newton_iters <= 12);
@@ -508,6 +526,7 @@ static void test_static_bead_on_circle(void **state)
 typedef struct truss {
     double b, h0, EA;  /* m, m, N */
     vlbe_real w;       /* prescribed height */
+    double P;          /* dead load on the apex, downward (truss_force_load) */
 } truss;
 
 static void truss_bar(const truss *tr, const vlbe_real *q, int i, vlbe_real e[2], vlbe_real *l,
@@ -580,6 +599,7 @@ static void truss_setup(vlbe_dae *sys, truss *tr)
     tr->h0 = 0.2;
     tr->EA = 1e6;
     tr->w = (vlbe_real)tr->h0;
+    tr->P = 0.0;
     *sys = z;
     sys->n = 2;
     sys->m = 1;
@@ -739,7 +759,8 @@ static void test_static_fd_jacobian(void **state)
 /* n = 1 scalar problems for the line search. */
 typedef struct scal {
     int kind;          /* 0: Q = F - k log(1 + q) (q > -1), 1: Q = c - atan(q),
-                          2: Q = -q - 1/2 (q >= 0), -q + 1/2 (q < 0): no root */
+                          2: Q = -q - 1/2 (q >= 0), -q + 1/2 (q < 0): no root,
+                          3: Q = c - atan(q) on |q| < 100 (callback 1 outside) */
     vlbe_real F, k, c;
 } scal;
 
@@ -751,7 +772,8 @@ static int scal_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real 
     if (s->kind == 0) {
         if (!(q[0] > VLBE_R(-1.0))) return 1; /* outside the domain */
         Q[0] = s->F - s->k * vlbe_log(VLBE_R(1.0) + q[0]);
-    } else if (s->kind == 1) {
+    } else if (s->kind == 1 || s->kind == 3) {
+        if (s->kind == 3 && !(vlbe_fabs(q[0]) < VLBE_R(100.0))) return 1;
         Q[0] = s->c - vlbe_atan2(q[0], VLBE_R(1.0));
     } else {
         Q[0] = -q[0] + (q[0] >= VLBE_R(0.0) ? -VLBE_R(0.5) : VLBE_R(0.5));
@@ -767,7 +789,8 @@ static int scal_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_r
     if (s->kind == 0) {
         if (!(q[0] > VLBE_R(-1.0))) return 1;
         K[0] = -s->k / (VLBE_R(1.0) + q[0]);
-    } else if (s->kind == 1) {
+    } else if (s->kind == 1 || s->kind == 3) {
+        if (s->kind == 3 && !(vlbe_fabs(q[0]) < VLBE_R(100.0))) return 1;
         K[0] = -VLBE_R(1.0) / (VLBE_R(1.0) + q[0] * q[0]);
     } else {
         K[0] = -VLBE_R(1.0);
@@ -795,7 +818,14 @@ static void scal_setup(vlbe_dae *sys, scal *s, int kind)
    |Psi|: accepted.  atan from q = 10: the full step goes to -88 and |Psi|
    grows, as at the halves -39, -14.5, -2.3; the 1/16 step to 3.9 lowers it.
    Both converge quadratically afterwards: q* to atol + (rtol + 8 eps) |q*|
-   (bound of the bead test) plus 4 eps for the rounding of exp and tan. */
+   (bound of the bead test) plus 4 eps for the rounding of exp and tan.
+   The defaults against the backtracking alone (watchdog = 0): logspr's
+   first full step leaves the domain, which ends the watchdog phase at
+   once: the same run, every counter equal.  atan's full steps diverge (q
+   = -88, 1.6e4, -2.7e8, ...): neither merit nor step falls below the
+   first for 4 iterations, the iteration returns to q = 10 and backtracks
+   from there as with watchdog = 0: the same q bit for bit, the 5 watched
+   Jacobians and the return (one rejected) on top. */
 static void test_static_line_search(void **state)
 {
     int kind;
@@ -812,6 +842,22 @@ static void test_static_line_search(void **state)
         vlbe_static_params_default(&par);
         q0[0] = q[0];
         assert_int_equal(solve(&sys, &par, q, nol, &st), VLBE_OK);
+        {
+            vlbe_static_params pb = par;
+            vlbe_dae_stats sb;
+            vlbe_real qb[1];
+            qb[0] = q0[0];
+            pb.watchdog = 0;
+            assert_int_equal(solve(&sys, &pb, qb, nol, &sb), VLBE_OK);
+            assert_untouched(q, qb, 1);
+            if (kind == 0) {
+                assert_true(memcmp(&st, &sb, sizeof st) == 0);
+            } else {
+                assert_true(st.newton_iters == sb.newton_iters + 5);
+                assert_true(st.jac_evals == sb.jac_evals + 5);
+                assert_true(st.rejected == sb.rejected + 1);
+            }
+        }
         tq = (double)par.atol + ((double)par.rtol + 8 * EPS) * qe + 4 * EPS * qe;
         ASSERT_CLOSE(q[0], qe, 0.0, tq);
         tu_report(kind == 0 ? "log spring (domain backtracking) q" : "atan (backtracking) q",
@@ -856,6 +902,36 @@ static void test_static_line_search(void **state)
     }
 }
 
+/* A full step out of the domain at a watched iterate: atan restricted to
+   |q| < 100 (kind 3), from q = 10.  The first full step lands at -88,
+   inside; the second would go to 1.6e4, outside (callback 1): the
+   iteration returns to q = 10 and backtracks from there, the steps of
+   watchdog = 0 (the same q bit for bit; the 2 watched Jacobians and the
+   return, one rejected, on top; callback_rc the domain's 1).  q* = tan
+   1/2 to the bound of test_static_line_search. */
+static void test_static_watchdog_return(void **state)
+{
+    scal s;
+    vlbe_dae sys;
+    vlbe_static_params par, pb;
+    vlbe_dae_stats st, sb;
+    vlbe_real q[1] = {VLBE_R(10.0)}, qb[1] = {VLBE_R(10.0)};
+    (void)state;
+    scal_setup(&sys, &s, 3);
+    vlbe_static_params_default(&par);
+    pb = par;
+    pb.watchdog = 0;
+    assert_int_equal(solve(&sys, &par, q, NULL, &st), VLBE_OK);
+    assert_int_equal(solve(&sys, &pb, qb, NULL, &sb), VLBE_OK);
+    assert_untouched(q, qb, 1);
+    ASSERT_CLOSE(q[0], tan(0.5), 0.0,
+                 (double)par.atol + ((double)par.rtol + 12 * EPS) * tan(0.5));
+    assert_true(st.newton_iters == sb.newton_iters + 2);
+    assert_true(st.rejected == sb.rejected + 1);
+    assert_int_equal(st.callback_rc, 1);
+    assert_int_equal(sb.callback_rc, 0);
+}
+
 /* ------------------------------------------------------------------------ */
 /* rosen: Q = -(x - 1, 10 (y - x^2)) (Rosenbrock's residual), root (1, 1).
    From (-1.2, 1) Newton lands on x = 1 in one step with y = -3.84, where
@@ -889,7 +965,11 @@ static int rosen_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_
 /* The full-step fallback: no halving lowers the merit, every trial lies in
    the domain -> the full Newton step; two steps land on the root (x = 1
    after the first is exact in floating point, then y solves a linear
-   equation).  Tolerance: 4 EPS on q (one rounding of y). */
+   equation).  Tolerance: 4 EPS on q (one rounding of y).  The fallback
+   belongs to the backtracking (watchdog = 0); the defaults' watchdog
+   takes the same two full steps without a trial: the same root, no
+   rejection (the second step's |d_q| = 4.84 is below the first's 5.32:
+   progress). */
 static void test_static_full_step_fallback(void **state)
 {
     vlbe_dae sys;
@@ -903,12 +983,95 @@ static void test_static_full_step_fallback(void **state)
     sys.force_jac = rosen_force_jac;
     vlbe_static_params_default(&par);
     par.max_halvings = 3;
+    par.watchdog = 0;
     memset(&st, 0, sizeof st);
     assert_int_equal(solve(&sys, &par, q, NULL, &st), VLBE_OK);
     ASSERT_CLOSE(q[0], 1.0, 0, 4.0 * EPS);
     ASSERT_CLOSE(q[1], 1.0, 0, 4.0 * EPS);
     assert_true(st.rejected >= 4);     /* the four trials of the first step */
     assert_true(st.newton_iters <= 4); /* two steps and the confirming one(s) */
+    /* the defaults */
+    q[0] = -VLBE_R(1.2);
+    q[1] = VLBE_R(1.0);
+    vlbe_static_params_default(&par);
+    assert_int_equal(solve(&sys, &par, q, NULL, &st), VLBE_OK);
+    ASSERT_CLOSE(q[0], 1.0, 0, 4.0 * EPS);
+    ASSERT_CLOSE(q[1], 1.0, 0, 4.0 * EPS);
+    assert_true(st.rejected == 0);
+    assert_true(st.newton_iters <= 4);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Load control past the limit point: the truss without the height
+   constraint, its apex under a dead load P = 2 P_lim (P_lim = max over
+   w in [0, h0] of lambda(w), the upper limit point of
+   test_static_truss_snapthrough, by a scan of 20001 heights: the factor 2
+   needs no more).  No equilibrium lies near the unloaded shape: the apex
+   snaps through to the inverted branch, y* < -h0 with x = 0, where
+   lambda(y*) = P (a bisection on [-1, -h0] m, where lambda - P goes from
+   5.4e5 N - P to -P).  From the unloaded shape pushed 0.1 m sideways, plain Newton
+   cycles between the two branches for 50 iterations (VLBE_ENOCONV, q as
+   it was); under the defaults the watched full steps cease to make
+   progress, the iteration returns to the start and the backtracking
+   search finds y* (measured: 27 (m:snap_it) iterations with the watched
+   ones, 17 (m:snap_it_bt) for the backtracking alone, whose q the
+   defaults return bit for bit).  Tolerance: the increment test's bound
+   (bead test) and 64 eps h0 for the rounding of the force balance (bar
+   forces 1.2e4 N against a stiffness of 6e4 N/m). */
+static int truss_force_load(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                            vlbe_real *Q)
+{
+    (void)truss_force(u, t, q, v, Q);
+    Q[1] -= (vlbe_real)((const truss *)u)->P;
+    return 0;
+}
+
+static void test_static_snapthrough_load(void **state)
+{
+    truss tr;
+    vlbe_dae sys;
+    vlbe_static_params par, plain, bt;
+    vlbe_dae_stats st, sb;
+    vlbe_real q[2], q0[2], qb[2];
+    double plim = 0.0, lo = -1.0, hi, ye, tol;
+    int k;
+    (void)state;
+    truss_setup(&sys, &tr);
+    sys.m = 0;
+    sys.force = truss_force_load;
+    sys.constr = NULL;
+    sys.constr_jac = NULL;
+    for (k = 0; k <= 20000; ++k) plim = fmax(plim, truss_lambda(&tr, tr.h0 * k / 20000.0));
+    tr.P = 2.0 * plim;
+    hi = -tr.h0;
+    for (k = 0; k < 200; ++k) { /* lambda(y) - P: 5.4e5 N - P > 0 at y = -1, -P at y = -h0 */
+        const double mid = 0.5 * (lo + hi);
+        if (truss_lambda(&tr, mid) - tr.P > 0.0) lo = mid;
+        else hi = mid;
+    }
+    ye = 0.5 * (lo + hi);
+    q0[0] = VLBE_R(0.1);
+    q0[1] = (vlbe_real)tr.h0;
+    vlbe_static_params_default(&par);
+    plain = par;
+    plain.max_halvings = 0;
+    bt = par;
+    bt.watchdog = 0;
+    memcpy(q, q0, sizeof q);
+    assert_int_equal(solve(&sys, &plain, q, NULL, &st), VLBE_ENOCONV);
+    assert_untouched(q, q0, 2);
+    assert_int_equal(solve(&sys, &par, q, NULL, &st), VLBE_OK);
+    tol = (double)par.atol + ((double)par.rtol + 8 * EPS) * fabs(ye) + 64 * EPS * tr.h0;
+    ASSERT_CLOSE(q[1], ye, 0.0, tol);
+    ASSERT_CLOSE(q[0], 0.0, 0.0, tol);
+    tu_report("truss past the limit load: apex y vs bisection [m]", fabs((double)q[1] - ye), tol);
+    assert_true(st.rejected >= 1); /* the return to the start */
+    memcpy(qb, q0, sizeof qb);
+    assert_int_equal(solve(&sys, &bt, qb, NULL, &sb), VLBE_OK);
+    assert_untouched(q, qb, 2);
+    assert_true(st.newton_iters > sb.newton_iters);
+    tu_measured("snap_it", (double)st.newton_iters);
+    tu_measured("snap_it_bt", (double)sb.newton_iters);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -1184,7 +1347,9 @@ int main(void)
         cmocka_unit_test(test_static_truss_snapthrough),
         cmocka_unit_test(test_static_fd_jacobian),
         cmocka_unit_test(test_static_line_search),
+        cmocka_unit_test(test_static_watchdog_return),
         cmocka_unit_test(test_static_full_step_fallback),
+        cmocka_unit_test(test_static_snapthrough_load),
         cmocka_unit_test(test_static_residual_test),
         cmocka_unit_test(test_static_fail_singular),
         cmocka_unit_test(test_static_fail_noconv),
