@@ -1414,14 +1414,16 @@ VLBE_API vlbe_status vlbe_eig_sym(int n, const vlbe_real *A, vlbe_real *lam, vlb
    bending modes are 1e8 .. 1e11 times its lam.  A sigma far below the
    spectrum does the same harm (mu_k = 1/(lam_k - sigma) all near -1/sigma,
    lam_1 - sigma then has the rounding of |sigma|).
-   The other side of it: mu is resolved only down to about EPS max mu.
-   When a computed mu is not above mu_min = n EPS max mu, M is checked by
-   its Cholesky factor (VLBE_ESINGULAR below when it is not positive
-   definite: a massless coordinate, an infinite lam); M positive definite,
-   such a mu (zero or negative among them: rounding) is raised to mu_min:
-   its lam = sigma + 1/mu_min is the largest the working precision
-   resolves beside the lowest, a lower bound of the true one (a stiff
-   structure in float: lam_max / lam_1 beyond 1/(n EPS)).
+   The other side of it: mu is resolved only down to about EPS max mu
+   (often better: Jacobi keeps small eigenvalues of well-scaled blocks to
+   high relative accuracy, so small positive mu are kept as computed).
+   When a computed mu is not above 0, M is checked by its Cholesky factor
+   (VLBE_ESINGULAR below when it is not positive definite: a massless
+   coordinate, an infinite lam); M positive definite, such a mu (rounding:
+   lam_max / lam_1 beyond the working precision, a stiff structure in
+   float) is raised to mu_min = min(n EPS max mu, the smallest positive
+   mu): its lam = sigma + 1/mu_min is the largest the working precision
+   resolves beside the lowest, a lower bound of the true one.
    lam[n]: ascending; X (n x n, may be NULL): the eigenvectors as columns
    (X[i*n + k], vector of lam[k]), normalised to X^T M X = I (then X^T K X
    = diag(lam)).  info (may be NULL): 0, or the failing column (below).
@@ -1433,8 +1435,8 @@ VLBE_API vlbe_status vlbe_eig_sym(int n, const vlbe_real *A, vlbe_real *lam, vlb
      VLBE_ESINGULAR   K - sigma M is not positive definite: a Cholesky
                       pivot not above n EPS of its diagonal entry, *info =
                       its 1-based column j; or M is not positive definite
-                      (found when a computed mu is not above mu_min, by
-                      the Cholesky of M): *info = n + j (as LAPACK's xSYGV)
+                      (found when a computed mu is not above 0, by the
+                      Cholesky of M): *info = n + j (as LAPACK's xSYGV)
      VLBE_ENOCONV     Jacobi did not converge in 60 sweeps (not seen). */
 VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M,
                                    vlbe_real sigma, vlbe_real *lam, vlbe_real *X, int *info,
@@ -1482,8 +1484,10 @@ VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M
         if (mu[i] > mumax) mumax = mu[i];
     }
     mumin = (vlbe_real)n * VLBE_EPS * mumax;
+    for (i = 0; i < N; ++i) /* the smallest positive mu, if below that */
+        if (mu[i] > VLBE_R(0.0) && mu[i] < mumin) mumin = mu[i];
     for (i = 0; i < N; ++i)
-        if (!(mu[i] > mumin)) {
+        if (!(mu[i] > VLBE_R(0.0))) {
             /* C is positive definite when M is: is M? (C is free now) */
             for (j = 0; j < N; ++j)
                 for (k = 0; k <= j; ++k)
@@ -1494,7 +1498,7 @@ VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M
             }
             if (!(mumax > VLBE_R(0.0))) return VLBE_ENONFINITE; /* not with M definite */
             for (j = 0; j < N; ++j)
-                if (!(mu[j] > mumin)) mu[j] = mumin;
+                if (!(mu[j] > VLBE_R(0.0))) mu[j] = mumin;
             break;
         }
     /* mu descending = lam ascending */

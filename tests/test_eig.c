@@ -1104,18 +1104,27 @@ static void test_fail_sym_gsym(void **state)
     assert_int_equal(vlbe_eig_sym(-1, K, lam, X, w, 30), VLBE_EARG);
     untouched(3, lam);
     untouched(9, X);
-    /* a spread beyond the working precision, M positive definite: K =
-       diag(1, 2, 1/EPS^2), mu = 1, 1/2, EPS^2 <= mu_min = 3 EPS: raised
-       to mu_min, lam_3 = 1/(3 EPS), a lower bound of 1/EPS^2; the others
-       to 4 EPS relative */
+    /* a spread beyond the working precision, M = I: K = [2 -1; -1 2]
+       (eigenvalues 1 on (1, 1), 3 on (1, -1)) coupled by 0.5 to a third
+       coordinate of stiffness 1/EPS^2, which moves them by O(EPS^2):
+       the call succeeds, lam_1 = 1 and lam_2 = 3 to 16 EPS relative, lam_3
+       finite and above them (the rounding case, a computed mu <= 0 raised
+       to the resolution bound, is met by the float build of
+       test_scenes_shaft: the frozen frequencies of the spinning shaft) */
     {
-        vlbe_real Kw[9] = {1, 0, 0, 0, 2, 0, 0, 0, 0}, lw[3];
-        Kw[8] = VLBE_R(1.0) / (VLBE_EPS * VLBE_EPS);
+        const double big = 1.0 / (EPS * EPS);
+        vlbe_real Kw[9], lw[3];
+        double Kd[9] = {2, -1, 0, -1, 2, 0, 0, 0, 0};
+        int i;
+        Kd[8] = big;
+        Kd[2] = Kd[6] = 0.5;
+        Kd[5] = Kd[7] = 0.5;
+        for (i = 0; i < 9; ++i) Kw[i] = (vlbe_real)Kd[i];
         assert_int_equal(vlbe_eig_gsym(3, Kw, M, VLBE_R(0.0), lw, NULL, &info, w, 30), VLBE_OK);
         assert_int_equal(info, 0);
-        ASSERT_CLOSE((double)lw[0], 1.0, 4.0 * EPS, 0.0);
-        ASSERT_CLOSE((double)lw[1], 2.0, 4.0 * EPS, 0.0);
-        ASSERT_CLOSE((double)lw[2], 1.0 / (3.0 * EPS), 4.0 * EPS, 0.0);
+        ASSERT_CLOSE((double)lw[0], 1.0, 16.0 * EPS, 0.0);
+        ASSERT_CLOSE((double)lw[1], 3.0, 16.0 * EPS, 0.0);
+        assert_true((double)lw[2] > 1.0 / (3.0 * EPS) * 0.5);
     }
     /* the good case after all that: diagonal, exact */
     assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 30), VLBE_OK);
