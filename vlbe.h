@@ -1488,7 +1488,7 @@ VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M
         if (mu[i] > VLBE_R(0.0) && mu[i] < mumin) mumin = mu[i];
     for (i = 0; i < N; ++i)
         if (!(mu[i] > VLBE_R(0.0))) {
-            /* C is positive definite when M is: is M? (C is free now) */
+            /* C is positive definite when M is: is M? (C is free here) */
             for (j = 0; j < N; ++j)
                 for (k = 0; k <= j; ++k)
                     C[j * N + k] = VLBE_R(0.5) * (M[j * N + k] + M[k * N + j]);
@@ -1866,7 +1866,7 @@ VLBE_INLINE int vlbe__eig_quad_before(const vlbe_real *am, const vlbe_real *sr,
         P(s') x_(k+1) = P'(s') x_k,   P'(s) = 2 s M + D.
    Its fixed point solves P(s') x = nu P'(s') x, nu ~ s' - s, which is
    P(s' - nu) x = O(nu^2): the eigenvector of s to O(del^2) (plain inverse
-   iteration, P(s') x_(k+1) = x_k, would stop at the vector of the linear
+   iteration, P(s') x_(k+1) = x_k, would settle on the vector of the linear
    problem P(s') x = nu x, an O(del) away).  Each step multiplies the
    component along x by 1/(del rho) against 1/|s_other - s'| for the
    others: three steps leave (del rho / gap)^3.  P(s') as a real system:
