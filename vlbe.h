@@ -98,7 +98,7 @@ API (one line each)
    void  vlbe_band_lu_solve(n, kl, ku, LU, piv, nrhs, B)  solve with a band factor
    void  vlbe_band_mat_vec(n, kl, ku, A, lda, x, y) / vlbe_band_mat_tvec  y = A x, A^T x (band)
    vlbe_real vlbe_band_lu_flops(n, kl, ku)             ~ n kl (2 ku + 1) (for benchmarks)
-   size_t vlbe_eig_work_len(n)                         3 n^2: work of eig_sym, eig_gsym
+   size_t vlbe_eig_work_len(n)                         3 n^2 + n: work of eig_sym, eig_gsym
    vlbe_status vlbe_eig_sym(n, A, lam, X, work, lw)     A x = lam x, A symmetric (Jacobi)
    vlbe_status vlbe_eig_gsym(n, K, M, sigma, lam, X, info, work, lw)  K x = lam M x, shift-invert
    size_t vlbe_eig_real_work_len(n)                    4 n: work of eig_real
@@ -1329,22 +1329,21 @@ VLBE_INLINE vlbe_status vlbe__eig_jacobi(size_t N, vlbe_real *C, vlbe_real *V)
     return VLBE_ENOCONV;
 }
 
-/* Sorts the diagonal of C ascending (desc = 0) or descending (desc = 1)
-   in place and the columns of V (or NULL) with it (selection sort: n^2
-   compares, at most n column swaps; the first of equal values stays
-   first) */
-VLBE_INLINE void vlbe__eig_sort(size_t N, vlbe_real *C, vlbe_real *V, int desc)
+/* Sorts mu[0..N-1] ascending (desc = 0) or descending (desc = 1) in place
+   and the columns of V (or NULL) with it (selection sort: n^2 compares, at
+   most n column swaps; the first of equal values stays first) */
+VLBE_INLINE void vlbe__eig_sort(size_t N, vlbe_real *mu, vlbe_real *V, int desc)
 {
     size_t i, j, k;
     for (i = 0; i + 1 < N; ++i) {
         size_t m = i;
         for (j = i + 1; j < N; ++j)
-            if (desc ? C[j * N + j] > C[m * N + m] : C[j * N + j] < C[m * N + m]) m = j;
+            if (desc ? mu[j] > mu[m] : mu[j] < mu[m]) m = j;
         if (m == i) continue;
         {
-            const vlbe_real t = C[i * N + i];
-            C[i * N + i] = C[m * N + m];
-            C[m * N + m] = t;
+            const vlbe_real t = mu[i];
+            mu[i] = mu[m];
+            mu[m] = t;
         }
         if (V)
             for (k = 0; k < N; ++k) {
@@ -1355,12 +1354,12 @@ VLBE_INLINE void vlbe__eig_sort(size_t N, vlbe_real *C, vlbe_real *V, int desc)
     }
 }
 
-/* Reals of workspace for vlbe_eig_sym and vlbe_eig_gsym: 3 n^2 (0 for
+/* Reals of workspace for vlbe_eig_sym and vlbe_eig_gsym: 3 n^2 + n (0 for
    n < 1 or a count beyond size_t; the solvers then return VLBE_EARG). */
 VLBE_API size_t vlbe_eig_work_len(int n)
 {
     size_t len = 0;
-    return vlbe__eig_len(n, 3, 0, &len) ? len : 0;
+    return vlbe__eig_len(n, 3, 1, &len) ? len : 0;
 }
 
 /* A x = lam x, A n x n symmetric (both triangles read, used as (A +
@@ -1368,30 +1367,31 @@ VLBE_API size_t vlbe_eig_work_len(int n)
    lam[n]: the eigenvalues ascending; X (n x n, may be NULL): X[i*n + k] =
    component i of the vector of lam[k], columns orthonormal (X^T X = I to
    a few n EPS).  Accuracy: each eigenvalue to a few n EPS ||A||.
-   work: vlbe_eig_work_len(n) reals (2 n^2 are used).  Status: VLBE_EARG,
-   VLBE_EWORK, VLBE_ENONFINITE (A, or an overflow), VLBE_ENOCONV (no convergence in 60
-   sweeps; not seen); on failure lam and X are untouched. */
+   work: vlbe_eig_work_len(n) reals (2 n^2 + n are used).  Status:
+   VLBE_EARG, VLBE_EWORK, VLBE_ENONFINITE (A, or an overflow), VLBE_ENOCONV
+   (no convergence in 60 sweeps; not seen); on failure lam and X are
+   untouched. */
 VLBE_API vlbe_status vlbe_eig_sym(int n, const vlbe_real *A, vlbe_real *lam, vlbe_real *X,
                                   vlbe_real *work, size_t work_len)
 {
     size_t N, i, j, len = 0;
-    vlbe_real *C, *V;
+    vlbe_real *C, *V, *mu;
     vlbe_status st;
     VLBE_ASSERT(A != NULL && lam != NULL && work != NULL);
-    if (!vlbe__eig_len(n, 3, 0, &len)) return VLBE_EARG;
+    if (!vlbe__eig_len(n, 3, 1, &len)) return VLBE_EARG;
     if (work_len < len) return VLBE_EWORK;
     if (!vlbe__mat_finite(n, A)) return VLBE_ENONFINITE;
     N = (size_t)n;
     C = work;
     V = work + N * N;
+    mu = work + 3 * N * N;
     for (i = 0; i < N; ++i)
         for (j = 0; j < N; ++j) C[i * N + j] = VLBE_R(0.5) * (A[i * N + j] + A[j * N + i]);
     if ((st = vlbe__eig_jacobi(N, C, X ? V : NULL)) != VLBE_OK) return st;
-    vlbe__eig_sort(N, C, X ? V : NULL, 0);
-    for (i = 0; i < N; ++i)
-        if (!vlbe_all_finite(C + i * N + i, 1) || (X && !vlbe_all_finite(V + i * N, n)))
-            return VLBE_ENONFINITE;
-    for (i = 0; i < N; ++i) lam[i] = C[i * N + i];
+    for (i = 0; i < N; ++i) mu[i] = C[i * N + i];
+    vlbe__eig_sort(N, mu, X ? V : NULL, 0);
+    if (!vlbe_all_finite(mu, n) || (X && !vlbe__mat_finite(n, V))) return VLBE_ENONFINITE;
+    for (i = 0; i < N; ++i) lam[i] = mu[i];
     if (X)
         for (i = 0; i < N * N; ++i) X[i] = V[i];
     return VLBE_OK;
@@ -1414,6 +1414,16 @@ VLBE_API vlbe_status vlbe_eig_sym(int n, const vlbe_real *A, vlbe_real *lam, vlb
    bending modes are 1e8 .. 1e11 times its lam.  A sigma far below the
    spectrum does the same harm (mu_k = 1/(lam_k - sigma) all near -1/sigma,
    lam_1 - sigma then has the rounding of |sigma|).
+   The other side of it: mu is resolved only down to about EPS max mu
+   (often better: Jacobi keeps small eigenvalues of well-scaled blocks to
+   high relative accuracy, so small positive mu are kept as computed).
+   When a computed mu is not above 0, M is checked by its Cholesky factor
+   (VLBE_ESINGULAR below when it is not positive definite: a massless
+   coordinate, an infinite lam); M positive definite, such a mu (rounding:
+   lam_max / lam_1 beyond the working precision, a stiff structure in
+   float) is raised to mu_min = min(n EPS max mu, the smallest positive
+   mu): its lam = sigma + 1/mu_min is the largest the working precision
+   resolves beside the lowest, a lower bound of the true one.
    lam[n]: ascending; X (n x n, may be NULL): the eigenvectors as columns
    (X[i*n + k], vector of lam[k]), normalised to X^T M X = I (then X^T K X
    = diag(lam)).  info (may be NULL): 0, or the failing column (below).
@@ -1421,25 +1431,22 @@ VLBE_API vlbe_status vlbe_eig_sym(int n, const vlbe_real *A, vlbe_real *lam, vlb
    Status (on failure lam and X are untouched; *info is written by every
    call that gets past the argument checks):
      VLBE_EARG, VLBE_EWORK
-     VLBE_ENONFINITE  NaN or Inf in K, M or sigma; or an eigenvalue lam -
-                      sigma beyond 1/(EPS max mu) (M positive definite,
-                      but lam_max / lam_1 out of the working precision: a
-                      computed mu not above 0)
+     VLBE_ENONFINITE  NaN or Inf in K, M or sigma, or an overflow
      VLBE_ESINGULAR   K - sigma M is not positive definite: a Cholesky
                       pivot not above n EPS of its diagonal entry, *info =
                       its 1-based column j; or M is not positive definite
                       (found when a computed mu is not above 0, by the
-                      Cholesky of M): *info = n + j (LAPACK's xSYGV)
+                      Cholesky of M): *info = n + j (as LAPACK's xSYGV)
      VLBE_ENOCONV     Jacobi did not converge in 60 sweeps (not seen). */
 VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M,
                                    vlbe_real sigma, vlbe_real *lam, vlbe_real *X, int *info,
                                    vlbe_real *work, size_t work_len)
 {
     size_t N, i, j, k, len = 0;
-    vlbe_real *C, *V, *L;
+    vlbe_real *C, *V, *L, *mu, mumax = VLBE_R(0.0), mumin;
     vlbe_status st;
     VLBE_ASSERT(K != NULL && M != NULL && lam != NULL && work != NULL);
-    if (!vlbe__eig_len(n, 3, 0, &len) || n > INT_MAX / 2) return VLBE_EARG;
+    if (!vlbe__eig_len(n, 3, 1, &len) || n > INT_MAX / 2) return VLBE_EARG;
     if (work_len < len) return VLBE_EWORK;
     if (info) *info = 0;
     if (!vlbe__mat_finite(n, K) || !vlbe__mat_finite(n, M) || !vlbe_all_finite(&sigma, 1))
@@ -1448,6 +1455,7 @@ VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M
     C = work;
     V = work + N * N;
     L = work + 2 * N * N;
+    mu = work + 3 * N * N;
     for (i = 0; i < N; ++i) /* the lower triangle of K - sigma M */
         for (j = 0; j <= i; ++j)
             L[i * N + j] = VLBE_R(0.5) * (K[i * N + j] + K[j * N + i]) -
@@ -1471,21 +1479,33 @@ VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M
         for (j = i + 1; j < N; ++j)
             C[i * N + j] = C[j * N + i] = VLBE_R(0.5) * (C[i * N + j] + C[j * N + i]);
     if ((st = vlbe__eig_jacobi(N, C, X ? V : NULL)) != VLBE_OK) return st;
+    for (i = 0; i < N; ++i) {
+        mu[i] = C[i * N + i];
+        if (mu[i] > mumax) mumax = mu[i];
+    }
+    mumin = (vlbe_real)n * VLBE_EPS * mumax;
+    for (i = 0; i < N; ++i) /* the smallest positive mu, if below that */
+        if (mu[i] > VLBE_R(0.0) && mu[i] < mumin) mumin = mu[i];
     for (i = 0; i < N; ++i)
-        if (!(C[i * N + i] > VLBE_R(0.0))) {
-            /* C is positive definite when M is: tell the two failures apart */
+        if (!(mu[i] > VLBE_R(0.0))) {
+            /* C is positive definite when M is: is M? (C is free here) */
             for (j = 0; j < N; ++j)
                 for (k = 0; k <= j; ++k)
-                    L[j * N + k] = VLBE_R(0.5) * (M[j * N + k] + M[k * N + j]);
-            if (vlbe__chol(N, L, info) == VLBE_OK) return VLBE_ENONFINITE;
-            if (info) *info += n;
-            return VLBE_ESINGULAR;
+                    C[j * N + k] = VLBE_R(0.5) * (M[j * N + k] + M[k * N + j]);
+            if (vlbe__chol(N, C, info) != VLBE_OK) {
+                if (info) *info += n;
+                return VLBE_ESINGULAR;
+            }
+            if (!(mumax > VLBE_R(0.0))) return VLBE_ENONFINITE; /* not with M definite */
+            for (j = 0; j < N; ++j)
+                if (!(mu[j] > VLBE_R(0.0))) mu[j] = mumin;
+            break;
         }
     /* mu descending = lam ascending */
-    vlbe__eig_sort(N, C, X ? V : NULL, 1);
+    vlbe__eig_sort(N, mu, X ? V : NULL, 1);
     if (X) /* x = L^-T y / sqrt(mu): back substitution, column by column */
         for (j = 0; j < N; ++j) {
-            const vlbe_real r = VLBE_R(1.0) / vlbe_sqrt(C[j * N + j]);
+            const vlbe_real r = VLBE_R(1.0) / vlbe_sqrt(mu[j]);
             for (i = N; i-- > 0;) {
                 vlbe_real s = V[i * N + j];
                 for (k = i + 1; k < N; ++k) s -= L[k * N + i] * V[k * N + j];
@@ -1493,12 +1513,9 @@ VLBE_API vlbe_status vlbe_eig_gsym(int n, const vlbe_real *K, const vlbe_real *M
             }
             for (i = 0; i < N; ++i) V[i * N + j] *= r;
         }
-    for (i = 0; i < N; ++i) {
-        C[i] = sigma + VLBE_R(1.0) / C[i * N + i]; /* row 0 is free: lam */
-        if (!vlbe_all_finite(C + i, 1) || (X && !vlbe_all_finite(V + i * N, n)))
-            return VLBE_ENONFINITE;
-    }
-    for (i = 0; i < N; ++i) lam[i] = C[i];
+    for (i = 0; i < N; ++i) mu[i] = sigma + VLBE_R(1.0) / mu[i];
+    if (!vlbe_all_finite(mu, n) || (X && !vlbe__mat_finite(n, V))) return VLBE_ENONFINITE;
+    for (i = 0; i < N; ++i) lam[i] = mu[i];
     if (X)
         for (i = 0; i < N * N; ++i) X[i] = V[i];
     return VLBE_OK;
@@ -1849,7 +1866,7 @@ VLBE_INLINE int vlbe__eig_quad_before(const vlbe_real *am, const vlbe_real *sr,
         P(s') x_(k+1) = P'(s') x_k,   P'(s) = 2 s M + D.
    Its fixed point solves P(s') x = nu P'(s') x, nu ~ s' - s, which is
    P(s' - nu) x = O(nu^2): the eigenvector of s to O(del^2) (plain inverse
-   iteration, P(s') x_(k+1) = x_k, would stop at the vector of the linear
+   iteration, P(s') x_(k+1) = x_k, would settle on the vector of the linear
    problem P(s') x = nu x, an O(del) away).  Each step multiplies the
    component along x by 1/(del rho) against 1/|s_other - s'| for the
    others: three steps leave (del rho / gap)^3.  P(s') as a real system:

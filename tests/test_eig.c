@@ -176,7 +176,7 @@ static long double chain_lam1(int n, const double *k, const double *m)
 static void test_work_len(void **state)
 {
     (void)state;
-    assert_true(vlbe_eig_work_len(5) == 75);
+    assert_true(vlbe_eig_work_len(5) == 80);
     assert_true(vlbe_eig_real_work_len(5) == 20);
     assert_true(vlbe_eig_quad_work_len(5) == 9 * 25 + 100);
     assert_true(vlbe_eig_quad_iwork_len(5) == 20);
@@ -198,7 +198,7 @@ static void test_sym_random(void **state)
 {
     static const int sizes[] = {1, 2, 3, 5, 12, 30};
     static long double Q[NMAX * NMAX];
-    static vlbe_real A[NMAX * NMAX], X[NMAX * NMAX], w[3 * NMAX * NMAX];
+    static vlbe_real A[NMAX * NMAX], X[NMAX * NMAX], w[3 * NMAX * NMAX + NMAX];
     vlbe_real lam[NMAX], lam2[NMAX];
     double d[NMAX], e_lam = 0.0, e_res = 0.0, e_orth = 0.0;
     tu_rng g = tu_rng_seed(77);
@@ -254,7 +254,7 @@ static void test_sym_random(void **state)
 static void test_eig_known(void **state)
 {
     enum { N = 12 };
-    vlbe_real A[N * N], B[N * N], lam[N], X[N * N], w[3 * N * N];
+    vlbe_real A[N * N], B[N * N], lam[N], X[N * N], w[3 * N * N + N];
     int i, k, info = -1;
     double err = 0.0, res, orth, lam1;
     (void)state;
@@ -329,7 +329,7 @@ static void test_eig_known(void **state)
 static void test_gsym_chain(void **state)
 {
     enum { N = 20 };
-    static vlbe_real K[N * N], M[N * N], X[N * N], w[3 * N * N];
+    static vlbe_real K[N * N], M[N * N], X[N * N], w[3 * N * N + N];
     vlbe_real lam[N];
     double k[N + 1], m[N], worst = 0.0;
     const double kk = 3.0e5, mm = 0.25;
@@ -338,7 +338,8 @@ static void test_gsym_chain(void **state)
     for (i = 0; i <= N; ++i) k[i] = kk;
     for (i = 0; i < N; ++i) m[i] = mm;
     chain(N, k, m, 1, K, M);
-    assert_int_equal(vlbe_eig_gsym(N, K, M, VLBE_R(0.0), lam, X, &info, w, 3 * N * N), VLBE_OK);
+    assert_int_equal(vlbe_eig_gsym(N, K, M, VLBE_R(0.0), lam, X, &info, w, 3 * N * N + N),
+                     VLBE_OK);
     assert_int_equal(info, 0);
     {
         const double l1 = 4.0 * kk / mm * sin(PI / (2.0 * (N + 1))) * sin(PI / (2.0 * (N + 1)));
@@ -360,7 +361,8 @@ static void test_gsym_chain(void **state)
     {
         const double s1 = sin(PI / (2.0 * N)), l1 = 4.0 * kk / mm * s1 * s1;
         const vlbe_real sigma = (vlbe_real)(-0.25 * l1);
-        assert_int_equal(vlbe_eig_gsym(N, K, M, sigma, lam, X, &info, w, 3 * N * N), VLBE_OK);
+        assert_int_equal(vlbe_eig_gsym(N, K, M, sigma, lam, X, &info, w, 3 * N * N + N),
+                         VLBE_OK);
         tu_report("gsym free-free: |lam_0| / |sigma|", fabs((double)lam[0]) / (0.25 * l1),
                   4.0 * N * EPS);
         assert_true(fabs((double)lam[0]) <= 4.0 * N * EPS * 0.25 * l1);
@@ -372,7 +374,7 @@ static void test_gsym_chain(void **state)
         for (i = 0; i < N; ++i)
             ASSERT_CLOSE_CTX(fabs((double)X[i * N]), 1.0 / sqrt(N * mm), 4.0 * N * EPS * 5.0, 0.0,
                              "rigid mode, entry %d", i);
-        assert_int_equal(vlbe_eig_gsym(N, K, M, VLBE_R(0.0), lam, X, &info, w, 3 * N * N),
+        assert_int_equal(vlbe_eig_gsym(N, K, M, VLBE_R(0.0), lam, X, &info, w, 3 * N * N + N),
                          VLBE_ESINGULAR);
         assert_int_equal(info, N);
     }
@@ -394,7 +396,7 @@ static void test_gsym_chain(void **state)
 static void test_gsym_graded(void **state)
 {
     enum { N = 8 };
-    vlbe_real K[N * N], M[N * N], lam[N], w[3 * N * N];
+    vlbe_real K[N * N], M[N * N], lam[N], w[3 * N * N + N];
 #ifdef VLBE_USE_FLOAT
     const double R = 1e4;
 #else
@@ -408,9 +410,10 @@ static void test_gsym_graded(void **state)
     chain(N, k, m, 1, K, M);
     ref = (double)chain_lam1(N, k, m);
     for (i = 0; i < N; ++i) S = fmax(S, (double)K[i * N + i] / (double)M[i * N + i]);
-    assert_int_equal(vlbe_eig_gsym(N, K, M, VLBE_R(0.0), lam, NULL, &info, w, 3 * N * N), VLBE_OK);
+    assert_int_equal(vlbe_eig_gsym(N, K, M, VLBE_R(0.0), lam, NULL, &info, w, 3 * N * N + N),
+                     VLBE_OK);
     e_si = fabs((double)lam[0] - ref) / ref;
-    assert_int_equal(vlbe_eig_gsym(N, K, M, (vlbe_real)-S, lam, NULL, &info, w, 3 * N * N),
+    assert_int_equal(vlbe_eig_gsym(N, K, M, (vlbe_real)-S, lam, NULL, &info, w, 3 * N * N + N),
                      VLBE_OK);
     e_dir = fabs((double)lam[0] - ref) / ref;
     if (tu_report_on())
@@ -821,7 +824,7 @@ static void test_quad_undamped(void **state)
     enum { N = 10 };
     static quad_out o;
     static long double Q[NMAX * NMAX];
-    vlbe_real K[N * N], M[N * N], lam[N], w[3 * N * N];
+    vlbe_real K[N * N], M[N * N], lam[N], w[3 * N * N + N];
     double k[N + 1], m[N], d[N], nerr, res;
     tu_rng g = tu_rng_seed(99);
     int c, j, i;
@@ -839,7 +842,7 @@ static void test_quad_undamped(void **state)
             for (i = 0; i < N; ++i) d[i] = 2.0 + 1.5 * tu_rng_uniform(&g);
             build_sym(N, Q, d, K);
         }
-        assert_int_equal(vlbe_eig_gsym(N, K, M, VLBE_R(0.0), lam, NULL, NULL, w, 3 * N * N),
+        assert_int_equal(vlbe_eig_gsym(N, K, M, VLBE_R(0.0), lam, NULL, NULL, w, 3 * N * N + N),
                          VLBE_OK);
         assert_int_equal(quad(N, M, NULL, K, VLBE_R(0.0), &o), VLBE_OK);
         assert_quad_order(N, VLBE_R(0.0), &o);
@@ -1064,45 +1067,67 @@ static void untouched(int n, const vlbe_real *a)
 static void test_fail_sym_gsym(void **state)
 {
     vlbe_real K[9] = {3, 0, 0, 0, 1, 0, 0, 0, 5}, M[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-    vlbe_real lam[3], X[9], w[27];
+    vlbe_real lam[3], X[9], w[30];
     int info = 0;
     (void)state;
     fill(3, lam);
     fill(9, X);
     /* K - sigma M indefinite: diag(1, -1, 3), the second pivot */
-    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(2.0), lam, X, &info, w, 27), VLBE_ESINGULAR);
+    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(2.0), lam, X, &info, w, 30), VLBE_ESINGULAR);
     assert_int_equal(info, 2);
     /* exactly singular: sigma = the eigenvalue 1 */
-    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(1.0), lam, X, &info, w, 27), VLBE_ESINGULAR);
+    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(1.0), lam, X, &info, w, 30), VLBE_ESINGULAR);
     assert_int_equal(info, 2);
     /* M indefinite: mu = -1 appears, M's Cholesky fails at column 2: n + 2 */
     M[4] = VLBE_R(-1.0);
-    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 27), VLBE_ESINGULAR);
+    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 30), VLBE_ESINGULAR);
     assert_int_equal(info, 5);
     /* M semidefinite (a massless coordinate): mu = 0 */
     M[4] = VLBE_R(0.0);
-    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 27), VLBE_ESINGULAR);
+    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 30), VLBE_ESINGULAR);
     assert_int_equal(info, 5);
     M[4] = VLBE_R(1.0);
     /* non-finite */
     K[4] = (vlbe_real)NAN;
-    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 27), VLBE_ENONFINITE);
-    assert_int_equal(vlbe_eig_sym(3, K, lam, X, w, 27), VLBE_ENONFINITE);
+    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 30), VLBE_ENONFINITE);
+    assert_int_equal(vlbe_eig_sym(3, K, lam, X, w, 30), VLBE_ENONFINITE);
     K[4] = VLBE_R(1.0);
     M[8] = (vlbe_real)INFINITY;
-    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 27), VLBE_ENONFINITE);
+    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 30), VLBE_ENONFINITE);
     M[8] = VLBE_R(1.0);
-    assert_int_equal(vlbe_eig_gsym(3, K, M, (vlbe_real)NAN, lam, X, &info, w, 27),
+    assert_int_equal(vlbe_eig_gsym(3, K, M, (vlbe_real)NAN, lam, X, &info, w, 30),
                      VLBE_ENONFINITE);
     /* workspace and size */
-    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 26), VLBE_EWORK);
-    assert_int_equal(vlbe_eig_sym(3, K, lam, X, w, 26), VLBE_EWORK);
-    assert_int_equal(vlbe_eig_gsym(0, K, M, VLBE_R(0.0), lam, X, &info, w, 27), VLBE_EARG);
-    assert_int_equal(vlbe_eig_sym(-1, K, lam, X, w, 27), VLBE_EARG);
+    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 29), VLBE_EWORK);
+    assert_int_equal(vlbe_eig_sym(3, K, lam, X, w, 29), VLBE_EWORK);
+    assert_int_equal(vlbe_eig_gsym(0, K, M, VLBE_R(0.0), lam, X, &info, w, 30), VLBE_EARG);
+    assert_int_equal(vlbe_eig_sym(-1, K, lam, X, w, 30), VLBE_EARG);
     untouched(3, lam);
     untouched(9, X);
+    /* a spread beyond the working precision, M = I: K = [2 -1; -1 2]
+       (eigenvalues 1 on (1, 1), 3 on (1, -1)) coupled by 0.5 to a third
+       coordinate of stiffness 1/EPS^2, which moves them by O(EPS^2):
+       the call succeeds, lam_1 = 1 and lam_2 = 3 to 16 EPS relative, lam_3
+       finite and above them (the rounding case, a computed mu <= 0 raised
+       to the resolution bound, is met by the float build of
+       test_scenes_shaft: the frozen frequencies of the spinning shaft) */
+    {
+        const double big = 1.0 / (EPS * EPS);
+        vlbe_real Kw[9], lw[3];
+        double Kd[9] = {2, -1, 0, -1, 2, 0, 0, 0, 0};
+        int i;
+        Kd[8] = big;
+        Kd[2] = Kd[6] = 0.5;
+        Kd[5] = Kd[7] = 0.5;
+        for (i = 0; i < 9; ++i) Kw[i] = (vlbe_real)Kd[i];
+        assert_int_equal(vlbe_eig_gsym(3, Kw, M, VLBE_R(0.0), lw, NULL, &info, w, 30), VLBE_OK);
+        assert_int_equal(info, 0);
+        ASSERT_CLOSE((double)lw[0], 1.0, 16.0 * EPS, 0.0);
+        ASSERT_CLOSE((double)lw[1], 3.0, 16.0 * EPS, 0.0);
+        assert_true((double)lw[2] > 1.0 / (3.0 * EPS) * 0.5);
+    }
     /* the good case after all that: diagonal, exact */
-    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 27), VLBE_OK);
+    assert_int_equal(vlbe_eig_gsym(3, K, M, VLBE_R(0.0), lam, X, &info, w, 30), VLBE_OK);
     assert_int_equal(info, 0);
     /* lam = 1/mu, mu = 1/K_ii rounded by the reduction: 4 EPS relative */
     ASSERT_CLOSE((double)lam[0], 1.0, 4.0 * EPS, 0.0);

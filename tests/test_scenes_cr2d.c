@@ -82,7 +82,7 @@ static void test_freq_one_element(void **state)
     /* the shift far below, sigma = -S, S = max K0_ii / M_ii (the axial
        3 EA / rhoA = wa^2 here): every mu = 1/(w^2 + S) is near 1/S and
        w^2 = sigma + 1/mu carries the rounding of S: w_k relative to a
-       few EPS (1 + S / w_k^2) (8 asserted); w1 now pays the factor
+       few EPS (1 + S / w_k^2) (8 asserted); w1 pays the factor
        (wa/w1)^2 */
     assert_int_equal(cs_freqs(1, 0, 2, wb, &wx), VLBE_OK);
     tu_report("1 element, sigma = -S: w1", fabs(wb[0] - w1) / w1,
