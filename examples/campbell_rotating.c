@@ -448,6 +448,7 @@ int main(int argc, char **argv)
         svgp_series(&ch, "lag 1, linear floating frame (no stiffening)", 8, Om, col[11], SVGP_DOT);
         svgp_series(&ch, "w = Om (once per revolution)", 2, x1, y1, SVGP_DOT);
         ch.legend = SVGP_LEGEND_TL;
+        svgp_xrange(&ch, 0, 13);
         svgp_yrange(&ch, 0, 60);
         snprintf(path, sizeof path, "%s/campbell_rotating.svg", dir);
         if (svgp_write_file(&ch, path)) printf("# could not write %s\n", path);

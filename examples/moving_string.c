@@ -738,13 +738,14 @@ static void ms_campbell(const char *dir)
     svgp_series(&ch, "beam, Galerkin series (48 modes)", 3 * MS_NV + 2, X[1], YR[1], SVGP_DASH);
     svgp_series(&ch, "beam, eigen route", 3 * MS_NV + 2, X[1], YE[1], SVGP_NOLINE);
     {
-        static double xs[2], xb[2], yv[2] = {0, 150};
+        static double xs[2], xb[2], yv[2] = {0, 210};
         xs[0] = xs[1] = vd[0];
         xb[0] = xb[1] = vd[1];
         svgp_series(&ch, "divergence speed, string (v0 = c)", 2, xs, yv, SVGP_DOT);
         svgp_series(&ch, "divergence speed, beam", 2, xb, yv, SVGP_DOT);
     }
-    svgp_yrange(&ch, 0, 150);
+    svgp_xrange(&ch, 0, 85);
+    svgp_yrange(&ch, 0, 210);
     snprintf(path, sizeof path, "%s/moving_campbell.svg", dir);
     if (svgp_write_file(&ch, path)) printf("# could not write %s\n", path);
 }
