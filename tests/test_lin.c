@@ -47,7 +47,6 @@
 #include "test_util.h"
 #include "../ancf_ale.h"
 #include "../integrators.h"
-#include "../examples/ex_eig.h"
 
 #include <string.h>
 
@@ -466,17 +465,18 @@ static void chn_acc(const vlbe_dae *s, const vlbe_real *q, const vlbe_real *v, v
     free(iw);
 }
 
-/* The three lowest w^2 of Kr x = w^2 Mr x, from M x = (1/w^2) K x (the
-   lowest modes are then the largest eigenvalues, which the Jacobi solver
-   gets to a few eps of themselves: ex_eig.h) */
+/* The three lowest w^2 of Kr x = w^2 Mr x by vlbe_eig_gsym with sigma = 0
+   (shift-invert: the lowest modes are the largest eigenvalues of the
+   reduced problem, which the Jacobi solver gets to a few eps of
+   themselves) */
 static void low_modes(int nr, const vlbe_real *Mr, const vlbe_real *Kr, double *w2)
 {
-    size_t lw = ex_eig_work_len(nr);
+    size_t lw = vlbe_eig_work_len(nr);
     vlbe_real *w = (vlbe_real *)malloc(lw * sizeof *w), *ev = (vlbe_real *)malloc((size_t)nr * sizeof *ev);
     int info = 0, k;
     assert_true(w && ev);
-    assert_int_equal(ex_eig_gsym(nr, Mr, Kr, ev, NULL, &info, w, lw), VLBE_OK);
-    for (k = 0; k < 3; ++k) w2[k] = 1.0 / (double)ev[nr - 1 - k];
+    assert_int_equal(vlbe_eig_gsym(nr, Kr, Mr, 0, ev, NULL, &info, w, lw), VLBE_OK);
+    for (k = 0; k < 3; ++k) w2[k] = (double)ev[k];
     free(w);
     free(ev);
 }
@@ -492,7 +492,7 @@ static void low_modes(int nr, const vlbe_real *Mr, const vlbe_real *Kr, double *
    first mode, S1 = T + EI (beta1 L)^2 / L^2 (a tension; pinned: beta1 L =
    pi), it moves w^2 by EA eps / S1 relative: floor_ = 8 EA eps / S1 +
    64 eps (a few ulps of strain; 64 eps for the Cholesky and Jacobi of
-   ex_eig.h).  Double: 6e-11 (cantilever), 2e-13; float: 0.033 for the
+   vlbe_eig_gsym).  Double: 6e-11 (cantilever), 2e-13; float: 0.033 for the
    steel cantilever (EA / EI = 1.2e5: its frequencies are not to be had
    in float closer than about 0.5 %), 1e-4 for the pinned chain.
    - the error is positive (beyond -floor_);
