@@ -445,9 +445,11 @@ done:
    (s^2 M + s G + K) a = 0 by vlbe_eig_quad; the lowest nf frequencies
    [Hz].  EI = 0: the string, whose every mode is exact in closed form,
    f_k = k (c^2 - v^2) / (2 l c); the sine modes are then exact for v = 0
-   only (G couples them), and the series converges as 1/nm^2 (checked
-   against the closed form: 1e-6 at nm = 48).  With EI the series
-   converges faster (the modes are the beam's at v = 0). */
+   only (G couples them) and the series converges as 1/nm^2 (at nm = 48
+   and v = 40..60 m/s: f1 1.6e-6 .. 3.7e-6, f3 1.4e-5 .. 3.4e-5 from the
+   closed form).  The beam's series converges faster (its stiffness grows
+   as k^4): 24 and 48 modes differ by 3e-8 .. 6e-8 in f1 and up to 8e-7 in
+   f3 at those speeds, its error at 48 modes a third of that. */
 #define MS_GAL_MAX 48
 static inline vlbe_status ms_galerkin(int bend, double speed, int nm, int nf, double *f)
 {

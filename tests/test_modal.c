@@ -181,10 +181,11 @@ static void test_moving_modes(void **state)
             for (k = 0; k < 3; ++k) {
                 /* h^4: the 16-element error at most a tenth of the
                    8-element one, or at the reference's own floor (the
-                   Galerkin series to 48 sine modes: 2e-8, see ms_galerkin;
-                   the string's closed form: exact) */
+                   Galerkin series to 48 sine modes: below 3e-7, see
+                   ms_galerkin; the string's closed form: exact, the
+                   floor the rounding of the eigen-solve, 1e-10) */
                 const double e8 = rel(f8[k], g[k]), e16 = rel(f16[k], g[k]);
-                const double floor = b ? 2e-8 : 1e-10;
+                const double floor = b ? 3e-7 : 1e-10;
                 tu_report(b ? "moving_modes: beam, 16 el. vs Galerkin"
                             : "moving_modes: string, 16 el. vs closed form",
                           e16, fmax(e8 / 10.0, floor));
