@@ -25,10 +25,10 @@
                              ECALLBACK, NaN -> ENONFINITE, EARG, EWORK; q and
                              v bit for bit as they were each time
      hht_init_projects       vlbe_hht_init (project = 1) from an off start is
-                             vlbe_hht_init (project = 0) from the projected
-                             start, bit for bit, and project = 0 keeps the
-                             off start; a consistent start: the same run
-                             with project 0 and 1, bit for bit */
+                             vlbe_hht_init (project = 0, the default) from
+                             the projected start, bit for bit, and project =
+                             0 keeps the off start; a consistent start: the
+                             same run with project 0 and 1, bit for bit */
 #include "test_util.h"
 #include "../integrators.h"
 
@@ -401,7 +401,8 @@ static void test_hht_init_projects(void **state)
     memcpy(vp, v0, sizeof vp);
     assert_int_equal(project(&s, VLBE_R(0.0), qp, vp, VLBE_R(0.0), NULL), VLBE_OK);
     assert_int_equal(vlbe_hht_params_genalpha(&par, VLBE_R(0.8)), VLBE_OK);
-    assert_int_equal(par.project, 1); /* the default */
+    assert_int_equal(par.project, 0); /* the default: starts as given */
+    par.project = 1;
     assert_int_equal(vlbe_hht_init(&a, &s, &par, VLBE_R(0.0), q0, v0, g_hw[0], lw, g_hiw[0], liw),
                      VLBE_OK);
     /* the caller's q0, v0 are not written */
