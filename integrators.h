@@ -95,8 +95,9 @@ CONVENTIONS
    No allocation: the caller
    gives a real and an int workspace whose sizes the *_work_len() and
    *_iwork_len() queries return.  Stack: about 1 kB per call (float on a
-   Cortex-M4F, gcc -O2, make check-m4: vlbe_hht_step 1040 B, the rest at
-   most 1 kB; the figure moves by a few words with gcc's inlining in the
+   Cortex-M4F, gcc -O2, make check-m4: vlbe_hht_step 1040 B,
+   vlbe_hht_advance 1072 B, the rest at most 1 kB; the figure moves by a
+   few words with gcc's inlining in the
    unit), whatever max_halvings, plus what the callbacks use; all arrays
    live in the caller's workspace.
 
@@ -305,13 +306,32 @@ typedef struct vlbe_bdf_params {
     vlbe_real h_min;      /* smallest step; 0: 4 eps |t| (default 0)               */
     vlbe_real h_max;      /* largest step; 0: unbounded (default 0)                */
     int max_order;        /* highest order, 1..5 (default 5; 2 keeps A-stability).
-                             Undamped stiff modes (beams with their axial modes,
-                             stiff springs) want 2: BDF3..5 are unstable on a band
-                             of the imaginary axis (test_bdf.c), and an undamped
-                             mode of frequency w in that band grows until the
-                             error test has cut h below the band (BDF5: w h <
-                             0.71), whatever the tolerance: the examples/ex_spin.h
-                             ANCF beam (w up to 3.7e4 rad/s) then steps at 2e-5 s */
+                             BDF3..5 are unstable on a band of the imaginary axis
+                             (test_bdf.c): an undamped stiff mode (the axial modes
+                             of a beam, a stiff spring) in that band grows until
+                             the error test holds h near the band's edge (BDF5:
+                             w h < 0.71), whatever the tolerance.  Whether that
+                             costs depends on the step the accuracy needs
+                             (bench/wp_bdf_order.c, -O2, docs/benchmarks.md):
+                             on a flexible slider crank (one turn of the crank
+                             at 150 rad/s, 0.042 s) 5 is the cheapest and
+                             most accurate from rtol 1e-5 on (0.34 s, 28061
+                             steps, error 1.3e-7 against 0.44 s, 43872 steps,
+                             6.0e-5 at order 2; at 1e-7 0.50 s, 7.2e-9 against
+                             2.4 s, 2.4e-6) and 14 times more accurate at 1e-3
+                             (1.2e-5 in 0.36 s against 1.8e-4 in 0.053 s): its
+                             fast motion needs short steps anyway.  On the
+                             examples/ex_spin.h ANCF beam (10 s of spin-up, axial
+                             modes up to 3.7e4 rad/s), whose slow motion allows
+                             steps of 1e-2 s, order 2 takes 534 to 3388 steps
+                             (0.11 to 0.63 s) at rtol 1e-3 to 1e-5 while 4 and 5
+                             did not reach 10 s in 60000 steps at any of them.
+                             3 and 4 were the worst on both (the slider crank at
+                             rtol 1e-3: errors 1.9 and 0.11 of the rod's length,
+                             no failure reported).  So: 2 when the motion allows
+                             steps far beyond 0.7 / w of the stiffest undamped
+                             mode, 5 when the accuracy asked needs steps of that
+                             size anyway                                         */
     int newton_max;       /* Newton iterations per attempt, 1..VLBE_INT_MAX_ITER
                              (default 4, as DASSL)                                 */
     int fixed_step;       /* 1: every step is h0 (h_min, h_max, rtol/atol for the
