@@ -291,17 +291,6 @@ typedef struct vlbe_bdf_params {
     vlbe_real rtol, atol; /* local error per step on q and v (lambda, mu excluded):
                              weighted RMS with weights atol + rtol |y_i| <= 1
                              (default 1e-6, 1e-8; float 7.6e-6, 9.5e-7)           */
-    const vlbe_real *atolv; /* NULL (default): atol for every coordinate; else
-                             2n absolute tolerances, q then v, the weights
-                             atolv[i] + rtol |y_i| of the error test and of
-                             the Newton test of q and v (lambda and mu keep
-                             atol).  For coordinates of different sizes
-                             (positions of 1 m beside modal amplitudes of
-                             1e-5): with one atol above rtol times a small
-                             coordinate, that coordinate is only controlled
-                             absolutely.  Each >= 0 and finite with atolv[i]
-                             + rtol > 0.  The state keeps the pointer: the
-                             array must live as long as the state          */
     vlbe_real h0;         /* first step; 0: estimated from |y'(t0)| (default 0)    */
     vlbe_real h_min;      /* smallest step; 0: 4 eps |t| (default 0)               */
     vlbe_real h_max;      /* largest step; 0: unbounded (default 0)                */
@@ -356,6 +345,17 @@ typedef struct vlbe_bdf_params {
                              whole violation into the first step's error
                              estimate, whatever h, and the step shrinks to
                              VLBE_ESTEP                                           */
+    const vlbe_real *atolv; /* NULL (default): atol for every coordinate; else
+                             2n absolute tolerances, q then v, the weights
+                             atolv[i] + rtol |y_i| of the error test and of
+                             the Newton test of q and v (lambda and mu keep
+                             atol).  For coordinates of different sizes
+                             (positions of 1 m beside modal amplitudes of
+                             1e-5): with one atol above rtol times a small
+                             coordinate, that coordinate is only controlled
+                             absolutely.  Each >= 0 and finite with atolv[i]
+                             + rtol > 0.  The state keeps the pointer: the
+                             array must live as long as the state          */
 } vlbe_bdf_params;
 
 /* BDF integrator state.  q, v, lambda, mu point into the caller's workspace

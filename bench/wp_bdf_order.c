@@ -24,7 +24,7 @@
    with the rigid-body velocities of that instant (crank turning at 150
    rad/s, rod turning at -75 rad/s about the slider, which is at rest):
    consistent, the rod unstrained.  Run: one crank turn, t in [0, 2 pi /
-   150] s; the inertia loads excite the rod's bending (first mode ~830
+   150] s; the inertia loads excite the rod's bending (first mode ~850
    rad/s) and its axial modes (~1e5 rad/s in the discretization), none
    damped.  Error: the largest distance of a
    node from its reference position at the 16 sample times t_k = T k / 16
@@ -226,7 +226,10 @@ static void bdf_run(const prob *p, int max_order, double tol, long cap, res *r, 
     int *iw = (int *)malloc(liw * sizeof *iw), k;
     double c0;
     long total = 0;
+    memset(&st, 0, sizeof st);
     r->status = VLBE_EWORK;
+    r->cpu = r->t_stop = 0.0;
+    r->steps = r->rejected = 0;
     if (!w || !iw) goto out;
     vlbe_bdf_params_default(&bp);
     bp.rtol = bp.atol = (vlbe_real)tol;
