@@ -16,10 +16,15 @@ USAGE
      ... allocate lw vlbe_real and liw int ...
      vlbe_hht st;
      if (vlbe_hht_init(&st, &sys, &par, t0, q0, v0, work, lw, iwork, liw)) fail;
+       (q0, v0 off the constraints: par.project = 1 starts from their
+       projection, vlbe_dae_project; BDF does so by default)
      while (st.t < t_end - h / 2) if (vlbe_hht_step(&st, h)) break;   (state in st.q, st.v)
        (st.t after k steps is t0 + k h rounded once or twice, never a sum of k
        roundings; the margin h/2 keeps that rounding from adding a step, and
        the loop takes round((t_end - t0)/h) steps)
+     or output times without that care: equal steps of at most h that end
+     on each t_k exactly (st.t == t_k bit for bit, t_k = 0.1 k or k / 3):
+     for (k = 1; k <= nout; ++k) if (vlbe_hht_advance(&st, t0 + k * dt, h)) break;
 
      BDF with error control (same problem, its own workspace sizes):
      vlbe_bdf_params bp;  vlbe_bdf_params_default(&bp);  bp.rtol = bp.atol = 1e-8;
@@ -28,6 +33,9 @@ USAGE
      if (vlbe_bdf_init(&bs, &sys, &bp, t0, q0, v0, work, lw, iwork, liw)) fail;
      for (k = 1; k <= nout; ++k)                       (bs.q, bs.v, bs.lambda at t_k)
          if (vlbe_bdf_advance(&bs, t0 + k * dt)) break;
+       (coordinates of very different sizes: bp.atolv, one atol per q and v;
+       values between steps without landing on them: vlbe_bdf_step, then
+       vlbe_bdf_interp(&bs, t, q, v) for any t in [bs.t - bs.h_last, bs.t])
 
      Static equilibrium Q(t,q,0) = C_q^T lambda, C = 0 (mass not needed):
      vlbe_static_params sp;  vlbe_static_params_default(&sp);
@@ -87,8 +95,9 @@ CONVENTIONS
    No allocation: the caller
    gives a real and an int workspace whose sizes the *_work_len() and
    *_iwork_len() queries return.  Stack: about 1 kB per call (float on a
-   Cortex-M4F, gcc -O2, make check-m4: vlbe_hht_step 1040 B, the rest at
-   most 1 kB; the figure moves by a few words with gcc's inlining in the
+   Cortex-M4F, gcc -O2, make check-m4: vlbe_hht_step 1040 B,
+   vlbe_hht_advance 1072 B, the rest at most 1 kB; the figure moves by a
+   few words with gcc's inlining in the
    unit), whatever max_halvings, plus what the callbacks use; all arrays
    live in the caller's workspace.
 
@@ -101,6 +110,8 @@ API
    size_t vlbe_dae_lin_work_len_sys(sys), vlbe_dae_lin_iwork_len_sys(sys)  linearisation workspace
    vlbe_status vlbe_dae_linearize(sys,t,q,v,a,lam,frame,nr,N,Mr,Dr,Kr,st,w,lw,iw,liw)
                                                           reduced M, D, K about a state
+   vlbe_status vlbe_dae_project(sys,t,q,v,tol,st,w,lw,iw,liw)  (q, v) onto the constraints
+                                                          (workspace: vlbe_dae_work_len_sys)
    void vlbe_dae_stats_add(a, b)                          a += b, counter by counter (restarts)
    void vlbe_static_params_default(p)                     static solver defaults
    size_t vlbe_static_work_len(n, m), vlbe_static_iwork_len(n, m)
@@ -111,11 +122,13 @@ API
    size_t vlbe_hht_work_len(n, m), vlbe_hht_iwork_len(n, m)
    vlbe_status vlbe_hht_init(st, sys, par, t0, q0, v0, w, lw, iw, liw)
    vlbe_status vlbe_hht_step(st, h)                       one step (halving inside if enabled)
+   vlbe_status vlbe_hht_advance(st, t_out, h_max)         equal steps <= h_max, ends on t_out exactly
    void vlbe_bdf_params_default(p)                        BDF defaults (rtol 1e-6, order <= 5)
    size_t vlbe_bdf_work_len(n, m), vlbe_bdf_iwork_len(n, m)
    vlbe_status vlbe_bdf_init(st, sys, par, t0, q0, v0, w, lw, iw, liw)  consistent start, order 1
    vlbe_status vlbe_bdf_step(st, t_stop)                  one accepted step, never past t_stop
    vlbe_status vlbe_bdf_advance(st, t_out)                steps until t == t_out exactly
+   vlbe_status vlbe_bdf_interp(st, t, q, v)               dense output within the last step
 
 REFERENCES
    M. Arnold, O. Bruls, Convergence of the generalized-alpha scheme for
@@ -149,6 +162,7 @@ REFERENCES
 /* Upper bounds of the iteration parameters (VLBE_EARG above them) */
 #define VLBE_HHT_MAX_HALVINGS 30 /* vlbe_hht_params.max_halvings: steps down to h / 2^30 */
 #define VLBE_INT_MAX_ITER 1000   /* newton_max of HHT and BDF, max_iter of vlbe_dae_static */
+#define VLBE_DAE_PROJECT_ITER 20 /* Gauss-Newton iterations of vlbe_dae_project */
 
 /* Default tolerances follow the arithmetic: each is its double value, or a
    multiple of the unit roundoff VLBE_EPS where that is larger (float).  An
@@ -223,6 +237,19 @@ typedef struct vlbe_hht_params {
                                Set it above the rounding of Psi (eps |Q|, eps |M q''|)
                                or steps fail with VLBE_ENOCONV.  0: the iteration is
                                bit-for-bit that without the field                  */
+    int project;            /* 1: vlbe_hht_init starts from (q0, v0) moved onto
+                               C = 0 and C_q v + C_t = 0 by vlbe_dae_project (a
+                               start on them is left bit for bit); 0 (default):
+                               as given.  An index-3 step closes a gap in C
+                               within one step, through q'' ~ C/h^2, and a
+                               velocity off C_q v + C_t = 0 is never corrected:
+                               both stay in the run as a spurious oscillation
+                               of lambda and q''.  Off by default because runs
+                               that start off C_q v + C_t = 0 on purpose would
+                               change: the sliding scenes start at rest under
+                               a prescribed material flow (tests/
+                               test_scenes_sliding.c, test_sliding_xcheck.c,
+                               test_scenes_band.c: residuals 2e-8 .. 3e-2)   */
 } vlbe_hht_params;
 
 /* Static equilibrium (vlbe_dae_static).  Converged when every enabled test
@@ -273,9 +300,11 @@ typedef struct vlbe_hht {
 /* BDF (orders 1..5, variable step and order, DASSL-style) on the stabilized
    index-2 form of Gear, Gupta and Leimkuhler (GGL):
        q' = v - C_q^T mu,   M v' + C_q^T lambda = Q,   C_q v + C_t = 0,   C = 0,
-   unknowns y = (q, v, lambda, mu), 2n + 2m.  q0, v0 must satisfy C = 0 and
-   C_q v + C_t = 0 (they are not projected); lambda0 and q''0 come from
-   vlbe_dae_consistent_acc, mu0 = 0.  The first step is taken at order 1. */
+   unknowns y = (q, v, lambda, mu), 2n + 2m.  The start is moved onto C = 0
+   and C_q v + C_t = 0 by vlbe_dae_project when q0, v0 miss them by more
+   than the first step can absorb (vlbe_bdf_params.project); lambda0 and
+   q''0 come from vlbe_dae_consistent_acc, mu0 = 0.  The first step is
+   taken at order 1. */
 #define VLBE_BDF_MAXORD 5
 
 typedef struct vlbe_bdf_params {
@@ -286,13 +315,32 @@ typedef struct vlbe_bdf_params {
     vlbe_real h_min;      /* smallest step; 0: 4 eps |t| (default 0)               */
     vlbe_real h_max;      /* largest step; 0: unbounded (default 0)                */
     int max_order;        /* highest order, 1..5 (default 5; 2 keeps A-stability).
-                             Undamped stiff modes (beams with their axial modes,
-                             stiff springs) want 2: BDF3..5 are unstable on a band
-                             of the imaginary axis (test_bdf.c), and an undamped
-                             mode of frequency w in that band grows until the
-                             error test has cut h below the band (BDF5: w h <
-                             0.71), whatever the tolerance: the examples/ex_spin.h
-                             ANCF beam (w up to 3.7e4 rad/s) then steps at 2e-5 s */
+                             BDF3..5 are unstable on a band of the imaginary axis
+                             (test_bdf.c): an undamped stiff mode (the axial modes
+                             of a beam, a stiff spring) in that band grows until
+                             the error test holds h near the band's edge (BDF5:
+                             w h < 0.71), whatever the tolerance.  Whether that
+                             costs depends on the step the accuracy needs
+                             (bench/wp_bdf_order.c, -O2, docs/benchmarks.md):
+                             on a flexible slider crank (one turn of the crank
+                             at 150 rad/s, 0.042 s) 5 is the cheapest and
+                             most accurate from rtol 1e-5 on (0.34 s, 28061
+                             steps, error 1.3e-7 against 0.44 s, 43872 steps,
+                             6.0e-5 at order 2; at 1e-7 0.50 s, 7.2e-9 against
+                             2.4 s, 2.4e-6) and 14 times more accurate at 1e-3
+                             (1.2e-5 in 0.36 s against 1.8e-4 in 0.053 s): its
+                             fast motion needs short steps anyway.  On the
+                             examples/ex_spin.h ANCF beam (10 s of spin-up, axial
+                             modes up to 3.7e4 rad/s), whose slow motion allows
+                             steps of 1e-2 s, order 2 takes 534 to 3388 steps
+                             (0.11 to 0.63 s) at rtol 1e-3 to 1e-5 while 4 and 5
+                             did not reach 10 s in 60000 steps at any of them.
+                             3 and 4 were the worst on both (the slider crank at
+                             rtol 1e-3: errors 1.9 and 0.11 of the rod's length,
+                             no failure reported).  So: 2 when the motion allows
+                             steps far beyond 0.7 / w of the stiffest undamped
+                             mode, 5 when the accuracy asked needs steps of that
+                             size anyway                                         */
     int newton_max;       /* Newton iterations per attempt, 1..VLBE_INT_MAX_ITER
                              (default 4, as DASSL)                                 */
     int fixed_step;       /* 1: every step is h0 (h_min, h_max, rtol/atol for the
@@ -308,6 +356,26 @@ typedef struct vlbe_bdf_params {
                              without reaching h_min (a wrong model, a tolerance
                              below what the arithmetic resolves) into
                              VLBE_EBOUND instead of a hang                         */
+    int project;          /* 1 (default): vlbe_bdf_init starts from a copy of
+                             (q0, v0) projected by vlbe_dae_project when the
+                             correction exceeds what the first step absorbs
+                             (see vlbe_bdf_init); 0: (q0, v0) as given.  A start
+                             off the constraints by more than the error test
+                             allows fails otherwise: the corrector puts the
+                             whole violation into the first step's error
+                             estimate, whatever h, and the step shrinks to
+                             VLBE_ESTEP                                           */
+    const vlbe_real *atolv; /* NULL (default): atol for every coordinate; else
+                             2n absolute tolerances, q then v, the weights
+                             atolv[i] + rtol |y_i| of the error test and of
+                             the Newton test of q and v (lambda and mu keep
+                             atol).  For coordinates of different sizes
+                             (positions of 1 m beside modal amplitudes of
+                             1e-5): with one atol above rtol times a small
+                             coordinate, that coordinate is only controlled
+                             absolutely.  Each >= 0 and finite with atolv[i]
+                             + rtol > 0.  The state keeps the pointer: the
+                             array must live as long as the state          */
 } vlbe_bdf_params;
 
 /* BDF integrator state.  q, v, lambda, mu point into the caller's workspace
@@ -360,6 +428,9 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
                                         int *nr, vlbe_real *N, vlbe_real *Mr, vlbe_real *Dr,
                                         vlbe_real *Kr, vlbe_dae_stats *stats, vlbe_real *work,
                                         size_t work_len, int *iwork, size_t iwork_len);
+VLBE_API vlbe_status vlbe_dae_project(const vlbe_dae *sys, vlbe_real t, vlbe_real *q, vlbe_real *v,
+                                      vlbe_real tol, vlbe_dae_stats *stats, vlbe_real *work,
+                                      size_t work_len, int *iwork, size_t iwork_len);
 
 VLBE_API void vlbe_static_params_default(vlbe_static_params *p);
 VLBE_API size_t vlbe_static_work_len(int n, int m);
@@ -383,6 +454,7 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
                                    vlbe_real *work, size_t work_len, int *iwork,
                                    size_t iwork_len);
 VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h);
+VLBE_API vlbe_status vlbe_hht_advance(vlbe_hht *st, vlbe_real t_out, vlbe_real h_max);
 
 VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p);
 VLBE_API size_t vlbe_bdf_work_len(int n, int m);
@@ -395,6 +467,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
                                    size_t iwork_len);
 VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop);
 VLBE_API vlbe_status vlbe_bdf_advance(vlbe_bdf *st, vlbe_real t_out);
+VLBE_API vlbe_status vlbe_bdf_interp(const vlbe_bdf *st, vlbe_real t, vlbe_real *q, vlbe_real *v);
 
 /* ===== implementation =================================================== */
 
@@ -1099,13 +1172,54 @@ VLBE_API void vlbe_dae_stats_add(vlbe_dae_stats *a, const vlbe_dae_stats *b)
     if (b->callback_rc != 0) a->callback_rc = b->callback_rc;
 }
 
+/* The saddle system [M C_q^T; C_q 0] x = b of the consistent start and of
+   vlbe_dae_project, in the problem's storage: assembled into A
+   (vlbe__int_alen(sys, 1) reals) from M and C_q, rows equilibrated
+   (vlbe__int_equil), factored (piv: n + m ints), b (n + m, natural order:
+   the q rows, then the constraints) overwritten with x.  X: the right side
+   in the band's order (banded: n + m reals; dense: unused).  Returns
+   VLBE_ENONFINITE (b or x) or the status of the factorization. */
+VLBE_INLINE vlbe_status vlbe__int_saddle_solve(const vlbe_dae *sys, vlbe_dae_stats *stats,
+                                               const vlbe_real *M, const vlbe_real *Cq,
+                                               vlbe_real *A, vlbe_real *b, vlbe_real *X, int *piv)
+{
+    int n = sys->n, m = sys->m, N = n + m, i, j, band = vlbe__int_banded(sys);
+    vlbe_status rc;
+    if (band) {
+        const vlbe__int_blk B = vlbe__int_band_blk(sys, A, 1);
+        vlbe_vec_zero((int)vlbe__int_alen(sys, 1), A);
+        vlbe__int_badd(sys, &B, VLBE_R(1.0), M, 0);
+        vlbe__int_bsaddle(sys, &B, VLBE_R(1.0), Cq);
+    } else {
+        for (i = 0; i < N; ++i)
+            for (j = 0; j < N; ++j) {
+                vlbe_real x = VLBE_R(0.0);
+                if (i < n && j < n) x = M[(size_t)i * n + j];
+                else if (i < n && j >= n) x = Cq[(size_t)(j - n) * n + i];
+                else if (i >= n && j < n) x = Cq[(size_t)(i - n) * n + j];
+                A[(size_t)i * N + j] = x;
+            }
+    }
+    if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
+    if (band) vlbe__int_perm(sys, 1, b, X);
+    else X = b;
+    vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), band ? (int)vlbe__int_ald(sys, 1) : N, NULL, X);
+    ++stats->lu_factors;
+    if ((rc = vlbe__int_factor(sys, stats, 1, A, piv)) != VLBE_OK) return rc;
+    ++stats->lu_solves;
+    vlbe__int_solve(sys, 1, A, piv, X);
+    if (band) vlbe__int_unperm(sys, 1, X, b);
+    if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
+    return VLBE_OK;
+}
+
 VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, const vlbe_real *q,
                                              const vlbe_real *v, vlbe_real *qdd,
                                              vlbe_real *lambda, vlbe_dae_stats *stats,
                                              vlbe_real *work, size_t work_len, int *iwork,
                                              size_t iwork_len)
 {
-    int n, m, N, i, j, band;
+    int n, m, N, band;
     vlbe_real *A, *b, *M, *Q, *Cq, *sc, *X;
     vlbe_dae_stats dummy;
     vlbe_status rc;
@@ -1132,34 +1246,128 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
     if ((rc = vlbe__int_force(sys, stats, t, q, v, Q)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_cjac(sys, stats, t, q, Cq, NULL)) != VLBE_OK) return rc;
     if ((rc = vlbe__int_gamma(sys, stats, t, q, v, b + n, sc)) != VLBE_OK) return rc;
-    if (band) {
-        const vlbe__int_blk B = vlbe__int_band_blk(sys, A, 1);
-        vlbe_vec_zero((int)vlbe__int_alen(sys, 1), A);
-        vlbe__int_badd(sys, &B, VLBE_R(1.0), M, 0);
-        vlbe__int_bsaddle(sys, &B, VLBE_R(1.0), Cq);
-    } else {
-        for (i = 0; i < N; ++i)
-            for (j = 0; j < N; ++j) {
-                vlbe_real x = VLBE_R(0.0);
-                if (i < n && j < n) x = M[(size_t)i * n + j];
-                else if (i < n && j >= n) x = Cq[(size_t)(j - n) * n + i];
-                else if (i >= n && j < n) x = Cq[(size_t)(i - n) * n + j];
-                A[(size_t)i * N + j] = x;
-            }
-    }
     vlbe_vec_copy(n, Q, b);
-    if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
-    if (band) vlbe__int_perm(sys, 1, b, X);
-    else X = b;
-    vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), band ? (int)vlbe__int_ald(sys, 1) : N, NULL, X);
-    ++stats->lu_factors;
-    if ((rc = vlbe__int_factor(sys, stats, 1, A, iwork)) != VLBE_OK) return rc;
-    ++stats->lu_solves;
-    vlbe__int_solve(sys, 1, A, iwork, X);
-    if (band) vlbe__int_unperm(sys, 1, X, b);
-    if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
+    if ((rc = vlbe__int_saddle_solve(sys, stats, M, Cq, A, b, X, iwork)) != VLBE_OK) return rc;
     vlbe_vec_copy(n, b, qdd);
     if (m > 0) vlbe_vec_copy(m, b + n, lambda);
+    return VLBE_OK;
+}
+
+/* Consistent start (q, v) for the integrators: Gauss-Newton on C(t, q) = 0
+   with the minimum-norm correction in the kinetic-energy metric W = M(t, q,
+   v) (M at the caller's point, kept through the iteration),
+       [ W  C_q^T ] [ dq ]   [  0 ]
+       [ C_q  0   ] [ nu ] = [ -C ],      q <- q + dq,
+   C_q fresh at each iterate, then the velocities in one exact step onto
+   C_q v + C_t = 0 at the new q: the same system with the right side
+   (0, -(C_q v + C_t)), v <- v + dv.  Why M and not the Euclidean norm: the
+   kinetic-energy norm does not depend on the units of the coordinates
+   (ANCF mixes positions in m with dimensionless slopes, whose Euclidean
+   sum means nothing), the velocity correction is then the one an impulse
+   of the constraint forces gives (Gauss's principle: least change of
+   kinetic energy), and the matrix is the one of vlbe_dae_consistent_acc,
+   so the dense and banded storages and the caller's lin_factor serve it
+   alike (M must be positive definite on the null space of C_q, as there).
+   Converged when ||C||_inf <= tol (tol <= 0: VLBE_RTOL_EPS eps max(1,
+   max|q_i|), 1.4e-14 for coordinates of order one in double), or when a
+   correction is at the rounding floor (max|dq| <= 8 eps max|q|: C is then
+   as small as the arithmetic of the model makes it).  A start with
+   ||C||_inf <= tol costs one constr call and no solve, and q is left bit for
+   bit; v is left bit for bit when ||C_q v + C_t||_inf is already at the
+   rounding of its evaluation, VLBE_RTOL_EPS eps (||C_t||_inf + max|C_q|
+   max|v_i|).  Returns VLBE_OK; VLBE_EARG (problem, NULL q or v, t or tol
+   not finite, an order that is not a permutation); VLBE_EWORK (the
+   workspace of vlbe_dae_work_len_sys and vlbe_dae_iwork_len_sys, which is
+   large enough); VLBE_ENONFINITE (q, v, C, an iterate); VLBE_ESINGULAR
+   (rank-deficient C_q: redundant constraints, or M singular on the null
+   space of C_q); VLBE_ECALLBACK; VLBE_ENOCONV (VLBE_DAE_PROJECT_ITER
+   iterations without convergence: a start too far from the constraint
+   manifold for Gauss-Newton, or no point of it near).  On failure q and v
+   are as they were (the iteration runs on copies in work).  stats (may be
+   NULL) is added to: newton_iters counts the position iterations,
+   newton_fails the VLBE_ENOCONV returns, and the calls, factorizations
+   and solves as in the integrators. */
+VLBE_API vlbe_status vlbe_dae_project(const vlbe_dae *sys, vlbe_real t, vlbe_real *q, vlbe_real *v,
+                                      vlbe_real tol, vlbe_dae_stats *stats, vlbe_real *work,
+                                      size_t work_len, int *iwork, size_t iwork_len)
+{
+    int n, m, N, i, it, band, have_m = 0;
+    vlbe_real *qc, *vc, *A, *b, *M, *Cq, *Ct, *C, *X, *pw;
+    vlbe_real tolq, tolv, cn, qmax;
+    vlbe_dae_stats dummy;
+    vlbe_status rc;
+    if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
+    if (!q || !v || !isfinite(t) || !isfinite(tol)) return VLBE_EARG;
+    n = sys->n;
+    m = sys->m;
+    N = n + m;
+    band = vlbe__int_banded(sys);
+    if (!work || !iwork || work_len < vlbe_dae_work_len_sys(sys) ||
+        iwork_len < vlbe_dae_iwork_len_sys(sys))
+        return VLBE_EWORK;
+    if (!vlbe_all_finite(q, n) || !vlbe_all_finite(v, n)) return VLBE_ENONFINITE;
+    if (band && (rc = vlbe__int_inv(sys, iwork + N)) != VLBE_OK) return rc;
+    if (m == 0) return VLBE_OK;
+    if (!stats) {
+        stats = &dummy;
+        vlbe__int_stats_zero(&dummy);
+    }
+    qc = work;
+    vc = qc + n;
+    A = vc + n;
+    b = A + vlbe__int_alen(sys, 1);
+    M = b + N;
+    Cq = M + vlbe__int_mlen(sys, 0);
+    Ct = Cq + vlbe__int_mlen(sys, 1);
+    C = Ct + m;
+    X = C + m;  /* banded: the right side in A's order (N) */
+    pw = X + N; /* banded: products (2 N) */
+    vlbe_vec_copy(n, q, qc);
+    vlbe_vec_copy(n, v, vc);
+    qmax = vlbe_vec_norm_inf(n, q);
+    tolq = tol > VLBE_R(0.0) ? tol : VLBE_RTOL_EPS * VLBE_EPS * (qmax > VLBE_R(1.0) ? qmax : VLBE_R(1.0));
+    if ((rc = vlbe__int_constr(sys, stats, t, qc, C)) != VLBE_OK) return rc;
+    if (!vlbe_all_finite(C, m)) return VLBE_ENONFINITE;
+    cn = vlbe_vec_norm_inf(m, C);
+    /* positions: Gauss-Newton, minimum W-norm corrections */
+    for (it = 0; cn > tolq; ++it) {
+        if (it == VLBE_DAE_PROJECT_ITER) {
+            ++stats->newton_fails;
+            return VLBE_ENOCONV;
+        }
+        if (!have_m && (rc = vlbe__int_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
+        have_m = 1;
+        if ((rc = vlbe__int_cjac(sys, stats, t, qc, Cq, NULL)) != VLBE_OK) return rc;
+        vlbe_vec_zero(n, b);
+        for (i = 0; i < m; ++i) b[n + i] = -C[i];
+        if ((rc = vlbe__int_saddle_solve(sys, stats, M, Cq, A, b, X, iwork)) != VLBE_OK) return rc;
+        ++stats->newton_iters;
+        vlbe_vec_axpy(n, VLBE_R(1.0), b, qc);
+        if (!vlbe_all_finite(qc, n)) return VLBE_ENONFINITE;
+        if ((rc = vlbe__int_constr(sys, stats, t, qc, C)) != VLBE_OK) return rc;
+        if (!vlbe_all_finite(C, m)) return VLBE_ENONFINITE;
+        cn = vlbe_vec_norm_inf(m, C);
+        if (vlbe_vec_norm_inf(n, b) <= VLBE_R(8.0) * VLBE_EPS * vlbe_vec_norm_inf(n, qc)) break;
+    }
+    /* velocities: one exact step onto C_q v + C_t = 0 at the new q */
+    if ((rc = vlbe__int_cjac(sys, stats, t, qc, Cq, Ct)) != VLBE_OK) return rc;
+    if (band) vlbe__int_bprod(sys, 1, Cq, vc, b + n, pw);
+    else vlbe_mat_vec(m, n, Cq, vc, b + n);
+    vlbe_vec_axpy(m, VLBE_R(1.0), Ct, b + n);
+    if (!vlbe_all_finite(b + n, m)) return VLBE_ENONFINITE;
+    tolv = VLBE_RTOL_EPS * VLBE_EPS *
+           (vlbe_vec_norm_inf(m, Ct) +
+            vlbe_vec_norm_inf((int)vlbe__int_mlen(sys, 1), Cq) * vlbe_vec_norm_inf(n, vc));
+    if (vlbe_vec_norm_inf(m, b + n) > tolv) {
+        if (!have_m && (rc = vlbe__int_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
+        vlbe_vec_zero(n, b);
+        vlbe_vec_scale(m, -VLBE_R(1.0), b + n);
+        if ((rc = vlbe__int_saddle_solve(sys, stats, M, Cq, A, b, X, iwork)) != VLBE_OK) return rc;
+        vlbe_vec_axpy(n, VLBE_R(1.0), b, vc);
+        if (!vlbe_all_finite(vc, n)) return VLBE_ENONFINITE;
+    }
+    vlbe_vec_copy(n, qc, q);
+    vlbe_vec_copy(n, vc, v);
     return VLBE_OK;
 }
 
@@ -1993,6 +2201,7 @@ VLBE_INLINE void vlbe__hht_defaults(vlbe_hht_params *p)
     p->max_halvings = 0;
     p->reuse_max = 0;
     p->ftol = VLBE_R(0.0);
+    p->project = 0;
 }
 
 VLBE_API void vlbe_hht_params_newmark(vlbe_hht_params *p, vlbe_real beta, vlbe_real gamma)
@@ -2077,7 +2286,7 @@ VLBE_INLINE vlbe_real *vlbe__hht_lu(const vlbe_hht *st)
 /* Parameters of the family: every real finite, alpha_m < 1, alpha_f < 1,
    beta > 0, gamma >= 0; rtol, atol >= 0 with rtol + atol > 0; ftol >= 0;
    newton_max 1..VLBE_INT_MAX_ITER, modified 0 or 1, max_halvings
-   0..VLBE_HHT_MAX_HALVINGS. */
+   0..VLBE_HHT_MAX_HALVINGS, project 0 or 1. */
 VLBE_INLINE int vlbe__hht_params_ok(const vlbe_hht_params *p)
 {
     return isfinite(p->alpha_m) && isfinite(p->alpha_f) && isfinite(p->beta) &&
@@ -2087,18 +2296,23 @@ VLBE_INLINE int vlbe__hht_params_ok(const vlbe_hht_params *p)
            p->rtol + p->atol > VLBE_R(0.0) && p->ftol >= VLBE_R(0.0) && p->newton_max >= 1 &&
            p->newton_max <= VLBE_INT_MAX_ITER && (p->modified == 0 || p->modified == 1) &&
            p->max_halvings >= 0 && p->max_halvings <= VLBE_HHT_MAX_HALVINGS &&
-           p->reuse_max >= 0 && p->reuse_max <= VLBE_INT_MAX_ITER;
+           p->reuse_max >= 0 && p->reuse_max <= VLBE_INT_MAX_ITER &&
+           (p->project == 0 || p->project == 1);
 }
 
-/* Consistent start at t0: q''_0 and lambda_0 from vlbe_dae_consistent_acc,
+/* Consistent start at t0: with par.project = 1, (q0, v0) projected by
+   vlbe_dae_project (default tolerance; into the workspace: q0 and v0 are
+   never written), then q''_0 and lambda_0 from vlbe_dae_consistent_acc,
    a_0 = q''_0.  Returns VLBE_EARG (problem, parameters: see
    vlbe__hht_params_ok), VLBE_EWORK, VLBE_ENONFINITE (t0, q0, v0, or the
-   start solve), or the status of the start solve (VLBE_ESINGULAR,
-   VLBE_ECALLBACK).  On failure *st is unchanged, and so are work and iwork
-   when the argument checks fail; when the start solve fails, work and iwork
-   hold its scratch (unspecified: the solve needs (n+m)^2 reals that only
-   work can give), so do not re-initialize into the workspace of a state
-   that must survive a failed call. */
+   start solve), the status of the projection when it fails (VLBE_ENOCONV,
+   VLBE_ESINGULAR, VLBE_ECALLBACK, VLBE_ENONFINITE: see vlbe_dae_project),
+   or the status of the start solve (VLBE_ESINGULAR, VLBE_ECALLBACK).  On
+   failure *st is unchanged, and so are work and iwork when the argument
+   checks fail; when the projection or the start solve fails, work and
+   iwork hold its scratch (unspecified: the solve needs (n+m)^2 reals that
+   only work can give), so do not re-initialize into the workspace of a
+   state that must survive a failed call. */
 VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe_hht_params *par,
                                    vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
                                    vlbe_real *work, size_t work_len, int *iwork,
@@ -2143,6 +2357,16 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
     tqdd = vlbe__hht_trial(&s) + 2 * n;
     tl = vlbe__hht_trial(&s) + 4 * n;
     scratch = vlbe__hht_lu(&s);
+    if (par->project && m > 0) { /* the projected copy in the backup area */
+        vlbe_real *qp = vlbe__hht_backup(&s), *vp = qp + n;
+        vlbe_vec_copy(n, q0, qp);
+        vlbe_vec_copy(n, v0, vp);
+        rc = vlbe_dae_project(sys, t0, qp, vp, VLBE_R(0.0), &s.stats, scratch,
+                              (size_t)(work + work_len - scratch), iwork, iwork_len);
+        if (rc != VLBE_OK) return rc;
+        q0 = qp;
+        v0 = vp;
+    }
     rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, tqdd, tl, &s.stats, scratch,
                                  (size_t)(work + work_len - scratch), iwork, iwork_len);
     if (rc != VLBE_OK) return rc;
@@ -2476,14 +2700,14 @@ VLBE_INLINE vlbe_status vlbe__hht_step_halving(vlbe_hht *st, vlbe_real h, vlbe_r
    a rounding or two of t, whatever k), so a rheonomic constraint is met at
    the time it should be.  A new h (or a t changed by the caller) starts a
    new run from the current t; the halvings inside a step do not. */
-VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
+/* The step of vlbe_hht_step (h checked), ending at *t_end when t_end is
+   given (vlbe_hht_advance's last step); a step that does not end where
+   the run's formula puts it starts a new run there. */
+VLBE_INLINE vlbe_status vlbe__hht_step_run(vlbe_hht *st, vlbe_real h, const vlbe_real *t_end)
 {
     vlbe_real tb, hr, t1;
     long k;
     vlbe_status rc;
-    VLBE_ASSERT(st != NULL && st->sys != NULL);
-    if (!(h > VLBE_R(0.0)) || !isfinite(h)) return VLBE_EARG;
-    if (st->t + h == st->t) return VLBE_ESTEP;
     tb = st->t_base_;
     hr = st->h_run_;
     k = st->k_run_;
@@ -2496,11 +2720,66 @@ VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
     }
     t1 = tb + (vlbe_real)(k + 1) * hr;
     if (!isfinite(t1)) return VLBE_ENONFINITE; /* t + h overflows: nothing evaluated */
+    if (t_end && *t_end != t1) {
+        t1 = *t_end;
+        rc = vlbe__hht_step_halving(st, h, t1);
+        if (rc != VLBE_OK) return rc;
+        st->t_base_ = t1;
+        st->h_run_ = hr;
+        st->k_run_ = 0;
+        return VLBE_OK;
+    }
     rc = vlbe__hht_step_halving(st, h, t1);
     if (rc != VLBE_OK) return rc;
     st->t_base_ = tb;
     st->h_run_ = hr;
     st->k_run_ = k + 1;
+    return VLBE_OK;
+}
+
+VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
+{
+    VLBE_ASSERT(st != NULL && st->sys != NULL);
+    if (!(h > VLBE_R(0.0)) || !isfinite(h)) return VLBE_EARG;
+    if (st->t + h == st->t) return VLBE_ESTEP;
+    return vlbe__hht_step_run(st, h, NULL);
+}
+
+/* Steps from st->t to t_out in k equal steps h = (t_out - t) / k, k the
+   smallest count with h <= h_max up to VLBE_RTOL_EPS units of roundoff
+   (k = ceil(r (1 - VLBE_RTOL_EPS eps)), r = (t_out - t) / h_max: an
+   interval that is a multiple of h_max but for the rounding of its
+   operands takes no extra step).  Step j ends at t + j h (vlbe_hht_step's
+   time without drift: one product, no sum of roundings; an unbroken run
+   of steps of that h goes on), the last one at t_out itself: st->t ==
+   t_out bit for bit on return, whatever the rounding of t_out or of h (0.1,
+   1/3).  When h_max divides the interval exactly (t_out = t + k h_max in
+   vlbe_real) the run is that of k calls of vlbe_hht_step(st, h_max), bit
+   for bit.  Each step halves on Newton failure as vlbe_hht_step does.
+   t_out == st->t: returns at once.  VLBE_EARG: t_out < st->t or not
+   finite, h_max <= 0 or not finite, or more than 1 / (4 eps) steps (2^21
+   in float: the step index must stay exact); VLBE_ESTEP: t + h == t.  On
+   failure the state is the last accepted step, which may lie past the
+   start (st->t says how far the run got): the exception to the failure
+   contract that vlbe_bdf_advance makes, for the same reason. */
+VLBE_API vlbe_status vlbe_hht_advance(vlbe_hht *st, vlbe_real t_out, vlbe_real h_max)
+{
+    vlbe_real r, x, h;
+    long k, j;
+    vlbe_status rc;
+    VLBE_ASSERT(st != NULL && st->sys != NULL);
+    if (!isfinite(t_out) || !(t_out >= st->t) || !(h_max > VLBE_R(0.0)) || !isfinite(h_max))
+        return VLBE_EARG;
+    if (t_out == st->t) return VLBE_OK;
+    r = (t_out - st->t) / h_max;
+    if (!(r < VLBE_R(0.25) / VLBE_EPS)) return VLBE_EARG;
+    x = r - VLBE_RTOL_EPS * VLBE_EPS * r;
+    k = (long)-vlbe_floor(-x);
+    if (k < 1) k = 1;
+    h = (t_out - st->t) / (vlbe_real)k;
+    if (st->t + h == st->t) return VLBE_ESTEP;
+    for (j = 1; j <= k; ++j)
+        if ((rc = vlbe__hht_step_run(st, h, j == k ? &t_out : NULL)) != VLBE_OK) return rc;
     return VLBE_OK;
 }
 
@@ -2526,9 +2805,9 @@ VLBE_API vlbe_status vlbe_hht_step(vlbe_hht *st, vlbe_real h)
    puts an error d / h^2 into lambda, and that noise then spoils the order
    selection through the differences. */
 
-/* Defaults: rtol 1e-6, atol 1e-8 (float: VLBE_TOL_DEFAULT), h0, h_min, h_max 0
-   (automatic), order <= 5, 4 Newton iterations, variable step, filtered
-   error estimate. */
+/* Defaults: rtol 1e-6, atol 1e-8 (float: VLBE_TOL_DEFAULT), no atolv, h0,
+   h_min, h_max 0 (automatic), order <= 5, 4 Newton iterations, variable
+   step, filtered error estimate, projected start. */
 VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
 {
     VLBE_ASSERT(p != NULL);
@@ -2540,6 +2819,8 @@ VLBE_API void vlbe_bdf_params_default(vlbe_bdf_params *p)
     p->fixed_step = 0;
     p->stiff_filter = 1;
     p->max_steps = 0;
+    p->atolv = NULL;
+    p->project = 1;
 }
 
 
@@ -2613,11 +2894,27 @@ VLBE_INLINE vlbe_real *vlbe__bdf_ext(const vlbe_bdf *st)
     return vlbe__bdf_rs(st) + (size_t)vlbe__bdf_n2(st) + vlbe__int_btangent_len(st->sys);
 }
 
+/* Weighted RMS norm of x (nn <= 2n components, q then v) with the
+   weights of the error test, atol + rtol |ref_i| (atolv[i] + rtol |ref_i|
+   when par.atolv is given). */
+VLBE_INLINE vlbe_real vlbe__bdf_wrms(const vlbe_bdf_params *p, int nn, const vlbe_real *x,
+                                     const vlbe_real *ref)
+{
+    vlbe_real s = VLBE_R(0.0);
+    int i;
+    if (!p->atolv) return vlbe__int_wrms(nn, x, ref, p->rtol, p->atol);
+    for (i = 0; i < nn; ++i) {
+        vlbe_real r = x[i] / (p->atolv[i] + p->rtol * vlbe_fabs(ref[i]));
+        s += r * r;
+    }
+    return vlbe_sqrt(s / (vlbe_real)(nn > 0 ? nn : 1));
+}
+
 /* Weighted RMS norm of the q and v parts of x (error test); weights from
    the last accepted step. */
 VLBE_INLINE vlbe_real vlbe__bdf_norm(const vlbe_bdf *st, const vlbe_real *x)
 {
-    return vlbe__int_wrms(2 * st->n, x, st->q, st->par.rtol, st->par.atol);
+    return vlbe__bdf_wrms(&st->par, 2 * st->n, x, st->q);
 }
 
 /* Norm of a Newton correction d: weighted RMS over all 2n + 2m components,
@@ -2628,19 +2925,33 @@ VLBE_INLINE vlbe_real vlbe__bdf_norm(const vlbe_bdf *st, const vlbe_real *x)
 VLBE_INLINE vlbe_real vlbe__bdf_newton_norm(const vlbe_bdf *st, const vlbe_real *d, vlbe_real cj)
 {
     int n2 = 2 * st->n, m2 = 2 * st->m;
-    vlbe_real a = vlbe__int_wrms(n2, d, st->q, st->par.rtol, st->par.atol), b;
+    vlbe_real a = vlbe__bdf_wrms(&st->par, n2, d, st->q), b;
     if (m2 == 0) return a;
     b = vlbe__int_wrms(m2, d + n2, st->q + n2, st->par.rtol, st->par.atol) / cj;
     return vlbe_sqrt(((vlbe_real)n2 * a * a + (vlbe_real)m2 * b * b) / (vlbe_real)(n2 + m2));
 }
 
-/* Consistent start at t0 (see vlbe_bdf).  Returns VLBE_EARG (problem,
-   parameters: every real finite and >= 0, rtol + atol > 0, max_order
-   1..VLBE_BDF_MAXORD, newton_max 1..VLBE_INT_MAX_ITER, fixed_step and
-   stiff_filter 0 or 1, max_steps >= 0, h0 > 0 with fixed_step, h_min <=
-   h_max when h_max > 0), VLBE_EWORK, VLBE_ENONFINITE (t0, q0, v0, or the
-   start solve), or the status of the start solve.  On failure *st is unchanged, and so are work
-   and iwork when the argument checks fail; when the start solve fails they
+/* Consistent start at t0 (see vlbe_bdf).  With par.project (default), a
+   copy of (q0, v0) goes through vlbe_dae_project (default tolerance), and
+   the run starts from the projected copy when the correction (dq, dv) it
+   made exceeds a tenth of the first step's error test, ||(dq, dv)|| > 0.1
+   in the weighted RMS norm of the test (weights atol + rtol |y0_i|, or
+   atolv): the corrector would make that jump in the first step, and the
+   error estimate, which sees it whatever h, could not pass (a jump of a
+   tenth leaves the test nine tenths for the step's own error).  Below
+   that, and for a start on the constraints (no correction: one constr
+   and one constr_jac call), the run starts from (q0, v0) bit for bit as
+   without projection.  q0 and v0 themselves are never written.  Returns
+   VLBE_EARG (problem, parameters: every real finite and >= 0, rtol + atol
+   > 0, atolv as in vlbe_bdf_params, max_order 1..VLBE_BDF_MAXORD,
+   newton_max 1..VLBE_INT_MAX_ITER, fixed_step, stiff_filter and project 0
+   or 1, max_steps >= 0, h0 > 0 with fixed_step, h_min <= h_max when h_max >
+   0), VLBE_EWORK, VLBE_ENONFINITE (t0, q0, v0, or the start solve), the
+   status of the projection when it fails (VLBE_ENOCONV: Gauss-Newton did
+   not reach the constraints; VLBE_ESINGULAR: C_q rank-deficient at the
+   start; VLBE_ECALLBACK, VLBE_ENONFINITE), or the status of the start
+   solve.  On failure *st is unchanged, and so are work and iwork when the
+   argument checks fail; when the projection or the start solve fails they
    hold its scratch (unspecified), as for vlbe_hht_init. */
 VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe_bdf_params *par,
                                    vlbe_real t0, const vlbe_real *q0, const vlbe_real *v0,
@@ -2666,9 +2977,14 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
         par->max_order > VLBE_BDF_MAXORD || par->newton_max < 1 ||
         par->newton_max > VLBE_INT_MAX_ITER || par->fixed_step < 0 || par->fixed_step > 1 ||
         par->stiff_filter < 0 || par->stiff_filter > 1 || par->max_steps < 0 ||
-        (par->fixed_step && !(par->h0 > VLBE_R(0.0))) ||
+        par->project < 0 || par->project > 1 || (par->fixed_step && !(par->h0 > VLBE_R(0.0))) ||
         (par->h_max > VLBE_R(0.0) && par->h_min > par->h_max))
         return VLBE_EARG;
+    if (par->atolv)
+        for (i = 0; i < 2 * n; ++i)
+            if (!(par->atolv[i] >= VLBE_R(0.0)) || !isfinite(par->atolv[i]) ||
+                !(par->atolv[i] + par->rtol > VLBE_R(0.0)))
+                return VLBE_EARG;
     if (!isfinite(t0) || !vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n))
         return VLBE_ENONFINITE;
     N2 = 2 * n + 2 * m;
@@ -2694,6 +3010,27 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     phi2 = vlbe__bdf_phi(st, 2);
     tail = vlbe__bdf_tail(st);
     tq = vlbe__bdf_vec(st, 0);
+    if (par->project && m > 0) {
+        /* projected copy in the trial y' area, its correction in e, the
+           caller's y0 = (q0, v0) for the weights in delta */
+        vlbe_real *qp = vlbe__bdf_vec(st, 1), *vp = qp + n, *d = vlbe__bdf_vec(st, 2),
+                  *y0 = vlbe__bdf_vec(st, 3);
+        vlbe_vec_copy(n, q0, qp);
+        vlbe_vec_copy(n, v0, vp);
+        rc = vlbe_dae_project(sys, t0, qp, vp, VLBE_R(0.0), &st->stats, tail,
+                              (size_t)(work + work_len - tail), iwork, iwork_len);
+        if (rc != VLBE_OK) return rc;
+        vlbe_vec_copy(n, q0, y0);
+        vlbe_vec_copy(n, v0, y0 + n);
+        for (i = 0; i < n; ++i) {
+            d[i] = qp[i] - q0[i];
+            d[n + i] = vp[i] - v0[i];
+        }
+        if (vlbe__bdf_wrms(par, 2 * n, d, y0) > VLBE_R(0.1)) {
+            q0 = qp;
+            v0 = vp;
+        }
+    }
     rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, tq, tq + n, &st->stats, tail,
                                  (size_t)(work + work_len - tail), iwork, iwork_len);
     if (rc != VLBE_OK) return rc;
@@ -3379,6 +3716,50 @@ VLBE_API vlbe_status vlbe_bdf_advance(vlbe_bdf *st, vlbe_real t_out)
     while (st->t < t_out) {
         if (st->par.max_steps > 0 && k++ == st->par.max_steps) return VLBE_EBOUND;
         if ((rc = vlbe_bdf_step(st, t_out)) != VLBE_OK) return rc;
+    }
+    return VLBE_OK;
+}
+
+/* Dense output: q and v at t within the last step, t in [st->t - h_last,
+   st->t], from the interpolating polynomial of that step (DASSL's DDATRP,
+   Brenan-Campbell-Petzold sec. 5.4): the polynomial of degree k =
+   order_last through the last k + 1 solution points, in the modified
+   divided differences phi and the psi of the step,
+       y(t) = sum_{j=1}^{k+1} c_j phi_j,  c_1 = 1,
+       c_j = c_{j-1} (t - t_n + psi_{j-2}) / psi_{j-1}  (psi_0 = 0).
+   Its error is of the order of the step's local error (the error test's
+   tolerance) on top of the error of the solution points.  At t == st->t
+   the state itself (bit for bit).  No extrapolation: t outside the step,
+   or before the first step any t other than st->t, is VLBE_EARG, and so is
+   a t that is not finite.  q, v (n each, may be NULL): outputs.  lambda is
+   not offered: an index-2 variable, left out of the error test, whose
+   interpolant would carry no such error bound.  Reads the state only. */
+VLBE_API vlbe_status vlbe_bdf_interp(const vlbe_bdf *st, vlbe_real t, vlbe_real *q, vlbe_real *v)
+{
+    int n, j, k;
+    vlbe_real tt, c = VLBE_R(1.0), gam;
+    const vlbe_real *p1;
+    VLBE_ASSERT(st != NULL && st->sys != NULL);
+    n = st->n;
+    if (!isfinite(t)) return VLBE_EARG;
+    if (t == st->t) {
+        if (q) vlbe_vec_copy(n, st->q, q);
+        if (v) vlbe_vec_copy(n, st->v, v);
+        return VLBE_OK;
+    }
+    if (st->order_last < 1 || t > st->t || t < st->t - st->h_last) return VLBE_EARG;
+    k = st->order_last;
+    tt = t - st->t;
+    p1 = vlbe__bdf_phi(st, 1);
+    if (q) vlbe_vec_copy(n, p1, q);
+    if (v) vlbe_vec_copy(n, p1 + n, v);
+    gam = tt / st->psi_[1];
+    for (j = 2; j <= k + 1; ++j) {
+        const vlbe_real *pj = vlbe__bdf_phi(st, j);
+        c *= gam;
+        gam = (tt + st->psi_[j - 1]) / st->psi_[j];
+        if (q) vlbe_vec_axpy(n, c, pj, q);
+        if (v) vlbe_vec_axpy(n, c, pj + n, v);
     }
     return VLBE_OK;
 }

@@ -1069,6 +1069,286 @@ static void test_andrews(void **state)
 #endif
 }
 
+
+/* -- a start off the constraint -----------------------------------------------
+   The pendulum released at rest from (L + d, 0), d = 100 tol off the circle
+   (1e-8 at rtol = atol = tol = 1e-10 in double; float: tol = 100 eps).
+   project = 0: the corrector closes the gap d within the first step, so the
+   error estimate holds the jump d whatever h (weighted RMS over q and v
+   about d / (2 (atol + rtol L)) / 2 = 12 against 1): every attempt fails,
+   h falls by 4 per failure, and the step ends below the minimum:
+   VLBE_ESTEP, t and the state as at init.  project = 1 (default): init
+   starts from the projection (L, 0) and the run keeps |C| within 10 tol
+   (test_pendulum_period's bound).  A gap of tol / 1000 is below the
+   threshold of vlbe_bdf_init (a correction of weighted norm 0.1): the run
+   is the one without projection, bit for bit. */
+static double start_tol(void) { return EPS < 1e-10 ? 1e-10 : 100.0 * EPS; }
+
+static void test_start_projection(void **state)
+{
+    faulty c;
+    vlbe_dae s = pend_sys(&c);
+    vlbe_bdf_params p;
+    vlbe_bdf st;
+    vlbe_real q0[2], v0[2] = {VLBE_R(0.0), VLBE_R(0.0)};
+    const double tol = start_tol(), span = 2.0;
+    double maxc = 0.0;
+    long n = 0;
+    vlbe_status rc;
+    (void)state;
+    vlbe_bdf_params_default(&p);
+    assert_int_equal(p.project, 1);
+    p.rtol = p.atol = (vlbe_real)tol;
+    q0[0] = (vlbe_real)(PEND_L + 100.0 * tol);
+    q0[1] = VLBE_R(0.0);
+    /* the defect without projection */
+    p.project = 0;
+    assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), q0, v0, g_work, WLEN, g_iwork, 64),
+                     VLBE_OK);
+    rc = vlbe_bdf_step(&st, (vlbe_real)span);
+    print_message("start 100 tol off, project 0: %s after %ld rejected attempts\n",
+                  vlbe_status_str(rc), st.stats.rejected);
+    assert_int_equal(rc, VLBE_ESTEP);
+    assert_true(st.stats.rejected >= 5 && st.t == VLBE_R(0.0) && st.stats.steps == 0);
+    assert_true(st.q[0] == q0[0] && st.q[1] == q0[1]);
+    /* with it */
+    p.project = 1;
+    assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), q0, v0, g_work, WLEN, g_iwork, 64),
+                     VLBE_OK);
+    assert_true(q0[0] == (vlbe_real)(PEND_L + 100.0 * tol)); /* the caller's start: not written */
+    /* the start is the projection: |C| at rounding */
+    assert_true(fabs(0.5 * ((double)st.q[0] * (double)st.q[0] - PEND_L * PEND_L)) <= 100.0 * EPS);
+    while (st.t < (vlbe_real)span) {
+        double x, y;
+        cap_check(++n, step_cap(span, pend_floor(tol)), &st);
+        assert_int_equal(vlbe_bdf_step(&st, (vlbe_real)span), VLBE_OK);
+        x = (double)st.q[0];
+        y = (double)st.q[1];
+        maxc = fmax(maxc, fabs(0.5 * (x * x + y * y - PEND_L * PEND_L)));
+    }
+    print_message("start 100 tol off, project 1: %ld steps, %ld rejected, max |C| %.2e\n",
+                  st.stats.steps, st.stats.rejected, maxc);
+    tu_report("start off the constraint, projected: max |C|", maxc, 10.0 * tol);
+    assert_true(maxc <= 10.0 * tol);
+    /* a gap the first step absorbs: project 0 and 1 run alike, bit for bit */
+    {
+        static vlbe_real w2[WLEN];
+        static int iw2[64];
+        vlbe_bdf st2;
+        int k;
+        q0[0] = (vlbe_real)(PEND_L + 1e-3 * tol);
+        if (q0[0] == (vlbe_real)PEND_L) q0[0] = (vlbe_real)PEND_L + (vlbe_real)PEND_L * VLBE_EPS;
+        assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), q0, v0, g_work, WLEN, g_iwork, 64),
+                         VLBE_OK);
+        p.project = 0;
+        assert_int_equal(vlbe_bdf_init(&st2, &s, &p, VLBE_R(0.0), q0, v0, w2, WLEN, iw2, 64),
+                         VLBE_OK);
+        for (k = 0; k < 50; ++k) {
+            assert_int_equal(vlbe_bdf_step(&st, (vlbe_real)span), VLBE_OK);
+            assert_int_equal(vlbe_bdf_step(&st2, (vlbe_real)span), VLBE_OK);
+            assert_true(st.t == st2.t);
+            assert_memory_equal(st.q, st2.q, 6 * sizeof(vlbe_real)); /* q v lambda mu */
+        }
+        /* the projection's calls are counted */
+        assert_true(st.stats.constr_calls > st2.stats.constr_calls);
+    }
+    p.project = 2;
+    assert_int_equal(pend_init(&st, &s, &p), VLBE_EARG);
+}
+
+/* -- per-coordinate absolute tolerances --------------------------------------
+   Two decoupled undamped oscillators, q1'' = -q1 and q2'' = -(1.5)^2 q2,
+   released at rest from q1 = 1 (a position in m) and q2 = 1e-5 (a modal
+   amplitude): q1 = cos t, q2 = 1e-5 cos(1.5 t), run to t = 20 s.  rtol =
+   1e-6 (float 1e-4), scalar atol = rtol / 100: the weight of q2, atol +
+   rtol |q2| ~ atol, is 1e3 times its size times rtol, so the error test
+   controls q2 only absolutely, at ~atol, which is 1e-3 of its amplitude.
+   With atolv = (atol, 1e-5 atol, atol, 1.5e-5 atol) (q2 and its velocity
+   scaled by their amplitudes) q2 is controlled at rtol relative as q1 is.
+   Yardstick: e1, q1's largest error over the run with scalar atol (what
+   rtol-relative control gives on this problem).  atolv: q2's largest
+   error relative to 1e-5 within 2 e1 (0.88 (m:atolv_ratio) e1 in double);
+   scalar: more than 5 e1 (11.5 (m:scalar_ratio) e1); the steps: at most
+   twice the scalar
+   run's (q2 turns 1.5 times faster: equal relative accuracy per radian
+   takes 1.5 times the steps). */
+static double g_w2;
+static int osc2_mass(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
+{
+    (void)u, (void)t, (void)q, (void)v;
+    M[0] = M[3] = VLBE_R(1.0);
+    M[1] = M[2] = VLBE_R(0.0);
+    return 0;
+}
+static int osc2_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+{
+    (void)u, (void)t, (void)v;
+    Q[0] = -q[0];
+    Q[1] = -(vlbe_real)(g_w2 * g_w2) * q[1];
+    return 0;
+}
+typedef struct osc2_out {
+    double e1, e2; /* max |q1 - cos t|, max |q2 - 1e-5 cos(w2 t)| / 1e-5 */
+    long steps;
+} osc2_out;
+static void osc2_run(const vlbe_bdf_params *p, osc2_out *o)
+{
+    vlbe_dae s;
+    vlbe_bdf st;
+    const vlbe_real q0[2] = {VLBE_R(1.0), VLBE_R(1e-5)}, v0[2] = {VLBE_R(0.0), VLBE_R(0.0)};
+    const double T = 20.0;
+    long n = 0;
+    memset(&s, 0, sizeof s);
+    s.n = 2;
+    s.flags = VLBE_DAE_MASS_CONST;
+    s.mass = osc2_mass;
+    s.force = osc2_force;
+    assert_int_equal(vlbe_bdf_init(&st, &s, p, VLBE_R(0.0), q0, v0, g_work, WLEN, g_iwork, 64),
+                     VLBE_OK);
+    o->e1 = o->e2 = 0.0;
+    while (st.t < (vlbe_real)T) {
+        double t;
+        /* cap: BDF1 at rtol 1e-6 would keep h ~ sqrt(2 rtol) = 1.4e-3 s */
+        cap_check(++n, step_cap(T, 1e-3), &st);
+        assert_int_equal(vlbe_bdf_step(&st, (vlbe_real)T), VLBE_OK);
+        t = (double)st.t;
+        o->e1 = fmax(o->e1, fabs((double)st.q[0] - cos(t)));
+        o->e2 = fmax(o->e2, fabs((double)st.q[1] - 1e-5 * cos(g_w2 * t)) / 1e-5);
+    }
+    o->steps = st.stats.steps;
+}
+static void test_atolv(void **state)
+{
+    vlbe_bdf_params p;
+    osc2_out sc, pv;
+    vlbe_real av[4];
+    const double rtol = EPS < 1e-10 ? 1e-6 : 1e-4;
+    (void)state;
+    g_w2 = 1.5;
+    vlbe_bdf_params_default(&p);
+    assert_true(p.atolv == NULL);
+    p.rtol = (vlbe_real)rtol;
+    p.atol = (vlbe_real)(rtol / 100.0);
+    osc2_run(&p, &sc);
+    av[0] = av[2] = p.atol;
+    av[1] = (vlbe_real)(1e-5 * (double)p.atol);
+    av[3] = (vlbe_real)(1.5e-5 * (double)p.atol);
+    p.atolv = av;
+    osc2_run(&p, &pv);
+    print_message("atol scalar: q1 err %.2e, q2 rel.err %.2e, %ld steps; atolv: q1 %.2e, q2 "
+                  "%.2e, %ld steps\n",
+                  sc.e1, sc.e2, sc.steps, pv.e1, pv.e2, pv.steps);
+    tu_report("atolv: q2 relative error / scalar run's q1 error", pv.e2 / sc.e1, 2.0);
+    tu_measured("atolv_ratio", pv.e2 / sc.e1);
+    tu_measured("scalar_ratio", sc.e2 / sc.e1);
+    assert_true(pv.e2 <= 2.0 * sc.e1);
+    assert_true(sc.e2 > 5.0 * sc.e1);
+    assert_true(pv.steps <= 2 * sc.steps);
+    /* invalid entries */
+    {
+        vlbe_bdf st;
+        vlbe_dae s;
+        const vlbe_real q0[2] = {VLBE_R(1.0), VLBE_R(0.0)}, v0[2] = {VLBE_R(0.0), VLBE_R(0.0)};
+        memset(&s, 0, sizeof s);
+        s.n = 2;
+        s.mass = osc2_mass;
+        s.force = osc2_force;
+        av[1] = VLBE_R(-1e-9);
+        assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), q0, v0, g_work, WLEN, g_iwork, 64),
+                         VLBE_EARG);
+        av[1] = (vlbe_real)NAN;
+        assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), q0, v0, g_work, WLEN, g_iwork, 64),
+                         VLBE_EARG);
+        av[1] = VLBE_R(0.0); /* with rtol 0 a zero weight */
+        p.rtol = VLBE_R(0.0);
+        assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), q0, v0, g_work, WLEN, g_iwork, 64),
+                         VLBE_EARG);
+    }
+}
+
+/* -- dense output -------------------------------------------------------------
+   The oscillator q'' = -q (OSC_W = 1) from q = 1 at rest, variable step and
+   order, rtol = atol = tol (1e-8; float 100 eps), to t = 10 s.  After each
+   step, vlbe_bdf_interp at 7 points inside it (t_n - j h/8) against q =
+   cos t, v = -sin t.  The interpolant's error is that of the solution
+   points plus the interpolation error of the last k + 1 points, which is
+   of the size of the local error the error test bounds (the predictor's
+   extrapolation error of the same polynomial family, e = y - y_pred, is
+   held to ck |e| <= 1 in the weighted norm, and the interpolation error
+   inside the step is smaller than the extrapolation error beyond it):
+   asserted
+       |y(t) - exact| <= max(err at t_{n-1}, err at t_n) + (atol + rtol |y|),
+   the excess over the solution points' error within one weight (the
+   largest ratio is reported: 0.006 (m~:interp_excess) in double, 0.06
+   (m@flt~:interp_excess) in float, the first
+   steps of order 1 and 2 the largest).  At t_n the state itself, bit for
+   bit. */
+static void test_interp(void **state)
+{
+    vlbe_dae s;
+    vlbe_bdf_params p;
+    vlbe_bdf st;
+    vlbe_real q0 = VLBE_R(1.0), v0 = VLBE_R(0.0), qi, vi, qo, vo;
+    const double tol = EPS < 1e-10 ? 1e-8 : 100.0 * EPS, T = 10.0;
+    double eprev = 0.0, worst = 0.0;
+    long n = 0;
+    int j;
+    (void)state;
+    memset(&s, 0, sizeof s);
+    s.n = 1;
+    s.flags = VLBE_DAE_MASS_CONST;
+    s.mass = osc_mass;
+    s.force = osc_force;
+    s.force_jac = osc_fjac;
+    vlbe_bdf_params_default(&p);
+    p.rtol = p.atol = (vlbe_real)tol;
+    assert_int_equal(vlbe_bdf_init(&st, &s, &p, VLBE_R(0.0), &q0, &v0, g_work, WLEN, g_iwork, 64),
+                     VLBE_OK);
+    /* before the first step: only t0 itself */
+    assert_int_equal(vlbe_bdf_interp(&st, VLBE_R(0.0), &qi, &vi), VLBE_OK);
+    assert_true(qi == q0 && vi == v0);
+    assert_int_equal(vlbe_bdf_interp(&st, VLBE_R(-1e-3), &qi, &vi), VLBE_EARG);
+    while (st.t < (vlbe_real)T) {
+        double en, bound;
+        cap_check(++n, step_cap(T, pend_floor(tol)), &st);
+        assert_int_equal(vlbe_bdf_step(&st, (vlbe_real)T), VLBE_OK);
+        en = fmax(fabs((double)st.q[0] - cos((double)st.t)),
+                  fabs((double)st.v[0] + sin((double)st.t)));
+        bound = fmax(eprev, en);
+        for (j = 1; j < 8; ++j) {
+            const vlbe_real t = st.t - st.h_last * (vlbe_real)j / VLBE_R(8.0);
+            double eq, ev, w;
+            assert_int_equal(vlbe_bdf_interp(&st, t, &qi, &vi), VLBE_OK);
+            eq = fabs((double)qi - cos((double)t));
+            ev = fabs((double)vi + sin((double)t));
+            w = tol * (1.0 + fmax(fabs((double)qi), fabs((double)vi)));
+            worst = fmax(worst, (fmax(eq, ev) - bound) / w);
+            if (!(fmax(eq, ev) <= bound + w))
+                fail_msg("step %ld (order %d, h %.3g) at t = %.9g: interpolant error %.3g, "
+                         "bound %.3g",
+                         n, st.order_last, (double)st.h_last, (double)t, fmax(eq, ev),
+                         bound + w);
+            /* either output alone: the same value */
+            assert_int_equal(vlbe_bdf_interp(&st, t, NULL, &vo), VLBE_OK);
+            assert_int_equal(vlbe_bdf_interp(&st, t, &qo, NULL), VLBE_OK);
+            assert_true(qo == qi && vo == vi);
+        }
+        eprev = en;
+        /* the step's end: the state; the range's ends and outside */
+        assert_int_equal(vlbe_bdf_interp(&st, st.t, &qi, &vi), VLBE_OK);
+        assert_true(qi == st.q[0] && vi == st.v[0]);
+        assert_int_equal(vlbe_bdf_interp(&st, st.t - st.h_last, &qi, &vi), VLBE_OK);
+        assert_int_equal(vlbe_bdf_interp(&st, st.t + st.h_last / 64, &qi, &vi), VLBE_EARG);
+        assert_int_equal(vlbe_bdf_interp(&st, st.t - st.h_last * VLBE_R(1.5), &qi, &vi),
+                         VLBE_EARG);
+    }
+    assert_int_equal(vlbe_bdf_interp(&st, (vlbe_real)NAN, &qi, &vi), VLBE_EARG);
+    print_message("dense output: %ld steps, interpolant error beyond the solution points' at "
+                  "most %.2f (atol + rtol |y|)\n",
+                  n, worst);
+    tu_measured("interp_excess", worst);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1086,6 +1366,9 @@ int main(void)
         cmocka_unit_test(test_stale_rate),
         cmocka_unit_test(test_spinning_spring),
         cmocka_unit_test(test_andrews),
+        cmocka_unit_test(test_start_projection),
+        cmocka_unit_test(test_atolv),
+        cmocka_unit_test(test_interp),
     };
     return cmocka_run_group_tests_name("bdf", tests, NULL, NULL);
 }

@@ -36,7 +36,13 @@
                                pendulum, rheonomic bead
      andrews_consistent_start  vlbe_dae_consistent_acc vs the Test Set values
      andrews_jacobians         analytic Jacobians of the example vs differences
-     andrews_reference         HHT and gen-alpha reach the Test Set at 1e-6 */
+     andrews_reference         HHT and gen-alpha reach the Test Set at 1e-6
+     hht_advance               vlbe_hht_advance lands on 0.1 k and k / 3 exactly,
+                               ceil((t_out - t) / h_max) steps a call; equals
+                               plain stepping where h_max divides the interval
+     hht_advance_fail          a failing step: the state of the last accepted
+                               step, that of plain stepping there
+   (the projected start of vlbe_hht_init: test_dae_project.c) */
 #include "test_util.h"
 #include "../integrators.h"
 
@@ -1447,6 +1453,117 @@ static void test_andrews_reference(void **state)
 #endif
 }
 
+
+/* ------------------------------------------------------------------------ */
+/* vlbe_hht_advance: equal steps of at most h_max that end on t_out.
+   Output times that are no binary fractions (0.1 k, k / 3), many calls:
+   st.t == t_out bit for bit after each, the steps of each call as many as
+   ceil((t_out - t) / h_max) (computed here in double, away from an integer),
+   none halved or rejected.  Where h_max divides the interval exactly
+   (binary fractions: h_max = 1/16 from t = 0 to 1, then to 2) the run is
+   the one of plain vlbe_hht_step(h_max) calls, bit for bit, the second
+   call included (the run of steps goes on).  Arguments. */
+static void test_hht_advance(void **state)
+{
+    pend_par p = pend_default();
+    vlbe_dae sys;
+    vlbe_hht_params par;
+    vlbe_real q0[2], v0[2];
+    run *a = (run *)malloc(sizeof *a), *b = (run *)malloc(sizeof *b);
+    int i, k;
+    (void)state;
+    assert_non_null(a);
+    assert_non_null(b);
+    pend_setup(&sys, &p);
+    pend_initial(&p, q0, v0);
+    vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
+    /* 0.1 k with h_max 0.013, then k / 3 with h_max 0.01 */
+    assert_int_equal(run_init(a, &sys, &par, q0, v0), VLBE_OK);
+    for (k = 0; k < 2; ++k) {
+        const vlbe_real hmax = k == 0 ? VLBE_R(0.013) : VLBE_R(0.01);
+        for (i = 1; i <= 30; ++i) {
+            const vlbe_real tout = k == 0 ? (vlbe_real)i / VLBE_R(10.0)
+                                          : VLBE_R(3.0) + (vlbe_real)i / VLBE_R(3.0);
+            const double r = ((double)tout - (double)a->st.t) / (double)hmax;
+            const long steps0 = a->st.stats.steps, kexp = (long)ceil(r);
+            /* ceil is well defined here: r is no integer to 1e-6 */
+            assert_true(fabs(r - floor(r + 0.5)) > 1e-6);
+            assert_int_equal(vlbe_hht_advance(&a->st, tout, hmax), VLBE_OK);
+            assert_true(a->st.t == tout);
+            assert_true(a->st.stats.steps - steps0 == kexp);
+        }
+        assert_true(a->st.stats.rejected == 0);
+    }
+    /* t_out == t: nothing; behind, NaN, bad h_max: EARG */
+    {
+        const long steps0 = a->st.stats.steps;
+        const vlbe_real t = a->st.t;
+        assert_int_equal(vlbe_hht_advance(&a->st, t, VLBE_R(0.01)), VLBE_OK);
+        assert_int_equal(vlbe_hht_advance(&a->st, t - VLBE_R(0.5), VLBE_R(0.01)), VLBE_EARG);
+        assert_int_equal(vlbe_hht_advance(&a->st, (vlbe_real)NAN, VLBE_R(0.01)), VLBE_EARG);
+        assert_int_equal(vlbe_hht_advance(&a->st, t + VLBE_R(1.0), VLBE_R(0.0)), VLBE_EARG);
+        assert_int_equal(vlbe_hht_advance(&a->st, t + VLBE_R(1.0), (vlbe_real)INFINITY),
+                         VLBE_EARG);
+        assert_int_equal(vlbe_hht_advance(&a->st, t + VLBE_R(1.0), VLBE_EPS), VLBE_EARG);
+        assert_true(a->st.t == t && a->st.stats.steps == steps0);
+    }
+    /* h_max divides the interval: plain stepping, bit for bit */
+    assert_int_equal(run_init(a, &sys, &par, q0, v0), VLBE_OK);
+    assert_int_equal(run_init(b, &sys, &par, q0, v0), VLBE_OK);
+    for (k = 1; k <= 2; ++k) {
+        snap s;
+        assert_int_equal(vlbe_hht_advance(&a->st, (vlbe_real)k, VLBE_R(0.0625)), VLBE_OK);
+        for (i = 0; i < 16; ++i) assert_int_equal(vlbe_hht_step(&b->st, VLBE_R(0.0625)), VLBE_OK);
+        assert_true(b->st.t == (vlbe_real)k);
+        snap_take(&b->st, &s);
+        snap_assert_same(&a->st, &s);
+        assert_true(a->st.stats.lu_factors == b->st.stats.lu_factors &&
+                    a->st.stats.newton_iters == b->st.stats.newton_iters);
+    }
+    free(a);
+    free(b);
+}
+
+/* A step of vlbe_hht_advance fails (the force reports an error from its
+   41st call on, no halvings): the status comes back, the state is the
+   last accepted step, a point t0 + j h of the call's grid, and it is the
+   state plain stepping with that h reaches there, bit for bit. */
+static void test_hht_advance_fail(void **state)
+{
+    faulty f;
+    vlbe_dae sys;
+    vlbe_hht_params par;
+    vlbe_real q0[2], v0[2];
+    run *a = (run *)malloc(sizeof *a), *b = (run *)malloc(sizeof *b);
+    snap s;
+    long j = 0;
+    (void)state;
+    assert_non_null(a);
+    assert_non_null(b);
+    faulty_setup(&sys, &f, 0);
+    pend_initial(&f.p, q0, v0);
+    vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
+    assert_int_equal(run_init(a, &sys, &par, q0, v0), VLBE_OK);
+    f.mode = 2;
+    f.after = 40;
+    f.calls = 0;
+    assert_int_equal(vlbe_hht_advance(&a->st, VLBE_R(1.0), VLBE_R(0.01)), VLBE_ECALLBACK);
+    assert_true(a->st.t > VLBE_R(0.0) && a->st.t < VLBE_R(1.0));
+    f.mode = 0;
+    assert_int_equal(run_init(b, &sys, &par, q0, v0), VLBE_OK);
+    while (b->st.t < a->st.t) {
+        assert_true(++j < 100);
+        assert_int_equal(vlbe_hht_step(&b->st, VLBE_R(1.0) / VLBE_R(100.0)), VLBE_OK);
+    }
+    snap_take(&b->st, &s);
+    snap_assert_same(&a->st, &s);
+    /* repaired: the rest of the way, ending on t_out */
+    assert_int_equal(vlbe_hht_advance(&a->st, VLBE_R(1.0), VLBE_R(0.01)), VLBE_OK);
+    assert_true(a->st.t == VLBE_R(1.0));
+    free(a);
+    free(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1469,6 +1586,8 @@ int main(void)
         cmocka_unit_test(test_andrews_consistent_start),
         cmocka_unit_test(test_andrews_jacobians),
         cmocka_unit_test(test_andrews_reference),
+        cmocka_unit_test(test_hht_advance),
+        cmocka_unit_test(test_hht_advance_fail),
     };
     return cmocka_run_group_tests_name("integrators", tests, NULL, NULL);
 }
