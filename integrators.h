@@ -45,6 +45,18 @@ USAGE
          if (vlbe_dae_static(&sys, &sp, t, q, lambda, NULL, work, lw, iwork, liw)) break;
      }
 
+     Modal analysis about a state (an equilibrium, a steady flow, a steady
+     rotation in its turning frame):
+     vlbe_dae_consistent_acc(&sys, t, q, v, a, lam, NULL, w, lw, iw, liw);   (or the static lambda)
+     int nr;                              (N, Mr, Dr, Kr: n*n reals each; N may be NULL)
+     vlbe_dae_linearize(&sys, t, q, v, a, lam, NULL, &nr, N, Mr, Dr, Kr, NULL, w,
+                        vlbe_dae_lin_work_len_sys(&sys), iw, vlbe_dae_lin_iwork_len_sys(&sys));
+     vlbe_eig_quad(nr, Mr, Dr, Kr, sigma, sre, sim, NULL, NULL, w2, lw2, iw2, liw2);  (vlbe.h)
+       (frequencies Im s of the eigenvalues nearest the real shift sigma
+       first; undamped and symmetric: vlbe_eig_gsym(nr, Kr, Mr, sigma, ...);
+       a turning frame: a vlbe_lin_frame instead of NULL, see
+       examples/campbell_rotating.c)
+
      Long chains: matrices in band form (vlbe_dae.storage).  The model orders
      q and lambda so that each constraint row sits next to the coordinates
      it touches, its callbacks write bands, and the integrators never form
