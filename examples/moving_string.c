@@ -375,62 +375,88 @@ static inline int ms_compare(int ne, int kind_a, int kind_b, double h, double t_
    linearisation (vlbe_dae_linearize: M, D with the transport's Coriolis
    term 2 rhoA v0 w_xt, K with the tension and the -rhoA v0^2 w_xx of eq.
    54, the supports' null space) and the gyroscopic eigenproblem
-   (vlbe_eig_quad, shift sigma = -2 pi 5 rad/s: the lowest |s| first).
-   f[0..nf-1] get the lowest frequencies Im s / 2 pi [Hz] (-1 if fewer),
-   *amax the largest |q''| of the steady state (0 to rounding: it is an
-   equilibrium of the flowing chain). */
-static inline vlbe_status ms_eig(int ne, int kind, double speed, int nf, double *f, double *amax,
-                                 double *cpu)
+   (vlbe_eig_quad, shift sigma = -2 pi 5 rad/s: the lowest |s| first). */
+typedef struct ms_lin {
+    int nr;                        /* reduced size                          */
+    double amax;                   /* largest |q''| of the steady state     */
+    vlbe_real *Mr, *Dr, *Kr;       /* nr x nr each (n x n allocated)        */
+    vlbe_real *sre, *sim, *w;      /* 2n, 2n, lw: eigenvalues and workspace */
+    int *iw;
+    size_t lw, liw;
+} ms_lin;
+
+static inline void ms_lin_free(ms_lin *L)
+{
+    free(L->Mr), free(L->Dr), free(L->Kr), free(L->sre), free(L->sim), free(L->w), free(L->iw);
+    memset(L, 0, sizeof *L);
+}
+
+/* The reduced M, D, K of the window of ne elements (kind) at `speed`, with
+   the workspace an eigen-solve of them needs; *L freed by ms_lin_free
+   (also after a failure). */
+static inline vlbe_status ms_linearize(int ne, int kind, double speed, ms_lin *L)
 {
     ms_model *m = (ms_model *)malloc(sizeof *m);
-    const clock_t c0 = clock();
-    vlbe_real *q = NULL, *v = NULL, *a = NULL, *lam = NULL, *Mr = NULL, *Dr = NULL, *Kr = NULL,
-              *sre = NULL, *sim = NULL, *w = NULL;
-    int *iw = NULL, n = 0, nr = 0, k, j;
-    size_t lw = 0, liw = 0, N2;
+    vlbe_real *q = (vlbe_real *)malloc(MS_NQ_NODE * (MS_NE_MAX + 1) * sizeof *q);
+    vlbe_real *v = (vlbe_real *)calloc(MS_NQ_NODE * (MS_NE_MAX + 1), sizeof *v);
+    vlbe_real *a = NULL, *lam = NULL;
     vlbe_status st = VLBE_EWORK;
-    for (k = 0; k < nf; ++k) f[k] = -1.0;
-    if (amax) *amax = 0;
-    if (!m) return VLBE_EWORK;
-    q = (vlbe_real *)malloc(MS_NQ_NODE * (MS_NE_MAX + 1) * sizeof *q);
-    v = (vlbe_real *)calloc(MS_NQ_NODE * (MS_NE_MAX + 1), sizeof *v);
-    if (!q || !v || ms_build_at(m, ne, kind, speed, q, NULL)) {
+    size_t N2;
+    int n;
+    memset(L, 0, sizeof *L);
+    if (!m || !q || !v) goto done;
+    if (ms_build_at(m, ne, kind, speed, q, NULL)) {
         st = VLBE_EARG;
         goto done;
     }
     n = m->sys.n;
     N2 = (size_t)n * (size_t)n;
-    lw = vlbe_dae_lin_work_len_sys(&m->sys);
-    if (vlbe_dae_work_len_sys(&m->sys) > lw) lw = vlbe_dae_work_len_sys(&m->sys);
-    if (vlbe_eig_quad_work_len(n) > lw) lw = vlbe_eig_quad_work_len(n);
-    liw = vlbe_dae_lin_iwork_len_sys(&m->sys);
-    if (vlbe_dae_iwork_len_sys(&m->sys) > liw) liw = vlbe_dae_iwork_len_sys(&m->sys);
-    if (vlbe_eig_quad_iwork_len(n) > liw) liw = vlbe_eig_quad_iwork_len(n);
+    L->lw = vlbe_dae_lin_work_len_sys(&m->sys);
+    if (vlbe_dae_work_len_sys(&m->sys) > L->lw) L->lw = vlbe_dae_work_len_sys(&m->sys);
+    if (vlbe_eig_quad_work_len(n) > L->lw) L->lw = vlbe_eig_quad_work_len(n);
+    L->liw = vlbe_dae_lin_iwork_len_sys(&m->sys);
+    if (vlbe_dae_iwork_len_sys(&m->sys) > L->liw) L->liw = vlbe_dae_iwork_len_sys(&m->sys);
+    if (vlbe_eig_quad_iwork_len(n) > L->liw) L->liw = vlbe_eig_quad_iwork_len(n);
     a = (vlbe_real *)malloc((size_t)n * sizeof *a);
     lam = (vlbe_real *)malloc(((size_t)m->sys.m + 1) * sizeof *lam);
-    Mr = (vlbe_real *)malloc(N2 * sizeof *Mr);
-    Dr = (vlbe_real *)malloc(N2 * sizeof *Dr);
-    Kr = (vlbe_real *)malloc(N2 * sizeof *Kr);
-    sre = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sre);
-    sim = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sim);
-    w = (vlbe_real *)malloc(lw * sizeof *w);
-    iw = (int *)malloc(liw * sizeof *iw + sizeof *iw);
-    if (!a || !lam || !Mr || !Dr || !Kr || !sre || !sim || !w || !iw) goto done;
-    st = vlbe_dae_consistent_acc(&m->sys, 0, q, v, a, lam, NULL, w, lw, iw, liw);
+    L->Mr = (vlbe_real *)malloc(N2 * sizeof *L->Mr);
+    L->Dr = (vlbe_real *)malloc(N2 * sizeof *L->Dr);
+    L->Kr = (vlbe_real *)malloc(N2 * sizeof *L->Kr);
+    L->sre = (vlbe_real *)malloc(2 * (size_t)n * sizeof *L->sre);
+    L->sim = (vlbe_real *)malloc(2 * (size_t)n * sizeof *L->sim);
+    L->w = (vlbe_real *)malloc(L->lw * sizeof *L->w);
+    L->iw = (int *)malloc(L->liw * sizeof *L->iw + sizeof *L->iw);
+    if (!a || !lam || !L->Mr || !L->Dr || !L->Kr || !L->sre || !L->sim || !L->w || !L->iw)
+        goto done;
+    st = vlbe_dae_consistent_acc(&m->sys, 0, q, v, a, lam, NULL, L->w, L->lw, L->iw, L->liw);
     if (st != VLBE_OK) goto done;
-    if (amax) *amax = (double)vlbe_vec_norm_inf(n, a);
-    st = vlbe_dae_linearize(&m->sys, 0, q, v, a, lam, NULL, &nr, NULL, Mr, Dr, Kr, NULL, w, lw,
-                            iw, liw);
-    if (st != VLBE_OK) goto done;
-    st = vlbe_eig_quad(nr, Mr, Dr, Kr, (vlbe_real)(-2.0 * 3.14159265358979323846 * 5.0), sre,
-                       sim, NULL, NULL, w, lw, iw, liw);
-    if (st != VLBE_OK) goto done;
-    for (k = j = 0; k < 2 * nr && j < nf; ++k)
-        if (sim[k] > 0) f[j++] = (double)sim[k] / (2.0 * 3.14159265358979323846);
+    L->amax = (double)vlbe_vec_norm_inf(n, a);
+    st = vlbe_dae_linearize(&m->sys, 0, q, v, a, lam, NULL, &L->nr, NULL, L->Mr, L->Dr, L->Kr,
+                            NULL, L->w, L->lw, L->iw, L->liw);
 done:
+    free(q), free(v), free(a), free(lam), free(m);
+    return st;
+}
+
+/* f[0..nf-1]: the lowest frequencies Im s / 2 pi [Hz] of the window (-1 if
+   fewer), *amax (may be NULL) the largest |q''| of the steady state (0 to
+   rounding: it is an equilibrium of the flowing chain). */
+static inline vlbe_status ms_eig(int ne, int kind, double speed, int nf, double *f, double *amax,
+                                 double *cpu)
+{
+    const clock_t c0 = clock();
+    ms_lin L;
+    vlbe_status st = ms_linearize(ne, kind, speed, &L);
+    int k, j;
+    for (k = 0; k < nf; ++k) f[k] = -1.0;
+    if (amax) *amax = L.amax;
+    if (st == VLBE_OK)
+        st = vlbe_eig_quad(L.nr, L.Mr, L.Dr, L.Kr, (vlbe_real)(-2.0 * 3.14159265358979323846 * 5.0),
+                           L.sre, L.sim, NULL, NULL, L.w, L.lw, L.iw, L.liw);
+    for (k = j = 0; st == VLBE_OK && k < 2 * L.nr && j < nf; ++k)
+        if (L.sim[k] > 0) f[j++] = (double)L.sim[k] / (2.0 * 3.14159265358979323846);
+    ms_lin_free(&L);
     if (cpu) *cpu = (double)(clock() - c0) / (double)CLOCKS_PER_SEC;
-    free(q), free(v), free(a), free(lam), free(Mr), free(Dr), free(Kr);
-    free(sre), free(sim), free(w), free(iw), free(m);
     return st;
 }
 
@@ -497,42 +523,13 @@ static inline vlbe_status ms_galerkin(int bend, double speed, int nm, int nf, do
    analysis fails. */
 static inline int ms_diverged(int ne, int kind, double speed)
 {
-    ms_model *m = (ms_model *)malloc(sizeof *m);
-    vlbe_real *q = (vlbe_real *)malloc(MS_NQ_NODE * (MS_NE_MAX + 1) * sizeof *q);
-    vlbe_real *v = (vlbe_real *)calloc(MS_NQ_NODE * (MS_NE_MAX + 1), sizeof *v);
-    vlbe_real *a = NULL, *lam = NULL, *Mr = NULL, *Dr = NULL, *Kr = NULL, *sre = NULL,
-              *sim = NULL, *w = NULL;
-    int *iw = NULL, n, nr = 0, k, rc = -1;
-    size_t lw, liw;
-    if (!m || !q || !v || ms_build_at(m, ne, kind, speed, q, NULL)) goto done;
-    n = m->sys.n;
-    lw = vlbe_dae_lin_work_len_sys(&m->sys);
-    if (vlbe_dae_work_len_sys(&m->sys) > lw) lw = vlbe_dae_work_len_sys(&m->sys);
-    if (vlbe_eig_quad_work_len(n) > lw) lw = vlbe_eig_quad_work_len(n);
-    liw = vlbe_dae_lin_iwork_len_sys(&m->sys);
-    if (vlbe_dae_iwork_len_sys(&m->sys) > liw) liw = vlbe_dae_iwork_len_sys(&m->sys);
-    if (vlbe_eig_quad_iwork_len(n) > liw) liw = vlbe_eig_quad_iwork_len(n);
-    a = (vlbe_real *)malloc((size_t)n * sizeof *a);
-    lam = (vlbe_real *)malloc(((size_t)m->sys.m + 1) * sizeof *lam);
-    Mr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Mr);
-    Dr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Dr);
-    Kr = (vlbe_real *)malloc((size_t)n * (size_t)n * sizeof *Kr);
-    sre = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sre);
-    sim = (vlbe_real *)malloc(2 * (size_t)n * sizeof *sim);
-    w = (vlbe_real *)malloc(lw * sizeof *w);
-    iw = (int *)malloc(liw * sizeof *iw + sizeof *iw);
-    if (!a || !lam || !Mr || !Dr || !Kr || !sre || !sim || !w || !iw ||
-        vlbe_dae_consistent_acc(&m->sys, 0, q, v, a, lam, NULL, w, lw, iw, liw) ||
-        vlbe_dae_linearize(&m->sys, 0, q, v, a, lam, NULL, &nr, NULL, Mr, Dr, Kr, NULL, w, lw,
-                           iw, liw) ||
-        vlbe_eig_real(nr, Kr, sre, sim, w, lw))
-        goto done;
-    rc = 0;
-    for (k = 0; k < nr; ++k)
-        if (sre[k] < 0) rc = 1;
-done:
-    free(q), free(v), free(a), free(lam), free(Mr), free(Dr), free(Kr);
-    free(sre), free(sim), free(w), free(iw), free(m);
+    ms_lin L;
+    int k, rc = -1;
+    if (ms_linearize(ne, kind, speed, &L) == VLBE_OK &&
+        vlbe_eig_real(L.nr, L.Kr, L.sre, L.sim, L.w, L.lw) == VLBE_OK)
+        for (k = 0, rc = 0; k < L.nr; ++k)
+            if (L.sre[k] < 0) rc = 1;
+    ms_lin_free(&L);
     return rc;
 }
 
