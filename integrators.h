@@ -107,8 +107,8 @@ CONVENTIONS
    No allocation: the caller
    gives a real and an int workspace whose sizes the *_work_len() and
    *_iwork_len() queries return.  Stack: about 1 kB per call (float on a
-   Cortex-M4F, gcc -O2, make check-m4: vlbe_hht_step 1040 B,
-   vlbe_hht_advance 1072 B, the rest at most 1 kB; the figure moves by a
+   Cortex-M4F, gcc -O2, make check-m4: vlbe_hht_step 1056 B,
+   vlbe_hht_advance 1088 B, the rest at most 1 kB; the figure moves by a
    few words with gcc's inlining in the
    unit), whatever max_halvings, plus what the callbacks use; all arrays
    live in the caller's workspace.
