@@ -25,6 +25,9 @@ USAGE
      or output times without that care: equal steps of at most h that end
      on each t_k exactly (st.t == t_k bit for bit, t_k = 0.1 k or k / 3):
      for (k = 1; k <= nout; ++k) if (vlbe_hht_advance(&st, t0 + k * dt, h)) break;
+       (HHT takes the steps it is given: fixed steps for real-time and
+       controller loops, halvings only on Newton failure; steps chosen by
+       an error estimate are the BDF's, below)
 
      BDF with error control (same problem, its own workspace sizes):
      vlbe_bdf_params bp;  vlbe_bdf_params_default(&bp);  bp.rtol = bp.atol = 1e-8;
