@@ -54,7 +54,7 @@ USAGE
      int nr;                              (N, Mr, Dr, Kr: n*n reals each; N may be NULL)
      vlbe_dae_linearize(&sys, t, q, v, a, lam, NULL, &nr, N, Mr, Dr, Kr, NULL, w,
                         vlbe_dae_lin_work_len_sys(&sys), iw, vlbe_dae_lin_iwork_len_sys(&sys));
-     vlbe_eig_quad(nr, Mr, Dr, Kr, sigma, sre, sim, NULL, NULL, w2, lw2, iw2, liw2);  (vlbe.h)
+     vlbe_eig_quad(nr, Mr, Dr, Kr, sigma, sre, sim, 0, NULL, NULL, w2, lw2, iw2, liw2);  (vlbe.h)
        (frequencies Im s of the eigenvalues nearest the real shift sigma
        first; undamped and symmetric: vlbe_eig_gsym(nr, Kr, Mr, sigma, ...);
        a turning frame: a vlbe_lin_frame instead of NULL, see

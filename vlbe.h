@@ -104,7 +104,7 @@ API (one line each)
    size_t vlbe_eig_real_work_len(n)                    4 n: work of eig_real
    vlbe_status vlbe_eig_real(n, A, wr, wi, work, lw)    eigenvalues of a general real A (QR)
    size_t vlbe_eig_quad_work_len(n), vlbe_eig_quad_iwork_len(n)  9 n^2 + 20 n, 4 n
-   vlbe_status vlbe_eig_quad(n, M, D, K, sigma, sre, sim, Xre, Xim, work, lw, iwork, liw)
+   vlbe_status vlbe_eig_quad(n, M, D, K, sigma, sre, sim, nvec, Xre, Xim, work, lw, iwork, liw)
                                                        (s^2 M + s D + K) x = 0, shift-invert
 
 REFERENCES
@@ -444,7 +444,7 @@ VLBE_API size_t vlbe_eig_quad_work_len(int n);
 VLBE_API size_t vlbe_eig_quad_iwork_len(int n);
 VLBE_API vlbe_status vlbe_eig_quad(int n, const vlbe_real *M, const vlbe_real *D,
                                    const vlbe_real *K, vlbe_real sigma, vlbe_real *sre,
-                                   vlbe_real *sim, vlbe_real *Xre, vlbe_real *Xim,
+                                   vlbe_real *sim, int nvec, vlbe_real *Xre, vlbe_real *Xim,
                                    vlbe_real *work, size_t work_len, int *iwork,
                                    size_t iwork_len);
 
@@ -1985,23 +1985,27 @@ VLBE_INLINE vlbe_status vlbe__eig_quad_vec(int n, const vlbe_real *M, const vlbe
    the shift first); ties: a conjugate pair adjacent, +imag first; then
    |Im s| descending, Re s ascending, then vlbe_eig_real's order of the
    pairs (a repeated pair comes out +, -, +, -) (deterministic).
-   Xre, Xim (n x 2n each, may be NULL; both are computed when either is
-   asked for, each written when non-NULL): column k, Xre[i*2n + k] + i
-   Xim[i*2n + k], the x of eigenvalue k, unit 2-norm, its component of
-   largest modulus real and positive (the vector of a conjugate s is the
-   conjugate vector), by inverse iteration (vlbe__eig_quad_vec): ||P(s) x||
-   is then a few EPS (|s|^2 ||M|| + |s| ||D|| + ||K||) for a well separated
-   eigenvalue.  Cost: an LU of 2n (n for real s) per pair, about 5 n^3
-   flops each: eigenvectors cost 10 n^4 against the eigenvalues' ~ 100 n^3.
+   nvec (0..2n): the eigenvectors of the first nvec eigenvalues of that
+   order, into Xre, Xim (n x nvec each, ld nvec, may be NULL; both are
+   computed when either is asked for, each written when non-NULL): column
+   k, Xre[i*nvec + k] + i Xim[i*nvec + k], the x of eigenvalue k, unit
+   2-norm, its component of largest modulus real and positive (the vector
+   of a conjugate s is the conjugate vector), by inverse iteration
+   (vlbe__eig_quad_vec): ||P(s) x|| is then a few EPS (|s|^2 ||M|| + |s|
+   ||D|| + ||K||) for a well separated eigenvalue.  Cost: an LU of 2n (n
+   for real s) per conjugate pair, about 5 n^3 flops each, so that the few
+   lowest modes' vectors cost about what the eigenvalues cost (~ 100 n^3)
+   and all 2n of them 10 n^4.
    work: vlbe_eig_quad_work_len(n) reals, iwork: vlbe_eig_quad_iwork_len(n)
-   ints.  Status (outputs untouched on failure): VLBE_EARG, VLBE_EWORK
+   ints.  Status (outputs untouched on failure): VLBE_EARG (also nvec
+   outside 0..2n), VLBE_EWORK
    (either buffer), VLBE_ENONFINITE (NaN or Inf in M, D, K or sigma; or a
    mu = 0, an infinite s: M singular), VLBE_ESINGULAR (P(sigma)),
    VLBE_ENOCONV (vlbe_eig_real, or inverse iteration whose P(s') stayed
    singular; not seen). */
 VLBE_API vlbe_status vlbe_eig_quad(int n, const vlbe_real *M, const vlbe_real *D,
                                    const vlbe_real *K, vlbe_real sigma, vlbe_real *sre,
-                                   vlbe_real *sim, vlbe_real *Xre, vlbe_real *Xim,
+                                   vlbe_real *sim, int nvec, vlbe_real *Xre, vlbe_real *Xim,
                                    vlbe_real *work, size_t work_len, int *iwork,
                                    size_t iwork_len)
 {
@@ -2011,7 +2015,8 @@ VLBE_API vlbe_status vlbe_eig_quad(int n, const vlbe_real *M, const vlbe_real *D
     vlbe_status st;
     VLBE_ASSERT(M != NULL && K != NULL && sre != NULL && sim != NULL);
     VLBE_ASSERT(work != NULL && iwork != NULL);
-    if (n > INT_MAX / 2 || !vlbe__eig_len(n, 9, 20, &len) || !vlbe__eig_len(n, 0, 4, &ilen))
+    if (n > INT_MAX / 2 || !vlbe__eig_len(n, 9, 20, &len) || !vlbe__eig_len(n, 0, 4, &ilen) ||
+        nvec < 0 || nvec > 2 * n)
         return VLBE_EARG;
     if (work_len < len || iwork_len < ilen) return VLBE_EWORK;
     if (!vlbe__mat_finite(n, M) || !vlbe__mat_finite(n, K) || (D && !vlbe__mat_finite(n, D)) ||
@@ -2077,7 +2082,7 @@ VLBE_API vlbe_status vlbe_eig_quad(int n, const vlbe_real *M, const vlbe_real *D
         perm[q] = p;
     }
     if (Xre || Xim)
-        for (q = 0; q < m2; ++q) {
+        for (q = 0; q < nvec; ++q) {
             const int p = perm[q];
             if (q > 0 && si[p] < VLBE_R(0.0) && si[p] == -si[perm[q - 1]] &&
                 sr[p] == sr[perm[q - 1]]) { /* the conjugate of the previous one */
@@ -2095,10 +2100,11 @@ VLBE_API vlbe_status vlbe_eig_quad(int n, const vlbe_real *M, const vlbe_real *D
         sre[q] = sr[perm[q]];
         sim[q] = si[perm[q]];
     }
-    for (i = 0; i < N * N2; ++i) {
-        if (Xre) Xre[i] = XR[i];
-        if (Xim) Xim[i] = XI[i];
-    }
+    for (i = 0; i < N; ++i)
+        for (j = 0; j < (size_t)nvec; ++j) {
+            if (Xre) Xre[i * (size_t)nvec + j] = XR[i * N2 + j];
+            if (Xim) Xim[i * (size_t)nvec + j] = XI[i * N2 + j];
+        }
     return VLBE_OK;
 }
 

@@ -117,8 +117,8 @@ static void call(int r, int n)
         break;
     case R_QUAD:
     case R_QUADX:
-        st = vlbe_eig_quad(n, M, D, K, VLBE_R(0.0), sre, sim, r == R_QUADX ? Xre : NULL,
-                           r == R_QUADX ? Xim : NULL, work, vlbe_eig_quad_work_len(n), iwork,
+        st = vlbe_eig_quad(n, M, D, K, VLBE_R(0.0), sre, sim, r == R_QUADX ? 2 * n : 0, Xre,
+                           Xim, work, vlbe_eig_quad_work_len(n), iwork,
                            vlbe_eig_quad_iwork_len(n));
         sink += (double)sre[0];
         break;

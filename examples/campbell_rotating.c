@@ -192,7 +192,7 @@ static vlbe_status cr_freqs(cr_model *c, vlbe_real Om, const vlbe_real *q, const
     vlbe_lin_frame fr;
     vlbe_real *v = NULL, *a = NULL, *N = NULL, *Mr = NULL, *Dr = NULL, *Kr = NULL, *sre = NULL,
               *sim = NULL, *Xre = NULL, *Xim = NULL, *w = NULL;
-    int *iw = NULL, nr = 0, i, k, nl = 0, nf = 0, prevflap = 0;
+    int *iw = NULL, nr = 0, i, k, nl = 0, nf = 0, prevflap = 0, nv = 0;
     vlbe_real wprev = -1;
     size_t lw, liw;
     vlbe_status st = VLBE_EWORK;
@@ -230,13 +230,15 @@ static vlbe_status cr_freqs(cr_model *c, vlbe_real Om, const vlbe_real *q, const
     st = vlbe_dae_linearize(&c->sys, 0, q, v, a, lam, &fr, &nr, N, Mr, Dr, Kr, NULL, w, lw, iw,
                             liw);
     if (st != VLBE_OK) goto done;
-    st = vlbe_eig_quad(nr, Mr, Dr, Kr, (vlbe_real)(-0.5 * 3.516 * cr_unit()), sre, sim,
-                       c->d == 3 ? Xre : NULL, c->d == 3 ? Xim : NULL, w,
-                       vlbe_eig_quad_work_len(nr), iw, vlbe_eig_quad_iwork_len(nr));
+    /* 3D: the vectors of the lowest 2 CR_NW conjugate pairs, enough for
+       CR_NW flap and CR_NW lag modes (the axial modes lie far above) */
+    nv = c->d == 3 ? (4 * CR_NW < 2 * nr ? 4 * CR_NW : 2 * nr) : 0;
+    st = vlbe_eig_quad(nr, Mr, Dr, Kr, (vlbe_real)(-0.5 * 3.516 * cr_unit()), sre, sim, nv, Xre,
+                       Xim, w, vlbe_eig_quad_work_len(nr), iw, vlbe_eig_quad_iwork_len(nr));
     if (st != VLBE_OK) goto done;
     if (remax)
         for (k = 0, *remax = -HUGE_VAL; k < 2 * nr; ++k) *remax = fmax(*remax, (double)sre[k]);
-    for (k = 0; k < 2 * nr && (nl < CR_NW || (c->d == 3 && nf < CR_NW)); ++k) {
+    for (k = 0; k < (c->d == 3 ? nv : 2 * nr) && (nl < CR_NW || (c->d == 3 && nf < CR_NW)); ++k) {
         int isflap = 0;
         if (sim[k] <= 0) continue;
         if (c->d == 3) { /* mode in q: N x; share of the z components */
@@ -246,9 +248,9 @@ static vlbe_status cr_freqs(cr_model *c, vlbe_real Om, const vlbe_real *q, const
                 int j;
                 for (j = 0; j < nr; ++j) {
                     xr += (double)N[(size_t)i * (size_t)nr + (size_t)j] *
-                          (double)Xre[(size_t)j * 2 * (size_t)nr + (size_t)k];
+                          (double)Xre[(size_t)j * (size_t)nv + (size_t)k];
                     xi += (double)N[(size_t)i * (size_t)nr + (size_t)j] *
-                          (double)Xim[(size_t)j * 2 * (size_t)nr + (size_t)k];
+                          (double)Xim[(size_t)j * (size_t)nv + (size_t)k];
                 }
                 e = xr * xr + xi * xi;
                 et += e;

@@ -452,7 +452,7 @@ static inline vlbe_status ms_eig(int ne, int kind, double speed, int nf, double 
     if (amax) *amax = L.amax;
     if (st == VLBE_OK)
         st = vlbe_eig_quad(L.nr, L.Mr, L.Dr, L.Kr, (vlbe_real)(-2.0 * 3.14159265358979323846 * 5.0),
-                           L.sre, L.sim, NULL, NULL, L.w, L.lw, L.iw, L.liw);
+                           L.sre, L.sim, 0, NULL, NULL, L.w, L.lw, L.iw, L.liw);
     for (k = j = 0; st == VLBE_OK && k < 2 * L.nr && j < nf; ++k)
         if (L.sim[k] > 0) f[j++] = (double)L.sim[k] / (2.0 * 3.14159265358979323846);
     ms_lin_free(&L);
@@ -504,7 +504,7 @@ static inline vlbe_status ms_galerkin(int bend, double speed, int nm, int nf, do
         }
     w = (vlbe_real *)malloc(vlbe_eig_quad_work_len(nm) * sizeof *w);
     iw = (int *)malloc(vlbe_eig_quad_iwork_len(nm) * sizeof *iw + sizeof *iw);
-    st = w && iw ? vlbe_eig_quad(nm, M, G, K, (vlbe_real)(-2.0 * PI * 5.0), sre, sim, NULL, NULL, w,
+    st = w && iw ? vlbe_eig_quad(nm, M, G, K, (vlbe_real)(-2.0 * PI * 5.0), sre, sim, 0, NULL, NULL, w,
                                  vlbe_eig_quad_work_len(nm), iw, vlbe_eig_quad_iwork_len(nm))
                  : VLBE_EWORK;
     for (k = j = 0; st == VLBE_OK && k < 2 * nm && j < nf; ++k)

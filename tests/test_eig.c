@@ -728,7 +728,7 @@ static int qiwork[4 * NMAX];
 static vlbe_status quad(int n, const vlbe_real *M, const vlbe_real *D, const vlbe_real *K,
                         vlbe_real sigma, quad_out *o)
 {
-    return vlbe_eig_quad(n, M, D, K, sigma, o->sr, o->si, o->Xr, o->Xi, qwork,
+    return vlbe_eig_quad(n, M, D, K, sigma, o->sr, o->si, 2 * n, o->Xr, o->Xi, qwork,
                          vlbe_eig_quad_work_len(n), qiwork, vlbe_eig_quad_iwork_len(n));
 }
 
@@ -1168,27 +1168,37 @@ static void test_fail_quad(void **state)
     /* P(sigma) singular: D = 0, K = [[1, -1], [-1, 1]], sigma = 0 */
     {
         vlbe_real Ks[4] = {1, -1, -1, 1};
-        assert_int_equal(vlbe_eig_quad(2, M, NULL, Ks, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi, w, 200,
+        assert_int_equal(vlbe_eig_quad(2, M, NULL, Ks, VLBE_R(0.0), o.sr, o.si, 4, o.Xr, o.Xi, w,
+                                       200,
                                        iw, 8),
                          VLBE_ESINGULAR);
     }
     D[3] = (vlbe_real)NAN;
-    assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi, w, 200, iw, 8),
+    assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, 4, o.Xr, o.Xi, w, 200, iw,
+                                   8),
                      VLBE_ENONFINITE);
     D[3] = VLBE_R(0.1);
-    assert_int_equal(vlbe_eig_quad(2, M, D, K, (vlbe_real)INFINITY, o.sr, o.si, o.Xr, o.Xi, w,
+    assert_int_equal(vlbe_eig_quad(2, M, D, K, (vlbe_real)INFINITY, o.sr, o.si, 4, o.Xr, o.Xi, w,
                                    200, iw, 8),
                      VLBE_ENONFINITE);
-    assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi, w,
+    assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, 4, o.Xr, o.Xi, w,
                                    vlbe_eig_quad_work_len(2) - 1, iw, 8),
                      VLBE_EWORK);
-    assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi, w, 200, iw,
+    assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, 4, o.Xr, o.Xi, w, 200, iw,
                                    vlbe_eig_quad_iwork_len(2) - 1),
                      VLBE_EWORK);
-    assert_int_equal(vlbe_eig_quad(0, M, D, K, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi, w, 200, iw, 8),
+    assert_int_equal(vlbe_eig_quad(0, M, D, K, VLBE_R(0.0), o.sr, o.si, 4, o.Xr, o.Xi, w, 200, iw,
+                                   8),
+                     VLBE_EARG);
+    /* nvec outside 0..2n */
+    assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, 5, o.Xr, o.Xi, w, 200,
+                                   iw, 8),
+                     VLBE_EARG);
+    assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, -1, o.Xr, o.Xi, w, 200,
+                                   iw, 8),
                      VLBE_EARG);
     /* 2n must fit int: refused before any buffer is touched */
-    assert_int_equal(vlbe_eig_quad(INT_MAX / 2 + 1, M, D, K, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi,
+    assert_int_equal(vlbe_eig_quad(INT_MAX / 2 + 1, M, D, K, VLBE_R(0.0), o.sr, o.si, 4, o.Xr, o.Xi,
                                    w, 200, iw, 8),
                      VLBE_EARG);
     untouched(4, o.sr);
@@ -1198,7 +1208,7 @@ static void test_fail_quad(void **state)
     /* M singular: an infinite eigenvalue, mu = 0 */
     {
         vlbe_real Ms[4] = {1, 0, 0, 0};
-        const vlbe_status st = vlbe_eig_quad(2, Ms, NULL, K, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi,
+        const vlbe_status st = vlbe_eig_quad(2, Ms, NULL, K, VLBE_R(0.0), o.sr, o.si, 4, o.Xr, o.Xi,
                                              w, 200, iw, 8);
         assert_int_equal(st, VLBE_ENONFINITE);
         untouched(4, o.sr);
@@ -1207,12 +1217,27 @@ static void test_fail_quad(void **state)
     {
         vlbe_real sr[4], si[4];
         int i;
-        assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, o.Xr, o.Xi, w, 200, iw,
+        assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), o.sr, o.si, 4, o.Xr, o.Xi, w, 200,
+                                       iw,
                                        8),
                          VLBE_OK);
-        assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), sr, si, NULL, NULL, w, 200, iw, 8),
+        assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), sr, si, 0, NULL, NULL, w, 200, iw,
+                                       8),
                          VLBE_OK);
         for (i = 0; i < 4; ++i) assert_true(sr[i] == o.sr[i] && si[i] == o.si[i]);
+        /* the vectors of the first nvec = 2 only (n x 2, ld 2): the
+           leading columns of all four, bit for bit (the same iteration) */
+        {
+            vlbe_real xr[4], xi[4];
+            int r, c;
+            assert_int_equal(vlbe_eig_quad(2, M, D, K, VLBE_R(0.0), sr, si, 2, xr, xi, w, 200, iw,
+                                           8),
+                             VLBE_OK);
+            for (r = 0; r < 2; ++r)
+                for (c = 0; c < 2; ++c)
+                    assert_true(xr[2 * r + c] == o.Xr[4 * r + c] &&
+                                xi[2 * r + c] == o.Xi[4 * r + c]);
+        }
     }
 }
 
