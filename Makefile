@@ -224,7 +224,7 @@ test-build: $(TEST_BINS)
 # under valgrind); the short ones fill in at the end.  From a clean clone on
 # two cores (gcc 12), one core's CPU seconds: the builds dbl ~210, flt
 # (-O1) ~115, san ~125; check-m4 ~45, check-docs and check-first ~32; the
-# runs dbl 17, flt 8, san ~105, valgrind ~55.
+# runs dbl 17, flt 8, san ~105, valgrind ~59.
 TEST_TIMEOUT ?= 300
 TEST_VG_TIMEOUT ?= 1200
 # one job more than cores: a job that links, starts or waits on its log
@@ -252,20 +252,27 @@ TEST_ORDER := $(filter $(TEST_NAMES),$(TEST_COSTLY)) $(filter-out $(TEST_COSTLY)
 # line coverage: every suite built with --coverage (-O0, whose runs take the
 # same slow-build variants as a run under valgrind) and the lines of vlbe.h,
 # ancf_ale.h, rancf.h, corot2d.h and integrators.h that each executes
-# (tests/vgcover.sh, make vg-cover).  All 39 suites execute 6420 lines; the
-# 20 suites below execute 6406 of them, at ~54 s of valgrind CPU time
-# instead of ~500 s (each of them executes lines no other one of the set
-# does).  They leave 14 lines: vlbe_dae_stats_add (integrators.h, sums two
-# counter records; run by test_scenes_sliding, test_scenes_band,
-# test_sliding_xcheck).  The suites left out
-# are long integrations that go over the same lines again (test_scenes_spin,
-# test_scenes_band and test_sliding_xcheck alone take ~210 s) and
-# test_katz, which checks the examples' reference solutions and executes
-# no library line.  VALGRIND_SUITES=all runs every suite under valgrind.
+# (tests/vgcover.sh, make vg-cover).  All 44 suites execute 7365 lines; the
+# 24 suites below execute 7351 of them, at ~49 s of valgrind CPU time
+# (one core, gcc 12 -O2) instead of ~550 s (each of them executes lines no
+# other one of the set does).  They leave 14 lines: vlbe_dae_stats_add
+# (integrators.h, sums two counter records; run by test_scenes_sliding,
+# test_scenes_band, test_sliding_xcheck).  The eigen-solvers, the
+# linearisation and vlbe_dae_project are test_eig's, test_lin's and
+# test_dae_project's (~2 s together); test_rancf_chain (~1 s) is the
+# fastest of the suites that run vlbe_ale_chain_length to its end.  The
+# suites left out are long integrations that go over the same lines again
+# (test_scenes_spin, test_scenes_band and test_sliding_xcheck alone take
+# ~210 s), the Campbell scenes of test_modal (~19 s) and the load-stepped
+# beams of test_static_cr2d (~71 s), whose eigen-solver, linearisation and
+# static-solver lines the suites above run, and test_katz, which checks
+# the examples' reference solutions and executes no library line.
+# VALGRIND_SUITES=all runs every suite under valgrind.
 VALGRIND_SUITES ?= test_chain_ale test_integrators test_bdf test_ale3 \
   test_ale_inv test_rancf test_contract_core test_dae_band test_vlbe test_corot2d \
   test_chain_band test_contract_elem test_contract_chain \
-  test_cr2d_band test_static test_band test_cr2d_trans test_loads test_chain_con3 test_prestress
+  test_cr2d_band test_static test_band test_cr2d_trans test_loads test_chain_con3 test_prestress \
+  test_eig test_lin test_dae_project test_rancf_chain
 VG_NAMES := $(if $(filter all,$(VALGRIND_SUITES)),$(TEST_ORDER),$(filter $(TEST_NAMES),$(VALGRIND_SUITES)))
 HAVE_VALGRIND := $(shell command -v $(VALGRIND) 2>/dev/null || true)
 TEST_LOGS := $(foreach c,$(TEST_CFGS),$(addprefix $(BUILD)/$(c)/,$(addsuffix .log,$(TEST_NAMES))))

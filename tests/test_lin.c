@@ -18,8 +18,11 @@
                   k (along the spring)
    redundant      the pendulum with its constraint twice, and a spherical
                   pendulum whose constraint appears three times (one row
-                  scaled): the rank is counted out (nr = 1, 2), N
-                  orthonormal, Kr / Mr = g / L on every direction
+                  scaled), hanging and tilted (at rest, its tangential
+                  acceleration): the rank is counted out (nr = 1, 2) also
+                  where rounding leaves the copies not exactly dependent,
+                  N orthonormal and normal to the rod, Kr / Mr = g cos(th)
+                  / L on every direction
    cantilever     a clamped ANCF chain (the bar of examples/first_chain.c),
                   4, 8, 16 elements: the three lowest frequencies of Kr x
                   = w^2 Mr x against Euler-Bernoulli (beta L = 1.8751...),
@@ -350,45 +353,78 @@ static void test_spring_pend(void **state)
 
 static void test_redundant(void **state)
 {
-    int dim;
+    int dim, tilt;
     (void)state;
-    for (dim = 2; dim <= 3; ++dim) {
-        /* planar: the constraint twice; 3D: three times, the third scaled by 2 */
-        pend p = {2, 2, 2.0, 1.5, 9.81, 0.0, 0.0};
-        vlbe_real q[3] = {0, 0, 0}, v[3] = {0, 0, 0}, a[3] = {0, 0, 0}, lam[3];
-        int hess, i, j;
-        p.dim = dim;
-        p.copies = dim == 2 ? 2 : 3;
-        q[dim - 1] = (vlbe_real)(-p.L);
-        /* any split whose sum s_c lambda_c is m g / (2 L) holds the mass */
-        lam[0] = (vlbe_real)(0.3 * p.m * p.g / (2.0 * p.L));
-        lam[1] = (vlbe_real)(0.7 * p.m * p.g / (2.0 * p.L));
-        if (dim == 3) {
-            lam[0] = (vlbe_real)(0.5 * p.m * p.g / (2.0 * p.L));
-            lam[1] = (vlbe_real)(-0.1 * p.m * p.g / (2.0 * p.L));
-            lam[2] = (vlbe_real)(0.3 * p.m * p.g / (2.0 * p.L)); /* times 2 */
-        }
-        for (hess = 0; hess <= 1; ++hess) {
-            vlbe_dae s = pd_sys(&p, hess);
-            lin_out o = out_get(dim);
-            /* as in test_pendulum, plus the rounding of the split's sum */
-            const double tol = hess ? 8.0 * EPS : 4.0 * SQ_EPS;
-            assert_int_equal(lin(&s, q, v, a, lam, NULL, &o), VLBE_OK);
-            assert_int_equal(o.nr, dim - 1);
-            check_orthonormal(dim, o.nr, o.N);
-            /* C_q N = 0: N has no component along the rod */
-            for (j = 0; j < o.nr; ++j) ASSERT_CLOSE(o.N[(dim - 1) * o.nr + j], 0.0, 0.0, 4.0 * EPS);
-            for (i = 0; i < o.nr; ++i)
+    for (dim = 2; dim <= 3; ++dim)
+        for (tilt = 0; tilt <= 1; ++tilt) {
+            /* planar: the constraint twice; 3D: three times, the third scaled by 2 */
+            pend p = {2, 2, 2.0, 1.5, 9.81, 0.0, 0.0};
+            /* the rod's direction e: hanging along -y (-z), or tilted, where
+               the copies of C_q are no longer exactly dependent after a
+               reflector (rounding leaves their trailing parts of order eps
+               |C_q|): then only the rank test counts them out */
+            const double th = tilt ? 0.7 : 0.0, ph = 0.4;
+            double e[3] = {0.0, 0.0, 0.0}, lsum, cth = cos(th);
+            vlbe_real q[3] = {0, 0, 0}, v[3] = {0, 0, 0}, a[3] = {0, 0, 0}, lam[3];
+            int hess, i, j, k;
+            p.dim = dim;
+            p.copies = dim == 2 ? 2 : 3;
+            if (dim == 2) {
+                e[0] = sin(th);
+                e[1] = -cth;
+            } else {
+                e[0] = sin(th) * cos(ph);
+                e[1] = sin(th) * sin(ph);
+                e[2] = -cth;
+            }
+            for (i = 0; i < dim; ++i) q[i] = (vlbe_real)(p.L * e[i]);
+            /* at rest: C_q^T lambda = 2 q sum_c s_c lambda_c carries the
+               component m g cos(th) of the weight along the rod, the rest
+               accelerates the mass, a = (Q - C_q^T lambda) / m; any split
+               whose sum s_c lambda_c is m g cos(th) / (2 L) holds it */
+            lsum = p.m * p.g * cth / (2.0 * p.L);
+            lam[0] = (vlbe_real)(0.3 * lsum);
+            lam[1] = (vlbe_real)(0.7 * lsum);
+            if (dim == 3) {
+                lam[0] = (vlbe_real)(0.5 * lsum);
+                lam[1] = (vlbe_real)(-0.1 * lsum);
+                lam[2] = (vlbe_real)(0.3 * lsum); /* times 2 */
+            }
+            for (i = 0; i < dim; ++i)
+                a[i] = (vlbe_real)(-2.0 * lsum * p.L * e[i] / p.m + (i == dim - 1 ? -p.g : 0.0));
+            for (hess = 0; hess <= 1; ++hess) {
+                vlbe_dae s = pd_sys(&p, hess);
+                lin_out o = out_get(dim);
+                /* K = 2 sum_c s_c lambda_c I (Q and M constant), so Kr
+                   is that times N^T N: as in test_pendulum, plus the
+                   rounding of the split's sum; N^T N = I to an eps or two
+                   (one or two reflectors of 2 or 3 entries) */
+                const double kap = p.g * cth / p.L;
+                const double tol = hess ? 8.0 * EPS : 4.0 * SQ_EPS;
+                assert_int_equal(lin(&s, q, v, a, lam, NULL, &o), VLBE_OK);
+                assert_int_equal(o.nr, dim - 1);
+                check_orthonormal(dim, o.nr, o.N);
+                /* C_q N = 0: N has no component along the rod (a reflector
+                   or two, a few eps each: 4 eps) */
                 for (j = 0; j < o.nr; ++j) {
-                    ASSERT_CLOSE_CTX(o.Mr[i * o.nr + j], i == j ? p.m : 0.0, 0.0, 8.0 * EPS * p.m,
-                                     "Mr %d %d dim %d", i, j, dim);
-                    ASSERT_CLOSE_CTX(o.Kr[i * o.nr + j], i == j ? p.m * p.g / p.L : 0.0, 0.0,
-                                     tol * p.m * p.g / p.L, "Kr %d %d dim %d hess %d", i, j, dim,
-                                     hess);
+                    double c = 0.0;
+                    for (k = 0; k < dim; ++k) c += e[k] * (double)o.N[k * o.nr + j];
+                    ASSERT_CLOSE_CTX(c, 0.0, 0.0, 4.0 * EPS, "e . N col %d dim %d tilt %d", j, dim,
+                                     tilt);
                 }
-            out_free(&o);
+                for (i = 0; i < o.nr; ++i)
+                    for (j = 0; j < o.nr; ++j) {
+                        /* Mr = m N^T N (N^T N as above) */
+                        ASSERT_CLOSE_CTX(o.Mr[i * o.nr + j], i == j ? p.m : 0.0, 0.0,
+                                         8.0 * EPS * p.m, "Mr %d %d dim %d tilt %d", i, j,
+                                         dim, tilt);
+                        ASSERT_CLOSE_CTX(o.Kr[i * o.nr + j], i == j ? p.m * kap : 0.0, 0.0,
+                                         tol * p.m * kap, "Kr %d %d dim %d tilt %d hess %d", i, j,
+                                         dim, tilt, hess);
+                    }
+                out_free(&o);
+            }
         }
-    }
 }
 
 /* ===== chains of ancf_ale.h ============================================= */

@@ -223,7 +223,7 @@ static void test_decoupled(void **state)
    1e-4 of the peak's amplitude near it, which moves the peak by <= ~2 eps
    / T (its curvature is ~T^2 in bins): relative tolerance 2e-4 / (f T),
    5e-6 for f1 and 7e-7 for f4 (the larger of the two steps' errors:
-   measured 3.3e-7 (m:th_f1) and 2.1e-8 (m:th_f4)).
+   measured 3.2e-7 (m:th_f1) and 2.1e-8 (m:th_f4)).
    (b) Richardson R = (4 f_{h/2} - f_h) / 3 against the eigenvalue f.
    The rule's own Richardson value R* = (4 f*_{h/2} - f*_h) / 3 (f* the
    atan images) differs from f by -(w h)^4 / 320 + 7e-4 (w h)^6 - ...
