@@ -393,7 +393,7 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
 
 /* One rule point from a basis evaluated at p = xi on [0, 1] (k <= 3, all
    partials): the Hermite one here, the rational one in rancf.h. */
-static inline void vlbe__ale_gp_set(vlbe_ale_gp *gp, vlbe_real xi, vlbe_real w,
+VLBE_INLINE void vlbe__ale_gp_set(vlbe_ale_gp *gp, vlbe_real xi, vlbe_real w,
                                     const vlbe_herm_ale *b)
 {
     int k, a, j;
@@ -409,14 +409,14 @@ static inline void vlbe__ale_gp_set(vlbe_ale_gp *gp, vlbe_real xi, vlbe_real w,
         }
 }
 
-static inline void vlbe__ale_gp_fill(vlbe_ale_gp *gp, vlbe_real xi, vlbe_real w)
+VLBE_INLINE void vlbe__ale_gp_fill(vlbe_ale_gp *gp, vlbe_real xi, vlbe_real w)
 {
     vlbe_herm_ale b;
     vlbe_herm_ale_eval(xi, VLBE_R(0.0), VLBE_R(1.0), 3, 2, &b);
     vlbe__ale_gp_set(gp, xi, w, &b);
 }
 
-static inline vlbe_status vlbe__ale_rule(vlbe_ale_rule *r, int n, int ndef)
+VLBE_INLINE vlbe_status vlbe__ale_rule(vlbe_ale_rule *r, int n, int ndef)
 {
     const vlbe_real *x, *w;
     int g;
@@ -431,7 +431,7 @@ static inline vlbe_status vlbe__ale_rule(vlbe_ale_rule *r, int n, int ndef)
 
 /* the largest |b[0][a][j]|, |l[0][a][j]| (a <= 2) of a rule: N and its
    first p1/p2 partials at L = 1 (vlbe__ale_mass_ok) */
-static inline vlbe_real vlbe__ale_rule_bmax(const vlbe_ale_rule *r)
+VLBE_INLINE vlbe_real vlbe__ale_rule_bmax(const vlbe_ale_rule *r)
 {
     vlbe_real m = VLBE_R(0.0);
     int g, a, j;
@@ -452,7 +452,7 @@ static inline vlbe_real vlbe__ale_rule_bmax(const vlbe_ale_rule *r)
 /* The arguments of vlbe_ale_elem_init (also checked by the rational
    element before it writes anything): a finite material with rhoA > 0 and
    the other constants >= 0, rule orders 0 (default) .. VLBE_ALE_NGP_MAX. */
-static inline vlbe_status vlbe__ale_elem_check(const vlbe_ale_mat *mat, int nm, int nl, int nt)
+VLBE_INLINE vlbe_status vlbe__ale_elem_check(const vlbe_ale_mat *mat, int nm, int nl, int nt)
 {
     if (!vlbe_all_finite(&mat->rhoA, 1) || !vlbe_all_finite(&mat->EA, 1) ||
         !vlbe_all_finite(&mat->EI, 1) || !vlbe_all_finite(&mat->c_eps, 1) ||
@@ -496,7 +496,7 @@ typedef struct vlbe__ale_pt {
 
 /* Lp[i] = L^(i - 4), i = 0..5: every power of L a basis number carries;
    computed once per call. */
-static inline void vlbe__ale_lpow(vlbe_real L, vlbe_real *Lp)
+VLBE_INLINE void vlbe__ale_lpow(vlbe_real L, vlbe_real *Lp)
 {
     const vlbe_real r = VLBE_R(1.0) / L;
     Lp[4] = VLBE_R(1.0);
@@ -512,7 +512,7 @@ static inline void vlbe__ale_lpow(vlbe_real L, vlbe_real *Lp)
    most 3); Lp from vlbe__ale_lpow; u (may be NULL): the rate-like vector to
    contract into V (q' or an acceleration), for the partials a < nu.
    Entries not asked for are left unset. */
-static inline void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
+VLBE_INLINE void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
                                      int na, const vlbe_real *q, const vlbe_real *u, int nu,
                                      vlbe__ale_pt *VLBE_RESTRICT pt)
 {
@@ -555,7 +555,7 @@ static inline void vlbe__ale_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp,
 /* The element length L = p2 - p1 in range: VLBE__ALE_LMIN <= L <=
    REAL_MAX; VLBE_ELENGTH otherwise (L <= 0, L^-4 overflows, p2 - p1
    overflowed).  Two compares, no division: every element call makes it. */
-static inline vlbe_status vlbe__ale_len(vlbe_real p1, vlbe_real p2)
+VLBE_INLINE vlbe_status vlbe__ale_len(vlbe_real p1, vlbe_real p2)
 {
     const vlbe_real L = p2 - p1;
     if (!(L >= VLBE__ALE_LMIN && L <= VLBE_REAL_MAX)) return VLBE_ELENGTH;
@@ -563,7 +563,7 @@ static inline vlbe_status vlbe__ale_len(vlbe_real p1, vlbe_real p2)
 }
 
 /* Input checks shared by the eval functions. */
-static inline vlbe_status vlbe__ale_check(const vlbe_real *q, const vlbe_real *qd)
+VLBE_INLINE vlbe_status vlbe__ale_check(const vlbe_real *q, const vlbe_real *qd)
 {
     if (!vlbe_all_finite(q, VLBE_ALE_NQ)) return VLBE_ENONFINITE;
     if (qd && !vlbe_all_finite(qd, VLBE_ALE_NQ)) return VLBE_ENONFINITE;
@@ -571,14 +571,14 @@ static inline vlbe_status vlbe__ale_check(const vlbe_real *q, const vlbe_real *q
 }
 
 /* Which p's are coordinates: bit k set when p_{k+1} is free. */
-static inline int vlbe__ale_pmask(unsigned mode)
+VLBE_INLINE int vlbe__ale_pmask(unsigned mode)
 {
     return ((mode & VLBE_ALE_FIX_P1) ? 0 : 1) | ((mode & VLBE_ALE_FIX_P2) ? 0 : 2);
 }
 
 /* Material rate of X[k][0] at a point: V_k,0 + p1' X_k,1 + p2' X_k,2 (the
    partials of a fixed p are not evaluated: its rate is zero). */
-static inline void vlbe__ale_rate(const vlbe__ale_pt *pt, int k, int pm, const vlbe_real *pd,
+VLBE_INLINE void vlbe__ale_rate(const vlbe__ale_pt *pt, int k, int pm, const vlbe_real *pd,
                                   vlbe_real *v)
 {
     v[0] = pt->V[k][0][0];
@@ -591,7 +591,7 @@ static inline void vlbe__ale_rate(const vlbe__ale_pt *pt, int k, int pm, const v
    the coefficient with dz/de_j = c_j I (z depends on e through the ALE
    columns only): F += w G^T z and, when J and c are given,
    J[:, e-cols] += w d(G^T z)/de.  G = dr/dq = [N_j I | X_0,1 | X_0,2]. */
-static inline void vlbe__ale_gtz(const vlbe__ale_pt *pt, int pm, vlbe_real w, const vlbe_real *z,
+VLBE_INLINE void vlbe__ale_gtz(const vlbe__ale_pt *pt, int pm, vlbe_real w, const vlbe_real *z,
                                  const vlbe_real *c, vlbe_real *F, vlbe_real *J)
 {
     int i, j, k;
@@ -627,7 +627,7 @@ static inline void vlbe__ale_gtz(const vlbe__ale_pt *pt, int pm, vlbe_real w, co
 /* psi_q (10) of a strain measure psi(y), y = (r', r'') (ny = 2: r' only),
    with gradient gy, at one point: e-entries N'_j gy[b] + N''_j gy[2+b],
    p-entries gy . Y_k with Y_k = (X_1,k, X_2,k). */
-static inline void vlbe__ale_psi_q(const vlbe__ale_pt *pt, int pm, int ny, const vlbe_real *gy,
+VLBE_INLINE void vlbe__ale_psi_q(const vlbe__ale_pt *pt, int pm, int ny, const vlbe_real *gy,
                                    vlbe_real *psq)
 {
     int j, k, b, c;
@@ -658,7 +658,7 @@ typedef struct vlbe__ale_sm {
 
 /* T = H B (ny x 8) with B = dy/de: column 2 j + b (e_jb) is N'_j on y_b
    and N''_j on y_{2+b}. */
-static inline void vlbe__ale_hb(const vlbe__ale_pt *pt, int ny, const vlbe_real *H,
+VLBE_INLINE void vlbe__ale_hb(const vlbe__ale_pt *pt, int ny, const vlbe_real *H,
                                 vlbe_real (*T)[8])
 {
     int c, j, b;
@@ -674,7 +674,7 @@ static inline void vlbe__ale_hb(const vlbe__ale_pt *pt, int ny, const vlbe_real 
 /* Out (10 x 8: the e-columns, 2 j + b for e_jb) -= w Bt T, T ny x 8, with
    Bt = dy/dq: row e_ib is N'_i on y_b and N''_i on y_{2+b}, row p_k is Y_k
    (free p only). */
-static inline void vlbe__ale_bt_acc(const vlbe__ale_pt *pt, int pm, int ny, vlbe_real w,
+VLBE_INLINE void vlbe__ale_bt_acc(const vlbe__ale_pt *pt, int pm, int ny, vlbe_real w,
                                     const vlbe_real (*T)[8], vlbe_real *VLBE_RESTRICT Out)
 {
     int i, b, c, j, k;
@@ -709,7 +709,7 @@ static inline void vlbe__ale_bt_acc(const vlbe__ale_pt *pt, int pm, int ny, vlbe
    (mix: the p-rows' dY_k/de_jb . sigma gy), dsigma/de_jb = B_jb . (S gy +
    cS H yd) + cS Bd_jb . gy (Bd: the basis of the material rate, sum_k p_k'
    times the p_k-partials), and D = -w Bt (sum cS gy gy^T) Bt^T. */
-static inline void vlbe__ale_strain_pt(const vlbe__ale_pt *pt, int pm, int ny, vlbe_real w,
+VLBE_INLINE void vlbe__ale_strain_pt(const vlbe__ale_pt *pt, int pm, int ny, vlbe_real w,
                                        const vlbe__ale_sm *sm, int nsm, const vlbe_real *pd,
                                        const vlbe_real *yd, vlbe_real *VLBE_RESTRICT Q,
                                        vlbe_real *VLBE_RESTRICT Ke, vlbe_real *VLBE_RESTRICT De,
@@ -786,7 +786,7 @@ static inline void vlbe__ale_strain_pt(const vlbe__ale_pt *pt, int pm, int ny, v
 
 /* sum_j b.h[k][a][j] x_j over the four nodal 2-vectors of x (element
    layout): r, r', ALE partials of a point, or their rates with x = q' */
-static inline void vlbe__ale_sum(const vlbe_herm_ale *b, int k, int a, const vlbe_real *x,
+VLBE_INLINE void vlbe__ale_sum(const vlbe_herm_ale *b, int k, int a, const vlbe_real *x,
                                  vlbe_real *out)
 {
     int j;
@@ -797,7 +797,7 @@ static inline void vlbe__ale_sum(const vlbe_herm_ale *b, int k, int a, const vlb
 /* Material rate of the k-th p-derivative of r at the point of b (at fixed
    material p, eq. 14 of [R]): S^(k) e' + (dS^(k)/dp1 e) p1' + (dS^(k)/dp2 e)
    p2'; b needs the p1, p2 derivatives (vlbe_herm_ale_eval with 1). */
-static inline void vlbe__ale_mat_rate(const vlbe_herm_ale *b, int k, const vlbe_real *q,
+VLBE_INLINE void vlbe__ale_mat_rate(const vlbe_herm_ale *b, int k, const vlbe_real *q,
                                       const vlbe_real *qd, vlbe_real *out)
 {
     vlbe_real a[2];
@@ -810,7 +810,7 @@ static inline void vlbe__ale_mat_rate(const vlbe_herm_ale *b, int k, const vlbe_
 
 /* Axial strain from the slope r1 = r': eps, gradient and (constant) Hessian
    in y = (r', r''). */
-static inline vlbe_real vlbe__ale_eps(const vlbe_real *r1, vlbe_real *gy, vlbe_real *H)
+VLBE_INLINE vlbe_real vlbe__ale_eps(const vlbe_real *r1, vlbe_real *gy, vlbe_real *H)
 {
     int i;
     gy[0] = r1[0];
@@ -826,7 +826,7 @@ static inline vlbe_real vlbe__ale_eps(const vlbe_real *r1, vlbe_real *gy, vlbe_r
 /* Signed curvature from r1 = r', r2 = r'': kap = (r' x r'') |r'|^-3,
    gradient in y = (r', r''), Hessian when H != NULL.  VLBE_ESINGULAR for
    |r'|^2 <= eps. */
-static inline void vlbe__ale_kap_t(const vlbe_real *r1, const vlbe_real *r2, vlbe_real t,
+VLBE_INLINE void vlbe__ale_kap_t(const vlbe_real *r1, const vlbe_real *r2, vlbe_real t,
                                    vlbe_real g32, vlbe_real *kap, vlbe_real *gy, vlbe_real *H)
 {
     vlbe_real k, sy[4], gv[4];
@@ -856,7 +856,7 @@ static inline void vlbe__ale_kap_t(const vlbe_real *r1, const vlbe_real *r2, vlb
     *kap = k;
 }
 
-static inline vlbe_status vlbe__ale_kap(const vlbe_real *r1, const vlbe_real *r2, vlbe_real *kap,
+VLBE_INLINE vlbe_status vlbe__ale_kap(const vlbe_real *r1, const vlbe_real *r2, vlbe_real *kap,
                                         vlbe_real *gy, vlbe_real *H)
 {
     const vlbe_real gg = vlbe_v2_dot(r1, r1);
@@ -877,7 +877,7 @@ typedef struct vlbe__ale_lay {
     int bad; /* 3D: a planar-only mode bit (CONSERVATIVE, INV_AXIAL): VLBE_EARG */
 } vlbe__ale_lay;
 
-static inline const vlbe__ale_lay *vlbe__ale_lay2(void)
+VLBE_INLINE const vlbe__ale_lay *vlbe__ale_lay2(void)
 {
     static const vlbe__ale_lay ly = {VLBE_ALE_NQ, 2, 0, {0, 2, 5, 7}, {-1, -1}, {4, 9}, 0};
     return &ly;
@@ -886,7 +886,7 @@ static inline const vlbe__ale_lay *vlbe__ale_lay2(void)
 /* dF = d F for a force of the standard row degrees (1 + m_j on the
    position and slope rows, 1 on spin-angle rows, 0 on p-rows): inertia,
    loads, bending. */
-static inline void vlbe__ale_degree(const vlbe__ale_lay *ly, const vlbe_real *F, vlbe_real *dF)
+VLBE_INLINE void vlbe__ale_degree(const vlbe__ale_lay *ly, const vlbe_real *F, vlbe_real *dF)
 {
     int j, c;
     for (j = 0; j < ly->n; ++j) dF[j] = F[j];
@@ -900,7 +900,7 @@ static inline void vlbe__ale_degree(const vlbe__ale_lay *ly, const vlbe_real *F,
    dF/dp1 = -dF/dp2, with dF the degree-weighted F, D = dF/du, u the
    rate-like argument (q' for forces; the acceleration a for d(M a)/dq, where
    D = M and pd = (a_p1, a_p2)). */
-static inline void vlbe__ale_pcols(const vlbe__ale_lay *ly, vlbe_real L, int pm,
+VLBE_INLINE void vlbe__ale_pcols(const vlbe__ale_lay *ly, vlbe_real L, int pm,
                                    const vlbe_real *dF, const vlbe_real *pd, const vlbe_real *q,
                                    const vlbe_real *u, vlbe_real *K, const vlbe_real *D)
 {
@@ -923,7 +923,7 @@ static inline void vlbe__ale_pcols(const vlbe__ale_lay *ly, vlbe_real L, int pm,
 /* Energy fluxes through the element ends (VLBE_ALE_CONSERVATIVE): p-rows
    Q_p1 += u(0), Q_p2 -= u(1), u = (EA eps^2 + EI kap^2)/2, their e-columns
    in K, and their degree-weighted part in dQ. */
-static inline vlbe_status vlbe__ale_flux(const vlbe_ale_elem *el, int pm, int bend,
+VLBE_INLINE vlbe_status vlbe__ale_flux(const vlbe_ale_elem *el, int pm, int bend,
                                          const vlbe_real *q, vlbe_real L, vlbe_real *Q,
                                          vlbe_real *K, vlbe_real *dQ)
 {
@@ -966,7 +966,7 @@ static inline vlbe_status vlbe__ale_flux(const vlbe_ale_elem *el, int pm, int be
    eqs. 19, 22 in planar signed form) terms at one Gauss point, sharing the
    point evaluation.  Ke, De, D, dQ as in vlbe__ale_strain_pt (Ke NULL: Q
    only). */
-static inline vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe_ale_gp *gp,
+VLBE_INLINE vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe_ale_gp *gp,
                                               const vlbe_real *Lp, int pm, const vlbe_real *pd,
                                               int axial, int bend, int damp, const vlbe_real *q,
                                               const vlbe_real *qd, vlbe_real *Q, vlbe_real *Ke,
@@ -1051,14 +1051,14 @@ static inline vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe
    three pairs (0, 0), (0, 1), (1, 1), its four links to node 2 (0, 2), (0,
    3), (1, 2), (1, 3), node 2's three pairs.  vlbe__ale_inv_pa: A at [P], B
    at [10 + P]. */
-static inline const signed char *vlbe__ale_inv_pa(void)
+VLBE_INLINE const signed char *vlbe__ale_inv_pa(void)
 {
     static const signed char pa[20] = {0, 0, 1, 0, 0, 1, 1, 2, 2, 3,
                                        0, 1, 1, 2, 3, 2, 3, 2, 3, 3};
     return pa;
 }
 
-static inline void vlbe__ale_inv_slots(int P, int *A, int *B)
+VLBE_INLINE void vlbe__ale_inv_slots(int P, int *A, int *B)
 {
     const signed char *pa = vlbe__ale_inv_pa();
     *A = pa[P];
@@ -1069,7 +1069,7 @@ static inline void vlbe__ale_inv_slots(int P, int *A, int *B)
    s: H[0] = H_ab; with jac the symmetrized r (x) z, z = r + c v: H[1..4] =
    (r_a,i z_b,j + r_b,i z_a,j)/2 for ij = xx, xy, yx, yy, and the
    symmetrized r (x) r: H[5..7] for xx, xy, yy. */
-static inline void vlbe__ale_inv_prod(const vlbe_real *ra, const vlbe_real *rb, const vlbe_real *va,
+VLBE_INLINE void vlbe__ale_inv_prod(const vlbe_real *ra, const vlbe_real *rb, const vlbe_real *va,
                                       const vlbe_real *vb, vlbe_real c, vlbe_real s, int jac,
                                       vlbe_real *H)
 {
@@ -1099,7 +1099,7 @@ static inline void vlbe__ale_inv_prod(const vlbe_real *ra, const vlbe_real *rb, 
 
 /* y[k] = sum_j T[j] H[8 j + k], j < w, k < 8: one row of a contraction
    (eight independent sums: they vectorize) */
-static inline void vlbe__ale_inv_row(const vlbe_real *T, int w, const vlbe_real *H, vlbe_real *y)
+VLBE_INLINE void vlbe__ale_inv_row(const vlbe_real *T, int w, const vlbe_real *H, vlbe_real *y)
 {
     int j, k;
     for (k = 0; k < 8; ++k) y[k] = VLBE_R(0.0);
@@ -1111,7 +1111,7 @@ static inline void vlbe__ale_inv_row(const vlbe_real *T, int w, const vlbe_real 
    contracted products y (vlbe__ale_inv_row): Qa += -EA S r_b, Qb += -EA S
    r_a and the 2x2 blocks (a, b), (b, a) of K and D (EAc = EA c; D only for
    EAc != 0), leading dimension ld; K, D may be NULL. */
-static inline void vlbe__ale_inv_out(vlbe_real S, const vlbe_real *y, int jac, vlbe_real EA,
+VLBE_INLINE void vlbe__ale_inv_out(vlbe_real S, const vlbe_real *y, int jac, vlbe_real EA,
                                      vlbe_real EAc, const vlbe_real *ra, const vlbe_real *rb,
                                      int same, vlbe_real *Qa, vlbe_real *Qb, vlbe_real *Kab,
                                      vlbe_real *Kba, vlbe_real *Dab, vlbe_real *Dba, int ld)
@@ -1155,7 +1155,7 @@ static inline void vlbe__ale_inv_out(vlbe_real S, const vlbe_real *y, int jac, v
    read).  Q alone contracts column by column (ten independent sums), with
    K row by row over eight products.  Ks, Ds: the caller's scratch of 64
    each for the 8 x 8 slot blocks (with K only; left as scratch). */
-static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlbe_real c,
+VLBE_INLINE void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlbe_real c,
                                        vlbe_real L, int pm, const vlbe_real *pd,
                                        const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
                                        vlbe_real *K, vlbe_real *D, vlbe_real *dQ, vlbe_real *Ks,
@@ -1315,7 +1315,7 @@ static inline void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlb
 }
 
 /* Distributed load of a fixed-length element: Q_a += L^(m_a+1) n_a f. */
-static inline void vlbe__ale_inv_load(const vlbe_ale_inv *iv, vlbe_real L, const vlbe_real *f,
+VLBE_INLINE void vlbe__ale_inv_load(const vlbe_ale_inv *iv, vlbe_real L, const vlbe_real *f,
                                       vlbe_real *Q)
 {
     int a;
@@ -1337,7 +1337,7 @@ static inline void vlbe__ale_inv_load(const vlbe_ale_inv *iv, vlbe_real L, const
    (v = S e', O_v its slope part).  The material rate of r^(c) (the
    damping) is v^(c) + (p2' - p1') Y2_c - p1' r^(c+1).  Agrees with the
    Gauss-point route of the Jacobian calls to rounding (test). */
-static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, const vlbe_real *f, int pm,
+VLBE_INLINE vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, const vlbe_real *f, int pm,
                                       int damp, int bend, int shared, int inv, const vlbe_real *Lp,
                                       const vlbe_real *pd, const vlbe_real *q, const vlbe_real *qd,
                                       vlbe_real *Q)
@@ -1472,7 +1472,7 @@ static inline vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, const vlbe_real *
    given (e- and p'-columns directly, then the p-columns by the scaling
    identity).  Q, K, D are the caller's zeroed locals; f the distributed
    load (el->mat.f, or the chain's scaled copy). */
-static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mode,
+VLBE_INLINE vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mode,
                                            const vlbe_real *f, const vlbe_real *q,
                                            const vlbe_real *qd,
                                            vlbe_real *Q, vlbe_real *K, vlbe_real *D)
@@ -1598,7 +1598,7 @@ static inline vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mod
    fin = 0 skips the final finiteness check of the outputs (for a caller
    that bounded them from the data, vlbe_ale_inv_chain_force); f: the
    distributed load (NULL: el->mat.f) */
-static inline vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode,
+VLBE_INLINE vlbe_status vlbe__ale_force(const vlbe_ale_elem *el, unsigned mode,
                                           const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
                                           vlbe_real *K, vlbe_real *D, int fin, const vlbe_real *f)
 {
@@ -1636,7 +1636,7 @@ VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, cons
 
 /* One point's part w G^T G of M (eq. 19): e-e blocks and p1-p2 for
    i <= j, the e-p coupling on the p-rows (vlbe__ale_mass_mirror completes). */
-static inline void vlbe__ale_mass_pt(const vlbe__ale_pt *pt, int pm, vlbe_real w, vlbe_real *M)
+VLBE_INLINE void vlbe__ale_mass_pt(const vlbe__ale_pt *pt, int pm, vlbe_real w, vlbe_real *M)
 {
     int i, j, k, l;
     for (i = 0; i < 4; ++i) {
@@ -1663,7 +1663,7 @@ static inline void vlbe__ale_mass_pt(const vlbe__ale_pt *pt, int pm, vlbe_real w
 
 /* Mirror the parts vlbe__ale_mass_pt accumulated into their transposed
    places. */
-static inline void vlbe__ale_mass_mirror(vlbe_real *M)
+VLBE_INLINE void vlbe__ale_mass_mirror(vlbe_real *M)
 {
     int i, j;
     for (i = 0; i < 10; ++i)
@@ -1686,7 +1686,7 @@ static inline void vlbe__ale_mass_mirror(vlbe_real *M)
    every partial sum is at most rho L (A + 2 Xc)^2 for d <= 4, and the
    factors at most (A + 2 Xc)^2.  1 when both stay below REAL_MAX / 4.
    mp, ms: 0 with both p fixed (X is not formed then). */
-static inline int vlbe__ale_mass_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
+VLBE_INLINE int vlbe__ale_mass_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
                                     vlbe_real mp, vlbe_real ms)
 {
     const vlbe_real A = bmax * (L > VLBE_R(1.0) ? L : VLBE_R(1.0));
@@ -1705,7 +1705,7 @@ static inline int vlbe__ale_mass_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, 
    (40 g^2 + 48 ms bmax U g); all below 256 rho L (1 + am) U h^2 with h = g
    + bmax U (1 + ms).  1 when that and its factor without rho L stay below
    REAL_MAX / 4. */
-static inline int vlbe__ale_mjac_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
+VLBE_INLINE int vlbe__ale_mjac_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
                                     vlbe_real mp, vlbe_real ms, vlbe_real am)
 {
     const vlbe_real A = bmax * (L > VLBE_R(1.0) ? L : VLBE_R(1.0));
@@ -1716,7 +1716,7 @@ static inline int vlbe__ale_mjac_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, 
 }
 
 /* largest position and slope component of the two nodes of a planar q */
-static inline void vlbe__ale_qmax(const vlbe_real *q, vlbe_real *mp, vlbe_real *ms)
+VLBE_INLINE void vlbe__ale_qmax(const vlbe_real *q, vlbe_real *mp, vlbe_real *ms)
 {
     int i;
     *mp = *ms = VLBE_R(0.0);
@@ -1732,7 +1732,7 @@ static inline void vlbe__ale_qmax(const vlbe_real *q, vlbe_real *mp, vlbe_real *
 
 /* M(q) = rhoA int G^T G dp (eq. 19), bounded first (vlbe__ale_mass_ok):
    VLBE_ENONFINITE, nothing written, when it could overflow. */
-static inline vlbe_status vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
+VLBE_INLINE vlbe_status vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
                                          vlbe_real *VLBE_RESTRICT M)
 {
     const vlbe_real L = q[9] - q[4];
@@ -1847,7 +1847,7 @@ VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, con
 
 /* r and r' (either may be NULL) from a basis b evaluated with k <= 1,
    written only when both are finite (shared with rancf.h). */
-static inline vlbe_status vlbe__ale_point_b(const vlbe_herm_ale *b, const vlbe_real *q,
+VLBE_INLINE vlbe_status vlbe__ale_point_b(const vlbe_herm_ale *b, const vlbe_real *q,
                                             vlbe_real *r, vlbe_real *rp)
 {
     vlbe_real x[4];
@@ -1881,7 +1881,7 @@ VLBE_API vlbe_status vlbe_ale_point(const vlbe_real *q, vlbe_real p, vlbe_real *
 
 /* Strain and curvature from a basis b evaluated with k <= 2 (shared with
    rancf.h). */
-static inline vlbe_status vlbe__ale_strain_b(const vlbe_herm_ale *b, const vlbe_real *q,
+VLBE_INLINE vlbe_status vlbe__ale_strain_b(const vlbe_herm_ale *b, const vlbe_real *q,
                                              vlbe_real *eps, vlbe_real *kap)
 {
     vlbe_real r1[2], r2[2], gy[4], k = VLBE_R(0.0), e;
@@ -1956,7 +1956,7 @@ VLBE_API vlbe_status vlbe_ale_strain(const vlbe_real *q, vlbe_real p, vlbe_real 
    rows and columns are written, whatever the element's mode. */
 /* Q += N^T F, K += d/dq from a basis b evaluated with k = 0 and all p1/p2
    partials (shared with rancf.h). */
-static inline void vlbe__ale_point_force_b(const vlbe_herm_ale *b, const vlbe_real *q,
+VLBE_INLINE void vlbe__ale_point_force_b(const vlbe_herm_ale *b, const vlbe_real *q,
                                            const vlbe_real *F, vlbe_real *Q, vlbe_real *K)
 {
     static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
@@ -1992,7 +1992,7 @@ static inline void vlbe__ale_point_force_b(const vlbe_herm_ale *b, const vlbe_re
 
 /* vlbe__ale_point_force_b on copies of Q and K, committed only when the
    sums are finite (shared with rancf.h). */
-static inline vlbe_status vlbe__ale_point_force_c(const vlbe_herm_ale *b, const vlbe_real *q,
+VLBE_INLINE vlbe_status vlbe__ale_point_force_c(const vlbe_herm_ale *b, const vlbe_real *q,
                                                   const vlbe_real *F, vlbe_real *Q, vlbe_real *K)
 {
     vlbe_real Qt[10], Kt[100];
@@ -2105,7 +2105,7 @@ VLBE_API vlbe_status vlbe_ale_inv_force(const vlbe_ale_elem *el, unsigned mode, 
    (sign cleared) order like the values, and Inf and NaN lie above every
    finite one, so one integer max per lane (4 lanes, vectorized) gives the
    maxima and the finiteness. */
-static inline int vlbe__ale_chain_max(int ne, const vlbe_real *x, vlbe_real *m)
+VLBE_INLINE int vlbe__ale_chain_max(int ne, const vlbe_real *x, vlbe_real *m)
 {
     const vlbe__bits A = VLBE__BITS_ABS, E = VLBE__BITS_EXP;
     vlbe__bits b[4] = {0, 0, 0, 0}, u[4], t;
@@ -2129,7 +2129,7 @@ static inline int vlbe__ale_chain_max(int ne, const vlbe_real *x, vlbe_real *m)
    NULL), n = 4 (ne + 1) coordinates each; mx = the largest position and
    slope component of x, then of v (0 for v = NULL), for
    vlbe__ale_cable_ok. */
-static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const vlbe_real *x,
+VLBE_INLINE vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const vlbe_real *x,
                                              const vlbe_real *v, vlbe_real *mx)
 {
     vlbe_real m[4];
@@ -2169,7 +2169,7 @@ static inline vlbe_status vlbe__ale_chain_in(int ne, const vlbe_real *L, const v
    (then no intermediate or sum can overflow: the invariant products form
    r' + c r_v' and c (r' . r_v') before EA multiplies them); inputs finite,
    Lmin > 0, c >= 0. */
-static inline int vlbe__ale_cable_ok(vlbe_real EA, vlbe_real c, vlbe_real fq, vlbe_real Lmin,
+VLBE_INLINE int vlbe__ale_cable_ok(vlbe_real EA, vlbe_real c, vlbe_real fq, vlbe_real Lmin,
                                      vlbe_real Lmax, const vlbe_real *m)
 {
     vlbe_real A, B, g, z;
@@ -2275,7 +2275,7 @@ VLBE_API vlbe_status vlbe_ale_inv_chain_force(const vlbe_ale_elem *el, unsigned 
    in slot space), map back to the nodal coordinates by the chain rule of
    d_n = r_{n+1} - r_n: Q = J^T Q~, K = J^T K~ J, D = J^T D~ J, J sparse
    with the entries +-1 of vlbe__ale_sys_tgt. */
-static inline const signed char *vlbe__ale_sys_pa(void)
+VLBE_INLINE const signed char *vlbe__ale_sys_pa(void)
 {
     static const signed char pa[18] = {0, 0, 0, 1, 1, 2, 0, 1, 2, 1, 2, 2, 2, 5, 6, 7, 8, 9};
     return pa;
@@ -2286,7 +2286,7 @@ static inline const signed char *vlbe__ale_sys_pa(void)
    element with P, a contiguous range: node n's pair meets elements n-1, n
    (w = 11, 6 at an end node), a pair of element n meets its six (w = 6).
    start: offset of the row in the stored T, nnz = 35 ne + 1 in all. */
-static inline void vlbe__ale_sys_row(int ne, int P, int *start, int *c0, int *w)
+VLBE_INLINE void vlbe__ale_sys_row(int ne, int P, int *start, int *c0, int *w)
 {
     const int n = P / 5, t = P % 5, wn = (n == 0 || n == ne) ? 6 : 11;
     const int blk = n == 0 ? 0 : 30 + 35 * (n - 1); /* rows of the nodes before n */
@@ -2303,7 +2303,7 @@ static inline void vlbe__ale_sys_row(int ne, int P, int *start, int *c0, int *w)
 
 /* slot A of the nodal vector x (coordinates or their rates): the slope of
    node A/2 (A even) or the chord of element (A-1)/2 (A odd) */
-static inline void vlbe__ale_sys_slot(const vlbe_real *x, int A, vlbe_real *r)
+VLBE_INLINE void vlbe__ale_sys_slot(const vlbe_real *x, int A, vlbe_real *r)
 {
     const int o = 4 * (A / 2);
     if (A & 1) {
@@ -2318,7 +2318,7 @@ static inline void vlbe__ale_sys_slot(const vlbe_real *x, int A, vlbe_real *r)
 /* The nodal coordinates (index of the x of the 2-vector) slot A acts on,
    with the sign of its derivative: the slope itself (+1), or for a chord
    node n (-1) and node n+1 (+1).  Returns their number. */
-static inline int vlbe__ale_sys_tgt(int A, int *ix, vlbe_real *sg)
+VLBE_INLINE int vlbe__ale_sys_tgt(int A, int *ix, vlbe_real *sg)
 {
     const int o = 4 * (A / 2);
     if (!(A & 1)) {
@@ -2335,7 +2335,7 @@ static inline int vlbe__ale_sys_tgt(int A, int *ix, vlbe_real *sg)
 
 /* M (band) += s b at the 2x2 block of rows i, i+1 and columns j, j+1 (b
    2x2 row-major) */
-static inline void vlbe__ale_sys_blk(vlbe_real *M, int i, int j, vlbe_real s, const vlbe_real *b)
+VLBE_INLINE void vlbe__ale_sys_blk(vlbe_real *M, int i, int j, vlbe_real s, const vlbe_real *b)
 {
     vlbe_real *m = M + VLBE__ALE_BAND(i, j);
     m[0] += s * b[0];
@@ -2445,7 +2445,7 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_init(vlbe_ale_inv_sys *sys, const vlbe_ale
    vlbe_ale_inv_chain_force to rounding.  Errors (nothing written):
    VLBE_ENONFINITE for NaN/Inf in x, v, or data so large that the forces
    could overflow (vlbe__ale_cable_ok). */
-static inline vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
+VLBE_INLINE vlbe_status vlbe__ale_sys_force(const vlbe_ale_inv_sys *sys, const vlbe_real *x,
                                               const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                               vlbe_real *D)
 {
@@ -2687,7 +2687,7 @@ VLBE_API int vlbe_ale3_nq(unsigned mode)
     return (mode & VLBE_ALE3_NO_SPIN) ? VLBE_ALE3_NQ - 2 : VLBE_ALE3_NQ;
 }
 
-static inline void vlbe__ale_layout(unsigned mode, vlbe__ale_lay *ly)
+VLBE_INLINE void vlbe__ale_layout(unsigned mode, vlbe__ale_lay *ly)
 {
     const int spin = !(mode & VLBE_ALE3_NO_SPIN), ns = spin ? 8 : 7;
     ly->d = 3;
@@ -2704,7 +2704,7 @@ static inline void vlbe__ale_layout(unsigned mode, vlbe__ale_lay *ly)
     ly->p[1] = 2 * ns - 1;
 }
 
-static inline vlbe_status vlbe__a3_check(const vlbe__ale_lay *ly, const vlbe_real *q,
+VLBE_INLINE vlbe_status vlbe__ale3_check(const vlbe__ale_lay *ly, const vlbe_real *q,
                                          const vlbe_real *qd)
 {
     if (ly->bad) return VLBE_EARG;
@@ -2717,13 +2717,13 @@ static inline vlbe_status vlbe__a3_check(const vlbe__ale_lay *ly, const vlbe_rea
    - |a|) b[k][a][j] (Hermite), H[k][a][j] = L^(-k - |a|) l[k][a][j]
    (linear); rows k0..kmax, partials a < na at k = 0, a < min(na, 3)
    above. */
-typedef struct vlbe__a3_pt {
+typedef struct vlbe__ale3_pt {
     vlbe_real N[3][VLBE_DA_N][4];
     vlbe_real H[2][VLBE_DA_N][2];
-} vlbe__a3_pt;
+} vlbe__ale3_pt;
 
-static inline void vlbe__a3_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
-                                    int na, vlbe__a3_pt *VLBE_RESTRICT pt)
+VLBE_INLINE void vlbe__ale3_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
+                                    int na, vlbe__ale3_pt *VLBE_RESTRICT pt)
 {
     int k, a, j;
     for (k = k0; k <= kmax; ++k) {
@@ -2738,7 +2738,7 @@ static inline void vlbe__a3_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, 
 }
 
 /* out = sum_j n[j] x_j over the four 3-vectors of x (r1, r1', r2, r2') */
-static inline void vlbe__a3_sum(const vlbe__ale_lay *ly, const vlbe_real *n, const vlbe_real *x,
+VLBE_INLINE void vlbe__ale3_sum(const vlbe__ale_lay *ly, const vlbe_real *n, const vlbe_real *x,
                                 vlbe_real *out)
 {
     int j, c;
@@ -2748,14 +2748,14 @@ static inline void vlbe__a3_sum(const vlbe__ale_lay *ly, const vlbe_real *n, con
 }
 
 /* sum_j h[j] x_th_j over the two spin angles (0 without spin) */
-static inline vlbe_real vlbe__a3_tsum(const vlbe__ale_lay *ly, const vlbe_real *h,
+VLBE_INLINE vlbe_real vlbe__ale3_tsum(const vlbe__ale_lay *ly, const vlbe_real *h,
                                       const vlbe_real *x)
 {
     return ly->spin ? h[0] * x[ly->th[0]] + h[1] * x[ly->th[1]] : VLBE_R(0.0);
 }
 
 /* [v]x applied: out = v x u, and the matrix rows of [v]x */
-static inline void vlbe__a3_skew(const vlbe_real *v, vlbe_real *S)
+VLBE_INLINE void vlbe__ale3_skew(const vlbe_real *v, vlbe_real *S)
 {
     S[0] = VLBE_R(0.0), S[1] = -v[2], S[2] = v[1];
     S[3] = v[2], S[4] = VLBE_R(0.0), S[5] = -v[0];
@@ -2767,7 +2767,7 @@ static inline void vlbe__a3_skew(const vlbe_real *v, vlbe_real *S)
    cS k'.  Adds to G (7: r', r'', phi) the gradient k_y^T sigma and, with
    A, Ad (7 x 7, row-major), d(k_y^T sigma)/dy at fixed rates and
    d/dy' = cS k_y^T k_y.  *kk = |k|^2.  VLBE_ESINGULAR for |r'|^2 <= eps. */
-static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
+VLBE_INLINE vlbe_status vlbe__ale3_bend(const vlbe_real *a, const vlbe_real *b,
                                         const vlbe_real *ad, const vlbe_real *bd, vlbe_real S,
                                         vlbe_real cS, vlbe_real *G, vlbe_real *A, vlbe_real *Ad,
                                         vlbe_real *kk)
@@ -2804,8 +2804,8 @@ static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
         /* k_y = [k_a | k_b], k_a = -h [b]x - 3 h5 s a^T, k_b = h [a]x */
         {
             vlbe_real Sb[9], Sa[9];
-            vlbe__a3_skew(b, Sb);
-            vlbe__a3_skew(a, Sa);
+            vlbe__ale3_skew(b, Sb);
+            vlbe__ale3_skew(a, Sa);
             for (i = 0; i < 3; ++i)
                 for (j = 0; j < 3; ++j) {
                     ky[i * 6 + j] = -h * Sb[i * 3 + j] - VLBE_R(3.0) * h5 * s[i] * a[j];
@@ -2818,7 +2818,7 @@ static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
         {
             vlbe_real Ss[9];
             const vlbe_real h7 = VLBE_R(15.0) * h5 / g * tau;
-            vlbe__a3_skew(sig, Ss);
+            vlbe__ale3_skew(sig, Ss);
             for (i = 0; i < 3; ++i)
                 for (j = 0; j < 3; ++j) {
                     vlbe_real faa = -VLBE_R(3.0) * h5 * (bs[i] * a[j] + a[i] * bs[j]) +
@@ -2838,10 +2838,10 @@ static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
             if (ad && bd && cS != VLBE_R(0.0)) {
                 vlbe_real Sbd[9], Sad[9], Sb[9], Sa[9];
                 const vlbe_real h7 = VLBE_R(15.0) * h5 / g * ga;
-                vlbe__a3_skew(bd, Sbd);
-                vlbe__a3_skew(ad, Sad);
-                vlbe__a3_skew(b, Sb);
-                vlbe__a3_skew(a, Sa);
+                vlbe__ale3_skew(bd, Sbd);
+                vlbe__ale3_skew(ad, Sad);
+                vlbe__ale3_skew(b, Sb);
+                vlbe__ale3_skew(a, Sa);
                 for (i = 0; i < 3; ++i)
                     for (j = 0; j < 3; ++j) {
                         W[i * 6 + j] += cS * (-h * Sbd[i * 3 + j] -
@@ -2870,7 +2870,7 @@ static inline vlbe_status vlbe__a3_bend(const vlbe_real *a, const vlbe_real *b,
    Z = dz/dq, z = (r', r'', phi); with K: the e- and theta-columns of
    -w d(Z^T G)/dq into K, -w Z^T Ad Z into D (all columns) and the degree
    extras into dQ (see vlbe_ale3 notes). */
-static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
+VLBE_INLINE vlbe_status vlbe__ale3_strain_gp(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
                                              const vlbe_ale_gp *gp, const vlbe_real *Lp, int pm,
                                              const vlbe_real *pd, int bend, int twist, int damp,
                                              const vlbe_real *q, const vlbe_real *qd,
@@ -2880,26 +2880,26 @@ static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlb
     const vlbe_ale3_mat *mt = &el->mat;
     const int n = ly->n, jac = K != NULL, nz = bend ? 6 : 3;
     const vlbe_real w = gp->w * Lp[5];
-    vlbe__a3_pt pt;
+    vlbe__ale3_pt pt;
     vlbe_real y[7], Y[2][7], yd[7], G[7] = {0, 0, 0, 0, 0, 0, 0}, Gx[7] = {0, 0, 0, 0, 0, 0, 0};
     vlbe_real A[49], Ad[49], T[7][VLBE_ALE3_NQ], Nd[3][4], Hd[2];
     int i, j, k, c, rows[7], nr = 0;
     vlbe_status st;
-    vlbe__a3_pt_eval(gp, Lp, 1, bend ? 2 : 1, pm ? 3 : 1, &pt);
+    vlbe__ale3_pt_eval(gp, Lp, 1, bend ? 2 : 1, pm ? 3 : 1, &pt);
     for (c = 0; c < 7; ++c) y[c] = yd[c] = Y[0][c] = Y[1][c] = VLBE_R(0.0);
-    vlbe__a3_sum(ly, pt.N[1][0], q, y);
-    if (bend) vlbe__a3_sum(ly, pt.N[2][0], q, y + 3);
-    if (twist) y[6] = vlbe__a3_tsum(ly, pt.H[1][0], q);
+    vlbe__ale3_sum(ly, pt.N[1][0], q, y);
+    if (bend) vlbe__ale3_sum(ly, pt.N[2][0], q, y + 3);
+    if (twist) y[6] = vlbe__ale3_tsum(ly, pt.H[1][0], q);
     for (k = 0; k < 2; ++k)
         if (pm & (1 << k)) {
-            vlbe__a3_sum(ly, pt.N[1][1 + k], q, Y[k]);
-            if (bend) vlbe__a3_sum(ly, pt.N[2][1 + k], q, Y[k] + 3);
-            if (twist) Y[k][6] = vlbe__a3_tsum(ly, pt.H[1][1 + k], q);
+            vlbe__ale3_sum(ly, pt.N[1][1 + k], q, Y[k]);
+            if (bend) vlbe__ale3_sum(ly, pt.N[2][1 + k], q, Y[k] + 3);
+            if (twist) Y[k][6] = vlbe__ale3_tsum(ly, pt.H[1][1 + k], q);
         }
     if (damp) {
-        vlbe__a3_sum(ly, pt.N[1][0], qd, yd);
-        if (bend) vlbe__a3_sum(ly, pt.N[2][0], qd, yd + 3);
-        if (twist) yd[6] = vlbe__a3_tsum(ly, pt.H[1][0], qd);
+        vlbe__ale3_sum(ly, pt.N[1][0], qd, yd);
+        if (bend) vlbe__ale3_sum(ly, pt.N[2][0], qd, yd + 3);
+        if (twist) yd[6] = vlbe__ale3_tsum(ly, pt.H[1][0], qd);
         for (k = 0; k < 2; ++k)
             for (c = 0; c < 7; ++c) yd[c] += pd[k] * Y[k][c];
     }
@@ -2923,7 +2923,7 @@ static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlb
     }
     if (bend) {
         const vlbe_real cB = damp ? mt->c_kap * mt->EJ : VLBE_R(0.0);
-        if ((st = vlbe__a3_bend(y, y + 3, damp ? yd : NULL, damp ? yd + 3 : NULL, mt->EJ, cB, G,
+        if ((st = vlbe__ale3_bend(y, y + 3, damp ? yd : NULL, damp ? yd + 3 : NULL, mt->EJ, cB, G,
                                 jac ? A : NULL, jac ? Ad : NULL, NULL)) != VLBE_OK)
             return st;
     }
@@ -3076,9 +3076,9 @@ static inline vlbe_status vlbe__a3_strain_gp(const vlbe_ale3_elem *el, const vlb
    field (z = f - rhoA eta_p, eqs. 17, 29, 44) and the spin field (z =
    -rhoI eta_p); with K: e/theta-columns of K, and D (e', theta' and p'
    columns).  pt holds k = 0 with all partials when pm != 0. */
-static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe_real *f,
+VLBE_INLINE void vlbe__ale3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe_real *f,
                                        const vlbe__ale_lay *ly,
-                                       const vlbe__a3_pt *pt, int pm, const vlbe_real *pd,
+                                       const vlbe__ale3_pt *pt, int pm, const vlbe_real *pd,
                                        vlbe_real w, const vlbe_real *q, const vlbe_real *qd,
                                        vlbe_real *Q, vlbe_real *K, vlbe_real *D)
 {
@@ -3091,16 +3091,16 @@ static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe_real 
     for (c = 0; c < 3; ++c) z[c] = f[c];
     if (pm) {
         for (k = 0; k < 2; ++k) {
-            vlbe__a3_sum(ly, pt->N[0][1 + k], q, X[k]);
-            vlbe__a3_sum(ly, pt->N[0][1 + k], qd, V[k]);
+            vlbe__ale3_sum(ly, pt->N[0][1 + k], q, X[k]);
+            vlbe__ale3_sum(ly, pt->N[0][1 + k], qd, V[k]);
             if (spin) {
-                Xt[k] = vlbe__a3_tsum(ly, pt->H[0][1 + k], q);
-                Vt[k] = vlbe__a3_tsum(ly, pt->H[0][1 + k], qd);
+                Xt[k] = vlbe__ale3_tsum(ly, pt->H[0][1 + k], q);
+                Vt[k] = vlbe__ale3_tsum(ly, pt->H[0][1 + k], qd);
             }
         }
         for (k = 0; k < 3; ++k) {
-            vlbe__a3_sum(ly, pt->N[0][VLBE_DA_11 + k], q, Xkl[k]);
-            if (spin) Xtl[k] = vlbe__a3_tsum(ly, pt->H[0][VLBE_DA_11 + k], q);
+            vlbe__ale3_sum(ly, pt->N[0][VLBE_DA_11 + k], q, Xkl[k]);
+            if (spin) Xtl[k] = vlbe__ale3_tsum(ly, pt->H[0][VLBE_DA_11 + k], q);
         }
         for (c = 0; c < 3; ++c)
             z[c] -= mt->rhoA * (VLBE_R(2.0) * (pd[0] * V[0][c] + pd[1] * V[1][c]) +
@@ -3184,7 +3184,7 @@ static inline void vlbe__a3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe_real 
         }
 }
 
-static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
+VLBE_INLINE vlbe_status vlbe__ale3_forces(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
                                           unsigned mode, const vlbe_real *f,
                                           const vlbe_real *q, const vlbe_real *qd,
                                           vlbe_real *Q, vlbe_real *K, vlbe_real *D)
@@ -3206,13 +3206,13 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
     if (pm || f0)
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_ale_gp *gp = &el->rm.g[g];
-            vlbe__a3_pt pt; /* per point: its storage is shared with the strain points' */
-            vlbe__a3_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
-            vlbe__a3_inertia_pt(mt, f, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
+            vlbe__ale3_pt pt; /* per point: its storage is shared with the strain points' */
+            vlbe__ale3_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
+            vlbe__ale3_inertia_pt(mt, f, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
         }
     if (mt->EA != VLBE_R(0.0) || bend || twist)
         for (g = 0; g < el->rs.n; ++g)
-            if ((st = vlbe__a3_strain_gp(el, ly, &el->rs.g[g], Lp, pm, pd, bend, twist, damp, q, qd,
+            if ((st = vlbe__ale3_strain_gp(el, ly, &el->rs.g[g], Lp, pm, pd, bend, twist, damp, q, qd,
                                          Q, K, D, dQx)) != VLBE_OK)
                 return st;
     if (K && pm) {
@@ -3225,7 +3225,7 @@ static inline vlbe_status vlbe__a3_forces(const vlbe_ale3_elem *el, const vlbe__
 
 /* vlbe_ale3_force with the distributed load f (NULL: el->mat.f; a chain's
    scaled copy) */
-static inline vlbe_status vlbe__a3_force(const vlbe_ale3_elem *el, unsigned mode,
+VLBE_INLINE vlbe_status vlbe__ale3_force(const vlbe_ale3_elem *el, unsigned mode,
                                          const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
                                          vlbe_real *K, vlbe_real *D, const vlbe_real *f)
 {
@@ -3238,7 +3238,7 @@ static inline vlbe_status vlbe__a3_force(const vlbe_ale3_elem *el, unsigned mode
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && Q != NULL);
     mode |= el->flags;
     vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
+    if ((st = vlbe__ale3_check(&ly, q, qd)) != VLBE_OK) return st;
     nn = ly.n * ly.n;
     for (i = 0; i < ly.n; ++i) Qt[i] = VLBE_R(0.0);
     if (jac) {
@@ -3246,7 +3246,7 @@ static inline vlbe_status vlbe__a3_force(const vlbe_ale3_elem *el, unsigned mode
         Kp = Kt;
         Dp = Dt;
     }
-    if ((st = vlbe__a3_forces(el, &ly, mode, f ? f : el->mat.f, q, qd, Qt, Kp, Dp)) != VLBE_OK)
+    if ((st = vlbe__ale3_forces(el, &ly, mode, f ? f : el->mat.f, q, qd, Qt, Kp, Dp)) != VLBE_OK)
         return st;
     if (!vlbe_all_finite(Qt, ly.n) || (K && !vlbe_all_finite(Kt, nn)) ||
         (D && !vlbe_all_finite(Dt, nn)))
@@ -3263,12 +3263,12 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
                                      vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D)
 {
-    return vlbe__a3_force(el, mode, q, qd, Q, K, D, NULL);
+    return vlbe__ale3_force(el, mode, q, qd, Q, K, D, NULL);
 }
 
 /* largest position or spin-angle component (they scale with 1/L in the
    p-partials) and slope component of the two nodes of a 3D q */
-static inline void vlbe__a3_qmax(const vlbe__ale_lay *ly, const vlbe_real *q, vlbe_real *mp,
+VLBE_INLINE void vlbe__ale3_qmax(const vlbe__ale_lay *ly, const vlbe_real *q, vlbe_real *mp,
                                  vlbe_real *ms)
 {
     int i, c;
@@ -3296,7 +3296,7 @@ VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, con
 {
     const vlbe_ale3_mat *mt = &el->mat;
     vlbe__ale_lay ly;
-    vlbe__a3_pt pt;
+    vlbe__ale3_pt pt;
     vlbe_real Lp[6], L, X[2][3], Xt[2];
     vlbe_real mp = VLBE_R(0.0), ms = VLBE_R(0.0);
     vlbe_status st;
@@ -3304,23 +3304,23 @@ VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, con
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
     mode |= el->flags;
     vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
+    if ((st = vlbe__ale3_check(&ly, q, NULL)) != VLBE_OK) return st;
     n = ly.n;
     pm = vlbe__ale_pmask(mode);
     L = q[ly.p[1]] - q[ly.p[0]];
     vlbe__ale_lpow(L, Lp);
-    if (pm) vlbe__a3_qmax(&ly, q, &mp, &ms);
+    if (pm) vlbe__ale3_qmax(&ly, q, &mp, &ms);
     if (!vlbe__ale_mass_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms))
         return VLBE_ENONFINITE;
     for (i = 0; i < n * n; ++i) M[i] = VLBE_R(0.0);
     for (g = 0; g < el->rm.n; ++g) {
         const vlbe_real w = el->rm.g[g].w * L, wa = w * mt->rhoA, wi = w * mt->rhoI;
-        vlbe__a3_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, &pt);
+        vlbe__ale3_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, &pt);
         for (k = 0; k < 2; ++k) {
             Xt[k] = VLBE_R(0.0);
             if (pm & (1 << k)) {
-                vlbe__a3_sum(&ly, pt.N[0][1 + k], q, X[k]);
-                Xt[k] = vlbe__a3_tsum(&ly, pt.H[0][1 + k], q);
+                vlbe__ale3_sum(&ly, pt.N[0][1 + k], q, X[k]);
+                Xt[k] = vlbe__ale3_tsum(&ly, pt.H[0][1 + k], q);
             }
         }
         for (i = 0; i < 4; ++i) {
@@ -3365,13 +3365,13 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
                                                                    the last check */
     vlbe_real Ma[VLBE_ALE3_NQ], dF[VLBE_ALE3_NQ], ap[2], Lp[6], L;
     vlbe__ale_lay ly;
-    vlbe__a3_pt pt;
+    vlbe__ale3_pt pt;
     vlbe_status st;
     int g, i, j, k, c, n, nn, pm;
     VLBE_ASSERT(el != NULL && q != NULL && a != NULL && Mq != NULL);
     mode |= el->flags;
     vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, a)) != VLBE_OK) return st;
+    if ((st = vlbe__ale3_check(&ly, q, a)) != VLBE_OK) return st;
     n = ly.n;
     nn = n * n;
     pm = vlbe__ale_pmask(mode);
@@ -3384,7 +3384,7 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
         ap[0] = (pm & 1) ? a[ly.p[0]] : VLBE_R(0.0);
         ap[1] = (pm & 2) ? a[ly.p[1]] : VLBE_R(0.0);
         vlbe__ale_lpow(L, Lp);
-        vlbe__a3_qmax(&ly, q, &mp, &ms);
+        vlbe__ale3_qmax(&ly, q, &mp, &ms);
         for (i = 0; i < n; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
         if (!vlbe__ale_mjac_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms, am))
             return VLBE_ENONFINITE;
@@ -3393,12 +3393,12 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_real w = el->rm.g[g].w * L;
             vlbe_real X[2][3], Xt[2] = {0, 0}, z[3], zt = VLBE_R(0.0), c4[4], c2[2];
-            vlbe__a3_pt_eval(&el->rm.g[g], Lp, 0, 0, 3, &pt);
-            vlbe__a3_sum(&ly, pt.N[0][0], a, z);
-            if (ly.spin) zt = vlbe__a3_tsum(&ly, pt.H[0][0], a);
+            vlbe__ale3_pt_eval(&el->rm.g[g], Lp, 0, 0, 3, &pt);
+            vlbe__ale3_sum(&ly, pt.N[0][0], a, z);
+            if (ly.spin) zt = vlbe__ale3_tsum(&ly, pt.H[0][0], a);
             for (k = 0; k < 2; ++k) {
-                vlbe__a3_sum(&ly, pt.N[0][1 + k], q, X[k]);
-                if (ly.spin) Xt[k] = vlbe__a3_tsum(&ly, pt.H[0][1 + k], q);
+                vlbe__ale3_sum(&ly, pt.N[0][1 + k], q, X[k]);
+                if (ly.spin) Xt[k] = vlbe__ale3_tsum(&ly, pt.H[0][1 + k], q);
                 for (c = 0; c < 3; ++c) z[c] += ap[k] * X[k][c];
                 zt += ap[k] * Xt[k];
             }
@@ -3446,13 +3446,13 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
     vlbe_real Lp[6], L, T = VLBE_R(0.0), U = VLBE_R(0.0);
     vlbe_real V = VLBE_R(0.0);
     vlbe__ale_lay ly;
-    vlbe__a3_pt pt;
+    vlbe__ale3_pt pt;
     vlbe_status st;
     int g, bend, twist;
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
     mode |= el->flags;
     vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, qd)) != VLBE_OK) return st;
+    if ((st = vlbe__ale3_check(&ly, q, qd)) != VLBE_OK) return st;
     { /* T through M, whose storage ends here (pt below may reuse it) */
         vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
         const int n = ly.n;
@@ -3467,26 +3467,26 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
     vlbe__ale_lpow(L, Lp);
     for (g = 0; g < el->rm.n; ++g) {
         vlbe_real r[3];
-        vlbe__a3_pt_eval(&el->rm.g[g], Lp, 0, 0, 1, &pt);
-        vlbe__a3_sum(&ly, pt.N[0][0], q, r);
+        vlbe__ale3_pt_eval(&el->rm.g[g], Lp, 0, 0, 1, &pt);
+        vlbe__ale3_sum(&ly, pt.N[0][0], q, r);
         V -= el->rm.g[g].w * L * vlbe_v3_dot(mt->f, r);
     }
     for (g = 0; g < el->rs.n; ++g) {
         const vlbe_real w = el->rs.g[g].w * L;
         vlbe_real a[3], b[3], G[7], kk = VLBE_R(0.0), eps, phi;
-        vlbe__a3_pt_eval(&el->rs.g[g], Lp, 1, bend ? 2 : 1, 1, &pt);
-        vlbe__a3_sum(&ly, pt.N[1][0], q, a);
+        vlbe__ale3_pt_eval(&el->rs.g[g], Lp, 1, bend ? 2 : 1, 1, &pt);
+        vlbe__ale3_sum(&ly, pt.N[1][0], q, a);
         eps = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
         U += w * VLBE_R(0.5) * mt->EA * eps * eps;
         if (bend) {
-            vlbe__a3_sum(&ly, pt.N[2][0], q, b);
-            if ((st = vlbe__a3_bend(a, b, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL,
+            vlbe__ale3_sum(&ly, pt.N[2][0], q, b);
+            if ((st = vlbe__ale3_bend(a, b, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL,
                                     &kk)) != VLBE_OK)
                 return st;
             U += w * VLBE_R(0.5) * mt->EJ * kk;
         }
         if (twist) {
-            phi = vlbe__a3_tsum(&ly, pt.H[1][0], q);
+            phi = vlbe__ale3_tsum(&ly, pt.H[1][0], q);
             U += w * VLBE_R(0.5) * mt->GI * phi * phi;
         }
     }
@@ -3510,12 +3510,12 @@ VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_rea
     int i;
     VLBE_ASSERT(q != NULL);
     vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
+    if ((st = vlbe__ale3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 1, 0, &b);
-    vlbe__a3_sum(&ly, b.h[0][0], q, x);
-    vlbe__a3_sum(&ly, b.h[1][0], q, x + 3);
-    x[6] = vlbe__a3_tsum(&ly, b.l[0][0], q);
+    vlbe__ale3_sum(&ly, b.h[0][0], q, x);
+    vlbe__ale3_sum(&ly, b.h[1][0], q, x + 3);
+    x[6] = vlbe__ale3_tsum(&ly, b.l[0][0], q);
     if (!vlbe_all_finite(x, 7)) return VLBE_ENONFINITE;
     for (i = 0; i < 3; ++i) {
         if (r) r[i] = x[i];
@@ -3537,18 +3537,18 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
     vlbe_status st;
     VLBE_ASSERT(q != NULL);
     vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
+    if ((st = vlbe__ale3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 2, 0, &b);
-    vlbe__a3_sum(&ly, b.h[1][0], q, a);
-    vlbe__a3_sum(&ly, b.h[2][0], q, r2);
+    vlbe__ale3_sum(&ly, b.h[1][0], q, a);
+    vlbe__ale3_sum(&ly, b.h[2][0], q, r2);
     if (kap &&
-        (st = vlbe__a3_bend(a, r2, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL, &kk)) !=
+        (st = vlbe__ale3_bend(a, r2, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL, &kk)) !=
             VLBE_OK)
         return st;
     x[0] = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
     x[1] = vlbe_sqrt(kk);
-    x[2] = vlbe__a3_tsum(&ly, b.l[1][0], q);
+    x[2] = vlbe__ale3_tsum(&ly, b.l[1][0], q);
     if ((eps && !isfinite(x[0])) || (kap && !isfinite(x[1])) || (phi && !isfinite(x[2])))
         return VLBE_ENONFINITE;
     if (eps) *eps = x[0];
@@ -3560,10 +3560,10 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
 /* A point load at material point pf in [p1, p2] on the position field
    (F, 3 components: eq. 45) or on the spin field (torque T about the
    axis: eq. 46): Q += S(pf)^T F, K += d/dq (Kr, Kc may be NULL), on the
-   caller's copies (vlbe__a3_point_load).  K changes in the p-rows and
+   caller's copies (vlbe__ale3_point_load).  K changes in the p-rows and
    p-columns only: Kr[k * VLBE_ALE3_NQ + i] is K(p_k, i), Kc[k *
    VLBE_ALE3_NQ + i] is K(i, p_k) for the rows i that are not p's. */
-static inline vlbe_status vlbe__a3_point_add(unsigned mode, const vlbe_real *q, vlbe_real pf,
+VLBE_INLINE vlbe_status vlbe__ale3_point_add(unsigned mode, const vlbe_real *q, vlbe_real pf,
                                              const vlbe_real *F, vlbe_real T, int torque,
                                              vlbe_real *Q, vlbe_real *Kr, vlbe_real *Kc)
 {
@@ -3574,19 +3574,19 @@ static inline vlbe_status vlbe__a3_point_add(unsigned mode, const vlbe_real *q, 
     vlbe_status st;
     int j, k, l, c;
     vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__a3_check(&ly, q, NULL)) != VLBE_OK) return st;
+    if ((st = vlbe__ale3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(pf) || (torque ? !isfinite(T) : !vlbe_all_finite(F, 3))) return VLBE_ENONFINITE;
     if (torque && !ly.spin) return VLBE_EARG;
     if (pf < q[ly.p[0]] || pf > q[ly.p[1]]) return VLBE_EBOUND;
     vlbe_herm_ale_eval(pf, q[ly.p[0]], q[ly.p[1]], 0, 2, &b);
     if (torque) {
         for (j = 0; j < 2; ++j) Q[ly.th[j]] += b.l[0][0][j] * T;
-        for (k = 0; k < 2; ++k) Q[ly.p[k]] += vlbe__a3_tsum(&ly, b.l[0][1 + k], q) * T;
+        for (k = 0; k < 2; ++k) Q[ly.p[k]] += vlbe__ale3_tsum(&ly, b.l[0][1 + k], q) * T;
     } else {
         for (j = 0; j < 4; ++j)
             for (c = 0; c < 3; ++c) Q[ly.e[j] + c] += b.h[0][0][j] * F[c];
         for (k = 0; k < 2; ++k) {
-            vlbe__a3_sum(&ly, b.h[0][1 + k], q, x);
+            vlbe__ale3_sum(&ly, b.h[0][1 + k], q, x);
             Q[ly.p[k]] += vlbe_v3_dot(x, F);
         }
     }
@@ -3608,9 +3608,9 @@ static inline vlbe_status vlbe__a3_point_add(unsigned mode, const vlbe_real *q, 
                 }
         for (l = 0; l < 2; ++l) {
             if (torque)
-                row[ly.p[l]] += vlbe__a3_tsum(&ly, b.l[0][dd[k][l]], q) * T;
+                row[ly.p[l]] += vlbe__ale3_tsum(&ly, b.l[0][dd[k][l]], q) * T;
             else {
-                vlbe__a3_sum(&ly, b.h[0][dd[k][l]], q, x);
+                vlbe__ale3_sum(&ly, b.h[0][dd[k][l]], q, x);
                 row[ly.p[l]] += vlbe_v3_dot(x, F);
             }
         }
@@ -3618,12 +3618,12 @@ static inline vlbe_status vlbe__a3_point_add(unsigned mode, const vlbe_real *q, 
     return VLBE_OK;
 }
 
-/* vlbe__a3_point_add on copies of Q and of the p-rows and p-columns of K
+/* vlbe__ale3_point_add on copies of Q and of the p-rows and p-columns of K
    (the rest of K does not change), committed when Q and all of K are
    finite.  An entry that is not finite stays so when a number is added,
    so the check of the caller's K and of the copies is that of the whole
    updated K. */
-static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q, vlbe_real pf,
+VLBE_INLINE vlbe_status vlbe__ale3_point_load(unsigned mode, const vlbe_real *q, vlbe_real pf,
                                               const vlbe_real *F, vlbe_real T, int torque,
                                               vlbe_real *Q, vlbe_real *K)
 {
@@ -3639,7 +3639,7 @@ static inline vlbe_status vlbe__a3_point_load(unsigned mode, const vlbe_real *q,
             Kr[k * VLBE_ALE3_NQ + i] = K[ly.p[k] * n + i];
             Kc[k * VLBE_ALE3_NQ + i] = K[i * n + ly.p[k]];
         }
-    if ((st = vlbe__a3_point_add(mode, q, pf, F, T, torque, Qt, K ? Kr : NULL,
+    if ((st = vlbe__ale3_point_add(mode, q, pf, F, T, torque, Qt, K ? Kr : NULL,
                                  K ? Kc : NULL)) != VLBE_OK)
         return st;
     if (!vlbe_all_finite(Qt, n) ||
@@ -3663,7 +3663,7 @@ VLBE_API vlbe_status vlbe_ale3_point_force(unsigned mode, const vlbe_real *q, vl
                                            vlbe_real *VLBE_RESTRICT K)
 {
     VLBE_ASSERT(q != NULL && F != NULL && Q != NULL);
-    return vlbe__a3_point_load(mode, q, pf, F, VLBE_R(0.0), 0, Q, K);
+    return vlbe__ale3_point_load(mode, q, pf, F, VLBE_R(0.0), 0, Q, K);
 }
 
 /* A torque T about the beam axis at material point pf, acting on the spin
@@ -3673,7 +3673,7 @@ VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, v
                                             vlbe_real *VLBE_RESTRICT K)
 {
     VLBE_ASSERT(q != NULL && Q != NULL);
-    return vlbe__a3_point_load(mode, q, pf, NULL, T, 1, Q, K);
+    return vlbe__ale3_point_load(mode, q, pf, NULL, T, 1, Q, K);
 }
 
 /* ===== chains of elements ================================================ */
@@ -3991,7 +3991,7 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
 VLBE_API vlbe_status vlbe_ale_chain_dae(vlbe_ale_chain *ch, vlbe_dae *sys);
 
 /* -- implementation ----------------------------------------------------- */
-static inline vlbe_status vlbe__ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
+VLBE_INLINE vlbe_status vlbe__ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
                                                const vlbe_ale3_elem *el3, vlbe_ale_node *nodes,
                                                int nn, int nn_cap, vlbe_ale_con *cons,
                                                int ncon_cap)
@@ -4058,13 +4058,13 @@ VLBE_API vlbe_status vlbe_ale_chain_types(vlbe_ale_chain *ch, const vlbe_ale_ety
 }
 
 /* the element type of element e of a planar chain */
-static inline const vlbe_ale_elem *vlbe__ale_el(const vlbe_ale_chain *ch, int e)
+VLBE_INLINE const vlbe_ale_elem *vlbe__ale_el(const vlbe_ale_chain *ch, int e)
 {
     return ch->et ? ch->et->elem(ch->els, e) : ch->el;
 }
 
 /* the basis of element e of a planar chain at p */
-static inline void vlbe__ale_chain_basis(const vlbe_ale_chain *ch, int e, vlbe_real p,
+VLBE_INLINE void vlbe__ale_chain_basis(const vlbe_ale_chain *ch, int e, vlbe_real p,
                                          vlbe_real p1, vlbe_real p2, int kmax, int amax,
                                          vlbe_herm_ale *b)
 {
@@ -4074,7 +4074,7 @@ static inline void vlbe__ale_chain_basis(const vlbe_ale_chain *ch, int e, vlbe_r
 
 /* rows of a constraint in a chain of dimension d (-1: not a type; 0: not
    available in this dimension) */
-static inline int vlbe__ale_con_rows(const vlbe_ale_chain *ch, const vlbe_ale_con *c)
+VLBE_INLINE int vlbe__ale_con_rows(const vlbe_ale_chain *ch, const vlbe_ale_con *c)
 {
     const int d = ch->el3 ? 3 : 2, planar = ch->el3 == NULL;
     switch (c->type) {
@@ -4101,7 +4101,7 @@ static inline int vlbe__ale_con_rows(const vlbe_ale_chain *ch, const vlbe_ale_co
 /* u = x / |x| for a finite x of d components, scaled by its largest
    component first (no overflow or underflow of |x|^2); 0 when x is zero or
    not finite, 1 on success */
-static inline int vlbe__ale_unit(int d, const vlbe_real *x, vlbe_real *u)
+VLBE_INLINE int vlbe__ale_unit(int d, const vlbe_real *x, vlbe_real *u)
 {
     vlbe_real m = VLBE_R(0.0), n2 = VLBE_R(0.0), n;
     int i;
@@ -4123,7 +4123,7 @@ static inline int vlbe__ale_unit(int d, const vlbe_real *x, vlbe_real *u)
    from e, its part across e: |e_c - u_c u|^2 = 1 - u_c^2 >= 2/3, so no
    cancellation) and b2 = u x b1; [u, b1, b2] is right-handed.  Returns 0
    for a zero or non-finite e. */
-static inline int vlbe__ale_perp(const vlbe_real *e, vlbe_real *b)
+VLBE_INLINE int vlbe__ale_perp(const vlbe_real *e, vlbe_real *b)
 {
     vlbe_real u[3], w[3];
     int i, c = 0;
@@ -4139,7 +4139,7 @@ static inline int vlbe__ale_perp(const vlbe_real *e, vlbe_real *b)
 /* The checks of vlbe_ale_chain_add and _layout on one constraint: its
    type, rows and nodes (VLBE_EARG), its values finite (VLBE_ENONFINITE),
    the directions SLOPE_DIR and SLOPE_ROT read not zero (VLBE_EARG). */
-static inline vlbe_status vlbe__ale_con_check(const vlbe_ale_chain *ch, const vlbe_ale_con *c)
+VLBE_INLINE vlbe_status vlbe__ale_con_check(const vlbe_ale_chain *ch, const vlbe_ale_con *c)
 {
     const int d = ch->el3 ? 3 : 2;
     vlbe_real u[3];
@@ -4168,20 +4168,20 @@ VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *
 }
 
 /* index of the coordinate p of node i in q, -1 when p is not a coordinate */
-static inline int vlbe__ale_pidx(const vlbe_ale_chain *ch, int i)
+VLBE_INLINE int vlbe__ale_pidx(const vlbe_ale_chain *ch, int i)
 {
     const vlbe_ale_node *nd = &ch->node[i];
     return nd->pmode == VLBE_ALE_PFREE ? nd->ofs + ch->d * (2 + nd->slide) + ch->spin : -1;
 }
 
 /* index of the spin angle of node i (3D chains with spin) */
-static inline int vlbe__ale_tidx(const vlbe_ale_chain *ch, int i)
+VLBE_INLINE int vlbe__ale_tidx(const vlbe_ale_chain *ch, int i)
 {
     return ch->spin ? ch->node[i].ofs + 2 * ch->d : -1;
 }
 
 /* index of slope `which` (0 left, 1 right) of node i */
-static inline int vlbe__ale_sidx(const vlbe_ale_chain *ch, int i, int which)
+VLBE_INLINE int vlbe__ale_sidx(const vlbe_ale_chain *ch, int i, int which)
 {
     return ch->node[i].ofs + ch->d * (1 + (ch->node[i].slide && which ? 1 : 0));
 }
@@ -4189,7 +4189,7 @@ static inline int vlbe__ale_sidx(const vlbe_ale_chain *ch, int i, int which)
 /* element e's index map into q: its coordinates node by node (position,
    the slope on the element's side, spin, p), -1 for a p that is not a
    coordinate (the layout of vlbe_ale_chain_gather) */
-static inline void vlbe__ale_eidx(const vlbe_ale_chain *ch, int e, int *idx)
+VLBE_INLINE void vlbe__ale_eidx(const vlbe_ale_chain *ch, int e, int *idx)
 {
     const int d = ch->d, nb = 2 * d + ch->spin + 1; /* element block per node */
     int s, k;
@@ -4209,7 +4209,7 @@ static inline void vlbe__ale_eidx(const vlbe_ale_chain *ch, int e, int *idx)
    the row touches in *lo and, returned, the node of the highest (the
    row's place in the augmented order).  The columns are those that
    vlbe__ale_chain_con writes. */
-static inline int vlbe__ale_con_row(const vlbe_ale_chain *ch, const vlbe_ale_con *c, int j,
+VLBE_INLINE int vlbe__ale_con_row(const vlbe_ale_chain *ch, const vlbe_ale_con *c, int j,
                                     int *lo)
 {
     const int o = ch->node[c->node].ofs;
@@ -4239,7 +4239,7 @@ static inline int vlbe__ale_con_row(const vlbe_ale_chain *ch, const vlbe_ale_con
 /* The highest coordinate row j of constraint c touches, for the rows of
    one node (every type but VLBE_ALE_CON_EQUAL_LEN); lo from
    vlbe__ale_con_row. */
-static inline int vlbe__ale_con_hi(const vlbe_ale_chain *ch, const vlbe_ale_con *c, int lo)
+VLBE_INLINE int vlbe__ale_con_hi(const vlbe_ale_chain *ch, const vlbe_ale_con *c, int lo)
 {
     switch (c->type) {
     case VLBE_ALE_CON_SLOPE_DIR: case VLBE_ALE_CON_SLOPE_ANGLE: case VLBE_ALE_CON_SLOPE_ROT:
@@ -4258,7 +4258,7 @@ static inline int vlbe__ale_con_hi(const vlbe_ale_chain *ch, const vlbe_ale_con 
    consecutive nodes (an element: 2; an equal-length group: node2 - node
    + 1) of at most 3 d + 2 coordinates each, and the m rows, so kl < s (3 d
    + 2) + m and ld <= 2 kl + 1. */
-static inline vlbe_status vlbe__ale_size_ok(const vlbe_ale_chain *ch, int d, int n, int m)
+VLBE_INLINE vlbe_status vlbe__ale_size_ok(const vlbe_ale_chain *ch, int d, int n, int m)
 {
     const size_t big = (size_t)-1 / 4, nc = (size_t)(3 * d + 2);
     size_t span = 2, klb;
@@ -4288,7 +4288,7 @@ static inline vlbe_status vlbe__ale_size_ok(const vlbe_ale_chain *ch, int d, int
    coordinates come last, node by node from the last, node i's
    overwriting order[ofs_i ..] (ofs_i >= 4 i) after order[i - 1], the rows
    before node i, was read. */
-static inline void vlbe__ale_band_order(vlbe_ale_chain *ch)
+VLBE_INLINE void vlbe__ale_band_order(vlbe_ale_chain *ch)
 {
     int *ord = ch->order;
     const int n = ch->n, nn = ch->nn, ne = 2 * (2 * ch->d + ch->spin + 1);
@@ -4471,7 +4471,7 @@ VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_
 
 /* vlbe_ale_chain_gather without the range check, written in place (the
    callers' own locals): rates when v and ve are both given */
-static inline vlbe_status vlbe__ale_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__ale_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v, vlbe_real *qe,
                                            vlbe_real *ve, int *idx, unsigned *mode)
 {
@@ -4753,7 +4753,7 @@ VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t
    the model's domain -- an element shorter than Lmin or inverted, a zero
    slope, non-finite values, which a Newton iterate can produce -- and
    negative (fatal) for everything else (bad arguments, a failing pfun). */
-static inline int vlbe__ale_fail(vlbe_ale_chain *ch, vlbe_status st, int where)
+VLBE_INLINE int vlbe__ale_fail(vlbe_ale_chain *ch, vlbe_status st, int where)
 {
     ch->err = st;
     ch->err_elem = where;
@@ -4762,20 +4762,20 @@ static inline int vlbe__ale_fail(vlbe_ale_chain *ch, vlbe_status st, int where)
 }
 
 /* coordinates of one element of the chain (10 planar, 14 or 16 in 3D) */
-static inline int vlbe__ale_ne(const vlbe_ale_chain *ch)
+VLBE_INLINE int vlbe__ale_ne(const vlbe_ale_chain *ch)
 {
     return 2 * (2 * ch->d + ch->spin + 1);
 }
 
 /* the element calls of the chain's element type (md: the gathered mode) */
-static inline vlbe_status vlbe__ale_el_mass(const vlbe_ale_chain *ch, int e, unsigned md,
+VLBE_INLINE vlbe_status vlbe__ale_el_mass(const vlbe_ale_chain *ch, int e, unsigned md,
                                             const vlbe_real *qe, vlbe_real *Me)
 {
     return ch->el3 ? vlbe_ale3_mass(ch->el3, md, qe, Me)
                    : vlbe_ale_mass(vlbe__ale_el(ch, e), md, qe, Me);
 }
 
-static inline vlbe_status vlbe__ale_el_mass_jac(const vlbe_ale_chain *ch, int e, unsigned md,
+VLBE_INLINE vlbe_status vlbe__ale_el_mass_jac(const vlbe_ale_chain *ch, int e, unsigned md,
                                                 const vlbe_real *qe, const vlbe_real *ae,
                                                 vlbe_real *Je)
 {
@@ -4784,7 +4784,7 @@ static inline vlbe_status vlbe__ale_el_mass_jac(const vlbe_ale_chain *ch, int e,
 }
 
 /* (the force with the distributed load mat.f times the chain's load factor) */
-static inline vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, int e, unsigned md,
+VLBE_INLINE vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, int e, unsigned md,
                                              const vlbe_real *qe, const vlbe_real *ve,
                                              vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
 {
@@ -4794,7 +4794,7 @@ static inline vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, int e, un
     int c;
     for (c = 0; c < ch->d; ++c) fl[c] = ch->load_factor * f[c];
     return el ? vlbe__ale_force(el, md | el->flags, qe, ve, Qe, Ke, De, 1, fl)
-              : vlbe__a3_force(ch->el3, md, qe, ve, Qe, Ke, De, fl);
+              : vlbe__ale3_force(ch->el3, md, qe, ve, Qe, Ke, De, fl);
 }
 
 /* The index map of the chain's matrices: entry (i, j) -- i, j < n
@@ -4802,7 +4802,7 @@ static inline vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, int e, un
    A[vlbe__ale_at(ch, i, j)]: dense i n + j, banded VLBE_BAND_IDX(ld, kl,
    order[i], order[j]) with ld = kl + ku + 1 (see vlbe_ale_chain).  Every
    assembly below goes through it. */
-static inline size_t vlbe__ale_at(const vlbe_ale_chain *ch, int i, int j)
+VLBE_INLINE size_t vlbe__ale_at(const vlbe_ale_chain *ch, int i, int j)
 {
     if (!ch->order) return (size_t)i * (size_t)ch->n + (size_t)j;
     return VLBE_BAND_IDX(ch->kl + ch->ku + 1, ch->kl, ch->order[i], ch->order[j]);
@@ -4810,14 +4810,14 @@ static inline size_t vlbe__ale_at(const vlbe_ale_chain *ch, int i, int j)
 
 /* entry (k, j) of C_q: row k of the dense m x n matrix, or the row of
    constraint k in the augmented order */
-static inline size_t vlbe__ale_cq_at(const vlbe_ale_chain *ch, int k, int j)
+VLBE_INLINE size_t vlbe__ale_cq_at(const vlbe_ale_chain *ch, int k, int j)
 {
     return vlbe__ale_at(ch, ch->order ? ch->n + k : k, j);
 }
 
 /* reals of one of the chain's matrices: n * n dense, (n + m) ld banded (the
    layout checked that it fits in a size_t) */
-static inline size_t vlbe__ale_mat_len(const vlbe_ale_chain *ch)
+VLBE_INLINE size_t vlbe__ale_mat_len(const vlbe_ale_chain *ch)
 {
     if (!ch->order) return (size_t)ch->n * (size_t)ch->n;
     VLBE_ASSERT(ch->kl >= 0); /* vlbe_ale_chain_band is followed by a layout */
@@ -4825,7 +4825,7 @@ static inline size_t vlbe__ale_mat_len(const vlbe_ale_chain *ch)
 }
 
 /* scatter an ne x ne element matrix into the chain's matrix A */
-static inline void vlbe__ale_scatter(const vlbe_ale_chain *ch, int ne, const int *idx,
+VLBE_INLINE void vlbe__ale_scatter(const vlbe_ale_chain *ch, int ne, const int *idx,
                                      const vlbe_real *Ae, vlbe_real *A)
 {
     int i, j;
@@ -4841,7 +4841,7 @@ static inline void vlbe__ale_scatter(const vlbe_ale_chain *ch, int ne, const int
    summed stays Inf or NaN).  Dense: rows of node i, columns of nodes i-1
    .. i+1 (contiguous in q), one vectorised pass over the band; banded: the
    whole band array, row by row. */
-static inline int vlbe__ale_band_finite(const vlbe_ale_chain *ch, const vlbe_real *A)
+VLBE_INLINE int vlbe__ale_band_finite(const vlbe_ale_chain *ch, const vlbe_real *A)
 {
     const size_t n = (size_t)ch->n;
     int i, r, ok = 1;
@@ -4863,7 +4863,7 @@ static inline int vlbe__ale_band_finite(const vlbe_ale_chain *ch, const vlbe_rea
 /* 1 when the diagonal of the n x n matrix A is finite: enough for the mass
    matrix, a sum of positive semidefinite element matrices (w G^T G, eqs.
    19, 28) and point masses, whose entries obey |M_ij| <= sqrt(M_ii M_jj) */
-static inline int vlbe__ale_diag_finite(int n, const vlbe_real *A)
+VLBE_INLINE int vlbe__ale_diag_finite(int n, const vlbe_real *A)
 {
     const size_t n1 = (size_t)n + 1;
     int i, ok = 1;
@@ -4873,7 +4873,7 @@ static inline int vlbe__ale_diag_finite(int n, const vlbe_real *A)
 
 /* 1 when the diagonal of the chain's matrix A is finite (the mass matrix:
    vlbe__ale_diag_finite) */
-static inline int vlbe__ale_mdiag_finite(const vlbe_ale_chain *ch, const vlbe_real *A)
+VLBE_INLINE int vlbe__ale_mdiag_finite(const vlbe_ale_chain *ch, const vlbe_real *A)
 {
     int i, ok = 1;
     if (!ch->order) return vlbe__ale_diag_finite(ch->n, A);
@@ -4885,7 +4885,7 @@ static inline int vlbe__ale_mdiag_finite(const vlbe_ale_chain *ch, const vlbe_re
 }
 
 /* zero one of the chain's matrices (vlbe__ale_mat_len reals) */
-static inline void vlbe__ale_zero_mat(const vlbe_ale_chain *ch, vlbe_real *A)
+VLBE_INLINE void vlbe__ale_zero_mat(const vlbe_ale_chain *ch, vlbe_real *A)
 {
     const size_t len = vlbe__ale_mat_len(ch);
     size_t i;
@@ -4895,7 +4895,7 @@ static inline void vlbe__ale_zero_mat(const vlbe_ale_chain *ch, vlbe_real *A)
 /* the first element whose coordinates hold entry k of q (or v, a): that
    of node i's position, slopes, spin and p is element i - 1 (element 0 for
    node 0), except the right slope of a sliding node: element i */
-static inline int vlbe__ale_elem_of(const vlbe_ale_chain *ch, int k)
+VLBE_INLINE int vlbe__ale_elem_of(const vlbe_ale_chain *ch, int k)
 {
     int i = 0;
     while (i + 1 < ch->nn && ch->node[i + 1].ofs <= k) ++i; /* node i holds k */
@@ -4907,7 +4907,7 @@ static inline int vlbe__ale_elem_of(const vlbe_ale_chain *ch, int k)
 }
 
 /* index of the first NaN/Inf of x[0..n-1], n when none (x may be NULL) */
-static inline int vlbe__ale_first_bad(const vlbe_real *x, int n)
+VLBE_INLINE int vlbe__ale_first_bad(const vlbe_real *x, int n)
 {
     int k = 0;
     if (x)
@@ -4919,7 +4919,7 @@ static inline int vlbe__ale_first_bad(const vlbe_real *x, int n)
    before any output is written: records VLBE_ENONFINITE with the first
    element that gathers such a value and returns the callback's value; 0
    when all finite (the common case: one vectorised pass per array) */
-static inline int vlbe__ale_in_check(vlbe_ale_chain *ch, const vlbe_real *q, const vlbe_real *v,
+VLBE_INLINE int vlbe__ale_in_check(vlbe_ale_chain *ch, const vlbe_real *q, const vlbe_real *v,
                                      const vlbe_real *a)
 {
     int e = ch->nn, k, j;
@@ -4940,7 +4940,7 @@ static inline int vlbe__ale_in_check(vlbe_ale_chain *ch, const vlbe_real *q, con
 
 /* prescribed p'' of the element's non-coordinate p's, as an acceleration
    vector in element coordinates (zero elsewhere); returns 0 if all zero */
-static inline int vlbe__ale_pres_acc(const vlbe_ale_chain *ch, int e, vlbe_real t, vlbe_real *ae)
+VLBE_INLINE int vlbe__ale_pres_acc(const vlbe_ale_chain *ch, int e, vlbe_real t, vlbe_real *ae)
 {
     const int ne = vlbe__ale_ne(ch);
     int s, any = 0, k;
@@ -4985,7 +4985,7 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
 
 /* -- point loads and the load factor (vlbe_ale_load) -------------------- */
 /* a load's own data: kind, flag, law and constant value */
-static inline vlbe_status vlbe__ale_load_ok(const vlbe_ale_chain *ch, const vlbe_ale_load *ld)
+VLBE_INLINE vlbe_status vlbe__ale_load_ok(const vlbe_ale_chain *ch, const vlbe_ale_load *ld)
 {
     if (ld->kind != VLBE_ALE_LOAD_FORCE && ld->kind != VLBE_ALE_LOAD_MOMENT &&
         ld->kind != VLBE_ALE_LOAD_MOMENT3)
@@ -5019,7 +5019,7 @@ VLBE_API vlbe_status vlbe_ale_chain_loads(vlbe_ale_chain *ch, const vlbe_ale_loa
 
 /* p(t), p'(t) of load ld in pp and the element holding p(t) in *e (-1: an
    `outside` load outside the material range) */
-static inline vlbe_status vlbe__ale_load_at(const vlbe_ale_chain *ch, const vlbe_ale_load *ld,
+VLBE_INLINE vlbe_status vlbe__ale_load_at(const vlbe_ale_chain *ch, const vlbe_ale_load *ld,
                                             vlbe_real t, const vlbe_real *q, vlbe_real *pp, int *e)
 {
     vlbe_status st;
@@ -5037,7 +5037,7 @@ static inline vlbe_status vlbe__ale_load_at(const vlbe_ale_chain *ch, const vlbe
 /* column of slot j (0: r1, 1: r1', 2: r2, 3: r2') in gathered element
    coordinates (nb per node, d per vector); p_k at nb k + nb - 1, theta_i
    at nb i + 2 d */
-static inline int vlbe__ale_lso(int d, int nb, int j)
+VLBE_INLINE int vlbe__ale_lso(int d, int nb, int j)
 {
     return nb * (j >> 1) + d * (j & 1);
 }
@@ -5045,7 +5045,7 @@ static inline int vlbe__ale_lso(int d, int nb, int j)
 /* u = r^(kk)(p) (kk = 0: position, 1: slope; d components) of a gathered
    element from its basis b (k <= kk, p1/p2 partials to second order), and
    G = du/dq (d x ne, written whole) */
-static inline void vlbe__ale_ld_field(int d, int nb, const vlbe_herm_ale *b, int kk,
+VLBE_INLINE void vlbe__ale_ld_field(int d, int nb, const vlbe_herm_ale *b, int kk,
                                       const vlbe_real *qe, vlbe_real *u, vlbe_real *G)
 {
     const int ne = 2 * nb;
@@ -5064,7 +5064,7 @@ static inline void vlbe__ale_ld_field(int d, int nb, const vlbe_herm_ale *b, int
 
 /* Ke += s sum_c w_c d^2 u_c/dq^2 for u = r^(kk)(p): the e-p and p-p blocks
    (u is linear in the slots e) */
-static inline void vlbe__ale_ld_hess(int d, int nb, const vlbe_herm_ale *b, int kk,
+VLBE_INLINE void vlbe__ale_ld_hess(int d, int nb, const vlbe_herm_ale *b, int kk,
                                      const vlbe_real *qe, const vlbe_real *w, vlbe_real s,
                                      vlbe_real *Ke)
 {
@@ -5089,7 +5089,7 @@ static inline void vlbe__ale_ld_hess(int d, int nb, const vlbe_herm_ale *b, int 
 
 /* The spin angle's Jacobian G (1 x ne, written whole) at the point of b
    (linear H basis, eq. 46 of [V]) and, with Ke, Ke += s w d^2 theta/dq^2 */
-static inline void vlbe__ale_ld_spin(int d, int nb, const vlbe_herm_ale *b, const vlbe_real *qe,
+VLBE_INLINE void vlbe__ale_ld_spin(int d, int nb, const vlbe_herm_ale *b, const vlbe_real *qe,
                                      vlbe_real *G, vlbe_real w, vlbe_real s, vlbe_real *Ke)
 {
     static const int dd[2][2] = {{VLBE_DA_11, VLBE_DA_12}, {VLBE_DA_12, VLBE_DA_22}};
@@ -5112,7 +5112,7 @@ static inline void vlbe__ale_ld_spin(int d, int nb, const vlbe_herm_ale *b, cons
 }
 
 /* A += s G^T B for G (nc x ne), B (nc x ne) */
-static inline void vlbe__ale_ld_gtb(int nc, int ne, const vlbe_real *G, const vlbe_real *B,
+VLBE_INLINE void vlbe__ale_ld_gtb(int nc, int ne, const vlbe_real *G, const vlbe_real *B,
                                     vlbe_real s, vlbe_real *A)
 {
     int a, c, j;
@@ -5138,7 +5138,7 @@ static inline void vlbe__ale_ld_gtb(int nc, int ne, const vlbe_real *G, const vl
    (VLBE_ESINGULAR), a moment without spin in 3D or a moment vector in a
    planar chain (VLBE_EARG), fun failing (VLBE_ECALLBACK) or non-finite
    (VLBE_ENONFINITE). */
-static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vlbe_ale_load *ld,
+VLBE_INLINE vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vlbe_ale_load *ld,
                                               int e, vlbe_real t, const vlbe_real *pp,
                                               const vlbe_real *qe, const vlbe_real *ve,
                                               vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
@@ -5292,7 +5292,7 @@ static inline vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vl
 }
 
 /* records a failure of point load k (element e, -1: none) */
-static inline int vlbe__ale_load_fail(vlbe_ale_chain *ch, vlbe_status st, int e, int k)
+VLBE_INLINE int vlbe__ale_load_fail(vlbe_ale_chain *ch, vlbe_status st, int e, int k)
 {
     const int rc = vlbe__ale_fail(ch, st, e);
     ch->err_load = k;
@@ -5302,7 +5302,7 @@ static inline int vlbe__ale_load_fail(vlbe_ale_chain *ch, vlbe_status st, int e,
 /* Checks every point load before anything is written: its data, a finite
    load factor, its place on the chain at (q, t).  0 or the callback's
    failure value. */
-static inline int vlbe__ale_loads_check(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q)
+VLBE_INLINE int vlbe__ale_loads_check(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q)
 {
     int k, e;
     vlbe_real pp[2];
@@ -5318,7 +5318,7 @@ static inline int vlbe__ale_loads_check(vlbe_ale_chain *ch, vlbe_real t, const v
 
 /* Q and/or K, D (the chain's matrices: n x n, or band arrays; any of the three
    may be NULL) */
-static inline int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+VLBE_INLINE int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
                                          const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                          vlbe_real *D)
 {
@@ -5423,7 +5423,7 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
 }
 
 /* known p (and its rates) of node i for the equal-length constraint */
-static inline vlbe_status vlbe__ale_eql_end(const vlbe_ale_chain *ch, int i, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__ale_eql_end(const vlbe_ale_chain *ch, int i, vlbe_real t,
                                             const vlbe_real *q, vlbe_real *p3, int *col)
 {
     *col = vlbe__ale_pidx(ch, i);
@@ -5432,7 +5432,7 @@ static inline vlbe_status vlbe__ale_eql_end(const vlbe_ale_chain *ch, int i, vlb
 
 /* a, a', a'' at t of the angle of the VLBE_ALE_CON_SLOPE_ANGLE or
    VLBE_ALE_CON_SLOPE_ROT constraint k: the chain's afun, or its law */
-static inline vlbe_status vlbe__ale_law(const vlbe_ale_chain *ch, int k, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__ale_law(const vlbe_ale_chain *ch, int k, vlbe_real t,
                                         vlbe_real *a3)
 {
     const vlbe_ale_con *c = &ch->con[k];
@@ -5450,7 +5450,7 @@ static inline vlbe_status vlbe__ale_law(const vlbe_ale_chain *ch, int k, vlbe_re
 /* a, a', a'' of the VLBE_ALE_CON_SLOPE_ANGLE constraint k at t, and the
    slope s = r' it acts on: cs = [cos a, sin a], w = [a', a''], the index of
    the slope in q. */
-static inline vlbe_status vlbe__ale_angle(const vlbe_ale_chain *ch, int k, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__ale_angle(const vlbe_ale_chain *ch, int k, vlbe_real t,
                                           vlbe_real *cs, vlbe_real *w, int *s)
 {
     const vlbe_ale_con *c = &ch->con[k];
@@ -5472,7 +5472,7 @@ static inline vlbe_status vlbe__ale_angle(const vlbe_ale_chain *ch, int k, vlbe_
    pair across e0 (vlbe__ale_perp) and R x = x cos a + (k x x) sin a + k (k.x)
    (1 - cos a) (Rodrigues, k unit); dR x / da = k x R x, so C_t = a' kB s
    and C_tt = a'' kB s + a'^2 kkB s.  add and layout have checked d and axis. */
-static inline vlbe_status vlbe__ale_dir3(const vlbe_ale_chain *ch, int k, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__ale_dir3(const vlbe_ale_chain *ch, int k, vlbe_real t,
                                          vlbe_real *B, vlbe_real *kB, vlbe_real *kkB,
                                          vlbe_real *w)
 {
@@ -5507,7 +5507,7 @@ static inline vlbe_status vlbe__ale_dir3(const vlbe_ale_chain *ch, int k, vlbe_r
 
 /* Constraint rows: C (may be NULL), Cq (m x n, or the band array in banded
    mode; may be NULL), Ct. */
-static inline vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_real t,
                                               const vlbe_real *q, vlbe_real *C, vlbe_real *Cq,
                                               vlbe_real *Ct)
 {
@@ -5827,14 +5827,14 @@ VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlb
     return VLBE_OK;
 }
 
-static inline int vlbe__ale_ncoord(const vlbe_ale_node *nd)
+VLBE_INLINE int vlbe__ale_ncoord(const vlbe_ale_node *nd)
 {
     return 4 + 2 * nd->slide + (nd->pmode == VLBE_ALE_PFREE);
 }
 
 /* copy nc coordinates from offset o of (q, v) to offset on of (qn, vn);
    forward copy, so in place is fine when on <= o */
-static inline void vlbe__ale_copy_node(const vlbe_real *q, const vlbe_real *v, int o, int nc,
+VLBE_INLINE void vlbe__ale_copy_node(const vlbe_real *q, const vlbe_real *v, int o, int nc,
                                        vlbe_real *qn, vlbe_real *vn, int on)
 {
     int k;
@@ -5845,7 +5845,7 @@ static inline void vlbe__ale_copy_node(const vlbe_real *q, const vlbe_real *v, i
 }
 
 /* does a constraint name node i (or an equal-length group contain it)? */
-static inline int vlbe__ale_constrained(const vlbe_ale_chain *ch, int i)
+VLBE_INLINE int vlbe__ale_constrained(const vlbe_ale_chain *ch, int i)
 {
     int k;
     for (k = 0; k < ch->ncon; ++k) {
@@ -5924,7 +5924,7 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
 
 /* the per-element types' merge at node i (elements i-1 and i), from the
    nodes [r, r', p] of both elements */
-static inline vlbe_status vlbe__ale_merge_aux(const vlbe_ale_chain *ch, int i, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__ale_merge_aux(const vlbe_ale_chain *ch, int i, vlbe_real t,
                                               const vlbe_real *q, vlbe_real *aux)
 {
     vlbe_real qa[10], qb[10];
@@ -5952,7 +5952,7 @@ static inline vlbe_status vlbe__ale_merge_aux(const vlbe_ale_chain *ch, int i, v
    its errors are found before anything changes. */
 /* The removal itself, node i checked; aux: the merge of the per-element
    types (vlbe__ale_merge_aux), unused without them. */
-static inline vlbe_status vlbe__ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe_real *q,
+VLBE_INLINE vlbe_status vlbe__ale_chain_remove(vlbe_ale_chain *ch, int i, const vlbe_real *q,
                                                  const vlbe_real *v, vlbe_real *qn, vlbe_real *vn,
                                                  const vlbe_real *aux)
 {
@@ -5997,7 +5997,7 @@ VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real 
 }
 
 /* may node i be removed by length control? */
-static inline int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
+VLBE_INLINE int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
 {
     if (i <= 0 || i >= ch->nn - 1 || ch->node[i].slide || ch->node[i].mass != VLBE_R(0.0) ||
         ch->node[i].pmode == VLBE_ALE_PFREE)

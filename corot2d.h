@@ -274,7 +274,7 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
 
 /* ===== implementation =================================================== */
 
-static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L2, vlbe_real *m,
+VLBE_INLINE void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L2, vlbe_real *m,
                                    vlbe_real *k0, vlbe_real *dm, vlbe_real *dk0);
 
 
@@ -338,7 +338,7 @@ static const short vlbe__cr2d_tab[3][4][4] = {
 enum { VLBE__CR2D_NN = 0, VLBE__CR2D_N1N1 = 1, VLBE__CR2D_N2N2 = 2 };
 
 /* x^e for a small integer e */
-static inline vlbe_real vlbe__cr2d_ipow(vlbe_real x, int e)
+VLBE_INLINE vlbe_real vlbe__cr2d_ipow(vlbe_real x, int e)
 {
     vlbe_real r = VLBE_R(1.0);
     const vlbe_real b = e < 0 ? VLBE_R(1.0) / x : x;
@@ -350,7 +350,7 @@ static inline vlbe_real vlbe__cr2d_ipow(vlbe_real x, int e)
 /* out (stride ld, at the rows/columns ib; ib < 0: skipped) += c * table t
    * L^(p + e), p = (i & 1) + (j & 1) the L powers of the table; dout (may
    be NULL) += its L-derivative. */
-static inline void vlbe__cr2d_herm(int t, vlbe_real c, int e, vlbe_real L, const int *ib, int ld,
+VLBE_INLINE void vlbe__cr2d_herm(int t, vlbe_real c, int e, vlbe_real L, const int *ib, int ld,
                                    vlbe_real *out, vlbe_real *dout)
 {
     int i, j;
@@ -375,7 +375,7 @@ static const int vlbe__cr2d_ib2[4] = {-1, -1, 4, 5}; /* the transition's v2, phi
    segment over L2 on v2, phi2 only, eqs. 48-49); dm, dk0 (transition, may
    be NULL, also without m, k0): their L2-derivatives.  m_b with rhoI (eq. 22 prints rhoA on the
    rotary term; eq. 19 shows rhoI). */
-static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L2, vlbe_real *m,
+VLBE_INLINE void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L2, vlbe_real *m,
                                    vlbe_real *k0, vlbe_real *dm, vlbe_real *dk0)
 {
     const vlbe_real L = el->L, ma = el->mat.rhoA * L / VLBE_R(6.0), ka = el->mat.EA / L;
@@ -414,7 +414,7 @@ static inline void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L
 
 /* G_b = int N_b' N_b'^T dx over a length L2 (4x4 on v1, phi1, v2, phi2),
    dG (may be NULL) its L2-derivative */
-static inline void vlbe__cr2d_gb(vlbe_real L2, vlbe_real *G, vlbe_real *dG)
+VLBE_INLINE void vlbe__cr2d_gb(vlbe_real L2, vlbe_real *G, vlbe_real *dG)
 {
     int i;
     for (i = 0; i < 16; ++i) G[i] = VLBE_R(0.0);
@@ -433,7 +433,7 @@ typedef struct vlbe__cr2d_fr {
     int rot[2];
 } vlbe__cr2d_fr;
 
-static inline void vlbe__cr2d_fr_set(vlbe__cr2d_fr *f, vlbe_real c1, vlbe_real s1, int r1,
+VLBE_INLINE void vlbe__cr2d_fr_set(vlbe__cr2d_fr *f, vlbe_real c1, vlbe_real s1, int r1,
                                      vlbe_real c2, vlbe_real s2, int r2)
 {
     f->c[0] = c1;
@@ -445,7 +445,7 @@ static inline void vlbe__cr2d_fr_set(vlbe__cr2d_fr *f, vlbe_real c1, vlbe_real s
 }
 
 /* y = T x: per node (u, v) = (c x + s y, -s x + c y), phi unchanged */
-static inline void vlbe__cr2d_to_loc(const vlbe__cr2d_fr *f, const vlbe_real *x, vlbe_real *y)
+VLBE_INLINE void vlbe__cr2d_to_loc(const vlbe__cr2d_fr *f, const vlbe_real *x, vlbe_real *y)
 {
     int k;
     for (k = 0; k < 2; ++k) {
@@ -457,7 +457,7 @@ static inline void vlbe__cr2d_to_loc(const vlbe__cr2d_fr *f, const vlbe_real *x,
 }
 
 /* x = T^T y */
-static inline void vlbe__cr2d_to_glob(const vlbe__cr2d_fr *f, const vlbe_real *y, vlbe_real *x)
+VLBE_INLINE void vlbe__cr2d_to_glob(const vlbe__cr2d_fr *f, const vlbe_real *y, vlbe_real *x)
 {
     int k;
     for (k = 0; k < 2; ++k) {
@@ -469,7 +469,7 @@ static inline void vlbe__cr2d_to_glob(const vlbe__cr2d_fr *f, const vlbe_real *y
 }
 
 /* G += T^T A T (A local 6x6) */
-static inline void vlbe__cr2d_congr(const vlbe__cr2d_fr *f, const vlbe_real *A, vlbe_real *G)
+VLBE_INLINE void vlbe__cr2d_congr(const vlbe__cr2d_fr *f, const vlbe_real *A, vlbe_real *G)
 {
     vlbe_real B[36], col[6], out[6];
     int i, j;
@@ -487,7 +487,7 @@ static inline void vlbe__cr2d_congr(const vlbe__cr2d_fr *f, const vlbe_real *A, 
    local, f the local force, u = T u_g the local rate or acceleration);
    per turning node d(T x)/db = Jt (T x), Jt: (u, v) -> (v, -u), and
    d(T^T y)/db = T^T Jf y, Jf: (u, v) -> (-v, u). */
-static inline void vlbe__cr2d_frame_col(const vlbe__cr2d_fr *fr, const vlbe_real *f,
+VLBE_INLINE void vlbe__cr2d_frame_col(const vlbe__cr2d_fr *fr, const vlbe_real *f,
                                         const vlbe_real *A, const vlbe_real *u,
                                         const vlbe_real *gb, vlbe_real *K)
 {
@@ -536,7 +536,7 @@ typedef struct vlbe__cr2d_kin {
     vlbe_real B[4][6], L1y[4], L1yy[16];
 } vlbe__cr2d_kin;
 
-static inline vlbe_status vlbe__cr2d_check(const vlbe_real *q, const vlbe_real *qd)
+VLBE_INLINE vlbe_status vlbe__cr2d_check(const vlbe_real *q, const vlbe_real *qd)
 {
     if (!vlbe_all_finite(q, 6)) return VLBE_ENONFINITE;
     if (qd && !vlbe_all_finite(qd, 6)) return VLBE_ENONFINITE;
@@ -544,14 +544,14 @@ static inline vlbe_status vlbe__cr2d_check(const vlbe_real *q, const vlbe_real *
 }
 
 /* Angle of the direction (ca, sa) against the chord (c, s), in (-pi, pi]. */
-static inline vlbe_real vlbe__cr2d_rel_angle(vlbe_real ca, vlbe_real sa, vlbe_real c, vlbe_real s)
+VLBE_INLINE vlbe_real vlbe__cr2d_rel_angle(vlbe_real ca, vlbe_real sa, vlbe_real c, vlbe_real s)
 {
     return vlbe_atan2(sa * c - ca * s, ca * c + sa * s);
 }
 
 /* theta of node j: the cross-section tangent a0 + phi_j against the chord;
    sine and cosine only, so any number of accumulated turns is harmless */
-static inline vlbe_real vlbe__cr2d_theta(const vlbe_cr2d_elem *el, vlbe_real ph, vlbe_real c,
+VLBE_INLINE vlbe_real vlbe__cr2d_theta(const vlbe_cr2d_elem *el, vlbe_real ph, vlbe_real c,
                                          vlbe_real s)
 {
     const vlbe_real cp = vlbe_cos(ph), sp = vlbe_sin(ph);
@@ -560,7 +560,7 @@ static inline vlbe_real vlbe__cr2d_theta(const vlbe_cr2d_elem *el, vlbe_real ph,
 
 /* gradients of the chord length and angle; both = 0: the chord starts at
    a fixed point */
-static inline void vlbe__cr2d_chord_grad(vlbe__cr2d_kin *k, int both)
+VLBE_INLINE void vlbe__cr2d_chord_grad(vlbe__cr2d_kin *k, int both)
 {
     int i;
     for (i = 0; i < 6; ++i) k->gl[i] = k->gb[i] = k->gL2[i] = VLBE_R(0.0);
@@ -578,7 +578,7 @@ static inline void vlbe__cr2d_chord_grad(vlbe__cr2d_kin *k, int both)
 
 /* Conventional element; LINEAR: the frame stays at a0, theta_j = phi_j -
    (v2 - v1)/L and eps0 = (u2 - u1)/L in it. */
-static inline vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin, int frame_only,
+VLBE_INLINE vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin, int frame_only,
                                               const vlbe_real *q, vlbe__cr2d_kin *k)
 {
     const vlbe_real L = el->L;
@@ -628,7 +628,7 @@ static inline vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin,
    cancellation; L1 = 0 exactly when l1 = 0: then the element is the
    conventional one with theta1 = theta3).  Its y-derivatives by implicit
    differentiation of F (linear in w = (l1, l2, eps_v) at fixed L1). */
-static inline vlbe_status vlbe__cr2d_kin_tr(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+VLBE_INLINE vlbe_status vlbe__cr2d_kin_tr(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
                                             const vlbe_real *q, vlbe__cr2d_kin *k)
 {
     const vlbe_real L = el->L, ax = jt->a[0], ay = jt->a[1];
@@ -715,7 +715,7 @@ static inline vlbe_status vlbe__cr2d_kin_tr(const vlbe_cr2d_elem *el, const vlbe
 
 /* K += B^T H B for nl local variables with gradient rows B (nl x 6) and
    local Hessian H (nl x nl). */
-static inline void vlbe__cr2d_bthb(int nl, const vlbe_real *B, const vlbe_real *H, vlbe_real *K)
+VLBE_INLINE void vlbe__cr2d_bthb(int nl, const vlbe_real *B, const vlbe_real *H, vlbe_real *K)
 {
     int i, j, a, b;
     for (a = 0; a < nl; ++a)
@@ -734,7 +734,7 @@ static inline void vlbe__cr2d_bthb(int nl, const vlbe_real *B, const vlbe_real *
    e2 e1^T) / l^2 (e1 e2^T + e2 e1^T = [[-2cs, c^2 - s^2], [c^2 - s^2,
    2cs]]); gt is the sum of the forces on the angles theta = ... - b.
    both = 0: the chord starts at a fixed point (only the x2 block). */
-static inline void vlbe__cr2d_chord_hess(vlbe_real c, vlbe_real s, vlbe_real l, vlbe_real gl,
+VLBE_INLINE void vlbe__cr2d_chord_hess(vlbe_real c, vlbe_real s, vlbe_real l, vlbe_real gl,
                                          vlbe_real gt, int both, vlbe_real *K)
 {
     vlbe_real P[2][2];
@@ -755,7 +755,7 @@ static inline void vlbe__cr2d_chord_hess(vlbe_real c, vlbe_real s, vlbe_real l, 
 }
 
 /* -- deformation force (nonlinear): F = grad U, K = Hess U --------------- */
-static inline void vlbe__cr2d_elastic(const vlbe_cr2d_elem *el, const vlbe__cr2d_kin *k,
+VLBE_INLINE void vlbe__cr2d_elastic(const vlbe_cr2d_elem *el, const vlbe__cr2d_kin *k,
                                       vlbe_real *F, vlbe_real *K)
 {
     const vlbe_real L = el->L, EA = el->mat.EA, EI = el->mat.EI;
@@ -798,7 +798,7 @@ static inline void vlbe__cr2d_elastic(const vlbe_cr2d_elem *el, const vlbe__cr2d
    theta2) through L2 = L - L1(y), then F = B^T U_y and K = B^T U_yy B +
    the turning of the outside chord (eqs. 43-44, 48: the paper's k_a, k_b
    plus the terms of the consistent linearization it drops). */
-static inline void vlbe__cr2d_elastic_tr(const vlbe_cr2d_elem *el, const vlbe__cr2d_kin *k,
+VLBE_INLINE void vlbe__cr2d_elastic_tr(const vlbe_cr2d_elem *el, const vlbe__cr2d_kin *k,
                                          vlbe_real *F, vlbe_real *K)
 {
     const vlbe_real L = el->L, EA = el->mat.EA, EI = el->mat.EI, L2 = k->L2, l2 = k->l;
@@ -859,7 +859,7 @@ static inline void vlbe__cr2d_elastic_tr(const vlbe_cr2d_elem *el, const vlbe__c
    p_k/((k+1)(k+3)) (eq. 45; eq. 18 for L1 = 0), and f_b = -2 rhoI
    ((u2' - u1')/L) G_b(L2) u_b (eqs. 19, 46).  f = f_a + f_b (6), A =
    df/du (6x6); fL (may be NULL) = df/dL2 at fixed u. */
-static inline void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, vlbe_real L2, const vlbe_real *u,
+VLBE_INLINE void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, vlbe_real L2, const vlbe_real *u,
                                   vlbe_real *f, vlbe_real *A, vlbe_real *fL)
 {
     const vlbe_real L = el->L, L1 = L - L2, rA = el->mat.rhoA, rI = el->mat.rhoI;
@@ -956,7 +956,7 @@ static inline void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, vlbe_real L2, const 
 }
 
 /* The element's kinematics: conventional (jt NULL) or transition. */
-static inline vlbe_status vlbe__cr2d_kin_any(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+VLBE_INLINE vlbe_status vlbe__cr2d_kin_any(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
                                              unsigned mode, const vlbe_real *q, const vlbe_real *qd,
                                              vlbe__cr2d_kin *k)
 {
@@ -972,7 +972,7 @@ static inline vlbe_status vlbe__cr2d_kin_any(const vlbe_cr2d_elem *el, const vlb
 
 /* Local rates u = T q'; the transition element has no node-1 lateral or
    rotation coordinate (the joint holds them). */
-static inline void vlbe__cr2d_rates(const vlbe__cr2d_kin *k, const vlbe_real *qd, vlbe_real *u)
+VLBE_INLINE void vlbe__cr2d_rates(const vlbe__cr2d_kin *k, const vlbe_real *qd, vlbe_real *u)
 {
     vlbe__cr2d_to_loc(&k->fr, qd, u);
     if (k->tr) u[1] = u[2] = VLBE_R(0.0);
@@ -980,7 +980,7 @@ static inline void vlbe__cr2d_rates(const vlbe__cr2d_kin *k, const vlbe_real *qd
 
 /* Q, K, D into the caller's zeroed locals (F = -Q accumulated, negated at
    the end) */
-static inline void vlbe__cr2d_forces(const vlbe_cr2d_elem *el, unsigned mode,
+VLBE_INLINE void vlbe__cr2d_forces(const vlbe_cr2d_elem *el, unsigned mode,
                                      const vlbe__cr2d_kin *k, const vlbe_real *q,
                                      const vlbe_real *qd, vlbe_real *F, vlbe_real *K, vlbe_real *D)
 {
@@ -1053,7 +1053,7 @@ static inline void vlbe__cr2d_forces(const vlbe_cr2d_elem *el, unsigned mode,
    dd (optional, with qd) its rate R^T(theta) (u' + theta' J (X + u)), J:
    (x, y) -> (y, -x), and phi' - theta'.  fr receives the rotation
    T = blockdiag(R^T(theta), 1) of both nodes (to_loc applies T). */
-static inline vlbe_status vlbe__cr2d_float(const vlbe_cr2d_elem *el, const vlbe_real *fth,
+VLBE_INLINE vlbe_status vlbe__cr2d_float(const vlbe_cr2d_elem *el, const vlbe_real *fth,
                                            const vlbe_real *q, const vlbe_real *qd,
                                            vlbe__cr2d_fr *fr, vlbe_real *d, vlbe_real *dd)
 {
@@ -1082,7 +1082,7 @@ static inline vlbe_status vlbe__cr2d_float(const vlbe_cr2d_elem *el, const vlbe_
     return VLBE_OK;
 }
 
-static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
+VLBE_INLINE vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
                                                const vlbe_cr2d_joint *jt, unsigned mode,
                                                const vlbe_real *fth, const vlbe_real *q,
                                                const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
@@ -1144,7 +1144,7 @@ static inline vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
     return VLBE_OK;
 }
 
-static inline vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
+VLBE_INLINE vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vlbe_cr2d_joint *jt,
                                               unsigned mode, const vlbe_real *q,
                                               vlbe_real *VLBE_RESTRICT M)
 {
@@ -1183,7 +1183,7 @@ static inline vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vl
 
 /* d(M a)/dq = d(T^T m T a)/dq: the turning frame, and (transition) the
    L2-dependence of m */
-static inline vlbe_status vlbe__cr2d_mass_jac_any(const vlbe_cr2d_elem *el,
+VLBE_INLINE vlbe_status vlbe__cr2d_mass_jac_any(const vlbe_cr2d_elem *el,
                                                   const vlbe_cr2d_joint *jt, unsigned mode,
                                                   const vlbe_real *q, const vlbe_real *a,
                                                   vlbe_real *VLBE_RESTRICT Mq)
@@ -1215,7 +1215,7 @@ static inline vlbe_status vlbe__cr2d_mass_jac_any(const vlbe_cr2d_elem *el,
 
 /* fth: floating frame (LINEAR): the strain energy of d, the kinetic energy
    of the global rates q' */
-static inline vlbe_status vlbe__cr2d_energy_any(const vlbe_cr2d_elem *el,
+VLBE_INLINE vlbe_status vlbe__cr2d_energy_any(const vlbe_cr2d_elem *el,
                                                 const vlbe_cr2d_joint *jt, unsigned mode,
                                                 const vlbe_real *fth, const vlbe_real *q,
                                                 const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
@@ -1680,14 +1680,14 @@ VLBE_API void vlbe_cr2d_fix_eval(const vlbe_cr2d_fix *f, vlbe_real t, vlbe_real 
 }
 
 /* the joint when element e is the transition element, else NULL */
-static inline const vlbe_cr2d_joint *vlbe__cr2d_jt(const vlbe_cr2d_beam *b, int e)
+VLBE_INLINE const vlbe_cr2d_joint *vlbe__cr2d_jt(const vlbe_cr2d_beam *b, int e)
 {
     return (b->joint && e == b->trans) ? b->joint : NULL;
 }
 
 /* the floating frame (theta, theta') of element e at t into fth: NULL when
    the beam has none or the element is not LINEAR */
-static inline const vlbe_real *vlbe__cr2d_bframe(const vlbe_cr2d_beam *b, int e, vlbe_real t,
+VLBE_INLINE const vlbe_real *vlbe__cr2d_bframe(const vlbe_cr2d_beam *b, int e, vlbe_real t,
                                                  vlbe_real *fth)
 {
     vlbe_real g[3];
@@ -1698,7 +1698,7 @@ static inline const vlbe_real *vlbe__cr2d_bframe(const vlbe_cr2d_beam *b, int e,
     return fth;
 }
 
-static inline int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
+VLBE_INLINE int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
 {
     b->err = st;
     b->err_elem = e;
@@ -1713,7 +1713,7 @@ static inline int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
    matrix's A[map[i] + map[6 + j]].  Dense: row offsets (3e + i) n, columns
    3e + j.  Banded: entry (order[3e + i], order[3e + j]) of the band, at
    VLBE_BAND_IDX(ld, kl, r, c) = r ld + c - r + kl = (r (ld - 1) + kl) + c. */
-static inline void vlbe__cr2d_map(const vlbe_cr2d_beam *b, int e, size_t *map)
+VLBE_INLINE void vlbe__cr2d_map(const vlbe_cr2d_beam *b, int e, size_t *map)
 {
     int i;
     for (i = 0; i < 6; ++i) {
@@ -1731,7 +1731,7 @@ static inline void vlbe__cr2d_map(const vlbe_cr2d_beam *b, int e, size_t *map)
 /* A += Ae (6x6) at the places of the index map; 1 when the entries added
    to are finite afterwards (a NaN/Inf entry stays so under later
    additions; x - x == 0 only for finite x: no branch in the loop) */
-static inline int vlbe__cr2d_scatter(const size_t *map, const vlbe_real *Ae, vlbe_real *A)
+VLBE_INLINE int vlbe__cr2d_scatter(const size_t *map, const vlbe_real *Ae, vlbe_real *A)
 {
     size_t i, j;
     int ok = 1;
@@ -1747,7 +1747,7 @@ static inline int vlbe__cr2d_scatter(const size_t *map, const vlbe_real *Ae, vlb
 /* entries of an n x n matrix of the beam (rows m = nfix for Cq): dense n
    rows (m) of n, banded (n + m) ld (init and _band checked that they fit
    in a size_t) */
-static inline size_t vlbe__cr2d_len(const vlbe_cr2d_beam *b, int rows)
+VLBE_INLINE size_t vlbe__cr2d_len(const vlbe_cr2d_beam *b, int rows)
 {
     if (b->order)
         return ((size_t)b->n + (size_t)b->nfix) * (size_t)(b->kl + b->ku + 1);
@@ -1757,7 +1757,7 @@ static inline size_t vlbe__cr2d_len(const vlbe_cr2d_beam *b, int rows)
 /* a banded matrix callback: the beam's nfix still the one its order was
    made for (else VLBE_EARG: vlbe_cr2d_beam_band was not called again after
    a new layout); 0 or the callback's value */
-static inline int vlbe__cr2d_band_check(vlbe_cr2d_beam *b)
+VLBE_INLINE int vlbe__cr2d_band_check(vlbe_cr2d_beam *b)
 {
     if (b->order && b->nfix != b->band_m_) return vlbe__cr2d_fail(b, VLBE_EARG, -1);
     return 0;
@@ -1765,7 +1765,7 @@ static inline int vlbe__cr2d_band_check(vlbe_cr2d_beam *b)
 
 
 /* zero cnt entries (init checked that n * n and nfix * n fit in a size_t) */
-static inline void vlbe__cr2d_zero(size_t cnt, vlbe_real *A)
+VLBE_INLINE void vlbe__cr2d_zero(size_t cnt, vlbe_real *A)
 {
     size_t i;
     for (i = 0; i < cnt; ++i) A[i] = VLBE_R(0.0);
@@ -1774,7 +1774,7 @@ static inline void vlbe__cr2d_zero(size_t cnt, vlbe_real *A)
 /* NaN/Inf in a callback's q, v, a (each n; v, a may be NULL), found before
    any output is written: records VLBE_ENONFINITE at the first element that
    reads it and returns the callback's value (1); 0 when all finite */
-static inline int vlbe__cr2d_in_check(vlbe_cr2d_beam *b, const vlbe_real *q, const vlbe_real *v,
+VLBE_INLINE int vlbe__cr2d_in_check(vlbe_cr2d_beam *b, const vlbe_real *q, const vlbe_real *v,
                                       const vlbe_real *a)
 {
     int e;
@@ -1790,7 +1790,7 @@ static inline int vlbe__cr2d_in_check(vlbe_cr2d_beam *b, const vlbe_real *q, con
 
 /* the constraint callbacks: every fix's dof in [0, n) (the caller may move
    the fixes after init) and q finite; 0 or the callback's value */
-static inline int vlbe__cr2d_fix_check(vlbe_cr2d_beam *b, const vlbe_real *q, const vlbe_real *v)
+VLBE_INLINE int vlbe__cr2d_fix_check(vlbe_cr2d_beam *b, const vlbe_real *q, const vlbe_real *v)
 {
     int k;
     for (k = 0; k < b->nfix; ++k)
@@ -1835,7 +1835,7 @@ typedef struct vlbe__cr2d_lf {
     int lin;
 } vlbe__cr2d_lf;
 
-static inline vlbe_status vlbe__cr2d_lframe(const vlbe_cr2d_elem *el, unsigned mode,
+VLBE_INLINE vlbe_status vlbe__cr2d_lframe(const vlbe_cr2d_elem *el, unsigned mode,
                                             const vlbe_real *q, vlbe__cr2d_lf *f)
 {
     int j;
@@ -1878,7 +1878,7 @@ static inline vlbe_status vlbe__cr2d_lframe(const vlbe_cr2d_elem *el, unsigned m
 
 /* adds H_dd (2x2, symmetric) and H_dphi_j (2 x 2: column j) of a function of
    (x1, d, phi1, phi2) to the 6x6 K in q (d = u2 - u1 + const) */
-static inline void vlbe__cr2d_lhess(const vlbe_real *Hdd, const vlbe_real *Hdp, vlbe_real *K)
+VLBE_INLINE void vlbe__cr2d_lhess(const vlbe_real *Hdd, const vlbe_real *Hdp, vlbe_real *K)
 {
     int a, c, j;
     for (a = 0; a < 2; ++a) {
@@ -1905,7 +1905,7 @@ static inline void vlbe__cr2d_lhess(const vlbe_real *Hdd, const vlbe_real *Hdp, 
    G += s d(w.R)/dq (6) and, with K, K += s d^2(w.R)/dq^2.  w.R =
    a w.x1 + c w.d + Phi(beta, phi), Phi = L W (w.e2), W = n2 theta1 + n4
    theta2, theta_j = a0 + phi_j - beta, de2/dbeta = -e1, de1/dbeta = e2. */
-static inline void vlbe__cr2d_lfield(const vlbe__cr2d_lf *f, vlbe_real a, vlbe_real c,
+VLBE_INLINE void vlbe__cr2d_lfield(const vlbe__cr2d_lf *f, vlbe_real a, vlbe_real c,
                                      vlbe_real n2, vlbe_real n4, const vlbe_real *w, vlbe_real s,
                                      vlbe_real *G, vlbe_real *K)
 {
@@ -1939,7 +1939,7 @@ static inline void vlbe__cr2d_lfield(const vlbe__cr2d_lf *f, vlbe_real a, vlbe_r
 /* The rotation of the section at xi, psi = beta + dn2 theta1 + dn4 theta2
    (slope of eqs. 8-9; psi = a0 + phi_j at the nodes), times a moment m:
    G += s m dpsi/dq, K += s m d^2 psi/dq^2 (through beta(d) only) */
-static inline void vlbe__cr2d_lrot(const vlbe__cr2d_lf *f, vlbe_real dn2, vlbe_real dn4,
+VLBE_INLINE void vlbe__cr2d_lrot(const vlbe__cr2d_lf *f, vlbe_real dn2, vlbe_real dn4,
                                    vlbe_real m, vlbe_real s, vlbe_real *G, vlbe_real *K)
 {
     const vlbe_real pb = VLBE_R(1.0) - dn2 - dn4;
@@ -1959,7 +1959,7 @@ static inline void vlbe__cr2d_lrot(const vlbe__cr2d_lf *f, vlbe_real dn2, vlbe_r
 }
 
 /* Hermite numbers at xi: n2, n4 and their xi-derivatives */
-static inline void vlbe__cr2d_lherm(vlbe_real xi, vlbe_real *h)
+VLBE_INLINE void vlbe__cr2d_lherm(vlbe_real xi, vlbe_real *h)
 {
     const vlbe_real x1 = VLBE_R(1.0) - xi;
     h[0] = xi * x1 * x1;
@@ -1969,7 +1969,7 @@ static inline void vlbe__cr2d_lherm(vlbe_real xi, vlbe_real *h)
 }
 
 /* a load's own data: kind, flag, law, constant value */
-static inline vlbe_status vlbe__cr2d_load_ok(const vlbe_cr2d_load *ld)
+VLBE_INLINE vlbe_status vlbe__cr2d_load_ok(const vlbe_cr2d_load *ld)
 {
     if (ld->kind != VLBE_CR2D_LOAD_FORCE && ld->kind != VLBE_CR2D_LOAD_MOMENT) return VLBE_EARG;
     if (ld->outside != 0 && ld->outside != 1) return VLBE_EARG;
@@ -1997,7 +1997,7 @@ VLBE_API vlbe_status vlbe_cr2d_beam_loads(vlbe_cr2d_beam *b, const vlbe_cr2d_loa
 
 /* s(t), s'(t) of load ld, its element *e and xi there (*e = -1: an
    `outside` load outside [0, total reference length]) */
-static inline vlbe_status vlbe__cr2d_load_at(const vlbe_cr2d_beam *b, const vlbe_cr2d_load *ld,
+VLBE_INLINE vlbe_status vlbe__cr2d_load_at(const vlbe_cr2d_beam *b, const vlbe_cr2d_load *ld,
                                              vlbe_real t, vlbe_real *ss, int *e, vlbe_real *xi)
 {
     vlbe_real a = VLBE_R(0.0);
@@ -2021,7 +2021,7 @@ static inline vlbe_status vlbe__cr2d_load_at(const vlbe_cr2d_beam *b, const vlbe
 
 /* element e's mode, and whether loads between its nodes are available
    (not the transition element, not a LINEAR element in a floating frame) */
-static inline vlbe_status vlbe__cr2d_lmode(const vlbe_cr2d_beam *b, int e, unsigned *mode)
+VLBE_INLINE vlbe_status vlbe__cr2d_lmode(const vlbe_cr2d_beam *b, int e, unsigned *mode)
 {
     *mode = b->mode | b->el[e].flags;
     if (vlbe__cr2d_jt(b, e) || (b->frame && (*mode & VLBE_CR2D_LINEAR))) return VLBE_EARG;
@@ -2033,7 +2033,7 @@ static inline vlbe_status vlbe__cr2d_lmode(const vlbe_cr2d_beam *b, int e, unsig
    Q = (dr/dq)^T f, K = f . d^2 r/dq^2; moment: Q = m dpsi/dq, K = m
    d^2 psi/dq^2; a callback's derivatives add G^T (df/dr dr/dq + df/drd
    drd/dq) to K and G^T df/drd dr/dq to D, rd = (dr/dq) v + (dr/dxi) xi'. */
-static inline vlbe_status vlbe__cr2d_load_elem(const vlbe_cr2d_beam *b, const vlbe_cr2d_load *ld,
+VLBE_INLINE vlbe_status vlbe__cr2d_load_elem(const vlbe_cr2d_beam *b, const vlbe_cr2d_load *ld,
                                                int e, vlbe_real t, vlbe_real xi, vlbe_real xd,
                                                const vlbe_real *q, const vlbe_real *v,
                                                vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
@@ -2122,7 +2122,7 @@ static inline vlbe_status vlbe__cr2d_load_elem(const vlbe_cr2d_beam *b, const vl
    element e: Qe = load int_0^L (dr/dq)^T w dx, Ke its q-derivative (3-point
    Gauss rule: the integrands are cubic in xi, exact); Qe, Ke written whole
    (Ke may be NULL) */
-static inline vlbe_status vlbe__cr2d_dist_elem(const vlbe_cr2d_beam *b, int e, const vlbe_real *w,
+VLBE_INLINE vlbe_status vlbe__cr2d_dist_elem(const vlbe_cr2d_beam *b, int e, const vlbe_real *w,
                                                const vlbe_real *q, vlbe_real *Qe, vlbe_real *Ke)
 {
     const vlbe_real *x, *wg;
@@ -2147,7 +2147,7 @@ static inline vlbe_status vlbe__cr2d_dist_elem(const vlbe_cr2d_beam *b, int e, c
 
 /* the distributed load of element e into w (beam-wide dist plus dist_e);
    0 when it is zero */
-static inline int vlbe__cr2d_dist_of(const vlbe_cr2d_beam *b, int e, vlbe_real *w)
+VLBE_INLINE int vlbe__cr2d_dist_of(const vlbe_cr2d_beam *b, int e, vlbe_real *w)
 {
     w[0] = b->dist[0] + (b->dist_e ? b->dist_e[2 * e] : VLBE_R(0.0));
     w[1] = b->dist[1] + (b->dist_e ? b->dist_e[2 * e + 1] : VLBE_R(0.0));
@@ -2157,7 +2157,7 @@ static inline int vlbe__cr2d_dist_of(const vlbe_cr2d_beam *b, int e, vlbe_real *
 /* records a failure of point load k (-1: the distributed load): as
    vlbe__cr2d_fail, but a load outside the beam is fatal (-1) -- the range
    does not depend on the state */
-static inline int vlbe__cr2d_load_fail(vlbe_cr2d_beam *b, vlbe_status st, int e, int k)
+VLBE_INLINE int vlbe__cr2d_load_fail(vlbe_cr2d_beam *b, vlbe_status st, int e, int k)
 {
     const int rc = vlbe__cr2d_fail(b, st, e);
     b->err_load = k;
@@ -2166,7 +2166,7 @@ static inline int vlbe__cr2d_load_fail(vlbe_cr2d_beam *b, vlbe_status st, int e,
 
 /* Checks the loads before anything is written: factor, distributed
    values, each point load's data and place.  0 or the callback's value. */
-static inline int vlbe__cr2d_loads_check(vlbe_cr2d_beam *b, vlbe_real t)
+VLBE_INLINE int vlbe__cr2d_loads_check(vlbe_cr2d_beam *b, vlbe_real t)
 {
     vlbe_real ss[2], xi, w[2];
     int k, e;
@@ -2192,7 +2192,7 @@ static inline int vlbe__cr2d_loads_check(vlbe_cr2d_beam *b, vlbe_real t)
 
 /* adds the loads between the nodes to Q and/or K, D (Qe, Ke, De: the
    caller's element scratch) */
-static inline int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vlbe_real *q,
+VLBE_INLINE int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vlbe_real *q,
                                         const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                         vlbe_real *D, vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
 {
@@ -2227,7 +2227,7 @@ static inline int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vl
     return 0;
 }
 
-static inline int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const vlbe_real *q,
+VLBE_INLINE int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const vlbe_real *q,
                                          const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                          vlbe_real *D)
 {

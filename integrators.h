@@ -487,7 +487,7 @@ VLBE_API vlbe_status vlbe_bdf_interp(const vlbe_bdf *st, vlbe_real t, vlbe_real 
 /* ===== implementation =================================================== */
 
 /* -- counted callback wrappers ------------------------------------------ */
-VLBE_INLINE void vlbe__int_stats_zero(vlbe_dae_stats *c)
+VLBE_INLINE void vlbe__dae_stats_zero(vlbe_dae_stats *c)
 {
     c->steps = c->rejected = c->newton_iters = c->newton_fails = 0;
     c->force_calls = c->mass_calls = c->constr_calls = 0;
@@ -497,7 +497,7 @@ VLBE_INLINE void vlbe__int_stats_zero(vlbe_dae_stats *c)
 /* A callback's return value as a status; a failure is remembered in
    c->callback_rc (positive: the point is outside the model's domain, the
    step may be retried smaller). */
-VLBE_INLINE vlbe_status vlbe__int_cb(vlbe_dae_stats *c, int rc)
+VLBE_INLINE vlbe_status vlbe__dae_cb(vlbe_dae_stats *c, int rc)
 {
     if (rc == 0) return VLBE_OK;
     c->callback_rc = rc;
@@ -505,39 +505,39 @@ VLBE_INLINE vlbe_status vlbe__int_cb(vlbe_dae_stats *c, int rc)
 }
 /* a failed attempt that a smaller step may cure: Newton trouble, or a
    callback that called the iterate outside its domain (return value > 0) */
-VLBE_INLINE int vlbe__int_retry(const vlbe_dae_stats *c, vlbe_status rc)
+VLBE_INLINE int vlbe__dae_retry(const vlbe_dae_stats *c, vlbe_status rc)
 {
     return rc != VLBE_EARG && (rc != VLBE_ECALLBACK || c->callback_rc > 0);
 }
-VLBE_INLINE vlbe_status vlbe__int_mass(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__dae_mass(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                        const vlbe_real *q, const vlbe_real *v, vlbe_real *M)
 {
     ++c->mass_calls;
-    return vlbe__int_cb(c, s->mass(s->user, t, q, v, M));
+    return vlbe__dae_cb(c, s->mass(s->user, t, q, v, M));
 }
-VLBE_INLINE vlbe_status vlbe__int_force(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__dae_force(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                         const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
 {
     ++c->force_calls;
-    return vlbe__int_cb(c, s->force(s->user, t, q, v, Q));
+    return vlbe__dae_cb(c, s->force(s->user, t, q, v, Q));
 }
-VLBE_INLINE vlbe_status vlbe__int_constr(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__dae_constr(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                          const vlbe_real *q, vlbe_real *C)
 {
     if (s->m == 0) return VLBE_OK;
     ++c->constr_calls;
-    return vlbe__int_cb(c, s->constr(s->user, t, q, C));
+    return vlbe__dae_cb(c, s->constr(s->user, t, q, C));
 }
-VLBE_INLINE vlbe_status vlbe__int_cjac(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__dae_cjac(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                        const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
 {
     if (s->m == 0) return VLBE_OK;
     ++c->constr_calls;
-    return vlbe__int_cb(c, s->constr_jac(s->user, t, q, Cq, Ct));
+    return vlbe__dae_cb(c, s->constr_jac(s->user, t, q, Cq, Ct));
 }
 
 /* Forward-difference increment for coordinate x. */
-VLBE_INLINE vlbe_real vlbe__int_fd_step(vlbe_real x)
+VLBE_INLINE vlbe_real vlbe__dae_fd_step(vlbe_real x)
 {
     vlbe_real ax = vlbe_fabs(x);
     return vlbe_sqrt(VLBE_EPS) * (ax > VLBE_R(1.0) ? ax : VLBE_R(1.0));
@@ -552,42 +552,42 @@ VLBE_INLINE vlbe_real vlbe__int_fd_step(vlbe_real x)
    (q, v, lambda, mu) of BDF -- is an (f NA) band in which unknown u of
    block b sits at f order[u] + b, half-bandwidths f kl + f - 1 and
    f ku + f - 1, stored with the kl extra super-diagonals of the banded LU.
-   inv[] (NA ints, from vlbe__int_inv) maps an augmented position back to
+   inv[] (NA ints, from vlbe__dae_inv) maps an augmented position back to
    its unknown (< n: q_i, else lambda_{i-n}). */
-VLBE_INLINE int vlbe__int_banded(const vlbe_dae *s) { return s->storage == VLBE_DAE_BANDED; }
-VLBE_INLINE int vlbe__int_bld(const vlbe_dae *s) { return s->kl + s->ku + 1; }
+VLBE_INLINE int vlbe__dae_banded(const vlbe_dae *s) { return s->storage == VLBE_DAE_BANDED; }
+VLBE_INLINE int vlbe__dae_bld(const vlbe_dae *s) { return s->kl + s->ku + 1; }
 /* reals of one model matrix: n x n (cq = 0) or m x n (cq = 1), or a band */
-VLBE_INLINE size_t vlbe__int_mlen(const vlbe_dae *s, int cq)
+VLBE_INLINE size_t vlbe__dae_mlen(const vlbe_dae *s, int cq)
 {
-    if (vlbe__int_banded(s)) return ((size_t)s->n + (size_t)s->m) * (size_t)vlbe__int_bld(s);
+    if (vlbe__dae_banded(s)) return ((size_t)s->n + (size_t)s->m) * (size_t)vlbe__dae_bld(s);
     return (size_t)(cq ? s->m : s->n) * (size_t)s->n;
 }
 /* half-bandwidths of an iteration matrix of f blocks */
-VLBE_INLINE int vlbe__int_fkl(const vlbe_dae *s, int f) { return f * s->kl + f - 1; }
-VLBE_INLINE int vlbe__int_fku(const vlbe_dae *s, int f) { return f * s->ku + f - 1; }
+VLBE_INLINE int vlbe__dae_fkl(const vlbe_dae *s, int f) { return f * s->kl + f - 1; }
+VLBE_INLINE int vlbe__dae_fku(const vlbe_dae *s, int f) { return f * s->ku + f - 1; }
 /* reals of an iteration matrix of f blocks (N = f (n + m)) and its LU */
-VLBE_INLINE size_t vlbe__int_alen(const vlbe_dae *s, int f)
+VLBE_INLINE size_t vlbe__dae_alen(const vlbe_dae *s, int f)
 {
     size_t N = (size_t)f * ((size_t)s->n + (size_t)s->m);
-    if (vlbe__int_banded(s))
-        return N * vlbe_band_lu_ld(vlbe__int_fkl(s, f), vlbe__int_fku(s, f));
+    if (vlbe__dae_banded(s))
+        return N * vlbe_band_lu_ld(vlbe__dae_fkl(s, f), vlbe__dae_fku(s, f));
     return N * N;
 }
 /* leading dimension of that matrix */
-VLBE_INLINE size_t vlbe__int_ald(const vlbe_dae *s, int f)
+VLBE_INLINE size_t vlbe__dae_ald(const vlbe_dae *s, int f)
 {
-    if (vlbe__int_banded(s)) return vlbe_band_lu_ld(vlbe__int_fkl(s, f), vlbe__int_fku(s, f));
+    if (vlbe__dae_banded(s)) return vlbe_band_lu_ld(vlbe__dae_fkl(s, f), vlbe__dae_fku(s, f));
     return (size_t)f * ((size_t)s->n + (size_t)s->m);
 }
 /* ints after the pivots: inv[] of a banded problem */
-VLBE_INLINE size_t vlbe__int_ilen(const vlbe_dae *s)
+VLBE_INLINE size_t vlbe__dae_ilen(const vlbe_dae *s)
 {
-    return vlbe__int_banded(s) ? (size_t)s->n + (size_t)s->m : 0;
+    return vlbe__dae_banded(s) ? (size_t)s->n + (size_t)s->m : 0;
 }
 
 /* inv[] from sys->order; VLBE_EARG when order is not a permutation of
    0..n+m-1 (inv is then scratch). */
-VLBE_INLINE vlbe_status vlbe__int_inv(const vlbe_dae *s, int *inv)
+VLBE_INLINE vlbe_status vlbe__dae_inv(const vlbe_dae *s, int *inv)
 {
     int NA = s->n + s->m, u;
     for (u = 0; u < NA; ++u) inv[u] = -1;
@@ -601,7 +601,7 @@ VLBE_INLINE vlbe_status vlbe__int_inv(const vlbe_dae *s, int *inv)
 
 /* X (f NA, the iteration matrix's order) <-> x (natural: f blocks of n,
    then f blocks of m): unknown u of block b at X[f order[u] + b]. */
-VLBE_INLINE void vlbe__int_perm(const vlbe_dae *s, int f, const vlbe_real *x, vlbe_real *X)
+VLBE_INLINE void vlbe__dae_perm(const vlbe_dae *s, int f, const vlbe_real *x, vlbe_real *X)
 {
     int n = s->n, m = s->m, i, b;
     for (b = 0; b < f; ++b) {
@@ -609,7 +609,7 @@ VLBE_INLINE void vlbe__int_perm(const vlbe_dae *s, int f, const vlbe_real *x, vl
         for (i = 0; i < m; ++i) X[f * s->order[n + i] + b] = x[f * n + b * m + i];
     }
 }
-VLBE_INLINE void vlbe__int_unperm(const vlbe_dae *s, int f, const vlbe_real *X, vlbe_real *x)
+VLBE_INLINE void vlbe__dae_unperm(const vlbe_dae *s, int f, const vlbe_real *X, vlbe_real *x)
 {
     int n = s->n, m = s->m, i, b;
     for (b = 0; b < f; ++b) {
@@ -623,13 +623,13 @@ VLBE_INLINE void vlbe__int_unperm(const vlbe_dae *s, int f, const vlbe_real *X, 
      kind 0: y (n) = A x (n)          (M, or any n x n matrix)
      kind 1: y (m) = C_q x (n)
      kind 2: y (n) = C_q^T x (m)                                        */
-VLBE_INLINE void vlbe__int_bprod(const vlbe_dae *s, int kind, const vlbe_real *A,
+VLBE_INLINE void vlbe__dae_bprod(const vlbe_dae *s, int kind, const vlbe_real *A,
                                  const vlbe_real *x, vlbe_real *y, vlbe_real *w)
 {
     int n = s->n, m = s->m, NA = n + m, i;
     vlbe_real *X = w, *Y = w + NA;
     const int *o = s->order;
-    if (!vlbe__int_banded(s)) {
+    if (!vlbe__dae_banded(s)) {
         if (kind == 0) vlbe_mat_vec(n, n, A, x, y);
         else if (kind == 1) vlbe_mat_vec(m, n, A, x, y);
         else vlbe_mat_tvec(m, n, A, x, y);
@@ -640,8 +640,8 @@ VLBE_INLINE void vlbe__int_bprod(const vlbe_dae *s, int kind, const vlbe_real *A
         for (i = 0; i < m; ++i) X[o[n + i]] = x[i];
     else
         for (i = 0; i < n; ++i) X[o[i]] = x[i];
-    if (kind == 2) vlbe_band_mat_tvec(NA, s->kl, s->ku, A, vlbe__int_bld(s), X, Y);
-    else vlbe_band_mat_vec(NA, s->kl, s->ku, A, vlbe__int_bld(s), X, Y);
+    if (kind == 2) vlbe_band_mat_tvec(NA, s->kl, s->ku, A, vlbe__dae_bld(s), X, Y);
+    else vlbe_band_mat_vec(NA, s->kl, s->ku, A, vlbe__dae_bld(s), X, Y);
     if (kind == 1)
         for (i = 0; i < m; ++i) y[i] = Y[o[n + i]];
     else
@@ -655,22 +655,22 @@ VLBE_INLINE void vlbe__int_bprod(const vlbe_dae *s, int kind, const vlbe_real *A
    the block's first row).  Banded: A is the whole band (leading dimension
    ld, kl sub-diagonals), model entry at augmented (r, c) lands at
    (f r + ro, f c + co). */
-typedef struct vlbe__int_blk {
+typedef struct vlbe__dae_blk {
     vlbe_real *A;
     size_t ld;
     int kl, f, ro, co;
-} vlbe__int_blk;
+} vlbe__dae_blk;
 /* a dense block at A with leading dimension ld (constraint rows shifted by ro) */
-VLBE_INLINE vlbe__int_blk vlbe__int_dblk(vlbe_real *A, int ld, int ro)
+VLBE_INLINE vlbe__dae_blk vlbe__dae_dblk(vlbe_real *A, int ld, int ro)
 {
-    vlbe__int_blk b;
+    vlbe__dae_blk b;
     b.A = A;
     b.ld = (size_t)ld;
     b.kl = b.f = b.co = 0;
     b.ro = ro;
     return b;
 }
-VLBE_INLINE vlbe_real *vlbe__int_blk_at(const vlbe__int_blk *b, int r, int c)
+VLBE_INLINE vlbe_real *vlbe__dae_blk_at(const vlbe__dae_blk *b, int r, int c)
 {
     if (b->f == 0) return b->A + (size_t)(r + b->ro) * b->ld + (size_t)c;
     return b->A + VLBE_BAND_IDX(b->ld, b->kl, b->f * r + b->ro, b->f * c + b->co);
@@ -678,18 +678,18 @@ VLBE_INLINE vlbe_real *vlbe__int_blk_at(const vlbe__int_blk *b, int r, int c)
 /* Adds c X to block b, X a model matrix: kind 0 an n x n one (M, K, D,
    Mq, Mv, H), 1 C_q, 2 C_q^T (dense: C_q's m x n array; banded: the band,
    C_q^T read transposed). */
-VLBE_INLINE void vlbe__int_badd(const vlbe_dae *s, const vlbe__int_blk *b, vlbe_real c,
+VLBE_INLINE void vlbe__dae_badd(const vlbe_dae *s, const vlbe__dae_blk *b, vlbe_real c,
                                 const vlbe_real *X, int kind)
 {
-    int n = s->n, NA = n + s->m, kl = s->kl, ld = vlbe__int_bld(s), r, o;
-    if (!vlbe__int_banded(s)) {
+    int n = s->n, NA = n + s->m, kl = s->kl, ld = vlbe__dae_bld(s), r, o;
+    if (!vlbe__dae_banded(s)) {
         int i, j, rows = kind == 0 ? n : s->m;
         for (i = 0; i < rows; ++i)
             for (j = 0; j < n; ++j) {
                 vlbe_real x = c * X[(size_t)i * (size_t)n + (size_t)j];
-                if (kind == 0) *vlbe__int_blk_at(b, i, j) += x;
-                else if (kind == 1) *vlbe__int_blk_at(b, n + i, j) += x;
-                else *vlbe__int_blk_at(b, j, n + i) += x;
+                if (kind == 0) *vlbe__dae_blk_at(b, i, j) += x;
+                else if (kind == 1) *vlbe__dae_blk_at(b, n + i, j) += x;
+                else *vlbe__dae_blk_at(b, j, n + i) += x;
             }
         return;
     }
@@ -700,43 +700,43 @@ VLBE_INLINE void vlbe__int_badd(const vlbe_dae *s, const vlbe__int_blk *b, vlbe_
         for (o = o0; o <= o1; ++o) {
             int col = r - kl + o;
             if (xr[o] == VLBE_R(0.0)) continue;
-            if (kind == 2) *vlbe__int_blk_at(b, col, r) += c * xr[o];
-            else *vlbe__int_blk_at(b, r, col) += c * xr[o];
+            if (kind == 2) *vlbe__dae_blk_at(b, col, r) += c * xr[o];
+            else *vlbe__dae_blk_at(b, r, col) += c * xr[o];
         }
     }
 }
 /* The whole band A of an iteration matrix of f blocks, as a block. */
-VLBE_INLINE vlbe__int_blk vlbe__int_band_blk(const vlbe_dae *s, vlbe_real *A, int f)
+VLBE_INLINE vlbe__dae_blk vlbe__dae_band_blk(const vlbe_dae *s, vlbe_real *A, int f)
 {
-    vlbe__int_blk b;
+    vlbe__dae_blk b;
     b.A = A;
-    b.ld = vlbe__int_ald(s, f);
-    b.kl = vlbe__int_fkl(s, f);
+    b.ld = vlbe__dae_ald(s, f);
+    b.kl = vlbe__dae_fkl(s, f);
     b.f = f;
     b.ro = b.co = 0;
     return b;
 }
 /* Adds c C_q and c C_q^T to the (q, lambda) band B (m > 0). */
-VLBE_INLINE void vlbe__int_bsaddle(const vlbe_dae *s, const vlbe__int_blk *B, vlbe_real c,
+VLBE_INLINE void vlbe__dae_bsaddle(const vlbe_dae *s, const vlbe__dae_blk *B, vlbe_real c,
                                    const vlbe_real *Cq)
 {
     if (s->m == 0) return;
-    vlbe__int_badd(s, B, c, Cq, 1);
-    vlbe__int_badd(s, B, c, Cq, 2);
+    vlbe__dae_badd(s, B, c, Cq, 1);
+    vlbe__dae_badd(s, B, c, Cq, 2);
 }
 /* Adds c to the diagonal of the block (u, u), u < n (BDF's identity blocks). */
-VLBE_INLINE void vlbe__int_bdiag(const vlbe_dae *s, const vlbe__int_blk *b, vlbe_real c)
+VLBE_INLINE void vlbe__dae_bdiag(const vlbe_dae *s, const vlbe__dae_blk *b, vlbe_real c)
 {
     int i;
-    for (i = 0; i < s->n; ++i) *vlbe__int_blk_at(b, s->order[i], s->order[i]) += c;
+    for (i = 0; i < s->n; ++i) *vlbe__dae_blk_at(b, s->order[i], s->order[i]) += c;
 }
 
 /* The rows of column c (augmented order; dense: the natural one) that a
    Jacobian may fill: [c - ku, c + kl] within 0..NA-1 (dense: all). */
-VLBE_INLINE void vlbe__int_rows(const vlbe_dae *s, int c, int *r0, int *r1)
+VLBE_INLINE void vlbe__dae_rows(const vlbe_dae *s, int c, int *r0, int *r1)
 {
     int NA = s->n + s->m;
-    if (!vlbe__int_banded(s)) {
+    if (!vlbe__dae_banded(s)) {
         *r0 = 0;
         *r1 = NA - 1;
         return;
@@ -745,12 +745,12 @@ VLBE_INLINE void vlbe__int_rows(const vlbe_dae *s, int c, int *r0, int *r1)
     *r1 = c + s->kl > NA - 1 ? NA - 1 : c + s->kl;
 }
 /* the unknown at augmented position r (dense, inv NULL: r itself) */
-VLBE_INLINE int vlbe__int_unk(const int *inv, int r) { return inv ? inv[r] : r; }
-/* columns one forward difference serves (vlbe__int_group): every
+VLBE_INLINE int vlbe__dae_unk(const int *inv, int r) { return inv ? inv[r] : r; }
+/* columns one forward difference serves (vlbe__dae_group): every
    kl + ku + 1-th of a band, one of a dense matrix */
-VLBE_INLINE int vlbe__int_gstride(const vlbe_dae *s)
+VLBE_INLINE int vlbe__dae_gstride(const vlbe_dae *s)
 {
-    return vlbe__int_banded(s) ? vlbe__int_bld(s) : s->n + s->m;
+    return vlbe__dae_banded(s) ? vlbe__dae_bld(s) : s->n + s->m;
 }
 
 /* Forward-difference steps of the coordinates of group g (Curtis, Powell,
@@ -759,15 +759,15 @@ VLBE_INLINE int vlbe__int_gstride(const vlbe_dae *s)
    x[j] = base[j] + d[j] for the q_j of the group (others base[j]);
    returns 0 if the group is empty.  d receives the exactly representable
    steps. */
-VLBE_INLINE int vlbe__int_group(const vlbe_dae *s, const int *inv, int g, const vlbe_real *base,
+VLBE_INLINE int vlbe__dae_group(const vlbe_dae *s, const int *inv, int g, const vlbe_real *base,
                                 vlbe_real *x, vlbe_real *d)
 {
-    int n = s->n, NA = n + s->m, w = vlbe__int_gstride(s), c, any = 0;
+    int n = s->n, NA = n + s->m, w = vlbe__dae_gstride(s), c, any = 0;
     vlbe_vec_copy(n, base, x);
     for (c = g; c < NA; c += w) {
-        int j = vlbe__int_unk(inv, c);
+        int j = vlbe__dae_unk(inv, c);
         if (j >= n) continue;
-        x[j] = base[j] + vlbe__int_fd_step(base[j]);
+        x[j] = base[j] + vlbe__dae_fd_step(base[j]);
         d[j] = x[j] - base[j];
         any = 1;
     }
@@ -777,24 +777,24 @@ VLBE_INLINE int vlbe__int_group(const vlbe_dae *s, const int *inv, int g, const 
 /* gamma = -( (C_q v)_q v + 2 C_qt v + C_tt ) (m).  From the callback if given,
    else as minus the central difference of g(e) = C_q(t+e, q+e v) v + C_t(t+e, q+e v)
    at e = 0 (g'(0) = (C_q v)_q v + 2 C_qt v + C_tt), step eps^(1/3) scaled.
-   w: vlbe__int_gamma_len(s) reals. */
-VLBE_INLINE size_t vlbe__int_gamma_len(const vlbe_dae *s)
+   w: vlbe__dae_gamma_len(s) reals. */
+VLBE_INLINE size_t vlbe__dae_gamma_len(const vlbe_dae *s)
 {
-    size_t r = vlbe__int_mlen(s, 1) + 2 * (size_t)s->m + (size_t)s->n;
-    return vlbe__int_banded(s) ? r + (size_t)s->m + 2 * ((size_t)s->n + (size_t)s->m) : r;
+    size_t r = vlbe__dae_mlen(s, 1) + 2 * (size_t)s->m + (size_t)s->n;
+    return vlbe__dae_banded(s) ? r + (size_t)s->m + 2 * ((size_t)s->n + (size_t)s->m) : r;
 }
-VLBE_INLINE vlbe_status vlbe__int_gamma(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__dae_gamma(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                         const vlbe_real *q, const vlbe_real *v, vlbe_real *g,
                                         vlbe_real *w)
 {
     int n = s->n, m = s->m, i, k;
-    vlbe_real *Cq = w, *Ct = w + vlbe__int_mlen(s, 1), *gp = Ct + m, *qe = gp + m;
+    vlbe_real *Cq = w, *Ct = w + vlbe__dae_mlen(s, 1), *gp = Ct + m, *qe = gp + m;
     vlbe_real scale = vlbe_fabs(t), e;
     vlbe_status rc;
     if (m == 0) return VLBE_OK;
     if (s->constr_acc) {
         ++c->constr_calls;
-        return vlbe__int_cb(c, s->constr_acc(s->user, t, q, v, g));
+        return vlbe__dae_cb(c, s->constr_acc(s->user, t, q, v, g));
     }
     for (i = 0; i < n; ++i) {
         vlbe_real r = vlbe_fabs(q[i]);
@@ -806,14 +806,14 @@ VLBE_INLINE vlbe_status vlbe__int_gamma(const vlbe_dae *s, vlbe_dae_stats *c, vl
     for (k = 0; k < 2; ++k) {
         vlbe_real sg = k == 0 ? e : -e;
         for (i = 0; i < n; ++i) qe[i] = q[i] + sg * v[i];
-        if ((rc = vlbe__int_cjac(s, c, t + sg, qe, Cq, Ct)) != VLBE_OK) return rc;
-        if (vlbe__int_banded(s)) { /* C_q v into Ct (+= below) */
+        if ((rc = vlbe__dae_cjac(s, c, t + sg, qe, Cq, Ct)) != VLBE_OK) return rc;
+        if (vlbe__dae_banded(s)) { /* C_q v into Ct (+= below) */
             vlbe_real *cv = qe + n;
-            vlbe__int_bprod(s, 1, Cq, v, cv, cv + m);
+            vlbe__dae_bprod(s, 1, Cq, v, cv, cv + m);
             for (i = 0; i < m; ++i) Ct[i] += cv[i];
         }
         for (i = 0; i < m; ++i) {
-            vlbe_real gi = vlbe__int_banded(s) ? Ct[i] : vlbe_vec_dot(n, Cq + (size_t)i * n, v) + Ct[i];
+            vlbe_real gi = vlbe__dae_banded(s) ? Ct[i] : vlbe_vec_dot(n, Cq + (size_t)i * n, v) + Ct[i];
             if (k == 0) gp[i] = gi;
             else g[i] = -(gp[i] - gi) / (VLBE_R(2.0) * e);
         }
@@ -823,7 +823,7 @@ VLBE_INLINE vlbe_status vlbe__int_gamma(const vlbe_dae *s, vlbe_dae_stats *c, vl
 
 /* Row j of the constraint quantities used by the Jacobian helpers below:
    f = [C_q^T u_0; ...; C_q^T u_{nu-1}; C_q v + C_t] (the last block only if v). */
-VLBE_INLINE void vlbe__int_constr_vals(int n, int m, const vlbe_real *Cq, const vlbe_real *Ct,
+VLBE_INLINE void vlbe__dae_constr_vals(int n, int m, const vlbe_real *Cq, const vlbe_real *Ct,
                                        int nu, const vlbe_real *const *u, const vlbe_real *v,
                                        vlbe_real *f)
 {
@@ -835,67 +835,67 @@ VLBE_INLINE void vlbe__int_constr_vals(int n, int m, const vlbe_real *Cq, const 
 }
 
 /* The Jacobian terms of the iteration matrices, for both storages.
-   vlbe__int_bconstr_q adds the q-derivatives of constraint terms (m > 0):
+   vlbe__dae_bconstr_q adds the q-derivatives of constraint terms (m > 0):
      cl d(C_q^T lam)/dq   to block Jl   if lam != NULL,
      cu d(C_q^T mu)/dq    to block Ju   if mu != NULL,
      d(C_q v + C_t)/dq    to block Jg   if Jg != NULL (rows n..n+m-1),
    the first two from constr_hess when given, the rest by forward
    differences in q with one constr_jac call per column group shared by all
    terms (plus one at q); VLBE_DAE_NO_CHESS drops the first two.
-   vlbe__int_btangent adds cq d(M a + C_q^T lambda - Q)/dq to block Jq and
+   vlbe__dae_btangent adds cq d(M a + C_q^T lambda - Q)/dq to block Jq and
    cv d(M a - Q)/dv to block Jv (may be Jq's block; NULL: left out), from
    force_jac and mass_jac or forward differences for those missing; lam ==
    NULL leaves out the C_q^T lambda term; Qbase = Q(t,q,v) and Mbase =
    M(t,q,v) must be given.  Forward differences go by column groups
-   (vlbe__int_group): kl + ku + 1 evaluations for a band, one per
-   coordinate for a dense matrix.  inv: from vlbe__int_inv (dense: NULL).
-   w: vlbe__int_btangent_len(s) reals (scratch). */
-VLBE_INLINE size_t vlbe__int_tlen(size_t ml0, size_t ml1, size_t n, size_t m)
+   (vlbe__dae_group): kl + ku + 1 evaluations for a band, one per
+   coordinate for a dense matrix.  inv: from vlbe__dae_inv (dense: NULL).
+   w: vlbe__dae_btangent_len(s) reals (scratch). */
+VLBE_INLINE size_t vlbe__dae_tlen(size_t ml0, size_t ml1, size_t n, size_t m)
 {
     size_t a = 3 * ml0 + 6 * n + 2 * (m + n),                        /* K, D, T, vectors */
         b = ml0 + ml1 + m + 2 * n + 2 * (2 * n + m) + 2 * (n + m); /* H, Cq, Ct, vectors */
     return a > b ? a : b;
 }
-VLBE_INLINE size_t vlbe__int_btangent_len(const vlbe_dae *s)
+VLBE_INLINE size_t vlbe__dae_btangent_len(const vlbe_dae *s)
 {
-    return vlbe__int_tlen(vlbe__int_mlen(s, 0), vlbe__int_mlen(s, 1), (size_t)s->n,
+    return vlbe__dae_tlen(vlbe__dae_mlen(s, 0), vlbe__dae_mlen(s, 1), (size_t)s->n,
                           (size_t)s->m);
 }
 /* the same for a dense problem of n coordinates and m constraints */
-VLBE_INLINE size_t vlbe__int_tangent_len(int n, int m)
+VLBE_INLINE size_t vlbe__dae_tangent_len(int n, int m)
 {
-    return vlbe__int_tlen((size_t)n * (size_t)n, (size_t)m * (size_t)n, (size_t)n, (size_t)m);
+    return vlbe__dae_tlen((size_t)n * (size_t)n, (size_t)m * (size_t)n, (size_t)n, (size_t)m);
 }
 /* f = [C_q^T u_0; ..; C_q^T u_{nu-1}; C_q v + C_t] (the last if v); pw:
    2 NA scratch of a band */
-VLBE_INLINE void vlbe__int_bconstr_vals(const vlbe_dae *s, const vlbe_real *Cq,
+VLBE_INLINE void vlbe__dae_bconstr_vals(const vlbe_dae *s, const vlbe_real *Cq,
                                         const vlbe_real *Ct, int nu, const vlbe_real *const *u,
                                         const vlbe_real *v, vlbe_real *f, vlbe_real *pw)
 {
     int n = s->n, m = s->m, k, i;
-    if (!vlbe__int_banded(s)) {
-        vlbe__int_constr_vals(n, m, Cq, Ct, nu, u, v, f);
+    if (!vlbe__dae_banded(s)) {
+        vlbe__dae_constr_vals(n, m, Cq, Ct, nu, u, v, f);
         return;
     }
-    for (k = 0; k < nu; ++k) vlbe__int_bprod(s, 2, Cq, u[k], f + (size_t)k * n, pw);
+    for (k = 0; k < nu; ++k) vlbe__dae_bprod(s, 2, Cq, u[k], f + (size_t)k * n, pw);
     if (v) {
-        vlbe__int_bprod(s, 1, Cq, v, f + (size_t)nu * n, pw);
+        vlbe__dae_bprod(s, 1, Cq, v, f + (size_t)nu * n, pw);
         for (i = 0; i < m; ++i) f[(size_t)nu * n + i] += Ct[i];
     }
 }
-VLBE_INLINE vlbe_status vlbe__int_bconstr_q(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__dae_bconstr_q(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                             const vlbe_real *q, const vlbe_real *lam,
-                                            vlbe_real cl, const vlbe__int_blk *Jl,
+                                            vlbe_real cl, const vlbe__dae_blk *Jl,
                                             const vlbe_real *mu, vlbe_real cu,
-                                            const vlbe__int_blk *Ju, const vlbe_real *v,
-                                            const vlbe__int_blk *Jg, const int *inv, vlbe_real *w)
+                                            const vlbe__dae_blk *Ju, const vlbe_real *v,
+                                            const vlbe__dae_blk *Jg, const int *inv, vlbe_real *w)
 {
-    int n = s->n, m = s->m, NA = n + m, wd = vlbe__int_gstride(s), k, g, col, nu = 0;
-    vlbe_real *H = w, *Cq = H + vlbe__int_mlen(s, 0), *Ct = Cq + vlbe__int_mlen(s, 1),
+    int n = s->n, m = s->m, NA = n + m, wd = vlbe__dae_gstride(s), k, g, col, nu = 0;
+    vlbe_real *H = w, *Cq = H + vlbe__dae_mlen(s, 0), *Ct = Cq + vlbe__dae_mlen(s, 1),
               *x = Ct + m, *d = x + n, *f0 = d + n, *f = f0 + 2 * n + m, *pw = f + 2 * n + m;
     const vlbe_real *u[2];
     vlbe_real cu_[2];
-    const vlbe__int_blk *Ju_[2];
+    const vlbe__dae_blk *Ju_[2];
     vlbe_status rc;
     if ((s->flags & VLBE_DAE_NO_CHESS) || cl == VLBE_R(0.0)) lam = NULL;
     if ((s->flags & VLBE_DAE_NO_CHESS) || cu == VLBE_R(0.0)) mu = NULL;
@@ -910,47 +910,47 @@ VLBE_INLINE vlbe_status vlbe__int_bconstr_q(const vlbe_dae *s, vlbe_dae_stats *c
     if (s->constr_hess && nu > 0) {
         for (k = 0; k < nu; ++k) {
             ++c->constr_calls;
-            if ((rc = vlbe__int_cb(c, s->constr_hess(s->user, t, q, u[k], H))) != VLBE_OK) return rc;
-            vlbe__int_badd(s, Ju_[k], cu_[k], H, 0);
+            if ((rc = vlbe__dae_cb(c, s->constr_hess(s->user, t, q, u[k], H))) != VLBE_OK) return rc;
+            vlbe__dae_badd(s, Ju_[k], cu_[k], H, 0);
         }
         nu = 0;
     }
     if (nu == 0 && !Jg) return VLBE_OK;
     if (!Jg) v = NULL;
-    if ((rc = vlbe__int_cjac(s, c, t, q, Cq, v ? Ct : NULL)) != VLBE_OK) return rc;
-    vlbe__int_bconstr_vals(s, Cq, Ct, nu, u, v, f0, pw);
+    if ((rc = vlbe__dae_cjac(s, c, t, q, Cq, v ? Ct : NULL)) != VLBE_OK) return rc;
+    vlbe__dae_bconstr_vals(s, Cq, Ct, nu, u, v, f0, pw);
     for (g = 0; g < wd; ++g) {
-        if (!vlbe__int_group(s, inv, g, q, x, d)) continue;
-        if ((rc = vlbe__int_cjac(s, c, t, x, Cq, v ? Ct : NULL)) != VLBE_OK) return rc;
-        vlbe__int_bconstr_vals(s, Cq, Ct, nu, u, v, f, pw);
+        if (!vlbe__dae_group(s, inv, g, q, x, d)) continue;
+        if ((rc = vlbe__dae_cjac(s, c, t, x, Cq, v ? Ct : NULL)) != VLBE_OK) return rc;
+        vlbe__dae_bconstr_vals(s, Cq, Ct, nu, u, v, f, pw);
         for (col = g; col < NA; col += wd) {
-            int j = vlbe__int_unk(inv, col), r, r0, r1;
+            int j = vlbe__dae_unk(inv, col), r, r0, r1;
             if (j >= n) continue;
-            vlbe__int_rows(s, col, &r0, &r1);
+            vlbe__dae_rows(s, col, &r0, &r1);
             for (r = r0; r <= r1; ++r) {
-                int i = vlbe__int_unk(inv, r);
+                int i = vlbe__dae_unk(inv, r);
                 if (i < n) {
                     for (k = 0; k < nu; ++k)
-                        *vlbe__int_blk_at(Ju_[k], r, col) +=
+                        *vlbe__dae_blk_at(Ju_[k], r, col) +=
                             cu_[k] * (f[(size_t)k * n + i] - f0[(size_t)k * n + i]) / d[j];
                 } else if (v) {
                     size_t e = (size_t)nu * n + (size_t)(i - n);
-                    *vlbe__int_blk_at(Jg, r, col) += (f[e] - f0[e]) / d[j];
+                    *vlbe__dae_blk_at(Jg, r, col) += (f[e] - f0[e]) / d[j];
                 }
             }
         }
     }
     return VLBE_OK;
 }
-VLBE_INLINE vlbe_status vlbe__int_btangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__dae_btangent(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v,
                                            const vlbe_real *a, const vlbe_real *lam,
                                            const vlbe_real *Qbase, const vlbe_real *Mbase,
-                                           vlbe_real cq, const vlbe__int_blk *Jq, vlbe_real cv,
-                                           const vlbe__int_blk *Jv, const int *inv, vlbe_real *w)
+                                           vlbe_real cq, const vlbe__dae_blk *Jq, vlbe_real cv,
+                                           const vlbe__dae_blk *Jv, const int *inv, vlbe_real *w)
 {
-    int n = s->n, NA = n + s->m, wd = vlbe__int_gstride(s), g, col, pass;
-    size_t ml = vlbe__int_mlen(s, 0);
+    int n = s->n, NA = n + s->m, wd = vlbe__dae_gstride(s), g, col, pass;
+    size_t ml = vlbe__dae_mlen(s, 0);
     vlbe_real *K = w, *D = K + ml, *T = D + ml, *x = T + ml, *f = x + n, *f0 = f + n, *d = f0 + n,
               *pw = d + n;
     vlbe_status rc;
@@ -959,26 +959,26 @@ VLBE_INLINE vlbe_status vlbe__int_btangent(const vlbe_dae *s, vlbe_dae_stats *c,
     /* -K and -D */
     if (s->force_jac) {
         ++c->force_calls;
-        if ((rc = vlbe__int_cb(c, s->force_jac(s->user, t, q, v, K, D))) != VLBE_OK) return rc;
-        if (cq != VLBE_R(0.0)) vlbe__int_badd(s, Jq, -cq, K, 0);
-        if (cv != VLBE_R(0.0)) vlbe__int_badd(s, Jv, -cv, D, 0);
+        if ((rc = vlbe__dae_cb(c, s->force_jac(s->user, t, q, v, K, D))) != VLBE_OK) return rc;
+        if (cq != VLBE_R(0.0)) vlbe__dae_badd(s, Jq, -cq, K, 0);
+        if (cv != VLBE_R(0.0)) vlbe__dae_badd(s, Jv, -cv, D, 0);
     } else {
         for (pass = 0; pass < 2; ++pass) {
             vlbe_real cc = pass == 0 ? cq : cv;
             const vlbe_real *base = pass == 0 ? q : v;
-            const vlbe__int_blk *J = pass == 0 ? Jq : Jv;
+            const vlbe__dae_blk *J = pass == 0 ? Jq : Jv;
             if (cc == VLBE_R(0.0)) continue;
             for (g = 0; g < wd; ++g) {
-                if (!vlbe__int_group(s, inv, g, base, x, d)) continue;
-                rc = pass == 0 ? vlbe__int_force(s, c, t, x, v, f) : vlbe__int_force(s, c, t, q, x, f);
+                if (!vlbe__dae_group(s, inv, g, base, x, d)) continue;
+                rc = pass == 0 ? vlbe__dae_force(s, c, t, x, v, f) : vlbe__dae_force(s, c, t, q, x, f);
                 if (rc != VLBE_OK) return rc;
                 for (col = g; col < NA; col += wd) {
-                    int j = vlbe__int_unk(inv, col), r, r0, r1;
+                    int j = vlbe__dae_unk(inv, col), r, r0, r1;
                     if (j >= n) continue;
-                    vlbe__int_rows(s, col, &r0, &r1);
+                    vlbe__dae_rows(s, col, &r0, &r1);
                     for (r = r0; r <= r1; ++r) {
-                        const int i = vlbe__int_unk(inv, r);
-                        if (i < n) *vlbe__int_blk_at(J, r, col) -= cc * (f[i] - Qbase[i]) / d[j];
+                        const int i = vlbe__dae_unk(inv, r);
+                        if (i < n) *vlbe__dae_blk_at(J, r, col) -= cc * (f[i] - Qbase[i]) / d[j];
                     }
                 }
             }
@@ -989,30 +989,30 @@ VLBE_INLINE vlbe_status vlbe__int_btangent(const vlbe_dae *s, vlbe_dae_stats *c,
         int mv = (s->flags & VLBE_DAE_MASS_V) != 0;
         if (s->mass_jac) {
             ++c->mass_calls;
-            rc = vlbe__int_cb(c, s->mass_jac(s->user, t, q, v, a, K, mv ? D : NULL));
+            rc = vlbe__dae_cb(c, s->mass_jac(s->user, t, q, v, a, K, mv ? D : NULL));
             if (rc != VLBE_OK) return rc;
-            if (cq != VLBE_R(0.0)) vlbe__int_badd(s, Jq, cq, K, 0);
-            if (mv && cv != VLBE_R(0.0)) vlbe__int_badd(s, Jv, cv, D, 0);
+            if (cq != VLBE_R(0.0)) vlbe__dae_badd(s, Jq, cq, K, 0);
+            if (mv && cv != VLBE_R(0.0)) vlbe__dae_badd(s, Jv, cv, D, 0);
         } else {
-            vlbe__int_bprod(s, 0, Mbase, a, f0, pw);
+            vlbe__dae_bprod(s, 0, Mbase, a, f0, pw);
             for (pass = 0; pass < 2; ++pass) {
                 vlbe_real cc = pass == 0 ? cq : cv;
                 const vlbe_real *base = pass == 0 ? q : v;
-                const vlbe__int_blk *J = pass == 0 ? Jq : Jv;
+                const vlbe__dae_blk *J = pass == 0 ? Jq : Jv;
                 if (pass == 1 && !mv) break;
                 if (cc == VLBE_R(0.0)) continue;
                 for (g = 0; g < wd; ++g) {
-                    if (!vlbe__int_group(s, inv, g, base, x, d)) continue;
-                    rc = pass == 0 ? vlbe__int_mass(s, c, t, x, v, T) : vlbe__int_mass(s, c, t, q, x, T);
+                    if (!vlbe__dae_group(s, inv, g, base, x, d)) continue;
+                    rc = pass == 0 ? vlbe__dae_mass(s, c, t, x, v, T) : vlbe__dae_mass(s, c, t, q, x, T);
                     if (rc != VLBE_OK) return rc;
-                    vlbe__int_bprod(s, 0, T, a, f, pw);
+                    vlbe__dae_bprod(s, 0, T, a, f, pw);
                     for (col = g; col < NA; col += wd) {
-                        int j = vlbe__int_unk(inv, col), r, r0, r1;
+                        int j = vlbe__dae_unk(inv, col), r, r0, r1;
                         if (j >= n) continue;
-                        vlbe__int_rows(s, col, &r0, &r1);
+                        vlbe__dae_rows(s, col, &r0, &r1);
                         for (r = r0; r <= r1; ++r) {
-                            const int i = vlbe__int_unk(inv, r);
-                            if (i < n) *vlbe__int_blk_at(J, r, col) += cc * (f[i] - f0[i]) / d[j];
+                            const int i = vlbe__dae_unk(inv, r);
+                            if (i < n) *vlbe__dae_blk_at(J, r, col) += cc * (f[i] - f0[i]) / d[j];
                         }
                     }
                 }
@@ -1021,34 +1021,34 @@ VLBE_INLINE vlbe_status vlbe__int_btangent(const vlbe_dae *s, vlbe_dae_stats *c,
     }
     /* d(C_q^T lambda)/dq (scratch: w, the K D T area is free again) */
     if (s->m > 0 && lam && cq != VLBE_R(0.0))
-        return vlbe__int_bconstr_q(s, c, t, q, lam, cq, Jq, NULL, VLBE_R(0.0), NULL, NULL, NULL,
+        return vlbe__dae_bconstr_q(s, c, t, q, lam, cq, Jq, NULL, VLBE_R(0.0), NULL, NULL, NULL,
                                    inv, w);
     return VLBE_OK;
 }
 
 /* Dense callers: blocks given by their first entry and leading dimension
    (Jg: the block of the m constraint rows). */
-VLBE_INLINE vlbe_status vlbe__int_constr_q(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__dae_constr_q(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *lam,
                                            vlbe_real cl, vlbe_real *Jl, int ldl,
                                            const vlbe_real *mu, vlbe_real cu, vlbe_real *Ju,
                                            int ldu, const vlbe_real *v, vlbe_real *Jg, int ldg,
                                            vlbe_real *w)
 {
-    vlbe__int_blk bl = vlbe__int_dblk(Jl, ldl, 0), bu = vlbe__int_dblk(Ju, ldu, 0),
-                  bg = vlbe__int_dblk(Jg, ldg, -s->n);
-    return vlbe__int_bconstr_q(s, c, t, q, lam, cl, Jl ? &bl : NULL, mu, cu, Ju ? &bu : NULL, v,
+    vlbe__dae_blk bl = vlbe__dae_dblk(Jl, ldl, 0), bu = vlbe__dae_dblk(Ju, ldu, 0),
+                  bg = vlbe__dae_dblk(Jg, ldg, -s->n);
+    return vlbe__dae_bconstr_q(s, c, t, q, lam, cl, Jl ? &bl : NULL, mu, cu, Ju ? &bu : NULL, v,
                                Jg ? &bg : NULL, NULL, w);
 }
-VLBE_INLINE vlbe_status vlbe__int_tangent2(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__dae_tangent2(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v,
                                            const vlbe_real *a, const vlbe_real *lam,
                                            const vlbe_real *Qbase, const vlbe_real *Mbase,
                                            vlbe_real cq, vlbe_real *Jq, int ldq, vlbe_real cv,
                                            vlbe_real *Jv, int ldv, vlbe_real *w)
 {
-    vlbe__int_blk bq = vlbe__int_dblk(Jq, ldq, 0), bv = vlbe__int_dblk(Jv, ldv, 0);
-    return vlbe__int_btangent(s, c, t, q, v, a, lam, Qbase, Mbase, cq, &bq, cv, Jv ? &bv : NULL,
+    vlbe__dae_blk bq = vlbe__dae_dblk(Jq, ldq, 0), bv = vlbe__dae_dblk(Jv, ldv, 0);
+    return vlbe__dae_btangent(s, c, t, q, v, a, lam, Qbase, Mbase, cq, &bq, cv, Jv ? &bv : NULL,
                               NULL, w);
 }
 /* -- problem checks and consistent start -------------------------------- */
@@ -1075,7 +1075,7 @@ VLBE_API vlbe_status vlbe_dae_check(const vlbe_dae *sys) { return vlbe__dae_chec
 
 /* A dense problem of n coordinates and m constraints, for the (n, m)
    workspace queries: each is the _sys query of that problem. */
-VLBE_INLINE vlbe_dae vlbe__int_dense(int n, int m)
+VLBE_INLINE vlbe_dae vlbe__dae_dense(int n, int m)
 {
     vlbe_dae d;
     memset(&d, 0, sizeof d);
@@ -1085,7 +1085,7 @@ VLBE_INLINE vlbe_dae vlbe__int_dense(int n, int m)
 }
 VLBE_API size_t vlbe_dae_work_len(int n, int m)
 {
-    const vlbe_dae d = vlbe__int_dense(n, m);
+    const vlbe_dae d = vlbe__dae_dense(n, m);
     return vlbe_dae_work_len_sys(&d);
 }
 VLBE_API size_t vlbe_dae_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
@@ -1096,13 +1096,13 @@ VLBE_API size_t vlbe_dae_work_len_sys(const vlbe_dae *sys)
     size_t NA;
     VLBE_ASSERT(sys != NULL);
     NA = (size_t)sys->n + (size_t)sys->m;
-    return vlbe__int_alen(sys, 1) + NA + vlbe__int_mlen(sys, 0) + (size_t)sys->n +
-           vlbe__int_mlen(sys, 1) + vlbe__int_gamma_len(sys) + (vlbe__int_banded(sys) ? NA : 0);
+    return vlbe__dae_alen(sys, 1) + NA + vlbe__dae_mlen(sys, 0) + (size_t)sys->n +
+           vlbe__dae_mlen(sys, 1) + vlbe__dae_gamma_len(sys) + (vlbe__dae_banded(sys) ? NA : 0);
 }
 VLBE_API size_t vlbe_dae_iwork_len_sys(const vlbe_dae *sys)
 {
     VLBE_ASSERT(sys != NULL);
-    return vlbe_dae_iwork_len(sys->n, sys->m) + vlbe__int_ilen(sys);
+    return vlbe_dae_iwork_len(sys->n, sys->m) + vlbe__dae_ilen(sys);
 }
 
 /* Row equilibration before an LU (vlbe_lu_factor's pivot test is relative
@@ -1118,7 +1118,7 @@ VLBE_API size_t vlbe_dae_iwork_len_sys(const vlbe_dae *sys)
    solves need; b (N, may be NULL) is scaled along.  width: the entries
    of a row, N for a dense matrix, ld for a band (whose slots outside the
    matrix hold zeros). */
-VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, int width, vlbe_real *s,
+VLBE_INLINE void vlbe__dae_equil(int N, vlbe_real *A, size_t ld, int width, vlbe_real *s,
                                  vlbe_real *b)
 {
     int i, e;
@@ -1138,33 +1138,33 @@ VLBE_INLINE void vlbe__int_equil(int N, vlbe_real *A, size_t ld, int width, vlbe
 /* Factors the iteration matrix A of f blocks (N = f (n + m), in the
    problem's storage) in place: the dense or banded LU, or the caller's
    lin_factor. */
-VLBE_INLINE vlbe_status vlbe__int_factor(const vlbe_dae *s, vlbe_dae_stats *c, int f,
+VLBE_INLINE vlbe_status vlbe__dae_factor(const vlbe_dae *s, vlbe_dae_stats *c, int f,
                                          vlbe_real *A, int *piv)
 {
-    int N = f * (s->n + s->m), band = vlbe__int_banded(s), kl = N - 1, ku = kl, rc;
+    int N = f * (s->n + s->m), band = vlbe__dae_banded(s), kl = N - 1, ku = kl, rc;
     if (band) {
-        kl = vlbe__int_fkl(s, f);
-        ku = vlbe__int_fku(s, f);
+        kl = vlbe__dae_fkl(s, f);
+        ku = vlbe__dae_fku(s, f);
     }
     if (s->lin_factor) {
-        if (!vlbe_all_finite(A, (int)vlbe__int_alen(s, f))) return VLBE_ENONFINITE;
-        rc = s->lin_factor(s->user, s->storage, N, kl, ku, A, (int)vlbe__int_ald(s, f));
+        if (!vlbe_all_finite(A, (int)vlbe__dae_alen(s, f))) return VLBE_ENONFINITE;
+        rc = s->lin_factor(s->user, s->storage, N, kl, ku, A, (int)vlbe__dae_ald(s, f));
         if (rc == 0) return VLBE_OK;
         if (rc > 0) return VLBE_ESINGULAR;
         c->callback_rc = rc;
         return VLBE_ECALLBACK;
     }
-    if (band) return vlbe_band_lu_factor(N, kl, ku, A, (int)vlbe__int_ald(s, f), A, piv, NULL);
+    if (band) return vlbe_band_lu_factor(N, kl, ku, A, (int)vlbe__dae_ald(s, f), A, piv, NULL);
     return vlbe_lu_factor(N, A, A, piv, NULL);
 }
-/* b <- A^-1 b with the factor of vlbe__int_factor (b in A's order). */
-VLBE_INLINE void vlbe__int_solve(const vlbe_dae *s, int f, const vlbe_real *A, const int *piv,
+/* b <- A^-1 b with the factor of vlbe__dae_factor (b in A's order). */
+VLBE_INLINE void vlbe__dae_solve(const vlbe_dae *s, int f, const vlbe_real *A, const int *piv,
                                  vlbe_real *b)
 {
     int N = f * (s->n + s->m);
     if (s->lin_solve) s->lin_solve(s->user, N, 1, b);
-    else if (vlbe__int_banded(s))
-        vlbe_band_lu_solve(N, vlbe__int_fkl(s, f), vlbe__int_fku(s, f), A, piv, 1, b);
+    else if (vlbe__dae_banded(s))
+        vlbe_band_lu_solve(N, vlbe__dae_fkl(s, f), vlbe__dae_fku(s, f), A, piv, 1, b);
     else vlbe_lu_solve(N, A, piv, 1, b);
 }
 
@@ -1189,22 +1189,22 @@ VLBE_API void vlbe_dae_stats_add(vlbe_dae_stats *a, const vlbe_dae_stats *b)
 
 /* The saddle system [M C_q^T; C_q 0] x = b of the consistent start and of
    vlbe_dae_project, in the problem's storage: assembled into A
-   (vlbe__int_alen(sys, 1) reals) from M and C_q, rows equilibrated
-   (vlbe__int_equil), factored (piv: n + m ints), b (n + m, natural order:
+   (vlbe__dae_alen(sys, 1) reals) from M and C_q, rows equilibrated
+   (vlbe__dae_equil), factored (piv: n + m ints), b (n + m, natural order:
    the q rows, then the constraints) overwritten with x.  X: the right side
    in the band's order (banded: n + m reals; dense: unused).  Returns
    VLBE_ENONFINITE (b or x) or the status of the factorization. */
-VLBE_INLINE vlbe_status vlbe__int_saddle_solve(const vlbe_dae *sys, vlbe_dae_stats *stats,
+VLBE_INLINE vlbe_status vlbe__dae_saddle_solve(const vlbe_dae *sys, vlbe_dae_stats *stats,
                                                const vlbe_real *M, const vlbe_real *Cq,
                                                vlbe_real *A, vlbe_real *b, vlbe_real *X, int *piv)
 {
-    int n = sys->n, m = sys->m, N = n + m, i, j, band = vlbe__int_banded(sys);
+    int n = sys->n, m = sys->m, N = n + m, i, j, band = vlbe__dae_banded(sys);
     vlbe_status rc;
     if (band) {
-        const vlbe__int_blk B = vlbe__int_band_blk(sys, A, 1);
-        vlbe_vec_zero((int)vlbe__int_alen(sys, 1), A);
-        vlbe__int_badd(sys, &B, VLBE_R(1.0), M, 0);
-        vlbe__int_bsaddle(sys, &B, VLBE_R(1.0), Cq);
+        const vlbe__dae_blk B = vlbe__dae_band_blk(sys, A, 1);
+        vlbe_vec_zero((int)vlbe__dae_alen(sys, 1), A);
+        vlbe__dae_badd(sys, &B, VLBE_R(1.0), M, 0);
+        vlbe__dae_bsaddle(sys, &B, VLBE_R(1.0), Cq);
     } else {
         for (i = 0; i < N; ++i)
             for (j = 0; j < N; ++j) {
@@ -1216,14 +1216,14 @@ VLBE_INLINE vlbe_status vlbe__int_saddle_solve(const vlbe_dae *sys, vlbe_dae_sta
             }
     }
     if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
-    if (band) vlbe__int_perm(sys, 1, b, X);
+    if (band) vlbe__dae_perm(sys, 1, b, X);
     else X = b;
-    vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), band ? (int)vlbe__int_ald(sys, 1) : N, NULL, X);
+    vlbe__dae_equil(N, A, vlbe__dae_ald(sys, 1), band ? (int)vlbe__dae_ald(sys, 1) : N, NULL, X);
     ++stats->lu_factors;
-    if ((rc = vlbe__int_factor(sys, stats, 1, A, piv)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_factor(sys, stats, 1, A, piv)) != VLBE_OK) return rc;
     ++stats->lu_solves;
-    vlbe__int_solve(sys, 1, A, piv, X);
-    if (band) vlbe__int_unperm(sys, 1, X, b);
+    vlbe__dae_solve(sys, 1, A, piv, X);
+    if (band) vlbe__dae_unperm(sys, 1, X, b);
     if (!vlbe_all_finite(b, N)) return VLBE_ENONFINITE;
     return VLBE_OK;
 }
@@ -1242,27 +1242,27 @@ VLBE_API vlbe_status vlbe_dae_consistent_acc(const vlbe_dae *sys, vlbe_real t, c
     n = sys->n;
     m = sys->m;
     N = n + m;
-    band = vlbe__int_banded(sys);
+    band = vlbe__dae_banded(sys);
     if (work_len < vlbe_dae_work_len_sys(sys) || iwork_len < vlbe_dae_iwork_len_sys(sys))
         return VLBE_EWORK;
-    if (band && (rc = vlbe__int_inv(sys, iwork + N)) != VLBE_OK) return rc;
+    if (band && (rc = vlbe__dae_inv(sys, iwork + N)) != VLBE_OK) return rc;
     if (!stats) {
         stats = &dummy;
-        vlbe__int_stats_zero(&dummy);
+        vlbe__dae_stats_zero(&dummy);
     }
     A = work;
-    b = A + vlbe__int_alen(sys, 1);
+    b = A + vlbe__dae_alen(sys, 1);
     M = b + N;
-    Q = M + vlbe__int_mlen(sys, 0);
+    Q = M + vlbe__dae_mlen(sys, 0);
     Cq = Q + n;
-    sc = Cq + vlbe__int_mlen(sys, 1);
-    X = sc + vlbe__int_gamma_len(sys); /* banded: the right side in A's order */
-    if ((rc = vlbe__int_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
-    if ((rc = vlbe__int_force(sys, stats, t, q, v, Q)) != VLBE_OK) return rc;
-    if ((rc = vlbe__int_cjac(sys, stats, t, q, Cq, NULL)) != VLBE_OK) return rc;
-    if ((rc = vlbe__int_gamma(sys, stats, t, q, v, b + n, sc)) != VLBE_OK) return rc;
+    sc = Cq + vlbe__dae_mlen(sys, 1);
+    X = sc + vlbe__dae_gamma_len(sys); /* banded: the right side in A's order */
+    if ((rc = vlbe__dae_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_force(sys, stats, t, q, v, Q)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_cjac(sys, stats, t, q, Cq, NULL)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_gamma(sys, stats, t, q, v, b + n, sc)) != VLBE_OK) return rc;
     vlbe_vec_copy(n, Q, b);
-    if ((rc = vlbe__int_saddle_solve(sys, stats, M, Cq, A, b, X, iwork)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_saddle_solve(sys, stats, M, Cq, A, b, X, iwork)) != VLBE_OK) return rc;
     vlbe_vec_copy(n, b, qdd);
     if (m > 0) vlbe_vec_copy(m, b + n, lambda);
     return VLBE_OK;
@@ -1316,24 +1316,24 @@ VLBE_API vlbe_status vlbe_dae_project(const vlbe_dae *sys, vlbe_real t, vlbe_rea
     n = sys->n;
     m = sys->m;
     N = n + m;
-    band = vlbe__int_banded(sys);
+    band = vlbe__dae_banded(sys);
     if (!work || !iwork || work_len < vlbe_dae_work_len_sys(sys) ||
         iwork_len < vlbe_dae_iwork_len_sys(sys))
         return VLBE_EWORK;
     if (!vlbe_all_finite(q, n) || !vlbe_all_finite(v, n)) return VLBE_ENONFINITE;
-    if (band && (rc = vlbe__int_inv(sys, iwork + N)) != VLBE_OK) return rc;
+    if (band && (rc = vlbe__dae_inv(sys, iwork + N)) != VLBE_OK) return rc;
     if (m == 0) return VLBE_OK;
     if (!stats) {
         stats = &dummy;
-        vlbe__int_stats_zero(&dummy);
+        vlbe__dae_stats_zero(&dummy);
     }
     qc = work;
     vc = qc + n;
     A = vc + n;
-    b = A + vlbe__int_alen(sys, 1);
+    b = A + vlbe__dae_alen(sys, 1);
     M = b + N;
-    Cq = M + vlbe__int_mlen(sys, 0);
-    Ct = Cq + vlbe__int_mlen(sys, 1);
+    Cq = M + vlbe__dae_mlen(sys, 0);
+    Ct = Cq + vlbe__dae_mlen(sys, 1);
     C = Ct + m;
     X = C + m;  /* banded: the right side in A's order (N) */
     pw = X + N; /* banded: products (2 N) */
@@ -1341,7 +1341,7 @@ VLBE_API vlbe_status vlbe_dae_project(const vlbe_dae *sys, vlbe_real t, vlbe_rea
     vlbe_vec_copy(n, v, vc);
     qmax = vlbe_vec_norm_inf(n, q);
     tolq = tol > VLBE_R(0.0) ? tol : VLBE_RTOL_EPS * VLBE_EPS * (qmax > VLBE_R(1.0) ? qmax : VLBE_R(1.0));
-    if ((rc = vlbe__int_constr(sys, stats, t, qc, C)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_constr(sys, stats, t, qc, C)) != VLBE_OK) return rc;
     if (!vlbe_all_finite(C, m)) return VLBE_ENONFINITE;
     cn = vlbe_vec_norm_inf(m, C);
     /* positions: Gauss-Newton, minimum W-norm corrections */
@@ -1350,34 +1350,34 @@ VLBE_API vlbe_status vlbe_dae_project(const vlbe_dae *sys, vlbe_real t, vlbe_rea
             ++stats->newton_fails;
             return VLBE_ENOCONV;
         }
-        if (!have_m && (rc = vlbe__int_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
+        if (!have_m && (rc = vlbe__dae_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
         have_m = 1;
-        if ((rc = vlbe__int_cjac(sys, stats, t, qc, Cq, NULL)) != VLBE_OK) return rc;
+        if ((rc = vlbe__dae_cjac(sys, stats, t, qc, Cq, NULL)) != VLBE_OK) return rc;
         vlbe_vec_zero(n, b);
         for (i = 0; i < m; ++i) b[n + i] = -C[i];
-        if ((rc = vlbe__int_saddle_solve(sys, stats, M, Cq, A, b, X, iwork)) != VLBE_OK) return rc;
+        if ((rc = vlbe__dae_saddle_solve(sys, stats, M, Cq, A, b, X, iwork)) != VLBE_OK) return rc;
         ++stats->newton_iters;
         vlbe_vec_axpy(n, VLBE_R(1.0), b, qc);
         if (!vlbe_all_finite(qc, n)) return VLBE_ENONFINITE;
-        if ((rc = vlbe__int_constr(sys, stats, t, qc, C)) != VLBE_OK) return rc;
+        if ((rc = vlbe__dae_constr(sys, stats, t, qc, C)) != VLBE_OK) return rc;
         if (!vlbe_all_finite(C, m)) return VLBE_ENONFINITE;
         cn = vlbe_vec_norm_inf(m, C);
         if (vlbe_vec_norm_inf(n, b) <= VLBE_R(8.0) * VLBE_EPS * vlbe_vec_norm_inf(n, qc)) break;
     }
     /* velocities: one exact step onto C_q v + C_t = 0 at the new q */
-    if ((rc = vlbe__int_cjac(sys, stats, t, qc, Cq, Ct)) != VLBE_OK) return rc;
-    if (band) vlbe__int_bprod(sys, 1, Cq, vc, b + n, pw);
+    if ((rc = vlbe__dae_cjac(sys, stats, t, qc, Cq, Ct)) != VLBE_OK) return rc;
+    if (band) vlbe__dae_bprod(sys, 1, Cq, vc, b + n, pw);
     else vlbe_mat_vec(m, n, Cq, vc, b + n);
     vlbe_vec_axpy(m, VLBE_R(1.0), Ct, b + n);
     if (!vlbe_all_finite(b + n, m)) return VLBE_ENONFINITE;
     tolv = VLBE_RTOL_EPS * VLBE_EPS *
            (vlbe_vec_norm_inf(m, Ct) +
-            vlbe_vec_norm_inf((int)vlbe__int_mlen(sys, 1), Cq) * vlbe_vec_norm_inf(n, vc));
+            vlbe_vec_norm_inf((int)vlbe__dae_mlen(sys, 1), Cq) * vlbe_vec_norm_inf(n, vc));
     if (vlbe_vec_norm_inf(m, b + n) > tolv) {
-        if (!have_m && (rc = vlbe__int_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
+        if (!have_m && (rc = vlbe__dae_mass(sys, stats, t, q, v, M)) != VLBE_OK) return rc;
         vlbe_vec_zero(n, b);
         vlbe_vec_scale(m, -VLBE_R(1.0), b + n);
-        if ((rc = vlbe__int_saddle_solve(sys, stats, M, Cq, A, b, X, iwork)) != VLBE_OK) return rc;
+        if ((rc = vlbe__dae_saddle_solve(sys, stats, M, Cq, A, b, X, iwork)) != VLBE_OK) return rc;
         vlbe_vec_axpy(n, VLBE_R(1.0), b, vc);
         if (!vlbe_all_finite(vc, n)) return VLBE_ENONFINITE;
     }
@@ -1388,7 +1388,7 @@ VLBE_API vlbe_status vlbe_dae_project(const vlbe_dae *sys, vlbe_real t, vlbe_rea
 
 /* sqrt(a^2 + b^2) of a, b >= 0 without overflow of the squares; NaN if
    either is NaN. */
-VLBE_INLINE vlbe_real vlbe__int_hypot(vlbe_real a, vlbe_real b)
+VLBE_INLINE vlbe_real vlbe__dae_hypot(vlbe_real a, vlbe_real b)
 {
     vlbe_real s = a > b ? a : b;
     if (a != a || b != b) return a + b;
@@ -1401,9 +1401,9 @@ VLBE_INLINE vlbe_real vlbe__int_hypot(vlbe_real a, vlbe_real b)
 /* Weighted Euclidean norm of a residual Psi = (r, c), r of n and c of m
    components: ||Psi||_2 / sqrt(n + m) (Hsiao et al. eq. 53, N = n + m
    equations); NaN if Psi holds one. */
-VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const vlbe_real *c)
+VLBE_INLINE vlbe_real vlbe__dae_psi_norm(int n, const vlbe_real *r, int m, const vlbe_real *c)
 {
-    return vlbe__int_hypot(vlbe_vec_norm2(n, r), vlbe_vec_norm2(m, c)) /
+    return vlbe__dae_hypot(vlbe_vec_norm2(n, r), vlbe_vec_norm2(m, c)) /
            vlbe_sqrt((vlbe_real)(n + m));
 }
 
@@ -1424,7 +1424,7 @@ VLBE_INLINE vlbe_real vlbe__int_psi_norm(int n, const vlbe_real *r, int m, const
    The last term is the geometric stiffness of the constraints: the
    reaction C_q^T lambda turning with the constraint's normal (a pendulum
    owes its g / L to it).  The Jacobians come from the integrators'
-   routine vlbe__int_btangent: force_jac, mass_jac and constr_hess where the
+   routine vlbe__dae_btangent: force_jac, mass_jac and constr_hess where the
    model gives them, forward differences of force, of M(q) a and of
    C_q^T lambda where it does not (dQ/dv by differences only without
    force_jac; d(M a)/dq only without VLBE_DAE_MASS_CONST, d(M a)/dv only
@@ -1504,15 +1504,15 @@ VLBE_API size_t vlbe_dae_lin_work_len_sys(const vlbe_dae *sys)
     m = (size_t)sys->m;
     /* M, K, D, scratch T, basis N (n^2 each); Q; C_q^T, tau, column norms;
        Jacobian scratch; banded: the bands of M, K, D and C_q */
-    r = 5 * n * n + n + n * m + 2 * m + vlbe__int_btangent_len(sys);
-    if (vlbe__int_banded(sys)) r += 3 * vlbe__int_mlen(sys, 0) + vlbe__int_mlen(sys, 1);
+    r = 5 * n * n + n + n * m + 2 * m + vlbe__dae_btangent_len(sys);
+    if (vlbe__dae_banded(sys)) r += 3 * vlbe__dae_mlen(sys, 0) + vlbe__dae_mlen(sys, 1);
     return r;
 }
 /* pivots (or the marks of the frame's vectors) n; banded: inv[] */
 VLBE_API size_t vlbe_dae_lin_iwork_len_sys(const vlbe_dae *sys)
 {
     VLBE_ASSERT(sys != NULL);
-    return (size_t)(sys->n > 0 ? sys->n : 0) + vlbe__int_ilen(sys);
+    return (size_t)(sys->n > 0 ? sys->n : 0) + vlbe__dae_ilen(sys);
 }
 
 /* the frame's generator on one vector: S x = omega x x (planar: omega[2]
@@ -1667,7 +1667,7 @@ VLBE_INLINE void vlbe__lin_reduce(int n, int nr, const vlbe_real *N, vlbe_real *
    columns of q only) */
 VLBE_INLINE void vlbe__lin_unband(const vlbe_dae *s, const vlbe_real *B, vlbe_real *X)
 {
-    const int n = s->n, ld = vlbe__int_bld(s);
+    const int n = s->n, ld = vlbe__dae_bld(s);
     int i, j;
     for (i = 0; i < n; ++i)
         for (j = 0; j < n; ++j) {
@@ -1699,7 +1699,7 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
     vlbe_real *M, *K, *D, *T, *Nb, *Q, *A, *tau, *cn, *scr, *Mb = NULL, *Kb = NULL, *Db = NULL,
               *Cqb = NULL;
     int *inv = NULL;
-    vlbe__int_blk bk, bd;
+    vlbe__dae_blk bk, bd;
     vlbe_dae sl;
     vlbe_dae_stats dummy;
     vlbe_status rc;
@@ -1731,17 +1731,17 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
             }
         }
     }
-    band = vlbe__int_banded(sys);
+    band = vlbe__dae_banded(sys);
     if (band) {
         inv = iwork + n;
-        if (vlbe__int_inv(sys, inv) != VLBE_OK) return VLBE_EARG;
+        if (vlbe__dae_inv(sys, inv) != VLBE_OK) return VLBE_EARG;
     }
     if (!vlbe_all_finite(q, n) || !vlbe_all_finite(v, n) || !vlbe_all_finite(a, n) ||
         (m > 0 && !vlbe_all_finite(lambda, m)))
         return VLBE_ENONFINITE;
     if (!stats) {
         stats = &dummy;
-        vlbe__int_stats_zero(&dummy);
+        vlbe__dae_stats_zero(&dummy);
     }
     nn = (size_t)n * (size_t)n;
     M = work;
@@ -1755,18 +1755,18 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
     cn = tau + m;
     scr = cn + m;
     if (band) {
-        Mb = scr + vlbe__int_btangent_len(sys);
-        Kb = Mb + vlbe__int_mlen(sys, 0);
-        Db = Kb + vlbe__int_mlen(sys, 0);
-        Cqb = Db + vlbe__int_mlen(sys, 0);
+        Mb = scr + vlbe__dae_btangent_len(sys);
+        Kb = Mb + vlbe__dae_mlen(sys, 0);
+        Db = Kb + vlbe__dae_mlen(sys, 0);
+        Cqb = Db + vlbe__dae_mlen(sys, 0);
     }
     /* the constraint term is physics here (see above) */
     sl = *sys;
     sl.flags &= ~VLBE_DAE_NO_CHESS;
     /* M, Q, C_q (dense C_q into T, m x n, then C_q^T into A) */
-    if ((rc = vlbe__int_mass(&sl, stats, t, q, v, band ? Mb : M)) != VLBE_OK) return rc;
-    if ((rc = vlbe__int_force(&sl, stats, t, q, v, Q)) != VLBE_OK) return rc;
-    if ((rc = vlbe__int_cjac(&sl, stats, t, q, band ? Cqb : T, NULL)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_mass(&sl, stats, t, q, v, band ? Mb : M)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_force(&sl, stats, t, q, v, Q)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_cjac(&sl, stats, t, q, band ? Cqb : T, NULL)) != VLBE_OK) return rc;
     if (!vlbe_all_finite(Q, n)) return VLBE_ENONFINITE;
     for (k = 0; k < m; ++k)
         for (j = 0; j < n; ++j) {
@@ -1774,7 +1774,7 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
             if (band) {
                 const int ok = sys->order[n + k], oj = sys->order[j];
                 x = (oj - ok <= sys->ku && ok - oj <= sys->kl)
-                        ? Cqb[VLBE_BAND_IDX(vlbe__int_bld(sys), sys->kl, ok, oj)]
+                        ? Cqb[VLBE_BAND_IDX(vlbe__dae_bld(sys), sys->kl, ok, oj)]
                         : VLBE_R(0.0);
             } else {
                 x = T[(size_t)k * (size_t)n + (size_t)j];
@@ -1786,20 +1786,20 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
     if (!vlbe__lin_finite(nn, M)) return VLBE_ENONFINITE;
     /* K = -dQ/dq + d(M a)/dq + d(C_q^T lambda)/dq, D = -dQ/dv + d(M a)/dv */
     if (band) {
-        const size_t ml = vlbe__int_mlen(sys, 0);
+        const size_t ml = vlbe__dae_mlen(sys, 0);
         for (e = 0; e < ml; ++e) Kb[e] = Db[e] = VLBE_R(0.0);
         bk.A = Kb;
         bd.A = Db;
-        bk.ld = bd.ld = (size_t)vlbe__int_bld(sys);
+        bk.ld = bd.ld = (size_t)vlbe__dae_bld(sys);
         bk.kl = bd.kl = sys->kl;
         bk.f = bd.f = 1;
         bk.ro = bk.co = bd.ro = bd.co = 0;
     } else {
         for (e = 0; e < nn; ++e) K[e] = D[e] = VLBE_R(0.0);
-        bk = vlbe__int_dblk(K, n, 0);
-        bd = vlbe__int_dblk(D, n, 0);
+        bk = vlbe__dae_dblk(K, n, 0);
+        bd = vlbe__dae_dblk(D, n, 0);
     }
-    rc = vlbe__int_btangent(&sl, stats, t, q, v, a, m > 0 ? lambda : NULL, Q, band ? Mb : M,
+    rc = vlbe__dae_btangent(&sl, stats, t, q, v, a, m > 0 ? lambda : NULL, Q, band ? Mb : M,
                             VLBE_R(1.0), &bk, VLBE_R(1.0), &bd, inv, scr);
     if (rc != VLBE_OK) return rc;
     if (band) {
@@ -1840,13 +1840,13 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
        Psi(q, lambda) = ( C_q(t,q)^T lambda - Q(t,q,0),  C(t,q) ) = 0,
    the equations of motion with q' = q'' = 0 (M is never called).  The
    iteration matrix is dPsi/d(q, lambda) = [ -K + H, C_q^T; C_q, 0 ],
-   K = dQ/dq, H = d(C_q^T lambda)/dq, formed by vlbe__int_btangent (the
+   K = dQ/dq, H = d(C_q^T lambda)/dq, formed by vlbe__dae_btangent (the
    integrators' helper: force_jac or forward differences for K, constr_hess
    or forward differences for H, H dropped under VLBE_DAE_NO_CHESS).  The
    constraint rows and multiplier columns are scaled by
    s = max|-K + H| / max|C_q| (a symmetric scaling: the LU's relative pivot
    test then sees blocks of the same size whatever the units), and then
-   every row is equilibrated (vlbe__int_equil), as in the integrators. */
+   every row is equilibrated (vlbe__dae_equil), as in the integrators. */
 
 /* Defaults: ftol 0 (off), rtol 1e-10, atol 1e-12 (float: VLBE_TOL_DEFAULT),
    50 iterations, up to 5 halvings of a step, a watchdog of 4 iterations
@@ -1867,12 +1867,12 @@ VLBE_API void vlbe_static_params_default(vlbe_static_params *p)
 /* Workspace layout (reals), N = n + m: x = (q, lambda), trial x, Psi at x,
    Psi at the trial, Newton step (5 N); zero velocity, Q at x, Q at the trial
    (3 n); C_q at x and at the trial (2 m n); iteration matrix (N*N);
-   Jacobian scratch (vlbe__int_tangent_len).  Banded: C_q and the iteration
+   Jacobian scratch (vlbe__dae_tangent_len).  Banded: C_q and the iteration
    matrix as bands, then the step and product vectors in the band's order
    (3 N). */
 VLBE_API size_t vlbe_static_work_len(int n, int m)
 {
-    const vlbe_dae d = vlbe__int_dense(n, m);
+    const vlbe_dae d = vlbe__dae_dense(n, m);
     return vlbe_static_work_len_sys(&d);
 }
 VLBE_API size_t vlbe_static_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
@@ -1881,27 +1881,27 @@ VLBE_API size_t vlbe_static_work_len_sys(const vlbe_dae *sys)
     size_t N;
     VLBE_ASSERT(sys != NULL);
     N = (size_t)sys->n + (size_t)sys->m;
-    return 5 * N + 3 * (size_t)sys->n + 2 * vlbe__int_mlen(sys, 1) + vlbe__int_alen(sys, 1) +
-           vlbe__int_btangent_len(sys) + (vlbe__int_banded(sys) ? 3 * N : 0);
+    return 5 * N + 3 * (size_t)sys->n + 2 * vlbe__dae_mlen(sys, 1) + vlbe__dae_alen(sys, 1) +
+           vlbe__dae_btangent_len(sys) + (vlbe__dae_banded(sys) ? 3 * N : 0);
 }
 VLBE_API size_t vlbe_static_iwork_len_sys(const vlbe_dae *sys)
 {
     VLBE_ASSERT(sys != NULL);
-    return vlbe_static_iwork_len(sys->n, sys->m) + vlbe__int_ilen(sys);
+    return vlbe_static_iwork_len(sys->n, sys->m) + vlbe__dae_ilen(sys);
 }
 
 /* Psi = (C_q^T lambda - Q, C) at x = (q, lambda), v = z = 0; leaves Q(t,q,0)
    in Q and C_q in Cq.  pw: scratch of a banded problem (2 (n + m)). */
-VLBE_INLINE vlbe_status vlbe__sta_resid(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
+VLBE_INLINE vlbe_status vlbe__static_resid(const vlbe_dae *s, vlbe_dae_stats *c, vlbe_real t,
                                         const vlbe_real *x, const vlbe_real *z, vlbe_real *Q,
                                         vlbe_real *Cq, vlbe_real *F, vlbe_real *pw)
 {
     int n = s->n, m = s->m, i;
     vlbe_status rc;
-    if ((rc = vlbe__int_force(s, c, t, x, z, Q)) != VLBE_OK) return rc;
-    if ((rc = vlbe__int_cjac(s, c, t, x, Cq, NULL)) != VLBE_OK) return rc;
-    if ((rc = vlbe__int_constr(s, c, t, x, F + n)) != VLBE_OK) return rc;
-    if (vlbe__int_banded(s)) vlbe__int_bprod(s, 2, Cq, x + n, F, pw); /* pw: 2 (n+m) */
+    if ((rc = vlbe__dae_force(s, c, t, x, z, Q)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_cjac(s, c, t, x, Cq, NULL)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_constr(s, c, t, x, F + n)) != VLBE_OK) return rc;
+    if (vlbe__dae_banded(s)) vlbe__dae_bprod(s, 2, Cq, x + n, F, pw); /* pw: 2 (n+m) */
     else vlbe_mat_tvec(m, n, Cq, x + n, F);
     for (i = 0; i < n; ++i) F[i] -= Q[i];
     return VLBE_OK;
@@ -2014,15 +2014,15 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
         iwork_len < vlbe_static_iwork_len_sys(sys))
         return VLBE_EWORK;
     if (!vlbe_all_finite(q, n) || (m > 0 && !vlbe_all_finite(lambda, m))) return VLBE_ENONFINITE;
-    band = vlbe__int_banded(sys);
+    band = vlbe__dae_banded(sys);
     if (band) {
         inv = iwork + N;
-        if ((rc = vlbe__int_inv(sys, inv)) != VLBE_OK) return rc;
-        NN = vlbe__int_alen(sys, 1);
+        if ((rc = vlbe__dae_inv(sys, inv)) != VLBE_OK) return rc;
+        NN = vlbe__dae_alen(sys, 1);
     }
     if (!stats) {
         stats = &dummy;
-        vlbe__int_stats_zero(&dummy);
+        vlbe__dae_stats_zero(&dummy);
     }
     x = work;
     xt = x + N;
@@ -2033,11 +2033,11 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     Q = z + n;
     Qt = Q + n;
     Cq = Qt + n;
-    Cqt = Cq + vlbe__int_mlen(sys, 1);
-    A = Cqt + vlbe__int_mlen(sys, 1);
+    Cqt = Cq + vlbe__dae_mlen(sys, 1);
+    A = Cqt + vlbe__dae_mlen(sys, 1);
     scr = A + NN;
     if (band) {
-        X = scr + vlbe__int_btangent_len(sys); /* the step in A's order */
+        X = scr + vlbe__dae_btangent_len(sys); /* the step in A's order */
         pw = X + N;
     }
     /* M never enters: no dM/dq terms in the tangent */
@@ -2047,9 +2047,9 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     vlbe_vec_copy(n, q, x);
     if (m > 0) vlbe_vec_copy(m, lambda, x + n);
     /* the start is the caller's point: no backtracking from it */
-    if ((rc = vlbe__sta_resid(&sl, stats, t, x, z, Q, Cq, F, pw)) != VLBE_OK) return rc;
+    if ((rc = vlbe__static_resid(&sl, stats, t, x, z, Q, Cq, F, pw)) != VLBE_OK) return rc;
     if (!vlbe_all_finite(F, N)) return VLBE_ENONFINITE;
-    fnorm = vlbe__int_psi_norm(n, F, m, F + n); /* residual test, eq. 53 */
+    fnorm = vlbe__dae_psi_norm(n, F, m, F + n); /* residual test, eq. 53 */
     inc_on = par->rtol + par->atol > VLBE_R(0.0);
     inc_ok = !inc_on;
     /* the watchdog phase: full Newton steps from the start (see above) */
@@ -2066,41 +2066,41 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
         /* iteration matrix [-K + H, s C_q^T; s C_q, 0] */
         for (e = 0; e < NN; ++e) A[e] = VLBE_R(0.0);
         {
-            const vlbe__int_blk B = band ? vlbe__int_band_blk(sys, A, 1) : vlbe__int_dblk(A, N, 0);
-            rc = vlbe__int_btangent(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), &B,
+            const vlbe__dae_blk B = band ? vlbe__dae_band_blk(sys, A, 1) : vlbe__dae_dblk(A, N, 0);
+            rc = vlbe__dae_btangent(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), &B,
                                     VLBE_R(0.0), NULL, inv, scr);
             kmax = vlbe_vec_norm_inf((int)NN, A); /* only the q block is filled yet */
-            cmax = vlbe_vec_norm_inf((int)vlbe__int_mlen(sys, 1), Cq);
+            cmax = vlbe_vec_norm_inf((int)vlbe__dae_mlen(sys, 1), Cq);
             sc = (kmax > VLBE_R(0.0) && cmax > VLBE_R(0.0) && isfinite(kmax) && isfinite(cmax))
                      ? kmax / cmax
                      : VLBE_R(1.0);
-            if (rc == VLBE_OK) vlbe__int_bsaddle(sys, &B, sc, Cq);
+            if (rc == VLBE_OK) vlbe__dae_bsaddle(sys, &B, sc, Cq);
         }
         /* the line search's merit function: ||(Psi_q, s Psi_c)||, the
            constraint rows in the units of force like the iteration matrix
            (with C in its own units a metre of gap would weigh as a newton) */
-        merit = vlbe__int_hypot(vlbe_vec_norm2(n, F), sc * vlbe_vec_norm2(m, F + n));
+        merit = vlbe__dae_hypot(vlbe_vec_norm2(n, F), sc * vlbe_vec_norm2(m, F + n));
         if (rc == VLBE_OK) {
             for (i = 0; i < n; ++i) d[i] = -F[i];
             for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
             if (band) {
-                vlbe__int_perm(sys, 1, d, X);
-                vlbe__int_equil(N, A, vlbe__int_ald(sys, 1), (int)vlbe__int_ald(sys, 1), NULL, X);
+                vlbe__dae_perm(sys, 1, d, X);
+                vlbe__dae_equil(N, A, vlbe__dae_ald(sys, 1), (int)vlbe__dae_ald(sys, 1), NULL, X);
             } else {
-                vlbe__int_equil(N, A, (size_t)N, N, NULL, d);
+                vlbe__dae_equil(N, A, (size_t)N, N, NULL, d);
             }
             ++stats->lu_factors;
             /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
-            rc = vlbe__int_factor(sys, stats, 1, A, iwork);
+            rc = vlbe__dae_factor(sys, stats, 1, A, iwork);
         }
         if (rc == VLBE_OK) {
             ++stats->lu_solves;
             ++stats->newton_iters;
             if (band) {
-                vlbe__int_solve(sys, 1, A, iwork, X);
-                vlbe__int_unperm(sys, 1, X, d);
+                vlbe__dae_solve(sys, 1, A, iwork, X);
+                vlbe__dae_unperm(sys, 1, X, d);
             } else {
-                vlbe__int_solve(sys, 1, A, iwork, d);
+                vlbe__dae_solve(sys, 1, A, iwork, d);
             }
             for (i = 0; i < m; ++i) d[n + i] *= sc;
             if (!vlbe_all_finite(d, N)) rc = VLBE_ENONFINITE;
@@ -2143,13 +2143,13 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             for (i = 0; i < N; ++i) xt[i] = x[i] + alpha * d[i];
             if (!vlbe_all_finite(xt, N)) {
                 last = VLBE_ENONFINITE;
-            } else if ((rc = vlbe__sta_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft, pw)) != VLBE_OK) {
+            } else if ((rc = vlbe__static_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft, pw)) != VLBE_OK) {
                 if (rc != VLBE_ECALLBACK || stats->callback_rc < 0) return rc; /* fatal */
                 last = VLBE_ECALLBACK; /* outside the domain: as no decrease */
             } else if (!vlbe_all_finite(Ft, N)) {
                 last = VLBE_ENONFINITE;
             } else {
-                mt = vlbe__int_hypot(vlbe_vec_norm2(n, Ft), sc * vlbe_vec_norm2(m, Ft + n));
+                mt = vlbe__dae_hypot(vlbe_vec_norm2(n, Ft), sc * vlbe_vec_norm2(m, Ft + n));
                 if (k == 0) full_valid = 1;
                 if (mt < merit || (k == 0 && (full_ok || watch)) || par->max_halvings == 0) {
                     accepted = 1;
@@ -2175,8 +2175,8 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             ++stats->rejected;
             vlbe_vec_copy(n, q, x);
             if (m > 0) vlbe_vec_copy(m, lambda, x + n);
-            if ((rc = vlbe__sta_resid(&sl, stats, t, x, z, Q, Cq, F, pw)) != VLBE_OK) return rc;
-            fnorm = vlbe__int_psi_norm(n, F, m, F + n);
+            if ((rc = vlbe__static_resid(&sl, stats, t, x, z, Q, Cq, F, pw)) != VLBE_OK) return rc;
+            fnorm = vlbe__dae_psi_norm(n, F, m, F + n);
             inc_ok = !inc_on;
             continue;
         }
@@ -2184,7 +2184,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             /* every trial was inside the domain but none lowered the
                merit: take the full step (see above) */
             for (i = 0; i < N; ++i) xt[i] = x[i] + d[i];
-            if ((rc = vlbe__sta_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft, pw)) != VLBE_OK) return rc;
+            if ((rc = vlbe__static_resid(&sl, stats, t, xt, z, Qt, Cqt, Ft, pw)) != VLBE_OK) return rc;
             accepted = 1;
             k = 0;
         }
@@ -2196,7 +2196,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
         tmp = F, F = Ft, Ft = tmp;
         tmp = Q, Q = Qt, Qt = tmp;
         tmp = Cq, Cq = Cqt, Cqt = tmp;
-        fnorm = vlbe__int_psi_norm(n, F, m, F + n);
+        fnorm = vlbe__dae_psi_norm(n, F, m, F + n);
         inc_ok = !inc_on || (full_ok && k == 0);
     }
     vlbe_vec_copy(n, x, q);
@@ -2265,7 +2265,7 @@ VLBE_API vlbe_status vlbe_hht_params_genalpha(vlbe_hht_params *p, vlbe_real rho_
    row scales of the LU (N). */
 VLBE_API size_t vlbe_hht_work_len(int n, int m)
 {
-    const vlbe_dae d = vlbe__int_dense(n, m);
+    const vlbe_dae d = vlbe__dae_dense(n, m);
     return vlbe_hht_work_len_sys(&d);
 }
 VLBE_API size_t vlbe_hht_iwork_len(int n, int m) { return (size_t)n + (size_t)m; }
@@ -2276,16 +2276,16 @@ VLBE_API size_t vlbe_hht_work_len_sys(const vlbe_dae *sys)
     n = (size_t)sys->n;
     m = (size_t)sys->m;
     N = n + m;
-    a = 3 * (4 * n + m) + vlbe__int_alen(sys, 1) + N + vlbe__int_mlen(sys, 0) + n +
-        vlbe__int_mlen(sys, 1) + m + vlbe__int_btangent_len(sys) + N +
-        (vlbe__int_banded(sys) ? 3 * N + n : 0);
+    a = 3 * (4 * n + m) + vlbe__dae_alen(sys, 1) + N + vlbe__dae_mlen(sys, 0) + n +
+        vlbe__dae_mlen(sys, 1) + m + vlbe__dae_btangent_len(sys) + N +
+        (vlbe__dae_banded(sys) ? 3 * N + n : 0);
     d = 3 * (4 * n + m) + vlbe_dae_work_len_sys(sys); /* the consistent start */
     return a > d ? a : d;
 }
 VLBE_API size_t vlbe_hht_iwork_len_sys(const vlbe_dae *sys)
 {
     VLBE_ASSERT(sys != NULL);
-    return vlbe_hht_iwork_len(sys->n, sys->m) + vlbe__int_ilen(sys);
+    return vlbe_hht_iwork_len(sys->n, sys->m) + vlbe__dae_ilen(sys);
 }
 
 VLBE_INLINE vlbe_real *vlbe__hht_trial(const vlbe_hht *st) { return st->w_; }
@@ -2365,7 +2365,7 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
     s.t_base_ = t0;
     s.h_run_ = VLBE_R(0.0);
     s.k_run_ = 0;
-    vlbe__int_stats_zero(&s.stats);
+    vlbe__dae_stats_zero(&s.stats);
     /* consistent q'' and lambda into the trial area (the state area stays
        as it was until the solve succeeded); the scratch after the LU area
        is large enough */
@@ -2395,7 +2395,7 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
 }
 
 /* x^k for a small k >= 0 (cheaper than pow on the Newton path). */
-VLBE_INLINE vlbe_real vlbe__int_powi(vlbe_real x, int k)
+VLBE_INLINE vlbe_real vlbe__dae_powi(vlbe_real x, int k)
 {
     vlbe_real r = VLBE_R(1.0);
     for (; k > 0; --k) r *= x;
@@ -2403,7 +2403,7 @@ VLBE_INLINE vlbe_real vlbe__int_powi(vlbe_real x, int k)
 }
 
 /* Weighted RMS norm of x with weights atol + rtol |ref|. */
-VLBE_INLINE vlbe_real vlbe__int_wrms(int n, const vlbe_real *x, const vlbe_real *ref,
+VLBE_INLINE vlbe_real vlbe__dae_wrms(int n, const vlbe_real *x, const vlbe_real *ref,
                                      vlbe_real rtol, vlbe_real atol)
 {
     vlbe_real s = VLBE_R(0.0);
@@ -2425,11 +2425,11 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
     int n = st->n, m = st->m, N = n + m, i, j, it, fresh, full = !p->modified;
     size_t NN = (size_t)N * (size_t)N;
     vlbe_real *tq = vlbe__hht_trial(st), *tv = tq + n, *tqdd = tv + n, *ta = tqdd + n, *tl = ta + n;
-    int band = vlbe__int_banded(s);
-    vlbe_real *LU = vlbe__hht_lu(st), *r = LU + (band ? vlbe__int_alen(s, 1) : NN), *M = r + N,
-              *Q = M + vlbe__int_mlen(s, 0), *Cq = Q + n, *C = Cq + vlbe__int_mlen(s, 1),
+    int band = vlbe__dae_banded(s);
+    vlbe_real *LU = vlbe__hht_lu(st), *r = LU + (band ? vlbe__dae_alen(s, 1) : NN), *M = r + N,
+              *Q = M + vlbe__dae_mlen(s, 0), *Cq = Q + n, *C = Cq + vlbe__dae_mlen(s, 1),
               *scr = C + m,
-              *rs = scr + (band ? vlbe__int_btangent_len(s) : vlbe__int_tangent_len(n, m)),
+              *rs = scr + (band ? vlbe__dae_btangent_len(s) : vlbe__dae_tangent_len(n, m)),
               *X = rs + N, *pw = X + N, *tmp = pw + 2 * N; /* banded only */
     vlbe_real am = p->alpha_m, af = p->alpha_f;
     vlbe_real bp = h * h * p->beta * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am); /* dq/dq''  */
@@ -2455,17 +2455,17 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
         int conv = 0, left = p->newton_max - 1 - it;
         /* residual: r_q = M q'' + C_q^T lambda - Q, r_c = C / bp (scaled) */
         if (!st->have_m_) {
-            if ((rc = vlbe__int_mass(s, &st->stats, t1, tq, tv, M)) != VLBE_OK) return rc;
+            if ((rc = vlbe__dae_mass(s, &st->stats, t1, tq, tv, M)) != VLBE_OK) return rc;
             st->have_m_ = (s->flags & VLBE_DAE_MASS_CONST) != 0; /* constant: kept */
         }
-        if ((rc = vlbe__int_force(s, &st->stats, t1, tq, tv, Q)) != VLBE_OK) return rc;
-        if ((rc = vlbe__int_cjac(s, &st->stats, t1, tq, Cq, NULL)) != VLBE_OK) return rc;
-        if ((rc = vlbe__int_constr(s, &st->stats, t1, tq, C)) != VLBE_OK) return rc;
+        if ((rc = vlbe__dae_force(s, &st->stats, t1, tq, tv, Q)) != VLBE_OK) return rc;
+        if ((rc = vlbe__dae_cjac(s, &st->stats, t1, tq, Cq, NULL)) != VLBE_OK) return rc;
+        if ((rc = vlbe__dae_constr(s, &st->stats, t1, tq, C)) != VLBE_OK) return rc;
         if (band) {
-            vlbe__int_bprod(s, 0, M, tqdd, r, pw);
+            vlbe__dae_bprod(s, 0, M, tqdd, r, pw);
             for (i = 0; i < n; ++i) r[i] -= Q[i];
             if (m > 0) {
-                vlbe__int_bprod(s, 2, Cq, tl, tmp, pw);
+                vlbe__dae_bprod(s, 2, Cq, tl, tmp, pw);
                 for (i = 0; i < n; ++i) r[i] += tmp[i];
             }
             for (j = 0; j < m; ++j) r[n + j] = C[j] / bp;
@@ -2487,7 +2487,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
            otherwise within the budget, which the last iteration may
            overrun by this one evaluation. */
         if (pending) {
-            if (vlbe__int_psi_norm(n, r, m, C) <= p->ftol) goto done;
+            if (vlbe__dae_psi_norm(n, r, m, C) <= p->ftol) goto done;
             pending = 0;
             if (!fresh) {
                 st->have_lu_ = 0;
@@ -2498,16 +2498,16 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
         }
         /* iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v, C_q^T; C_q, 0] */
         if (!st->have_lu_ || full) {
-            vlbe__int_blk B;
+            vlbe__dae_blk B;
             size_t ld = (size_t)N;
             if (band) {
-                B = vlbe__int_band_blk(s, LU, 1);
+                B = vlbe__dae_band_blk(s, LU, 1);
                 ld = B.ld;
-                vlbe_vec_zero((int)vlbe__int_alen(s, 1), LU);
-                vlbe__int_badd(s, &B, VLBE_R(1.0), M, 0);
-                vlbe__int_bsaddle(s, &B, VLBE_R(1.0), Cq);
+                vlbe_vec_zero((int)vlbe__dae_alen(s, 1), LU);
+                vlbe__dae_badd(s, &B, VLBE_R(1.0), M, 0);
+                vlbe__dae_bsaddle(s, &B, VLBE_R(1.0), Cq);
             } else {
-                B = vlbe__int_dblk(LU, N, 0);
+                B = vlbe__dae_dblk(LU, N, 0);
                 for (i = 0; i < n; ++i) {
                     for (j = 0; j < n; ++j) LU[(size_t)i * N + j] = M[(size_t)i * n + j];
                     for (j = 0; j < m; ++j) LU[(size_t)i * N + n + j] = Cq[(size_t)j * n + i];
@@ -2517,13 +2517,13 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
                     for (j = 0; j < m; ++j) LU[(size_t)(n + i) * N + n + j] = VLBE_R(0.0);
                 }
             }
-            rc = vlbe__int_btangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, &B, gp, &B,
+            rc = vlbe__dae_btangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, &B, gp, &B,
                                     band ? st->piv_ + N : NULL, scr);
             if (rc != VLBE_OK) return rc;
-            vlbe__int_equil(N, LU, ld, band ? (int)ld : N, rs, NULL);
+            vlbe__dae_equil(N, LU, ld, band ? (int)ld : N, rs, NULL);
             ++st->stats.lu_factors;
             /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
-            rc = vlbe__int_factor(s, &st->stats, 1, LU, st->piv_);
+            rc = vlbe__dae_factor(s, &st->stats, 1, LU, st->piv_);
             if (rc != VLBE_OK) {
                 st->have_lu_ = 0;
                 return rc;
@@ -2536,13 +2536,13 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
         ++st->stats.lu_solves;
         ++st->stats.newton_iters;
         if (band) {
-            vlbe__int_perm(s, 1, r, X);
+            vlbe__dae_perm(s, 1, r, X);
             for (i = 0; i < N; ++i) X[i] *= rs[i];
-            vlbe__int_solve(s, 1, LU, st->piv_, X);
-            vlbe__int_unperm(s, 1, X, r);
+            vlbe__dae_solve(s, 1, LU, st->piv_, X);
+            vlbe__dae_unperm(s, 1, X, r);
         } else {
             for (i = 0; i < N; ++i) r[i] *= rs[i];
-            vlbe__int_solve(s, 1, LU, st->piv_, r);
+            vlbe__dae_solve(s, 1, LU, st->piv_, r);
         }
         /* update: q'' -= dx, lambda -= dl, and a, q, v along */
         for (i = 0; i < n; ++i) {
@@ -2577,9 +2577,9 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
         if (vlbe_vec_norm_inf(n, r) <= VLBE_R(8.0) * VLBE_EPS * vlbe_vec_norm_inf(n, tq)) {
             conv = 1;
         } else {
-            nrm = nq = vlbe__int_wrms(n, r, tq, p->rtol, p->atol);
+            nrm = nq = vlbe__dae_wrms(n, r, tq, p->rtol, p->atol);
             for (i = 0; i < n; ++i) r[i] *= gp / bp; /* velocity increment */
-            nv = vlbe__int_wrms(n, r, tv, p->rtol, p->atol);
+            nv = vlbe__dae_wrms(n, r, tv, p->rtol, p->atol);
             if (nv > nrm) nrm = nv;
             if (prev > VLBE_R(0.0)) {
                 theta = nrm / prev;
@@ -2625,7 +2625,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
                     /* the noise floor above */
                 } else if (theta / (VLBE_R(1.0) - theta) * nrm <= VLBE_R(1.0)) {
                     conv = 1;
-                } else if (!fresh && vlbe__int_powi(theta, left) / (VLBE_R(1.0) - theta) * nrm >
+                } else if (!fresh && vlbe__dae_powi(theta, left) / (VLBE_R(1.0) - theta) * nrm >
                                          VLBE_R(1.0)) {
                     /* will it converge within the iterations left (or
                        reuse_max)?  If not, a stale matrix is refreshed now
@@ -2690,7 +2690,7 @@ VLBE_INLINE vlbe_status vlbe__hht_step_halving(vlbe_hht *st, vlbe_real h, vlbe_r
         if (rc == VLBE_ENOCONV) ++st->stats.newton_fails;
         ++st->stats.rejected;
         st->have_lu_ = 0;
-        if (l >= depth || !vlbe__int_retry(&st->stats, rc)) break;
+        if (l >= depth || !vlbe__dae_retry(&st->stats, rc)) break;
         if (l == 0) vlbe__hht_copy_state(n, m, st->q, bk);
         ++l;
         second &= ~(1ul << l);
@@ -2853,7 +2853,7 @@ VLBE_INLINE size_t vlbe__bdf_backup_len(int n, int m)
    of the iteration matrix (N2), scratch. */
 VLBE_API size_t vlbe_bdf_work_len(int n, int m)
 {
-    const vlbe_dae d = vlbe__int_dense(n, m);
+    const vlbe_dae d = vlbe__dae_dense(n, m);
     return vlbe_bdf_work_len_sys(&d);
 }
 VLBE_API size_t vlbe_bdf_iwork_len(int n, int m) { return 2 * (size_t)n + 2 * (size_t)m; }
@@ -2866,8 +2866,8 @@ VLBE_API size_t vlbe_bdf_work_len_sys(const vlbe_dae *sys)
     n = (size_t)sys->n;
     m = (size_t)sys->m;
     N2 = 2 * n + 2 * m;
-    tail = vlbe__int_alen(sys, 2) + vlbe__int_mlen(sys, 0) + n + vlbe__int_mlen(sys, 1) + m + N2 +
-           vlbe__int_btangent_len(sys) + (vlbe__int_banded(sys) ? 2 * N2 + n : 0);
+    tail = vlbe__dae_alen(sys, 2) + vlbe__dae_mlen(sys, 0) + n + vlbe__dae_mlen(sys, 1) + m + N2 +
+           vlbe__dae_btangent_len(sys) + (vlbe__dae_banded(sys) ? 2 * N2 + n : 0);
     dae = vlbe_dae_work_len_sys(sys);
     return N2 * (size_t)(VLBE_BDF_MAXORD + 1 + 5) + vlbe__bdf_backup_len(sys->n, sys->m) +
            (tail > dae ? tail : dae);
@@ -2875,7 +2875,7 @@ VLBE_API size_t vlbe_bdf_work_len_sys(const vlbe_dae *sys)
 VLBE_API size_t vlbe_bdf_iwork_len_sys(const vlbe_dae *sys)
 {
     VLBE_ASSERT(sys != NULL);
-    return vlbe_bdf_iwork_len(sys->n, sys->m) + vlbe__int_ilen(sys);
+    return vlbe_bdf_iwork_len(sys->n, sys->m) + vlbe__dae_ilen(sys);
 }
 
 VLBE_INLINE int vlbe__bdf_n2(const vlbe_bdf *st) { return 2 * st->n + 2 * st->m; }
@@ -2897,16 +2897,16 @@ VLBE_INLINE vlbe_real *vlbe__bdf_tail(const vlbe_bdf *st)
    (banded) the vectors in the matrix's order */
 VLBE_INLINE vlbe_real *vlbe__bdf_M(const vlbe_bdf *st)
 {
-    return vlbe__bdf_tail(st) + vlbe__int_alen(st->sys, 2);
+    return vlbe__bdf_tail(st) + vlbe__dae_alen(st->sys, 2);
 }
 VLBE_INLINE vlbe_real *vlbe__bdf_rs(const vlbe_bdf *st)
 {
-    return vlbe__bdf_M(st) + vlbe__int_mlen(st->sys, 0) + (size_t)st->n +
-           vlbe__int_mlen(st->sys, 1) + (size_t)st->m;
+    return vlbe__bdf_M(st) + vlbe__dae_mlen(st->sys, 0) + (size_t)st->n +
+           vlbe__dae_mlen(st->sys, 1) + (size_t)st->m;
 }
 VLBE_INLINE vlbe_real *vlbe__bdf_ext(const vlbe_bdf *st)
 {
-    return vlbe__bdf_rs(st) + (size_t)vlbe__bdf_n2(st) + vlbe__int_btangent_len(st->sys);
+    return vlbe__bdf_rs(st) + (size_t)vlbe__bdf_n2(st) + vlbe__dae_btangent_len(st->sys);
 }
 
 /* Weighted RMS norm of x (nn <= 2n components, q then v) with the
@@ -2917,7 +2917,7 @@ VLBE_INLINE vlbe_real vlbe__bdf_wrms(const vlbe_bdf_params *p, int nn, const vlb
 {
     vlbe_real s = VLBE_R(0.0);
     int i;
-    if (!p->atolv) return vlbe__int_wrms(nn, x, ref, p->rtol, p->atol);
+    if (!p->atolv) return vlbe__dae_wrms(nn, x, ref, p->rtol, p->atol);
     for (i = 0; i < nn; ++i) {
         vlbe_real r = x[i] / (p->atolv[i] + p->rtol * vlbe_fabs(ref[i]));
         s += r * r;
@@ -2942,7 +2942,7 @@ VLBE_INLINE vlbe_real vlbe__bdf_newton_norm(const vlbe_bdf *st, const vlbe_real 
     int n2 = 2 * st->n, m2 = 2 * st->m;
     vlbe_real a = vlbe__bdf_wrms(&st->par, n2, d, st->q), b;
     if (m2 == 0) return a;
-    b = vlbe__int_wrms(m2, d + n2, st->q + n2, st->par.rtol, st->par.atol) / cj;
+    b = vlbe__dae_wrms(m2, d + n2, st->q + n2, st->par.rtol, st->par.atol) / cj;
     return vlbe_sqrt(((vlbe_real)n2 * a * a + (vlbe_real)m2 * b * b) / (vlbe_real)(n2 + m2));
 }
 
@@ -3018,7 +3018,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     st->piv_ = iwork;
     st->t_base_ = t0;
     st->k_run_ = 0;
-    vlbe__int_stats_zero(&st->stats);
+    vlbe__dae_stats_zero(&st->stats);
     /* y'(t0) = (v0, q''0, 0, 0) into phi_2, with q''0 and lambda0 from the
        consistent-acceleration system (solved into the trial area: the state
        area stays as it was until the solve succeeded); mu0 = 0 */
@@ -3049,7 +3049,7 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     rc = vlbe_dae_consistent_acc(sys, t0, q0, v0, tq, tq + n, &st->stats, tail,
                                  (size_t)(work + work_len - tail), iwork, iwork_len);
     if (rc != VLBE_OK) return rc;
-    if (vlbe__int_banded(sys)) (void)vlbe__int_inv(sys, iwork + N2); /* checked by the start */
+    if (vlbe__dae_banded(sys)) (void)vlbe__dae_inv(sys, iwork + N2); /* checked by the start */
     if (q0 != st->q) vlbe_vec_copy(n, q0, st->q); /* a restart may pass the old state */
     if (v0 != st->v) vlbe_vec_copy(n, v0, st->v);
     vlbe_vec_copy(n, tq, phi2 + n);
@@ -3105,29 +3105,29 @@ VLBE_INLINE vlbe_status vlbe__bdf_res(vlbe_bdf *st, vlbe_real t, const vlbe_real
     const vlbe_dae *s = st->sys;
     int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i;
     const vlbe_real *q = y, *v = y + n, *lam = v + n, *mu = lam + m;
-    vlbe_real *M = vlbe__bdf_M(st), *Q = M + vlbe__int_mlen(s, 0), *Cq = Q + n,
-              *Ct = Cq + vlbe__int_mlen(s, 1);
+    vlbe_real *M = vlbe__bdf_M(st), *Q = M + vlbe__dae_mlen(s, 0), *Cq = Q + n,
+              *Ct = Cq + vlbe__dae_mlen(s, 1);
     vlbe_status rc;
     if (!st->have_m_) {
-        if ((rc = vlbe__int_mass(s, &st->stats, t, q, v, M)) != VLBE_OK) return rc;
+        if ((rc = vlbe__dae_mass(s, &st->stats, t, q, v, M)) != VLBE_OK) return rc;
         st->have_m_ = (s->flags & VLBE_DAE_MASS_CONST) != 0; /* constant: kept */
     }
-    if ((rc = vlbe__int_force(s, &st->stats, t, q, v, Q)) != VLBE_OK) return rc;
-    if ((rc = vlbe__int_cjac(s, &st->stats, t, q, Cq, Ct)) != VLBE_OK) return rc;
-    if ((rc = vlbe__int_constr(s, &st->stats, t, q, G + 2 * n + m)) != VLBE_OK) return rc;
-    if (vlbe__int_banded(s)) {
+    if ((rc = vlbe__dae_force(s, &st->stats, t, q, v, Q)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_cjac(s, &st->stats, t, q, Cq, Ct)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_constr(s, &st->stats, t, q, G + 2 * n + m)) != VLBE_OK) return rc;
+    if (vlbe__dae_banded(s)) {
         vlbe_real *pw = vlbe__bdf_ext(st) + N2, *tmp = pw + N2;
-        vlbe__int_bprod(s, 0, M, yp + n, G + n, pw);
+        vlbe__dae_bprod(s, 0, M, yp + n, G + n, pw);
         for (i = 0; i < n; ++i) {
             G[i] = yp[i] - v[i];
             G[n + i] -= Q[i];
         }
         if (m > 0) {
-            vlbe__int_bprod(s, 2, Cq, mu, tmp, pw);
+            vlbe__dae_bprod(s, 2, Cq, mu, tmp, pw);
             vlbe_vec_axpy(n, VLBE_R(1.0), tmp, G);
-            vlbe__int_bprod(s, 2, Cq, lam, tmp, pw);
+            vlbe__dae_bprod(s, 2, Cq, lam, tmp, pw);
             vlbe_vec_axpy(n, VLBE_R(1.0), tmp, G + n);
-            vlbe__int_bprod(s, 1, Cq, v, G + 2 * n, pw);
+            vlbe__dae_bprod(s, 1, Cq, v, G + 2 * n, pw);
             vlbe_vec_axpy(m, VLBE_R(1.0), Ct, G + 2 * n);
         }
         return vlbe_all_finite(G, N2) ? VLBE_OK : VLBE_ENONFINITE;
@@ -3151,7 +3151,7 @@ VLBE_INLINE vlbe_status vlbe__bdf_res(vlbe_bdf *st, vlbe_real t, const vlbe_real
    are divided by cj and the lambda and mu columns multiplied by cj, so that
    every block stays O(1) as h -> 0 (the unscaled matrix has blocks O(1/h)
    next to O(1) constraint rows, and Schur complements O(h)), then every row
-   scaled to its largest entry by vlbe__int_equil (M may be small against
+   scaled to its largest entry by vlbe__dae_equil (M may be small against
    the identity block, e.g. 1e-6 kg m^2 inertias: without it the LU's
    relative pivot test fails in float):
        [ I + (C_q^T mu)_q/cj     -I/cj                    0      C_q^T ]
@@ -3165,47 +3165,47 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
     const vlbe_dae *s = st->sys;
     int n = st->n, m = st->m, N2 = vlbe__bdf_n2(st), i, j;
     size_t NN = (size_t)N2 * (size_t)N2, ld = (size_t)N2;
-    vlbe_real *A = vlbe__bdf_tail(st), *M = vlbe__bdf_M(st), *Q = M + vlbe__int_mlen(s, 0),
+    vlbe_real *A = vlbe__bdf_tail(st), *M = vlbe__bdf_M(st), *Q = M + vlbe__dae_mlen(s, 0),
               *Cq = Q + n, *rs = vlbe__bdf_rs(st), *scr = rs + N2, ic = VLBE_R(1.0) / cj;
     vlbe_status rc;
     st->jcalc_ = -1;
-    if (vlbe__int_banded(s)) {
-        vlbe__int_blk Bqq, Bqv, Bvq, Bvv;
+    if (vlbe__dae_banded(s)) {
+        vlbe__dae_blk Bqq, Bqv, Bvq, Bvv;
         const int *inv = st->piv_ + N2;
         int b;
-        NN = vlbe__int_alen(s, 2);
-        ld = vlbe__int_ald(s, 2);
+        NN = vlbe__dae_alen(s, 2);
+        ld = vlbe__dae_ald(s, 2);
         vlbe_vec_zero((int)NN, A);
-        Bqq = vlbe__int_band_blk(s, A, 2);
+        Bqq = vlbe__dae_band_blk(s, A, 2);
         Bqv = Bvq = Bvv = Bqq;
         Bqv.co = 1;
         Bvq.ro = 1;
         Bvv.ro = Bvv.co = 1;
-        vlbe__int_bdiag(s, &Bqq, VLBE_R(1.0));
-        vlbe__int_bdiag(s, &Bqv, -ic);
-        vlbe__int_badd(s, &Bvv, VLBE_R(1.0), M, 0);
+        vlbe__dae_bdiag(s, &Bqq, VLBE_R(1.0));
+        vlbe__dae_bdiag(s, &Bqv, -ic);
+        vlbe__dae_badd(s, &Bvv, VLBE_R(1.0), M, 0);
         if (m > 0) {
-            vlbe__int_badd(s, &Bqv, VLBE_R(1.0), Cq, 2); /* (q, mu)     */
-            vlbe__int_badd(s, &Bvq, VLBE_R(1.0), Cq, 2); /* (v, lambda) */
-            vlbe__int_badd(s, &Bqv, VLBE_R(1.0), Cq, 1); /* (lambda, v) */
-            vlbe__int_badd(s, &Bvq, VLBE_R(1.0), Cq, 1); /* (mu, q)     */
+            vlbe__dae_badd(s, &Bqv, VLBE_R(1.0), Cq, 2); /* (q, mu)     */
+            vlbe__dae_badd(s, &Bvq, VLBE_R(1.0), Cq, 2); /* (v, lambda) */
+            vlbe__dae_badd(s, &Bqv, VLBE_R(1.0), Cq, 1); /* (lambda, v) */
+            vlbe__dae_badd(s, &Bvq, VLBE_R(1.0), Cq, 1); /* (mu, q)     */
         }
-        rc = vlbe__int_btangent(s, &st->stats, t, y, y + n, yp + n, NULL, Q, M, ic, &Bvq, ic,
+        rc = vlbe__dae_btangent(s, &st->stats, t, y, y + n, yp + n, NULL, Q, M, ic, &Bvq, ic,
                                 &Bvv, inv, scr);
         if (rc != VLBE_OK) return rc;
         if (m > 0) {
             /* (v, q) += d(C_q^T lambda)/dq / cj, (q, q) += d(C_q^T mu)/dq / cj,
                (lambda, q) += d(C_q v + C_t)/dq: lambda rows sit at 2 order + 0 */
-            rc = vlbe__int_bconstr_q(s, &st->stats, t, y, y + 2 * n, ic, &Bvq, y + 2 * n + m, ic,
+            rc = vlbe__dae_bconstr_q(s, &st->stats, t, y, y + 2 * n, ic, &Bvq, y + 2 * n + m, ic,
                                      &Bqq, y + n, &Bqq, inv, scr);
             if (rc != VLBE_OK) return rc;
         }
         if (!vlbe_all_finite(A, (int)NN)) return VLBE_ENONFINITE;
-        vlbe__int_equil(N2, A, ld, (int)ld, rs, NULL);
+        vlbe__dae_equil(N2, A, ld, (int)ld, rs, NULL);
         for (i = 0; i < n; ++i) /* the 1/cj of the q and v rows, for the solve */
             for (b = 0; b < 2; ++b) rs[2 * s->order[i] + b] *= ic;
         ++st->stats.lu_factors;
-        if ((rc = vlbe__int_factor(s, &st->stats, 2, A, st->piv_)) != VLBE_OK) return rc;
+        if ((rc = vlbe__dae_factor(s, &st->stats, 2, A, st->piv_)) != VLBE_OK) return rc;
         st->cj_lu_ = cj;
         st->jcalc_ = 0;
         return VLBE_OK;
@@ -3223,20 +3223,20 @@ VLBE_INLINE vlbe_status vlbe__bdf_matrix(vlbe_bdf *st, vlbe_real t, const vlbe_r
             A[(size_t)(2 * n + m + j) * ld + (size_t)i] = c;   /* (mu, q)     */
         }
     }
-    rc = vlbe__int_tangent2(s, &st->stats, t, y, y + n, yp + n, NULL, Q, M, ic, A + ld * n,
+    rc = vlbe__dae_tangent2(s, &st->stats, t, y, y + n, yp + n, NULL, Q, M, ic, A + ld * n,
                             N2, ic, A + ld * n + n, N2, scr);
     if (rc != VLBE_OK) return rc;
     if (m > 0) {
-        rc = vlbe__int_constr_q(s, &st->stats, t, y, y + 2 * n, ic, A + ld * n, N2,
+        rc = vlbe__dae_constr_q(s, &st->stats, t, y, y + 2 * n, ic, A + ld * n, N2,
                                 y + 2 * n + m, ic, A, N2, y + n, A + ld * (size_t)(2 * n), N2,
                                 scr);
         if (rc != VLBE_OK) return rc;
     }
     if (!vlbe_all_finite(A, (int)NN)) return VLBE_ENONFINITE;
-    vlbe__int_equil(N2, A, ld, N2, rs, NULL);
+    vlbe__dae_equil(N2, A, ld, N2, rs, NULL);
     for (i = 0; i < 2 * n; ++i) rs[i] *= ic; /* the 1/cj of the q and v rows, for the solve */
     ++st->stats.lu_factors;
-    if ((rc = vlbe__int_factor(s, &st->stats, 2, A, st->piv_)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_factor(s, &st->stats, 2, A, st->piv_)) != VLBE_OK) return rc;
     st->cj_lu_ = cj;
     st->jcalc_ = 0;
     return VLBE_OK;
@@ -3249,15 +3249,15 @@ VLBE_INLINE void vlbe__bdf_solve(vlbe_bdf *st, vlbe_real *d)
     const vlbe_real *rs = vlbe__bdf_rs(st);
     vlbe_real c = st->cj_lu_;
     ++st->stats.lu_solves;
-    if (vlbe__int_banded(st->sys)) {
+    if (vlbe__dae_banded(st->sys)) {
         vlbe_real *X = vlbe__bdf_ext(st);
-        vlbe__int_perm(st->sys, 2, d, X);
+        vlbe__dae_perm(st->sys, 2, d, X);
         for (i = 0; i < N2; ++i) X[i] *= rs[i];
-        vlbe__int_solve(st->sys, 2, vlbe__bdf_tail(st), st->piv_, X);
-        vlbe__int_unperm(st->sys, 2, X, d);
+        vlbe__dae_solve(st->sys, 2, vlbe__bdf_tail(st), st->piv_, X);
+        vlbe__dae_unperm(st->sys, 2, X, d);
     } else {
         for (i = 0; i < N2; ++i) d[i] *= rs[i];
-        vlbe__int_solve(st->sys, 2, vlbe__bdf_tail(st), st->piv_, d);
+        vlbe__dae_solve(st->sys, 2, vlbe__bdf_tail(st), st->piv_, d);
     }
     for (i = 2 * n; i < 2 * n + 2 * m; ++i) d[i] *= c;
 }
@@ -3297,18 +3297,18 @@ VLBE_INLINE void vlbe__bdf_solve(vlbe_bdf *st, vlbe_real *d)
    is scratch. */
 VLBE_INLINE vlbe_real vlbe__bdf_enorm(vlbe_bdf *st, const vlbe_real *x, vlbe_real *f)
 {
-    int n = st->n, m = st->m, band = vlbe__int_banded(st->sys);
-    const vlbe_real *M = vlbe__bdf_M(st), *Cq = M + vlbe__int_mlen(st->sys, 0) + (size_t)n;
+    int n = st->n, m = st->m, band = vlbe__dae_banded(st->sys);
+    const vlbe_real *M = vlbe__bdf_M(st), *Cq = M + vlbe__dae_mlen(st->sys, 0) + (size_t)n;
     vlbe_real *pw = vlbe__bdf_ext(st) + vlbe__bdf_n2(st);
     if (!st->par.stiff_filter) return vlbe__bdf_norm(st, x);
     vlbe_vec_copy(n, x, f);
     vlbe_vec_scale(n, st->cj_lu_, f);
-    if (band) vlbe__int_bprod(st->sys, 0, M, x + n, f + n, pw);
+    if (band) vlbe__dae_bprod(st->sys, 0, M, x + n, f + n, pw);
     else vlbe_mat_vec(n, n, M, x + n, f + n);
     vlbe_vec_scale(n, st->cj_lu_, f + n);
     if (m > 0 && band) {
-        vlbe__int_bprod(st->sys, 1, Cq, x + n, f + 2 * n, pw);
-        vlbe__int_bprod(st->sys, 1, Cq, x, f + 2 * n + m, pw);
+        vlbe__dae_bprod(st->sys, 1, Cq, x + n, f + 2 * n, pw);
+        vlbe__dae_bprod(st->sys, 1, Cq, x, f + 2 * n + m, pw);
     } else if (m > 0) {
         vlbe_mat_vec(m, n, Cq, x + n, f + 2 * n);
         vlbe_mat_vec(m, n, Cq, x, f + 2 * n + m);
@@ -3592,7 +3592,7 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
             }
             if (ck * enorm <= VLBE_R(1.0)) break; /* accepted */
         } else {
-            if (!vlbe__int_retry(&st->stats, rc)) goto fail;
+            if (!vlbe__dae_retry(&st->stats, rc)) goto fail;
             failed_newton = 1;
         }
         /* failed attempt: back to the last accepted step, smaller h */

@@ -204,7 +204,7 @@ VLBE_API vlbe_status vlbe_rancf_chain_init(vlbe_ale_chain *ch, vlbe_rancf_elem *
    smallest normal number) times the largest (so that no k_i = w_i / w3
    and no quotient k_i / k_j overflows or underflows); VLBE_EWEIGHT
    otherwise.  k = w / w3. */
-static inline vlbe_status vlbe__rancf_wnorm(const vlbe_real *w, vlbe_real *k)
+VLBE_INLINE vlbe_status vlbe__rancf_wnorm(const vlbe_real *w, vlbe_real *k)
 {
     vlbe_real lo, hi;
     int i;
@@ -224,7 +224,7 @@ static inline vlbe_status vlbe__rancf_wnorm(const vlbe_real *w, vlbe_real *k)
 /* The entries of a basis that vlbe__ale_basis_fill wrote for kmax, amax
    are finite (the rational basis divides by W, which may vanish outside
    [p1, p2] or overflow); copy them to b then. */
-static inline vlbe_status vlbe__rancf_b_out(const vlbe_herm_ale *t, int kmax, int amax,
+VLBE_INLINE vlbe_status vlbe__rancf_b_out(const vlbe_herm_ale *t, int kmax, int amax,
                                             vlbe_herm_ale *b)
 {
     const int na = amax == 0 ? 1 : (amax == 1 ? 3 : VLBE_DA_N), kl = kmax < 1 ? kmax : 1;
@@ -266,7 +266,7 @@ static inline vlbe_status vlbe__rancf_b_out(const vlbe_herm_ale *t, int kmax, in
    at L = 1 from the weights k.  Each is a cubic numerator n_j over the
    cubic W; by Leibniz on n = g W: g^(c) = (n^(c) - sum_{i<c} C(c,i) g^(i)
    W^(c-i)) / W (the derivatives of n and W vanish beyond the third). */
-static inline void vlbe__rancf_g(const vlbe_real *k, vlbe_real xi, int nd, vlbe_real (*g)[6])
+VLBE_INLINE void vlbe__rancf_g(const vlbe_real *k, vlbe_real xi, int nd, vlbe_real (*g)[6])
 {
     static const vlbe_real binom[6][6] = {{1, 0, 0, 0, 0, 0},  {1, 1, 0, 0, 0, 0},
                                           {1, 2, 1, 0, 0, 0},  {1, 3, 3, 1, 0, 0},
@@ -295,7 +295,7 @@ static inline void vlbe__rancf_g(const vlbe_real *k, vlbe_real xi, int nd, vlbe_
 }
 
 /* The basis of normalized weights k at p (weights already checked). */
-static inline void vlbe__rancf_eval(const vlbe_real *k, vlbe_real p, vlbe_real p1,
+VLBE_INLINE void vlbe__rancf_eval(const vlbe_real *k, vlbe_real p, vlbe_real p1,
                                     vlbe_real p2, int kmax, int amax, vlbe_herm_ale *b)
 {
     vlbe_real g[4][6];
@@ -320,7 +320,7 @@ VLBE_API vlbe_status vlbe_rancf_basis_eval(const vlbe_real *w, vlbe_real p, vlbe
 }
 
 /* Refill one rule point of the planar tables with the rational basis. */
-static inline void vlbe__rancf_gp(const vlbe_real *k, vlbe_ale_gp *gp)
+VLBE_INLINE void vlbe__rancf_gp(const vlbe_real *k, vlbe_ale_gp *gp)
 {
     vlbe_herm_ale b;
     vlbe__rancf_eval(k, gp->xi, VLBE_R(0.0), VLBE_R(1.0), 3, 2, &b);
@@ -328,14 +328,14 @@ static inline void vlbe__rancf_gp(const vlbe_real *k, vlbe_ale_gp *gp)
 }
 
 /* the rational numbers of one rule point are finite */
-static inline int vlbe__rancf_gp_ok(const vlbe_ale_gp *gp)
+VLBE_INLINE int vlbe__rancf_gp_ok(const vlbe_ale_gp *gp)
 {
     return vlbe_all_finite(&gp->b[0][0][0], 3 * VLBE_DA_N * 4) & vlbe_all_finite(gp->b3, 4);
 }
 
 /* 1 if the rational numbers at xi are finite (one scratch point; the
    weights are so uneven otherwise that the basis overflows) */
-static inline int vlbe__rancf_xi_ok(const vlbe_real *k, vlbe_real xi)
+VLBE_INLINE int vlbe__rancf_xi_ok(const vlbe_real *k, vlbe_real xi)
 {
     vlbe_ale_gp gp;
     gp.xi = xi;
@@ -384,7 +384,7 @@ VLBE_API vlbe_status vlbe_rancf_elem_init(vlbe_rancf_elem *el, const vlbe_ale_ma
 }
 
 /* Element calls: the planar kernels on the rational tables. */
-static inline vlbe_status vlbe__rancf_mode(const vlbe_rancf_elem *el, unsigned mode)
+VLBE_INLINE vlbe_status vlbe__rancf_mode(const vlbe_rancf_elem *el, unsigned mode)
 {
     return ((mode | el->ale.flags) & VLBE_ALE_INV_AXIAL) ? VLBE_EARG : VLBE_OK;
 }
@@ -467,7 +467,7 @@ VLBE_API vlbe_status vlbe_rancf_point_force(const vlbe_rancf_elem *el, const vlb
 }
 
 /* -- Bezier form ---------------------------------------------------------- */
-static inline vlbe_status vlbe__rancf_bz_check(int d, const vlbe_real *w, vlbe_real *k)
+VLBE_INLINE vlbe_status vlbe__rancf_bz_check(int d, const vlbe_real *w, vlbe_real *k)
 {
     if (d < 1 || d > VLBE_RANCF_DMAX) return VLBE_EARG;
     return vlbe__rancf_wnorm(w, k);
@@ -475,7 +475,7 @@ static inline vlbe_status vlbe__rancf_bz_check(int d, const vlbe_real *w, vlbe_r
 
 /* the arguments of the conversions: dimension, weights, length, the 4 d
    input numbers */
-static inline vlbe_status vlbe__rancf_conv_check(int d, const vlbe_real *w, vlbe_real l,
+VLBE_INLINE vlbe_status vlbe__rancf_conv_check(int d, const vlbe_real *w, vlbe_real l,
                                                  const vlbe_real *in, vlbe_real *k)
 {
     vlbe_status st;
@@ -527,7 +527,7 @@ VLBE_API vlbe_status vlbe_rancf_from_bezier(int d, const vlbe_real *w, vlbe_real
 
 /* de Casteljau on the homogeneous points H_i = (w_i P_i, w_i) at u: the
    triangle t[level][i] (level 0: the H_i), d + 1 numbers each. */
-static inline void vlbe__rancf_casteljau(int d, const vlbe_real *k, const vlbe_real *P,
+VLBE_INLINE void vlbe__rancf_casteljau(int d, const vlbe_real *k, const vlbe_real *P,
                                          vlbe_real u, vlbe_real (*t)[4][VLBE_RANCF_DMAX + 1])
 {
     int i, j, lv;
@@ -663,7 +663,7 @@ VLBE_API vlbe_status vlbe_rancf_split(const vlbe_rancf_elem *el, const vlbe_real
    times that of A) is not rotated: in the planar 2 x 3 case one column of
    A V is such noise, and rotating against it never meets the stopping
    test.  VLBE_ESINGULAR when A is zero. */
-static inline vlbe_status vlbe__rancf_minnorm(int d, const vlbe_real *A, const vlbe_real *B,
+VLBE_INLINE vlbe_status vlbe__rancf_minnorm(int d, const vlbe_real *A, const vlbe_real *B,
                                               vlbe_real *x)
 {
     vlbe_real U[VLBE_RANCF_DMAX][3], V[3][3], s[3], smax = VLBE_R(0.0), fro = VLBE_R(0.0);
@@ -930,19 +930,19 @@ VLBE_API vlbe_status vlbe_rancf_nurbs(int d, int deg, int nc, const vlbe_real *P
 /* ===== chains of rational elements ====================================== */
 /* The per-element types of a planar chain (vlbe_ale_etype) over an array of
    vlbe_rancf_elem, one per element, each with its weights. */
-static inline const vlbe_ale_elem *vlbe__rancf_et_elem(const void *els, int e)
+VLBE_INLINE const vlbe_ale_elem *vlbe__rancf_et_elem(const void *els, int e)
 {
     return &((const vlbe_rancf_elem *)els)[e].ale;
 }
 
-static inline void vlbe__rancf_et_basis(const void *els, int e, vlbe_real p, vlbe_real p1,
+VLBE_INLINE void vlbe__rancf_et_basis(const void *els, int e, vlbe_real p, vlbe_real p1,
                                         vlbe_real p2, int kmax, int amax, vlbe_herm_ale *b)
 {
     vlbe__rancf_eval(((const vlbe_rancf_elem *)els)[e].k, p, p1, p2, kmax, amax, b);
 }
 
 /* aux = [weights of the left part (4), of the right part (4)] */
-static inline vlbe_status vlbe__rancf_et_split(const void *els, int e, const vlbe_real *q,
+VLBE_INLINE vlbe_status vlbe__rancf_et_split(const void *els, int e, const vlbe_real *q,
                                                const vlbe_real *qd, vlbe_real ph, vlbe_real *qh,
                                                vlbe_real *qhd, vlbe_real *aux)
 {
@@ -950,7 +950,7 @@ static inline vlbe_status vlbe__rancf_et_split(const void *els, int e, const vlb
 }
 
 /* aux = [merged weights (4), info of vlbe_rancf_merge] */
-static inline vlbe_status vlbe__rancf_et_merge(const void *els, int e, const vlbe_real *na,
+VLBE_INLINE vlbe_status vlbe__rancf_et_merge(const void *els, int e, const vlbe_real *na,
                                                const vlbe_real *nh, const vlbe_real *nb,
                                                vlbe_real *aux)
 {
@@ -964,7 +964,7 @@ static inline vlbe_status vlbe__rancf_et_merge(const void *els, int e, const vlb
 
 /* The new elements take the material, flags and Gauss orders of element e
    (the one split, or the left one of a merge). */
-static inline void vlbe__rancf_et_commit(void *els, int ne, int e, int op, const vlbe_real *aux)
+VLBE_INLINE void vlbe__rancf_et_commit(void *els, int ne, int e, int op, const vlbe_real *aux)
 {
     vlbe_rancf_elem *el = (vlbe_rancf_elem *)els;
     const vlbe_ale_mat mat = el[e].ale.mat;
@@ -981,7 +981,7 @@ static inline void vlbe__rancf_et_commit(void *els, int ne, int e, int op, const
     }
 }
 
-static inline const vlbe_ale_etype *vlbe__rancf_etype(void)
+VLBE_INLINE const vlbe_ale_etype *vlbe__rancf_etype(void)
 {
     static const vlbe_ale_etype t = {vlbe__rancf_et_elem, vlbe__rancf_et_basis,
                                      vlbe__rancf_et_split, vlbe__rancf_et_merge,

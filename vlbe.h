@@ -14,7 +14,8 @@ CONFIG (define before the first #include; the first group is GLOBAL: set it
         with -D for every translation unit of a program, never per file)
    VLBE_USE_FLOAT   vlbe_real = float, literals VLBE_R(x) = x##f, libm float
                     names, VLBE_EPS = FLT_EPSILON.  Default: double.
-   VLBE_INLINE      default `static inline`
+   VLBE_INLINE      prefix of every private function (vlbe__), default
+                    `static inline`
    VLBE_API         prefix of every public function, default VLBE_INLINE
    VLBE_RESTRICT    default `restrict` (C99), `__restrict` (C++), empty else
    VLBE_ASSERT(x)   precondition check of the pure kernels.  Default: assert(x)
@@ -35,9 +36,9 @@ CONVENTIONS
    (0 = VLBE_OK, negative = a specific failure); a failed call leaves the
    caller's data as it was before the call.  Programmer errors (NULL, n < 1)
    are caught by VLBE_ASSERT.  Nothing here allocates, prints or aborts.
-   Stack: at most 416 bytes per function (vlbe_eig_quad, 384 for
+   Stack: at most 408 bytes per function (vlbe_eig_quad, 384 for
    vlbe_herm_ale_eval; float on a Cortex-M4F, gcc -O2, make check-m4;
-   double about twice; README, Embedded).
+   double about twice; docs/embedded.md).
 
    FAILURE CONTRACT (every vlbe module keeps it).  (1) A routine returning
    vlbe_status never returns VLBE_OK with a NaN or Inf in an output when its
@@ -143,6 +144,15 @@ REFERENCES
 #include <float.h>
 #include <math.h>
 #include <limits.h>
+/* The marker of every function: VLBE_INLINE for the private ones (vlbe__),
+   VLBE_API for the public ones; both static inline unless overridden. */
+#ifndef VLBE_INLINE
+#define VLBE_INLINE static inline
+#endif
+#ifndef VLBE_API
+#define VLBE_API VLBE_INLINE
+#endif
+
 /* Preconditions (programmer errors).  On a hosted system: the C assert
    (message, abort; off under NDEBUG).  Elsewhere (a bare-metal target, no
    OS macro): a trap without message, so that an embedded image does not
@@ -156,10 +166,10 @@ REFERENCES
 #else
 #define VLBE_ASSERT(x) ((x) ? (void)0 : vlbe__assert_trap())
 #if defined(__GNUC__) || defined(__clang__)
-static inline void vlbe__assert_trap(void) { __builtin_trap(); }
+VLBE_INLINE void vlbe__assert_trap(void) { __builtin_trap(); }
 #else
 #include <stdlib.h>
-static inline void vlbe__assert_trap(void) { abort(); }
+VLBE_INLINE void vlbe__assert_trap(void) { abort(); }
 #endif
 #endif
 #endif
@@ -169,12 +179,6 @@ static inline void vlbe__assert_trap(void) { abort(); }
     ((size_t)(i) * (size_t)(ld) + (size_t)((j) - (i) + (kl)))
 
 /* -- configuration ------------------------------------------------------ */
-#ifndef VLBE_INLINE
-#define VLBE_INLINE static inline
-#endif
-#ifndef VLBE_API
-#define VLBE_API VLBE_INLINE
-#endif
 #ifndef VLBE_RESTRICT
 #if defined(__cplusplus)
 #define VLBE_RESTRICT __restrict
@@ -821,7 +825,7 @@ VLBE_INLINE void vlbe__lu_eliminate(vlbe_real *c, size_t stride, int m, int len)
                       would be noise; the test is relative to the whole
                       matrix, so scale rows of very different units to
                       comparable size first, as the integrators do:
-                      vlbe__int_equil), or below the smallest normal number,
+                      vlbe__dae_equil), or below the smallest normal number,
                       whose reciprocal may overflow; the 1-based failing
                       column is written to *info (LAPACK's k+1), which is the
                       only failure that writes *info.

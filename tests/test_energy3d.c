@@ -268,12 +268,12 @@ static double thd_sin(double x)
    the bound; damped, the dissipation 460 times.
    Catches (verified, the edit made in ancf_ale.h and undone):
    - the spin transport inertia with the wrong sign in Q, K and D alike
-     (vlbe__a3_inertia_pt: zt, c2, d2, dzt = +rhoI (...)): the undamped
+     (vlbe__ale3_inertia_pt: zt, c2, d2, dzt = +rhoI (...)): the undamped
      residual stays at 9.8e-3 of the scale (98 times the bound) and does
      not fall with h (ratio 1.01), in both precisions; test_ale3.c's FD
      Jacobian checks pass with that edit, only its
      transport_inertia_lagrange fails;
-   - the twist damping with the wrong sign (vlbe__a3_strain_gp: cT =
+   - the twist damping with the wrong sign (vlbe__ale3_strain_gp: cT =
      -c_phi GI, in Q, K and D alike): the damped window gains energy
      without bound (2.6e7 after 0.25 s; residual 0.72 of the scale). */
 static void test_window_balance(void **state)
@@ -336,7 +336,7 @@ static double thd_end(double x) { return x >= 1.0 ? 1.0 : 0.0; }
    amplitude 1/wd (twice that; measured 1.8e-5 (m:decay), float
    1.8e-5 (m@flt:decay)).
    Catches (verified, in both precisions): the twist damping with the
-   wrong sign (cT = -c_phi GI in vlbe__a3_strain_gp, Q, K and D alike):
+   wrong sign (cT = -c_phi GI in vlbe__ale3_strain_gp, Q, K and D alike):
    the oscillation grows as exp(+s t) and leaves the bound at the 6th
    step, t = 6 ms (by the end the error is 2.5 times the amplitude). */
 static void test_twist_decay(void **state)

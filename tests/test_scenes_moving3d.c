@@ -31,7 +31,7 @@
    1.25e-5 of the translational one, below the LU's pivot test n EPS
    max|A| (~5e-6 relative with n = 41 in float) before the integrators
    equilibrated the rows of their iteration matrices (integrators.h,
-   vlbe__int_equil); the chain with and without the spin angle give the
+   vlbe__dae_equil); the chain with and without the spin angle give the
    same history bit for bit in both precisions (checked below).
    Set VLBE_TEST_REPORT=1 to print measured errors beside the tolerances. */
 #include "test_util.h"

@@ -32,7 +32,7 @@
    FLT_EPSILON = 5e-6 times the constraint rows' unit entries (SI units:
    rhoI/rhoA = r^2/2 = 1.25e-5 m^2), which vlbe_lu_factor's relative
    pivot test read as singular in float until the integrators
-   equilibrated the rows of their iteration matrices (vlbe__int_equil).
+   equilibrated the rows of their iteration matrices (vlbe__dae_equil).
    Set VLBE_TEST_REPORT=1 to print the measured errors beside their
    tolerances. */
 #include "test_util.h"
