@@ -383,6 +383,387 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
                                             vlbe_real *VLBE_RESTRICT K,
                                             vlbe_real *VLBE_RESTRICT D);
 
+/* -- 3D beam-shaft element (VLBSE): constants, types, prototypes --------
+   (the element is described with its implementation, section "3D
+   beam-shaft element with spin" below) */
+#define VLBE_ALE3_NO_SPIN 64u
+#define VLBE_ALE3_NO_TWIST 128u
+#define VLBE_ALE3_NQ 16 /* coordinates per element (with spin; 14 without) */
+
+/* Section and material per unit material length.  vlbe_ale3_mat_circle
+   fills it for a solid circular section. */
+typedef struct vlbe_ale3_mat {
+    vlbe_real rhoA;  /* mass per length                                    */
+    vlbe_real rhoI;  /* polar mass moment of inertia per length, rho I_p   */
+    vlbe_real EA;    /* axial stiffness                                    */
+    vlbe_real EJ;    /* bending stiffness (J: second moment of area)       */
+    vlbe_real GI;    /* torsional stiffness G I_p                          */
+    vlbe_real c_eps, c_kap, c_phi; /* Kelvin-Voigt times [time]           */
+    vlbe_real f[3];  /* constant distributed load per length               */
+} vlbe_ale3_mat;
+
+typedef struct vlbe_ale3_elem {
+    vlbe_ale3_mat mat;
+    unsigned flags;
+    vlbe_ale_rule rm, rs; /* mass/inertia/loads; strains (axial, bending, twist) */
+    vlbe_real bmax;       /* as vlbe_ale_elem.bmax (Hermite and linear) */
+} vlbe_ale3_elem;
+
+VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlbe_real E,
+                                          vlbe_real G, vlbe_real radius);
+VLBE_API vlbe_status vlbe_ale3_elem_init(vlbe_ale3_elem *el, const vlbe_ale3_mat *mat,
+                                         unsigned flags, int nm, int ns);
+VLBE_API int vlbe_ale3_nq(unsigned mode);
+VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                    vlbe_real *VLBE_RESTRICT M);
+VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
+                                        const vlbe_real *q, const vlbe_real *a,
+                                        vlbe_real *VLBE_RESTRICT Mq);
+VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
+                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D);
+VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
+                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E);
+VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_real p,
+                                     vlbe_real *VLBE_RESTRICT r, vlbe_real *VLBE_RESTRICT rp,
+                                     vlbe_real *VLBE_RESTRICT th);
+VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_real p,
+                                      vlbe_real *VLBE_RESTRICT eps, vlbe_real *VLBE_RESTRICT kap,
+                                      vlbe_real *VLBE_RESTRICT phi);
+VLBE_API vlbe_status vlbe_ale3_point_force(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                           const vlbe_real *F, vlbe_real *VLBE_RESTRICT Q,
+                                           vlbe_real *VLBE_RESTRICT K);
+VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, vlbe_real pf,
+                                            vlbe_real T, vlbe_real *VLBE_RESTRICT Q,
+                                            vlbe_real *VLBE_RESTRICT K);
+
+/* -- chains of elements: constants, types, prototypes ------------------ */
+/* material-coordinate mode of a node */
+#define VLBE_ALE_PFIXED 0      /* p constant (node.p), not a coordinate            */
+#define VLBE_ALE_PPRESCRIBED 1 /* p(t) given (pfun or node.p + pd t + pdd t^2/2)   */
+#define VLBE_ALE_PFREE 2       /* p is a coordinate (initial value node.p)         */
+
+/* constraint types (equations each: planar / 3D).  The values a type reads
+   are named fields of vlbe_ale_con (r, d, axis, law; the others unused). */
+#define VLBE_ALE_CON_POS 1       /* r_node = r (components: `which` mask)     (2 / 3) */
+#define VLBE_ALE_CON_SLOPE_DIR 2 /* r'_node parallel to d, |r'| free (slope `which`):
+                                    planar r' x d = 0; 3D r'.b1 = r'.b2 = 0, b1, b2
+                                    the orthonormal pair of vlbe__ale_perp (1 / 2) */
+#define VLBE_ALE_CON_SLOPE 3     /* r'_node = d (slope `which`)               (2 / 3) */
+#define VLBE_ALE_CON_P 4         /* p_node = g(t) of law (free node)          (1 / 1) */
+#define VLBE_ALE_CON_EQUAL_LEN 5 /* nodes node..node2 equally spaced in p (eq. 51 of [V]) (node2-node-1) */
+#define VLBE_ALE_CON_SLIDE_C 6   /* sliding node: r'(1) = r'(2) (eq. 40 of [R]) (2 / -) */
+#define VLBE_ALE_CON_SLIDE_D 7   /* sliding node: |r'(1)| = |r'(2)| (eq. 40)  (1 / -) */
+#define VLBE_ALE_CON_SLOPE_ANGLE 8 /* r'_node x (cos a, sin a) = 0, a(t) = g(t) of law
+                                      or the chain's afun (slope `which`)     (1 / -) */
+#define VLBE_ALE_CON_SPIN 9      /* 3D with spin: theta_node = g(t) of law
+                                    (a prescribed spin angle, or rate law[1]) (- / 1) */
+#define VLBE_ALE_CON_SLOPE_ROT 10 /* 3D: r'_node parallel to e(t) = R(k, a(t)) e0 (a hub
+                                     turning about axis k by a(t) = g(t) of law or the
+                                     chain's afun), |r'| free: r'.R b1 = r'.R b2 = 0,
+                                     e0 = d, k = axis, b1, b2 of e0 as SLOPE_DIR (- / 2) */
+/* g(t) = law[0] + law[1] t + law[2] t^2 / 2.  In a 3D chain
+   (vlbe_ale_chain_init3) POS and SLOPE have 3 rows (a spherical joint, eq.
+   50 of [V]; POS + SLOPE: a clamp that also holds |r'|, the axial strain
+   at the node; POS + SLOPE_DIR or POS + SLOPE_ROT: a clamp leaving the
+   axial strain free), and SLOPE_ANGLE, SLIDE_C, SLIDE_D and sliding nodes
+   are planar only.  SLOPE_DIR's d, SLOPE_ROT's d and axis need not be unit
+   vectors but must not be zero (vlbe_ale_chain_add: VLBE_EARG); an axis
+   along e0 is allowed (the slope direction then stays e0).  Spin angle
+   under SLOPE_ROT: theta of [V] is the turn of the cross section about the
+   beam axis (the third Tait-Bryan angle, section 2), a coordinate of its
+   own that enters M and Q only through its own inertia and twist (eqs. 23,
+   27-28, 38, 40), so the constraint holds r' only.  A hub turning about k turns
+   the root section about the beam axis at the rate a' (k.e) / |k| |e|,
+   and k.e(t) = k.e0 is constant, so a chain with spin whose root turns
+   with the hub adds VLBE_ALE_CON_SPIN at the node with law = (theta_0, c g1,
+   c g2), c = k.e0 / (|k| |e0|) (0 for an axis across the beam, as for a
+   radial blade on a hub: theta_0 held), or for an afun a SPIN law of its
+   own rates. */
+
+typedef struct vlbe_ale_node {
+    int pmode;     /* VLBE_ALE_PFIXED / PPRESCRIBED / PFREE                          */
+    int slide;     /* 1: two slope vectors, left r'(1) and right r'(2) of the node   */
+    vlbe_real p;   /* fixed value, p(0) when prescribed, initial value when free     */
+    vlbe_real pd;  /* prescribed: p'(t) = pd + pdd t (unless the chain has a pfun)   */
+    vlbe_real pdd;
+    vlbe_real mass; /* point mass carried by the node (a sliding mass: pmode free)   */
+    int ofs;       /* set by vlbe_ale_chain_layout: first coordinate in q            */
+} vlbe_ale_node;
+
+typedef struct vlbe_ale_con {
+    int type;
+    int node, node2;   /* node2: last node of VLBE_ALE_CON_EQUAL_LEN                  */
+    int which;         /* slope constraints on a sliding node: 0 left, 1 right;
+                          VLBE_ALE_CON_POS: mask of the components held (bit k:
+                          component k; 0 = all), e.g. 3 = a roller free along z */
+    vlbe_real r[3];    /* POS: the position held [m]                                 */
+    vlbe_real d[3];    /* SLOPE: the slope r' held; SLOPE_DIR: the direction (not
+                          zero, any length); SLOPE_ROT: e0, the direction at a = 0 */
+    vlbe_real axis[3]; /* SLOPE_ROT: the rotation axis k (not zero, any length)       */
+    vlbe_real law[3];  /* P, SPIN, SLOPE_ANGLE, SLOPE_ROT: g0, g1, g2 of g(t) = g0 + g1 t
+                          + g2 t^2/2 [m or rad] (SLOPE_ANGLE, SLOPE_ROT: unused when
+                          the chain has an afun) */
+} vlbe_ale_con;
+
+/* Per-element types of a planar chain whose elements differ, e.g. rational
+   elements each with its own weights (rancf.h, vlbe_rancf_chain_init).
+   els is the caller's array of element objects (capacity nn_cap - 1),
+   element e of the chain being object e; the chain reaches it only
+   through these calls, and keeps the array in step when length control
+   inserts or removes nodes:
+     elem    the element type of element e (mass, forces, energy);
+     basis   its basis at p (the contract of vlbe_herm_ale_eval);
+     split   segmentation of element e (coordinates q, rates qd or NULL)
+             at ph: the node qh, qhd (the contract of vlbe_ale_split) and,
+             in aux (VLBE_ALE_ETYPE_AUX reals), what commit needs; nothing
+             changes;
+     merge   elements e and e+1 (nodes na, nh, nb, 5 reals each: r, r', p)
+             replaced by one between na and nb: what commit needs in aux;
+             nothing changes;
+     commit  op = +1: element e (of ne) becomes the two elements e, e+1
+             (the later ones shift up); op = -1: elements e, e+1 (of ne)
+             become one (the later ones shift down); aux from split or
+             merge, which validated it: commit cannot fail. */
+#define VLBE_ALE_ETYPE_AUX 10
+typedef struct vlbe_ale_etype {
+    const vlbe_ale_elem *(*elem)(const void *els, int e);
+    void (*basis)(const void *els, int e, vlbe_real p, vlbe_real p1, vlbe_real p2, int kmax,
+                  int amax, vlbe_herm_ale *b);
+    vlbe_status (*split)(const void *els, int e, const vlbe_real *q, const vlbe_real *qd,
+                         vlbe_real ph, vlbe_real *qh, vlbe_real *qhd, vlbe_real *aux);
+    vlbe_status (*merge)(const void *els, int e, const vlbe_real *na, const vlbe_real *nh,
+                         const vlbe_real *nb, vlbe_real *aux);
+    void (*commit)(void *els, int ne, int e, int op, const vlbe_real *aux);
+} vlbe_ale_etype;
+
+/* A point load on a chain (an array of them is given to the chain with
+   vlbe_ale_chain_loads; the chain keeps the pointer, never a copy).  It
+   acts at the material point p(t) = p[0] + p[1] t + p[2] t^2/2 (p[1] = p[2]
+   = 0: a fixed material point; else a load moving along the chain, e.g. a
+   vehicle on a bridge or a carriage), located at each call in the first
+   element whose [p1, p2] holds it at the current q, t (at a node shared by
+   two elements: the left one; at a sliding node: its left slope).  Kinds:
+     VLBE_ALE_LOAD_FORCE   a force in global axes, d components;
+                           Q += N(p)^T f (eq. 45 of [V]), the virtual work
+                           at the material point (p-rows: f . dr/dp_k at
+                           fixed p, as vlbe_ale_point_force);
+     VLBE_ALE_LOAD_MOMENT  f[0]: planar chains, a moment about z acting on
+                           the slope angle phi = atan2(y', x') (Q +=
+                           f0 dphi/dq; a zero slope at p: VLBE_ESINGULAR);
+                           3D chains with spin, a torque about the beam
+                           axis acting on the spin angle (eq. 46 of [V],
+                           as vlbe_ale3_point_torque); 3D without spin:
+                           VLBE_EARG;
+     VLBE_ALE_LOAD_MOMENT3 3D chains: a moment vector M = f[0..2] in global
+                           axes, its virtual work on the rotation of the
+                           section, t x dt + dtheta t (t = r'/|r'|, the
+                           spin angle theta being the section's rotation
+                           about t, as its twist theta' says): Q = (dr'/dq)^T
+                           (M x r')/|r'|^2 + (M . t) dtheta/dq -- the
+                           bending part through the slope, the axial part
+                           as eq. 46; without spin the axial part does no
+                           work (no coordinate).  A planar chain: VLBE_EARG;
+                           a zero slope at p: VLBE_ESINGULAR.
+   Value: f (constant) when fun is NULL, else fun(user, t, r, rd, f, dfr,
+   dfv) with the position r and velocity rd = dr/dt of the point (d each;
+   rd = N(p) v + r'(p) p'(t), the load's own travel along the chain
+   included), which writes f (d components for a force, 1 for a moment, 3
+   for MOMENT3)
+   and returns 0 (non-zero: the chain's callback fails with
+   VLBE_ECALLBACK).  dfr, dfv (nc x d row-major, nc the components of f)
+   are NULL in the force call; in the Jacobian call they are zeroed and
+   fun may write df/dr, df/drd there (the chain's K and D then carry the
+   load's dependence on the state; left zero, the load counts as a dead
+   load in K and D).  The chain's load factor scales the value (and its
+   derivatives).  outside = 0: a p(t) outside the chain's material range
+   makes the callbacks fail with VLBE_EBOUND (fatal, -1); outside = 1: the
+   load is absent (no force) while p(t) is outside.
+   The chain's force and force_jac check every load before they write
+   anything: an unknown kind or outside flag, a MOMENT in a 3D chain
+   without spin, a MOMENT3 in a planar one (VLBE_EARG, -1), NaN/Inf in a law, a constant value or
+   load_factor (VLBE_ENONFINITE, 1), p(t) outside the range (above); the
+   load's index goes to ch->err_load (-1 for every other failure).  A
+   failing or non-finite fun, or a zero slope under a planar moment
+   (VLBE_ESINGULAR), shows during the assembly (outputs unspecified, as
+   for an element's failure). */
+#define VLBE_ALE_LOAD_FORCE 1
+#define VLBE_ALE_LOAD_MOMENT 2
+#define VLBE_ALE_LOAD_MOMENT3 3
+typedef struct vlbe_ale_load {
+    int kind;        /* VLBE_ALE_LOAD_FORCE / _MOMENT                           */
+    int outside;     /* 0: outside the material range is an error; 1: no load   */
+    vlbe_real p[3];  /* material point p(t) = p[0] + p[1] t + p[2] t^2/2         */
+    vlbe_real f[3];  /* constant value (force d components, moment f[0])        */
+    int (*fun)(void *user, vlbe_real t, const vlbe_real *r, const vlbe_real *rd,
+               vlbe_real *f, vlbe_real *dfr, vlbe_real *dfv);
+    void *user;      /* fun's own pointer                                       */
+} vlbe_ale_load;
+
+/* A chain: nodes 0..nn-1, element e between nodes e and e+1 with increasing
+   material coordinates.  Global coordinates node by node:
+   planar  [x, y, x', y' (, x'(2), y'(2) if sliding) (, p if free)],
+   3D      [r(3), r'(3) (, theta with spin) (, p if free)]
+   (vlbe_ale_chain_init3: a chain of vlbe_ale3_elem).  The arrays are the
+   caller's; the chain never allocates.
+   Banded mode (vlbe_ale_chain_band, then vlbe_ale_chain_layout): the
+   matrix callbacks write (n + m) x (n + m) band matrices (vlbe.h, Band
+   storage, ld = kl + ku + 1) in the augmented order of the system
+   [M*, C_q^T; C_q, 0]: entry (i, j) of M, K, D, Mq, Mv, H at
+   VLBE_BAND_IDX(ld, kl, order[i], order[j]), entry (k, j) of C_q at
+   VLBE_BAND_IDX(ld, kl, order[n + k], order[j]) (C_q only, not its
+   transpose); each writes all (n + m) ld slots, zeros where there is no
+   entry.  Vectors (Q, C, Ct, gamma, and q, v, a, lambda) keep the natural
+   order.  Layout writes order[0 .. n+m-1]: node by node, node i's
+   coordinates in q order, then the constraint rows whose highest touched
+   coordinate belongs to node i, in row order; the rows that touch node 0
+   alone come first, before node 0 (no neighbour on that side: a clamp
+   there does not widen the band).  kl = ku = the largest
+   |order[a] - order[b]| over the coupled pairs (two coordinates of one
+   element; a constraint row and a coordinate it touches), read from the
+   structure, not bounded: an element couples the coordinates of its two
+   nodes, up to 9 apart for planar ALE nodes (5 coordinates each; 7 with
+   fixed p's, 15 for 3D ALE nodes with spin), and the rows of an interior
+   node's constraints sit between them, widening the band by their number
+   (a clamped Lagrangian cantilever: 7, its clamp rows before node 0).  It does not grow
+   with the number of elements, except that an equal-length group ending
+   at a free p couples all its rows to that end.  Storage: (n + m)(kl + ku
+   + 1) reals a matrix instead of n^2.
+   Loads: the distributed loads mat.f of the element types, gravity g on the
+   point masses and the point loads (vlbe_ale_load) are all multiplied by
+   load_factor (1 after init): load stepping with vlbe_dae_static.  Between
+   two calls (steps, load increments) a caller may change load_factor, g,
+   the point loads' values, laws and callbacks (in the array given to
+   vlbe_ale_chain_loads, or another array through that call), pfun, afun,
+   user and Lmin; mat.f lives in the element type, which the chain reads
+   at every call (changing it changes every chain using that type).  Only
+   followed by vlbe_ale_chain_layout: the nodes' pmode and slide, the
+   number of nodes and constraints, mode, the banded switch. */
+typedef struct vlbe_ale_chain {
+    const vlbe_ale_elem *el;    /* planar element type (NULL in a 3D chain)      */
+    const vlbe_ale_etype *et;   /* per-element types (NULL: el for every element) */
+    void *els;                  /* their objects (see vlbe_ale_etype)             */
+    const vlbe_ale3_elem *el3;  /* 3D element type (NULL in a planar chain)      */
+    int d, spin;         /* set by layout: dimension 2 or 3, spin angle per node  */
+    unsigned mode;       /* OR'ed into every element's mode                        */
+    int nn, nn_cap;      /* nodes, capacity of node[]                              */
+    vlbe_ale_node *node;
+    int ncon, ncon_cap;
+    vlbe_ale_con *con;
+    int n, m;            /* coordinates, constraint equations (layout)             */
+    vlbe_real g[3];      /* gravity on the point masses (g[2]: 3D only)            */
+    vlbe_real Lmin;      /* element length below which callbacks fail (ELENGTH)   */
+    /* optional p(t), p'(t), p''(t) of prescribed nodes; returns 0 on success */
+    int (*pfun)(void *user, int node, vlbe_real t, vlbe_real *p3);
+    /* optional a(t), a'(t), a''(t) of the VLBE_ALE_CON_SLOPE_ANGLE or
+       VLBE_ALE_CON_SLOPE_ROT constraint `con` (its index in con[]), e.g. a hub
+       angle; returns 0 on success */
+    int (*afun)(void *user, int con, vlbe_real t, vlbe_real *a3);
+    void *user;
+    vlbe_status err;     /* status of the last failed callback (VLBE_OK if none)   */
+    int err_elem;        /* element (or node) where it happened                    */
+    /* banded mode (vlbe_ale_chain_band; NULL = dense, the default) */
+    int *order;          /* caller storage of the augmented order, order_cap ints  */
+    int order_cap;
+    int kl, ku;          /* set by layout in banded mode: half-bandwidths of the
+                            augmented matrix (kl == ku)                            */
+    /* loads (see above) */
+    vlbe_real load_factor;      /* scales mat.f, g and the point loads (init: 1)   */
+    const vlbe_ale_load *loads; /* point loads (vlbe_ale_chain_loads; NULL: none)   */
+    int nloads;
+    int err_load;        /* the point load of the last failure (-1: not a load)    */
+} vlbe_ale_chain;
+
+/* chains: API prototypes */
+VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
+                                         vlbe_ale_node *nodes, int nn, int nn_cap,
+                                         vlbe_ale_con *cons, int ncon_cap);
+VLBE_API vlbe_status vlbe_ale_chain_init3(vlbe_ale_chain *ch, const vlbe_ale3_elem *el3,
+                                          vlbe_ale_node *nodes, int nn, int nn_cap,
+                                          vlbe_ale_con *cons, int ncon_cap);
+VLBE_API vlbe_status vlbe_ale_chain_types(vlbe_ale_chain *ch, const vlbe_ale_etype *et, void *els);
+VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c);
+VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch);
+VLBE_API vlbe_status vlbe_ale_chain_band(vlbe_ale_chain *ch, int *order, int order_cap);
+VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_real t,
+                                          const vlbe_real *q, const vlbe_real *v, vlbe_real *p3);
+VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qe,
+                                           vlbe_real *ve, int *idx, unsigned *mode);
+VLBE_API void vlbe_ale_chain_straight(const vlbe_ale_chain *ch, const vlbe_real *r0,
+                                      const vlbe_real *dir, vlbe_real *q);
+VLBE_API vlbe_status vlbe_ale_chain_window(vlbe_ale_chain *ch, const vlbe_real *s, vlbe_real lam,
+                                           vlbe_real c);
+VLBE_API vlbe_status vlbe_ale_chain_locate(const vlbe_ale_chain *ch, vlbe_real t,
+                                           const vlbe_real *q, vlbe_real p, int *e);
+VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                          vlbe_real p, vlbe_real *r, vlbe_real *rp);
+VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
+                                           const vlbe_real *v, vlbe_real *E);
+VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *len,
+                                           vlbe_real *rate);
+VLBE_API vlbe_status vlbe_ale_chain_loads(vlbe_ale_chain *ch, const vlbe_ale_load *loads, int n);
+/* vlbe_dae callbacks (user = the chain).  They return 0, or on failure
+   the value of vlbe__ale_fail (1: the state is outside the model's domain,
+   the integrator may retry; -1: fatal) with the status and the element (-1:
+   none, or a constraint) in ch->err, ch->err_elem -- the only change a call
+   makes to the chain (the convention of every model, vlbe.h at vlbe_dae).  Non-finite q, v (force, force_jac), a (mass_jac) or
+   lambda (constr_hess) are found before anything is written: VLBE_ENONFINITE
+   (for q, v, a with the first element that meets them) and the outputs
+   untouched.  Exception to the rule that a failed call writes nothing: a
+   failure on finite inputs -- an element shorter than Lmin, out of its
+   domain or failing, a failing or NaN pfun / afun, a zero slope of
+   SLIDE_D, a sum that overflows (VLBE_ENONFINITE) -- leaves M, Q, K, D, Mq,
+   Mv, C, Cq, Ct, gamma, H unspecified: they are assembled in place (n x n,
+   or band arrays in banded mode; the chain has no room for a copy) and an
+   element's failure shows only after the earlier elements were added.  The
+   integrators treat them as scratch after a failure.  force_jac: K or D
+   may be NULL; mass_jac: Mv may be NULL (it is zero: M does not depend on
+   v); constr_jac: Ct may be NULL. */
+VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                                 vlbe_real *M);
+VLBE_API int vlbe_ale_chain_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                                  vlbe_real *Q);
+VLBE_API int vlbe_ale_chain_force_jac(void *user, vlbe_real t, const vlbe_real *q,
+                                      const vlbe_real *v, vlbe_real *K, vlbe_real *D);
+VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q,
+                                     const vlbe_real *v, const vlbe_real *a, vlbe_real *Mq,
+                                     vlbe_real *Mv);
+VLBE_API int vlbe_ale_chain_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C);
+VLBE_API int vlbe_ale_chain_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq,
+                                       vlbe_real *Ct);
+VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real *q,
+                                       const vlbe_real *v, vlbe_real *gamma);
+VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real *q,
+                                        const vlbe_real *lambda, vlbe_real *H);
+/* The vlbe_dae (vlbe.h) of the chain: n, m, every callback above, user =
+   ch, the flags (VLBE_DAE_MASS_CONST for a planar chain whose material
+   coordinates are all fixed: the classic constant ANCF mass, point masses
+   included; none otherwise: M depends on the nodal p's, and a 3D chain's
+   on the spin) and the storage (banded with the chain's order and
+   half-bandwidths in banded mode, else dense).  Everything else of *sys
+   is zeroed.  Call after vlbe_ale_chain_layout and again after every
+   change of the layout (length control, insert, remove); VLBE_EARG before
+   the first layout (sys untouched).  To add forces of one's own, wrap
+   sys->force (and force_jac) in functions that call the chain's and keep
+   sys->user = ch, or point sys->user at a struct holding the chain. */
+VLBE_API vlbe_status vlbe_ale_chain_dae(vlbe_ale_chain *ch, vlbe_dae *sys);
+
+/* -- segmentation, merging, length control: prototypes ----------------- */
+VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlbe_real ph,
+                                    vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd);
+VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real ph, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v,
+                                           vlbe_real *qn, vlbe_real *vn);
+VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real t,
+                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qn,
+                                           vlbe_real *vn);
+VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slider, vlbe_real Lstd,
+                                                   vlbe_real t, const vlbe_real *q,
+                                                   const vlbe_real *v, vlbe_real *qn,
+                                                   vlbe_real *vn, int *changed);
+
 /* ===== implementation =================================================== */
 
 /* index in q of basis j's 2-vector (0, 2, 5, 7), the power m_j of L it
@@ -2575,63 +2956,12 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
    vlbe_ale3_mass_jac 2.4 kB (the 16 x 16 mass matrix), the other calls
    at most 1.9 kB. */
 
-#define VLBE_ALE3_NO_SPIN 64u
-#define VLBE_ALE3_NO_TWIST 128u
-#define VLBE_ALE3_NQ 16 /* coordinates per element (with spin; 14 without) */
-
-/* Section and material per unit material length.  vlbe_ale3_mat_circle
-   fills it for a solid circular section. */
-typedef struct vlbe_ale3_mat {
-    vlbe_real rhoA;  /* mass per length                                    */
-    vlbe_real rhoI;  /* polar mass moment of inertia per length, rho I_p   */
-    vlbe_real EA;    /* axial stiffness                                    */
-    vlbe_real EJ;    /* bending stiffness (J: second moment of area)       */
-    vlbe_real GI;    /* torsional stiffness G I_p                          */
-    vlbe_real c_eps, c_kap, c_phi; /* Kelvin-Voigt times [time]           */
-    vlbe_real f[3];  /* constant distributed load per length               */
-} vlbe_ale3_mat;
-
-typedef struct vlbe_ale3_elem {
-    vlbe_ale3_mat mat;
-    unsigned flags;
-    vlbe_ale_rule rm, rs; /* mass/inertia/loads; strains (axial, bending, twist) */
-    vlbe_real bmax;       /* as vlbe_ale_elem.bmax (Hermite and linear) */
-} vlbe_ale3_elem;
-
-VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlbe_real E,
-                                          vlbe_real G, vlbe_real radius);
-VLBE_API vlbe_status vlbe_ale3_elem_init(vlbe_ale3_elem *el, const vlbe_ale3_mat *mat,
-                                         unsigned flags, int nm, int ns);
-VLBE_API int vlbe_ale3_nq(unsigned mode);
-VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                    vlbe_real *VLBE_RESTRICT M);
-VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
-                                        const vlbe_real *q, const vlbe_real *a,
-                                        vlbe_real *VLBE_RESTRICT Mq);
-VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                     const vlbe_real *qd, vlbe_real *VLBE_RESTRICT Q,
-                                     vlbe_real *VLBE_RESTRICT K, vlbe_real *VLBE_RESTRICT D);
-VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
-                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E);
-VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_real p,
-                                     vlbe_real *VLBE_RESTRICT r, vlbe_real *VLBE_RESTRICT rp,
-                                     vlbe_real *VLBE_RESTRICT th);
-VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_real p,
-                                      vlbe_real *VLBE_RESTRICT eps, vlbe_real *VLBE_RESTRICT kap,
-                                      vlbe_real *VLBE_RESTRICT phi);
-VLBE_API vlbe_status vlbe_ale3_point_force(unsigned mode, const vlbe_real *q, vlbe_real pf,
-                                           const vlbe_real *F, vlbe_real *VLBE_RESTRICT Q,
-                                           vlbe_real *VLBE_RESTRICT K);
-VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, vlbe_real pf,
-                                            vlbe_real T, vlbe_real *VLBE_RESTRICT Q,
-                                            vlbe_real *VLBE_RESTRICT K);
-
 /* -- 3D element: definitions ------------------------------------------- */
 
 VLBE_API vlbe_status vlbe_ale3_mat_circle(vlbe_ale3_mat *mat, vlbe_real rho, vlbe_real E,
                                           vlbe_real G, vlbe_real radius)
 {
-    const vlbe_real pi = VLBE_R(3.14159265358979323846);
+    const vlbe_real pi = VLBE_PI;
     vlbe_real A, J;
     VLBE_ASSERT(mat != NULL);
     if (!isfinite(rho) || !isfinite(E) || !isfinite(G) || !isfinite(radius))
@@ -3677,319 +4007,6 @@ VLBE_API vlbe_status vlbe_ale3_point_torque(unsigned mode, const vlbe_real *q, v
 }
 
 /* ===== chains of elements ================================================ */
-/* -- constants, types --------------------------------------------------- */
-/* material-coordinate mode of a node */
-#define VLBE_ALE_PFIXED 0      /* p constant (node.p), not a coordinate            */
-#define VLBE_ALE_PPRESCRIBED 1 /* p(t) given (pfun or node.p + pd t + pdd t^2/2)   */
-#define VLBE_ALE_PFREE 2       /* p is a coordinate (initial value node.p)         */
-
-/* constraint types (equations each: planar / 3D).  The values a type reads
-   are named fields of vlbe_ale_con (r, d, axis, law; the others unused). */
-#define VLBE_ALE_CON_POS 1       /* r_node = r (components: `which` mask)     (2 / 3) */
-#define VLBE_ALE_CON_SLOPE_DIR 2 /* r'_node parallel to d, |r'| free (slope `which`):
-                                    planar r' x d = 0; 3D r'.b1 = r'.b2 = 0, b1, b2
-                                    the orthonormal pair of vlbe__ale_perp (1 / 2) */
-#define VLBE_ALE_CON_SLOPE 3     /* r'_node = d (slope `which`)               (2 / 3) */
-#define VLBE_ALE_CON_P 4         /* p_node = g(t) of law (free node)          (1 / 1) */
-#define VLBE_ALE_CON_EQUAL_LEN 5 /* nodes node..node2 equally spaced in p (eq. 51 of [V]) (node2-node-1) */
-#define VLBE_ALE_CON_SLIDE_C 6   /* sliding node: r'(1) = r'(2) (eq. 40 of [R]) (2 / -) */
-#define VLBE_ALE_CON_SLIDE_D 7   /* sliding node: |r'(1)| = |r'(2)| (eq. 40)  (1 / -) */
-#define VLBE_ALE_CON_SLOPE_ANGLE 8 /* r'_node x (cos a, sin a) = 0, a(t) = g(t) of law
-                                      or the chain's afun (slope `which`)     (1 / -) */
-#define VLBE_ALE_CON_SPIN 9      /* 3D with spin: theta_node = g(t) of law
-                                    (a prescribed spin angle, or rate law[1]) (- / 1) */
-#define VLBE_ALE_CON_SLOPE_ROT 10 /* 3D: r'_node parallel to e(t) = R(k, a(t)) e0 (a hub
-                                     turning about axis k by a(t) = g(t) of law or the
-                                     chain's afun), |r'| free: r'.R b1 = r'.R b2 = 0,
-                                     e0 = d, k = axis, b1, b2 of e0 as SLOPE_DIR (- / 2) */
-/* g(t) = law[0] + law[1] t + law[2] t^2 / 2.  In a 3D chain
-   (vlbe_ale_chain_init3) POS and SLOPE have 3 rows (a spherical joint, eq.
-   50 of [V]; POS + SLOPE: a clamp that also holds |r'|, the axial strain
-   at the node; POS + SLOPE_DIR or POS + SLOPE_ROT: a clamp leaving the
-   axial strain free), and SLOPE_ANGLE, SLIDE_C, SLIDE_D and sliding nodes
-   are planar only.  SLOPE_DIR's d, SLOPE_ROT's d and axis need not be unit
-   vectors but must not be zero (vlbe_ale_chain_add: VLBE_EARG); an axis
-   along e0 is allowed (the slope direction then stays e0).  Spin angle
-   under SLOPE_ROT: theta of [V] is the turn of the cross section about the
-   beam axis (the third Tait-Bryan angle, section 2), a coordinate of its
-   own that enters M and Q only through its own inertia and twist (eqs. 23,
-   27-28, 38, 40), so the constraint holds r' only.  A hub turning about k turns
-   the root section about the beam axis at the rate a' (k.e) / |k| |e|,
-   and k.e(t) = k.e0 is constant, so a chain with spin whose root turns
-   with the hub adds VLBE_ALE_CON_SPIN at the node with law = (theta_0, c g1,
-   c g2), c = k.e0 / (|k| |e0|) (0 for an axis across the beam, as for a
-   radial blade on a hub: theta_0 held), or for an afun a SPIN law of its
-   own rates. */
-
-typedef struct vlbe_ale_node {
-    int pmode;     /* VLBE_ALE_PFIXED / PPRESCRIBED / PFREE                          */
-    int slide;     /* 1: two slope vectors, left r'(1) and right r'(2) of the node   */
-    vlbe_real p;   /* fixed value, p(0) when prescribed, initial value when free     */
-    vlbe_real pd;  /* prescribed: p'(t) = pd + pdd t (unless the chain has a pfun)   */
-    vlbe_real pdd;
-    vlbe_real mass; /* point mass carried by the node (a sliding mass: pmode free)   */
-    int ofs;       /* set by vlbe_ale_chain_layout: first coordinate in q            */
-} vlbe_ale_node;
-
-typedef struct vlbe_ale_con {
-    int type;
-    int node, node2;   /* node2: last node of VLBE_ALE_CON_EQUAL_LEN                  */
-    int which;         /* slope constraints on a sliding node: 0 left, 1 right;
-                          VLBE_ALE_CON_POS: mask of the components held (bit k:
-                          component k; 0 = all), e.g. 3 = a roller free along z */
-    vlbe_real r[3];    /* POS: the position held [m]                                 */
-    vlbe_real d[3];    /* SLOPE: the slope r' held; SLOPE_DIR: the direction (not
-                          zero, any length); SLOPE_ROT: e0, the direction at a = 0 */
-    vlbe_real axis[3]; /* SLOPE_ROT: the rotation axis k (not zero, any length)       */
-    vlbe_real law[3];  /* P, SPIN, SLOPE_ANGLE, SLOPE_ROT: g0, g1, g2 of g(t) = g0 + g1 t
-                          + g2 t^2/2 [m or rad] (SLOPE_ANGLE, SLOPE_ROT: unused when
-                          the chain has an afun) */
-} vlbe_ale_con;
-
-/* Per-element types of a planar chain whose elements differ, e.g. rational
-   elements each with its own weights (rancf.h, vlbe_rancf_chain_init).
-   els is the caller's array of element objects (capacity nn_cap - 1),
-   element e of the chain being object e; the chain reaches it only
-   through these calls, and keeps the array in step when length control
-   inserts or removes nodes:
-     elem    the element type of element e (mass, forces, energy);
-     basis   its basis at p (the contract of vlbe_herm_ale_eval);
-     split   segmentation of element e (coordinates q, rates qd or NULL)
-             at ph: the node qh, qhd (the contract of vlbe_ale_split) and,
-             in aux (VLBE_ALE_ETYPE_AUX reals), what commit needs; nothing
-             changes;
-     merge   elements e and e+1 (nodes na, nh, nb, 5 reals each: r, r', p)
-             replaced by one between na and nb: what commit needs in aux;
-             nothing changes;
-     commit  op = +1: element e (of ne) becomes the two elements e, e+1
-             (the later ones shift up); op = -1: elements e, e+1 (of ne)
-             become one (the later ones shift down); aux from split or
-             merge, which validated it: commit cannot fail. */
-#define VLBE_ALE_ETYPE_AUX 10
-typedef struct vlbe_ale_etype {
-    const vlbe_ale_elem *(*elem)(const void *els, int e);
-    void (*basis)(const void *els, int e, vlbe_real p, vlbe_real p1, vlbe_real p2, int kmax,
-                  int amax, vlbe_herm_ale *b);
-    vlbe_status (*split)(const void *els, int e, const vlbe_real *q, const vlbe_real *qd,
-                         vlbe_real ph, vlbe_real *qh, vlbe_real *qhd, vlbe_real *aux);
-    vlbe_status (*merge)(const void *els, int e, const vlbe_real *na, const vlbe_real *nh,
-                         const vlbe_real *nb, vlbe_real *aux);
-    void (*commit)(void *els, int ne, int e, int op, const vlbe_real *aux);
-} vlbe_ale_etype;
-
-/* A point load on a chain (an array of them is given to the chain with
-   vlbe_ale_chain_loads; the chain keeps the pointer, never a copy).  It
-   acts at the material point p(t) = p[0] + p[1] t + p[2] t^2/2 (p[1] = p[2]
-   = 0: a fixed material point; else a load moving along the chain, e.g. a
-   vehicle on a bridge or a carriage), located at each call in the first
-   element whose [p1, p2] holds it at the current q, t (at a node shared by
-   two elements: the left one; at a sliding node: its left slope).  Kinds:
-     VLBE_ALE_LOAD_FORCE   a force in global axes, d components;
-                           Q += N(p)^T f (eq. 45 of [V]), the virtual work
-                           at the material point (p-rows: f . dr/dp_k at
-                           fixed p, as vlbe_ale_point_force);
-     VLBE_ALE_LOAD_MOMENT  f[0]: planar chains, a moment about z acting on
-                           the slope angle phi = atan2(y', x') (Q +=
-                           f0 dphi/dq; a zero slope at p: VLBE_ESINGULAR);
-                           3D chains with spin, a torque about the beam
-                           axis acting on the spin angle (eq. 46 of [V],
-                           as vlbe_ale3_point_torque); 3D without spin:
-                           VLBE_EARG;
-     VLBE_ALE_LOAD_MOMENT3 3D chains: a moment vector M = f[0..2] in global
-                           axes, its virtual work on the rotation of the
-                           section, t x dt + dtheta t (t = r'/|r'|, the
-                           spin angle theta being the section's rotation
-                           about t, as its twist theta' says): Q = (dr'/dq)^T
-                           (M x r')/|r'|^2 + (M . t) dtheta/dq -- the
-                           bending part through the slope, the axial part
-                           as eq. 46; without spin the axial part does no
-                           work (no coordinate).  A planar chain: VLBE_EARG;
-                           a zero slope at p: VLBE_ESINGULAR.
-   Value: f (constant) when fun is NULL, else fun(user, t, r, rd, f, dfr,
-   dfv) with the position r and velocity rd = dr/dt of the point (d each;
-   rd = N(p) v + r'(p) p'(t), the load's own travel along the chain
-   included), which writes f (d components for a force, 1 for a moment, 3
-   for MOMENT3)
-   and returns 0 (non-zero: the chain's callback fails with
-   VLBE_ECALLBACK).  dfr, dfv (nc x d row-major, nc the components of f)
-   are NULL in the force call; in the Jacobian call they are zeroed and
-   fun may write df/dr, df/drd there (the chain's K and D then carry the
-   load's dependence on the state; left zero, the load counts as a dead
-   load in K and D).  The chain's load factor scales the value (and its
-   derivatives).  outside = 0: a p(t) outside the chain's material range
-   makes the callbacks fail with VLBE_EBOUND (fatal, -1); outside = 1: the
-   load is absent (no force) while p(t) is outside.
-   The chain's force and force_jac check every load before they write
-   anything: an unknown kind or outside flag, a MOMENT in a 3D chain
-   without spin, a MOMENT3 in a planar one (VLBE_EARG, -1), NaN/Inf in a law, a constant value or
-   load_factor (VLBE_ENONFINITE, 1), p(t) outside the range (above); the
-   load's index goes to ch->err_load (-1 for every other failure).  A
-   failing or non-finite fun, or a zero slope under a planar moment
-   (VLBE_ESINGULAR), shows during the assembly (outputs unspecified, as
-   for an element's failure). */
-#define VLBE_ALE_LOAD_FORCE 1
-#define VLBE_ALE_LOAD_MOMENT 2
-#define VLBE_ALE_LOAD_MOMENT3 3
-typedef struct vlbe_ale_load {
-    int kind;        /* VLBE_ALE_LOAD_FORCE / _MOMENT                           */
-    int outside;     /* 0: outside the material range is an error; 1: no load   */
-    vlbe_real p[3];  /* material point p(t) = p[0] + p[1] t + p[2] t^2/2         */
-    vlbe_real f[3];  /* constant value (force d components, moment f[0])        */
-    int (*fun)(void *user, vlbe_real t, const vlbe_real *r, const vlbe_real *rd,
-               vlbe_real *f, vlbe_real *dfr, vlbe_real *dfv);
-    void *user;      /* fun's own pointer                                       */
-} vlbe_ale_load;
-
-/* A chain: nodes 0..nn-1, element e between nodes e and e+1 with increasing
-   material coordinates.  Global coordinates node by node:
-   planar  [x, y, x', y' (, x'(2), y'(2) if sliding) (, p if free)],
-   3D      [r(3), r'(3) (, theta with spin) (, p if free)]
-   (vlbe_ale_chain_init3: a chain of vlbe_ale3_elem).  The arrays are the
-   caller's; the chain never allocates.
-   Banded mode (vlbe_ale_chain_band, then vlbe_ale_chain_layout): the
-   matrix callbacks write (n + m) x (n + m) band matrices (vlbe.h, Band
-   storage, ld = kl + ku + 1) in the augmented order of the system
-   [M*, C_q^T; C_q, 0]: entry (i, j) of M, K, D, Mq, Mv, H at
-   VLBE_BAND_IDX(ld, kl, order[i], order[j]), entry (k, j) of C_q at
-   VLBE_BAND_IDX(ld, kl, order[n + k], order[j]) (C_q only, not its
-   transpose); each writes all (n + m) ld slots, zeros where there is no
-   entry.  Vectors (Q, C, Ct, gamma, and q, v, a, lambda) keep the natural
-   order.  Layout writes order[0 .. n+m-1]: node by node, node i's
-   coordinates in q order, then the constraint rows whose highest touched
-   coordinate belongs to node i, in row order; the rows that touch node 0
-   alone come first, before node 0 (no neighbour on that side: a clamp
-   there does not widen the band).  kl = ku = the largest
-   |order[a] - order[b]| over the coupled pairs (two coordinates of one
-   element; a constraint row and a coordinate it touches), read from the
-   structure, not bounded: an element couples the coordinates of its two
-   nodes, up to 9 apart for planar ALE nodes (5 coordinates each; 7 with
-   fixed p's, 15 for 3D ALE nodes with spin), and the rows of an interior
-   node's constraints sit between them, widening the band by their number
-   (a clamped Lagrangian cantilever: 7, its clamp rows before node 0).  It does not grow
-   with the number of elements, except that an equal-length group ending
-   at a free p couples all its rows to that end.  Storage: (n + m)(kl + ku
-   + 1) reals a matrix instead of n^2.
-   Loads: the distributed loads mat.f of the element types, gravity g on the
-   point masses and the point loads (vlbe_ale_load) are all multiplied by
-   load_factor (1 after init): load stepping with vlbe_dae_static.  Between
-   two calls (steps, load increments) a caller may change load_factor, g,
-   the point loads' values, laws and callbacks (in the array given to
-   vlbe_ale_chain_loads, or another array through that call), pfun, afun,
-   user and Lmin; mat.f lives in the element type, which the chain reads
-   at every call (changing it changes every chain using that type).  Only
-   followed by vlbe_ale_chain_layout: the nodes' pmode and slide, the
-   number of nodes and constraints, mode, the banded switch. */
-typedef struct vlbe_ale_chain {
-    const vlbe_ale_elem *el;    /* planar element type (NULL in a 3D chain)      */
-    const vlbe_ale_etype *et;   /* per-element types (NULL: el for every element) */
-    void *els;                  /* their objects (see vlbe_ale_etype)             */
-    const vlbe_ale3_elem *el3;  /* 3D element type (NULL in a planar chain)      */
-    int d, spin;         /* set by layout: dimension 2 or 3, spin angle per node  */
-    unsigned mode;       /* OR'ed into every element's mode                        */
-    int nn, nn_cap;      /* nodes, capacity of node[]                              */
-    vlbe_ale_node *node;
-    int ncon, ncon_cap;
-    vlbe_ale_con *con;
-    int n, m;            /* coordinates, constraint equations (layout)             */
-    vlbe_real g[3];      /* gravity on the point masses (g[2]: 3D only)            */
-    vlbe_real Lmin;      /* element length below which callbacks fail (ELENGTH)   */
-    /* optional p(t), p'(t), p''(t) of prescribed nodes; returns 0 on success */
-    int (*pfun)(void *user, int node, vlbe_real t, vlbe_real *p3);
-    /* optional a(t), a'(t), a''(t) of the VLBE_ALE_CON_SLOPE_ANGLE or
-       VLBE_ALE_CON_SLOPE_ROT constraint `con` (its index in con[]), e.g. a hub
-       angle; returns 0 on success */
-    int (*afun)(void *user, int con, vlbe_real t, vlbe_real *a3);
-    void *user;
-    vlbe_status err;     /* status of the last failed callback (VLBE_OK if none)   */
-    int err_elem;        /* element (or node) where it happened                    */
-    /* banded mode (vlbe_ale_chain_band; NULL = dense, the default) */
-    int *order;          /* caller storage of the augmented order, order_cap ints  */
-    int order_cap;
-    int kl, ku;          /* set by layout in banded mode: half-bandwidths of the
-                            augmented matrix (kl == ku)                            */
-    /* loads (see above) */
-    vlbe_real load_factor;      /* scales mat.f, g and the point loads (init: 1)   */
-    const vlbe_ale_load *loads; /* point loads (vlbe_ale_chain_loads; NULL: none)   */
-    int nloads;
-    int err_load;        /* the point load of the last failure (-1: not a load)    */
-} vlbe_ale_chain;
-
-/* -- API prototypes ----------------------------------------------------- */
-VLBE_API vlbe_status vlbe_ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
-                                         vlbe_ale_node *nodes, int nn, int nn_cap,
-                                         vlbe_ale_con *cons, int ncon_cap);
-VLBE_API vlbe_status vlbe_ale_chain_init3(vlbe_ale_chain *ch, const vlbe_ale3_elem *el3,
-                                          vlbe_ale_node *nodes, int nn, int nn_cap,
-                                          vlbe_ale_con *cons, int ncon_cap);
-VLBE_API vlbe_status vlbe_ale_chain_types(vlbe_ale_chain *ch, const vlbe_ale_etype *et, void *els);
-VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c);
-VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch);
-VLBE_API vlbe_status vlbe_ale_chain_band(vlbe_ale_chain *ch, int *order, int order_cap);
-VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_real t,
-                                          const vlbe_real *q, const vlbe_real *v, vlbe_real *p3);
-VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
-                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qe,
-                                           vlbe_real *ve, int *idx, unsigned *mode);
-VLBE_API void vlbe_ale_chain_straight(const vlbe_ale_chain *ch, const vlbe_real *r0,
-                                      const vlbe_real *dir, vlbe_real *q);
-VLBE_API vlbe_status vlbe_ale_chain_window(vlbe_ale_chain *ch, const vlbe_real *s, vlbe_real lam,
-                                           vlbe_real c);
-VLBE_API vlbe_status vlbe_ale_chain_locate(const vlbe_ale_chain *ch, vlbe_real t,
-                                           const vlbe_real *q, vlbe_real p, int *e);
-VLBE_API vlbe_status vlbe_ale_chain_point(const vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
-                                          vlbe_real p, vlbe_real *r, vlbe_real *rp);
-VLBE_API vlbe_status vlbe_ale_chain_energy(vlbe_ale_chain *ch, vlbe_real t, const vlbe_real *q,
-                                           const vlbe_real *v, vlbe_real *E);
-VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t,
-                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *len,
-                                           vlbe_real *rate);
-VLBE_API vlbe_status vlbe_ale_chain_loads(vlbe_ale_chain *ch, const vlbe_ale_load *loads, int n);
-/* vlbe_dae callbacks (user = the chain).  They return 0, or on failure
-   the value of vlbe__ale_fail (1: the state is outside the model's domain,
-   the integrator may retry; -1: fatal) with the status and the element (-1:
-   none, or a constraint) in ch->err, ch->err_elem -- the only change a call
-   makes to the chain (the convention of every model, vlbe.h at vlbe_dae).  Non-finite q, v (force, force_jac), a (mass_jac) or
-   lambda (constr_hess) are found before anything is written: VLBE_ENONFINITE
-   (for q, v, a with the first element that meets them) and the outputs
-   untouched.  Exception to the rule that a failed call writes nothing: a
-   failure on finite inputs -- an element shorter than Lmin, out of its
-   domain or failing, a failing or NaN pfun / afun, a zero slope of
-   SLIDE_D, a sum that overflows (VLBE_ENONFINITE) -- leaves M, Q, K, D, Mq,
-   Mv, C, Cq, Ct, gamma, H unspecified: they are assembled in place (n x n,
-   or band arrays in banded mode; the chain has no room for a copy) and an
-   element's failure shows only after the earlier elements were added.  The
-   integrators treat them as scratch after a failure.  force_jac: K or D
-   may be NULL; mass_jac: Mv may be NULL (it is zero: M does not depend on
-   v); constr_jac: Ct may be NULL. */
-VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
-                                 vlbe_real *M);
-VLBE_API int vlbe_ale_chain_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
-                                  vlbe_real *Q);
-VLBE_API int vlbe_ale_chain_force_jac(void *user, vlbe_real t, const vlbe_real *q,
-                                      const vlbe_real *v, vlbe_real *K, vlbe_real *D);
-VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q,
-                                     const vlbe_real *v, const vlbe_real *a, vlbe_real *Mq,
-                                     vlbe_real *Mv);
-VLBE_API int vlbe_ale_chain_constr(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *C);
-VLBE_API int vlbe_ale_chain_constr_jac(void *user, vlbe_real t, const vlbe_real *q, vlbe_real *Cq,
-                                       vlbe_real *Ct);
-VLBE_API int vlbe_ale_chain_constr_acc(void *user, vlbe_real t, const vlbe_real *q,
-                                       const vlbe_real *v, vlbe_real *gamma);
-VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real *q,
-                                        const vlbe_real *lambda, vlbe_real *H);
-/* The vlbe_dae (vlbe.h) of the chain: n, m, every callback above, user =
-   ch, the flags (VLBE_DAE_MASS_CONST for a planar chain whose material
-   coordinates are all fixed: the classic constant ANCF mass, point masses
-   included; none otherwise: M depends on the nodal p's, and a 3D chain's
-   on the spin) and the storage (banded with the chain's order and
-   half-bandwidths in banded mode, else dense).  Everything else of *sys
-   is zeroed.  Call after vlbe_ale_chain_layout and again after every
-   change of the layout (length control, insert, remove); VLBE_EARG before
-   the first layout (sys untouched).  To add forces of one's own, wrap
-   sys->force (and force_jac) in functions that call the chain's and keep
-   sys->user = ch, or point sys->user at a struct holding the chain. */
-VLBE_API vlbe_status vlbe_ale_chain_dae(vlbe_ale_chain *ch, vlbe_dae *sys);
-
 /* -- implementation ----------------------------------------------------- */
 VLBE_INLINE vlbe_status vlbe__ale_chain_init(vlbe_ale_chain *ch, const vlbe_ale_elem *el,
                                                const vlbe_ale3_elem *el3, vlbe_ale_node *nodes,
@@ -5779,19 +5796,6 @@ VLBE_API vlbe_status vlbe_ale_chain_dae(vlbe_ale_chain *ch, vlbe_dae *sys)
 }
 
 /* ===== segmentation, merging, length control ============================ */
-VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlbe_real ph,
-                                    vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd);
-VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real ph, vlbe_real t,
-                                           const vlbe_real *q, const vlbe_real *v,
-                                           vlbe_real *qn, vlbe_real *vn);
-VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real t,
-                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *qn,
-                                           vlbe_real *vn);
-VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slider, vlbe_real Lstd,
-                                                   vlbe_real t, const vlbe_real *q,
-                                                   const vlbe_real *v, vlbe_real *qn,
-                                                   vlbe_real *vn, int *changed);
-
 /* Exact segmentation (cubic subdivision) of an element at the material point
    ph in (p1, p2): the new node H gets qh = [r(ph), r'(ph), ph] and, when qd
    is given, the rates of a node that moves with the material (p_H' = 0):

@@ -792,7 +792,7 @@ VLBE_API vlbe_status vlbe_rancf_arc(const vlbe_real *c, vlbe_real R, vlbe_real a
         return VLBE_ENONFINITE;
     if (!(R > VLBE_R(0.0))) return VLBE_ELENGTH;
     h = VLBE_R(0.5) * vlbe_fabs(theta);
-    if (!(h > VLBE_R(0.0) && VLBE_R(2.0) * h < VLBE_R(3.14159265358979323846))) return VLBE_EARG;
+    if (!(h > VLBE_R(0.0) && VLBE_R(2.0) * h < VLBE_PI)) return VLBE_EARG;
     ch = vlbe_cos(h);
     sg = theta > VLBE_R(0.0) ? VLBE_R(1.0) : VLBE_R(-1.0);
     a1 = a0 + theta;
