@@ -1,6 +1,8 @@
-/* ancf_ale.h -- planar ALE-ANCF variable-length beam element (VLBE of Hong &
-   Ren as used by Ding & Ouyang): shape and ALE matrices, mass, transport
-   inertia, axial and bending viscoelastic forces, loads, analytic Jacobians
+/* ancf_ale.h -- ALE-ANCF variable-length elements: the planar beam (VLBE of
+   Hong & Ren as used by Ding & Ouyang) and the 3D beam-shaft with spin
+   (VLBSE of Yang et al.): mass, transport inertia, axial, bending and twist
+   viscoelastic forces, loads, analytic Jacobians; chains of them with
+   constraints, sliding nodes, segmentation and length control
    -- part of vlbe v0.1.0                          SPDX-License-Identifier: MIT
 
 USAGE
@@ -14,6 +16,8 @@ USAGE
      vlbe_real M[100], Q[10], K[100], D[100];
      vlbe_ale_mass(&el, 0, q, M);
      vlbe_ale_force(&el, 0, q, qd, Q, K, D);          (K, D may be NULL)
+   A chain of elements as a vlbe_dae for integrators.h, end to end in 40
+   lines: examples/first_chain.c (make check-first builds and runs it).
 
 CONFIG
    Nothing beyond vlbe.h.
@@ -55,8 +59,7 @@ CONVENTIONS
                         both p fixed the load too.  The same numbers to
                         rounding.  Off by default: per element it is slower
                         for Q alone and for the beam; with K and D the
-                        cable gains 5-20 % at most (see README,
-                        bench_inv.c, bench_inv_ale.c).
+                        cable gains 5-20 % at most (docs/benchmarks.md).
    Gauss orders per term (init; 0 = default): nm for mass, transport inertia
    and loads (default 4, exact: the integrands are polynomials of degree 6
    in xi), nl for the axial force (default 5, exact: degree 8), nt for the
@@ -81,101 +84,11 @@ CONVENTIONS
    vlbe_ale_elem_init 1.3 kB.
    vlbe_ale_elem is about 16 kB: make one per material, not per element.
 
-NOTES (how the Jacobians are formed)
-   At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
-   number (m_j = 0 for positions, 1 for slopes; k p-derivatives; |a|
-   partials in p1, p2), so vlbe_ale_elem_init tabulates those numbers once
-   from vlbe_herm_ale_eval and an evaluation only scales them.  For the same
-   reason every row of Q is a homogeneous function of (L, e_slope, e'_slope,
-   p1', p2') of known degree d: scaling material lengths by s multiplies
-   slopes and their rates by 1/s and p' by s.  Euler's theorem then gives
-        L dQ/dp2 = d Q + sum_slope (K_e e + D_e e') - p1' D_p1 - p2' D_p2,
-   and dQ/dp1 = -dQ/dp2 (the element depends on p1, p2 through L only), so
-   the p-columns of K follow from the e-columns and from D at the cost of a
-   few dot products.  The axial force is the sum of a part of degree d - 4
-   and a part of degree d - 2 (the -1 in eps) and is split accordingly.
-   Virtual work at fixed p (eq. 17) misses, in the p-rows, the flux of
-   strain energy through an element end that moves in the material: the
-   gradient of U = int (EA eps^2 + EI kap^2)/2 dp has Q_p1 += u(p1) and
-   Q_p2 -= u(p2) more, u = (EA eps^2 + EI kap^2)/2.  In a chain these cancel
-   at every node where eps and kap are continuous; kap is not (cubic
-   elements are only C1), so with free material coordinates the paper's
-   form exchanges energy at the moving nodes.  VLBE_ALE_CONSERVATIVE adds
-   the fluxes (and their Jacobian).
-   The same scaling gives the p1/p2 partials of one basis function from its
-   p-derivatives: at fixed p, d/dp2 N^(c)_j = ((m_j - c)/L) N^(c)_j -
-   xi N^(c+1)_j and d/dp1 = -(d/dp2 + d/dp).  vlbe_ale_force without K and
-   D uses it (only the rows N, N', N'' are scaled per point, r''' is
-   constant) and takes the curvature factors |r'|^-2, |r'|^-3 of all
-   bending points together; with K or D it evaluates the partial rows
-   themselves, as the Jacobian needs them.  The two routes agree to rounding
-   (test: 64 EPS of max|Q|).
-
-INVARIANTS (invariant-matrix force evaluation)
-   With both p fixed the Green-strain axial force is a cubic polynomial of
-   the nodal data: with B_ab = int s_a' s_b' dp and I_abcd = int s_a' s_b'
-   s_c' s_d' dp over the four slots r1, r1', r2, r2' and the Gram matrix
-   G_cd = r_c . r_d,  Q_a = -EA sum_b (sum_cd I_abcd H_cd - B_ab)/2 r_b with
-   H = G + c_eps dG/dt (the Kelvin-Voigt part is polynomial too); K and D
-   in closed form (derivation above vlbe__ale_inv_slots).  vlbe_ale_elem_init
-   tabulates B, I (35 unique numbers, stored as a 10 x 10 matrix over the
-   symmetric slot pairs) and int N at L = 1 (vlbe_ale_inv, el->inv); a
-   slope carries one power of L, so one table serves every L: I scales
-   with L^-3, B with L^-1 once the slopes are multiplied by L.  Bending
-   (exact curvature, rational) stays on Gauss points: vlbe_ale_inv_force
-   gives the cable (NO_BEND) force wholly from invariants and the beam's as
-   invariant axial force + Gauss bending.
-   ALE elements (p1 and/or p2 free; vlbe_ale_force with VLBE_ALE_INV_AXIAL)
-   need no further integrals.  At fixed p the partial of a slope function,
-   d s_a'/dp_k = L^(m_a - 2) ((m_a - 1) h_a' - xi h_a'') for p2 (p1: -(m_a
-   - 1) h_a' + (xi - 1) h_a''), is a quadratic in xi, and the slopes h_b'
-   of the cubic basis span the quadratics, so d s_a'/dp_k = L^(m_a - 2)
-   sum_b dp_k[a][b] h_b' with small integer maps dp_k (vlbe_ale_inv.dp).
-   Hence dr'/dp_k is the r' of virtual slot vectors y_k (with the slots
-   scaled, r~_a = L^m_a r_a: y~_k,b = sum_a dp_k[a][b] r~_a / L), and:
-   eps_pk = r' . dr'/dp_k = sum_b y_k,b . eps_{r_b}, so the p-rows are
-   Q_pk = sum_b y_k,b . Q_b; the material rate of r' is that of the slot
-   rates r_b' + p1' y_1,b + p2' y_2,b, which enter the fixed-length
-   Kelvin-Voigt formula in place of r_b'; K and D follow by the product
-   rule (p-rows y^T K + Q . dy/dr and y^T D, p'-columns D y, and in K the
-   rates' own dependence on r through y), and the p-columns of K from the
-   scaling identity of NOTES with the degree weights -4 Q + 2 Q0 of the
-   axial force (Q0: its B part), as on the Gauss route.  The transport inertia, the load of a free-p element,
-   the bending force and CONSERVATIVE's end fluxes stay on Gauss points /
-   the end points.  Same numbers as the Gauss route to rounding (tests:
-   64 EPS of the largest entry; at small strain eps both routes' rounding
-   relative to Q is ~EPS/eps, the Green strain's cancellation).  Per
-   element call (bench/bench_inv_ale.c, -O3 -march=native): invariants are
-   slower for Q alone (0.65-0.85 x the Gauss route's speed), slightly
-   faster for the damped ALE cable's Q+K+D (1.05 x), even for the undamped
-   one, and slower for the beam (0.8 x), whose Gauss route evaluates the
-   bending at the axial points.
-   Chains of fixed-length cable elements: coordinates node by node x = [x,
-   y, x', y'] (vlbe_ale_chain's layout with every p fixed and no sliding
-   node), n = 4 (ne + 1); K, D in band storage, row i holding columns i-7
-   .. i+7: entry (i, j) at K[i*VLBE_ALE_INV_BW + j - i + VLBE_ALE_INV_KD].
-   vlbe_ale_inv_chain_force loops over the elements (gather, element call,
-   scatter); the system invariants (vlbe_ale_inv_sys_*) hold B and I of the
-   whole chain assembled once in the caller's buffer and evaluate Q, K, D
-   without an element loop.  Their variables are translation-free: as h1'
-   = -h3', element e's r' = h3' d_e + L h2' r_e' + L h4' r_{e+1}' reads
-   only the chord d_e = r_{e+1} - r_e and the two nodal slopes, so the
-   system's slots are the ne chords and ne + 1 slopes (2 ne + 1), B and I
-   are assembled over the 5 ne + 1 slot pairs that share an element (each
-   row a contiguous range of 6 or 11 pairs, 35 ne + 1 numbers; the x/y
-   Kronecker factor is never stored), the Gram entries are of the size of
-   L^2, L, 1 wherever the chain is, and the slot forces and 2x2 blocks go
-   back to the nodal layout by the chain rule of d_e (Q = J^T Q~, K = J^T
-   K~ J, D = J^T D~ J, J = +-1 entries; vlbe__ale_sys_force).  Rounding
-   (tests/test_ale_inv.c): at eps = 1e-4 on 64 elements far from the
-   origin the system route's Q is within ~3 EPS/eps of max|Q| of the
-   Gauss route per element in its own frame and of a long double
-   reference (EPS/eps is the Green strain's own conditioning, the floor of
-   every route), K and D within ~5 EPS; it does not grow with the chain.
-   The Gauss route on the nodal values forms r' from positions of size
-   |r| (~EPS |r|/L / eps); the element invariants work relative to their
-   node 1's position but take the nodal velocities as they are (damped:
-   ~c |v|/L more).
+DERIVATIONS
+   With the code they explain: NOTES (how the Jacobians are formed) at the
+   start of the implementation, INVARIANTS (the invariant-matrix
+   evaluation of the axial force) at its section, the 3D element's
+   equations at the 3D section.
 
 API
    vlbe_status vlbe_ale_elem_init(el, mat, flags, nm, nl, nt)  element type, Gauss tables
@@ -214,7 +127,8 @@ API
    vlbe_status vlbe_ale3_point_force(mode, q, pf, F, Q, K)  eq. 45, K += d/dq
    vlbe_status vlbe_ale3_point_torque(mode, q, pf, T, Q, K) eq. 46
    chains (node p modes fixed / prescribed / free, sliding nodes, point masses):
-   vlbe_status vlbe_ale_chain_init(ch, el, nodes, nn, cap, cons, ccap)
+   vlbe_status vlbe_ale_chain_init(ch, el, nodes, nn, cap, cons, ccap)   planar
+   vlbe_status vlbe_ale_chain_init3(ch, el3, nodes, nn, cap, cons, ccap) 3D beam-shaft
    vlbe_status vlbe_ale_chain_types(ch, et, els)            per-element types (rancf.h)
    vlbe_status vlbe_ale_chain_add(ch, con)                  add a constraint (VLBE_ALE_CON_*,
                                                             values in con.r / d / axis / law)
@@ -765,6 +679,37 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
                                                    vlbe_real *vn, int *changed);
 
 /* ===== implementation =================================================== */
+
+/* NOTES (how the Jacobians are formed)
+   At a fixed abscissa xi every basis function is L^(m_j - k - |a|) times a
+   number (m_j = 0 for positions, 1 for slopes; k p-derivatives; |a|
+   partials in p1, p2), so vlbe_ale_elem_init tabulates those numbers once
+   from vlbe_herm_ale_eval and an evaluation only scales them.  For the same
+   reason every row of Q is a homogeneous function of (L, e_slope, e'_slope,
+   p1', p2') of known degree d: scaling material lengths by s multiplies
+   slopes and their rates by 1/s and p' by s.  Euler's theorem then gives
+        L dQ/dp2 = d Q + sum_slope (K_e e + D_e e') - p1' D_p1 - p2' D_p2,
+   and dQ/dp1 = -dQ/dp2 (the element depends on p1, p2 through L only), so
+   the p-columns of K follow from the e-columns and from D at the cost of a
+   few dot products.  The axial force is the sum of a part of degree d - 4
+   and a part of degree d - 2 (the -1 in eps) and is split accordingly.
+   Virtual work at fixed p (eq. 17) misses, in the p-rows, the flux of
+   strain energy through an element end that moves in the material: the
+   gradient of U = int (EA eps^2 + EI kap^2)/2 dp has Q_p1 += u(p1) and
+   Q_p2 -= u(p2) more, u = (EA eps^2 + EI kap^2)/2.  In a chain these cancel
+   at every node where eps and kap are continuous; kap is not (cubic
+   elements are only C1), so with free material coordinates the paper's
+   form exchanges energy at the moving nodes.  VLBE_ALE_CONSERVATIVE adds
+   the fluxes (and their Jacobian).
+   The same scaling gives the p1/p2 partials of one basis function from its
+   p-derivatives: at fixed p, d/dp2 N^(c)_j = ((m_j - c)/L) N^(c)_j -
+   xi N^(c+1)_j and d/dp1 = -(d/dp2 + d/dp).  vlbe_ale_force without K and
+   D uses it (only the rows N, N', N'' are scaled per point, r''' is
+   constant) and takes the curvature factors |r'|^-2, |r'|^-3 of all
+   bending points together; with K or D it evaluates the partial rows
+   themselves, as the Jacobian needs them.  The two routes agree to rounding
+   (test: 64 EPS of max|Q|). */
+
 
 /* index in q of basis j's 2-vector (0, 2, 5, 7), the power m_j of L it
    carries, and the index of p_{k+1} */
@@ -1394,6 +1339,72 @@ VLBE_INLINE vlbe_status vlbe__ale_strain_gp(const vlbe_ale_mat *mt, const vlbe_a
     vlbe__ale_strain_pt(&pt, pm, ny, w, sm, nsm, pd, yd, Q, Ke, De, D, dQ);
     return VLBE_OK;
 }
+
+/* INVARIANTS (invariant-matrix force evaluation)
+   With both p fixed the Green-strain axial force is a cubic polynomial of
+   the nodal data: with B_ab = int s_a' s_b' dp and I_abcd = int s_a' s_b'
+   s_c' s_d' dp over the four slots r1, r1', r2, r2' and the Gram matrix
+   G_cd = r_c . r_d,  Q_a = -EA sum_b (sum_cd I_abcd H_cd - B_ab)/2 r_b with
+   H = G + c_eps dG/dt (the Kelvin-Voigt part is polynomial too); K and D
+   in closed form (derivation above vlbe__ale_inv_slots).  vlbe_ale_elem_init
+   tabulates B, I (35 unique numbers, stored as a 10 x 10 matrix over the
+   symmetric slot pairs) and int N at L = 1 (vlbe_ale_inv, el->inv); a
+   slope carries one power of L, so one table serves every L: I scales
+   with L^-3, B with L^-1 once the slopes are multiplied by L.  Bending
+   (exact curvature, rational) stays on Gauss points: vlbe_ale_inv_force
+   gives the cable (NO_BEND) force wholly from invariants and the beam's as
+   invariant axial force + Gauss bending.
+   ALE elements (p1 and/or p2 free; vlbe_ale_force with VLBE_ALE_INV_AXIAL)
+   need no further integrals.  At fixed p the partial of a slope function,
+   d s_a'/dp_k = L^(m_a - 2) ((m_a - 1) h_a' - xi h_a'') for p2 (p1: -(m_a
+   - 1) h_a' + (xi - 1) h_a''), is a quadratic in xi, and the slopes h_b'
+   of the cubic basis span the quadratics, so d s_a'/dp_k = L^(m_a - 2)
+   sum_b dp_k[a][b] h_b' with small integer maps dp_k (vlbe_ale_inv.dp).
+   Hence dr'/dp_k is the r' of virtual slot vectors y_k (with the slots
+   scaled, r~_a = L^m_a r_a: y~_k,b = sum_a dp_k[a][b] r~_a / L), and:
+   eps_pk = r' . dr'/dp_k = sum_b y_k,b . eps_{r_b}, so the p-rows are
+   Q_pk = sum_b y_k,b . Q_b; the material rate of r' is that of the slot
+   rates r_b' + p1' y_1,b + p2' y_2,b, which enter the fixed-length
+   Kelvin-Voigt formula in place of r_b'; K and D follow by the product
+   rule (p-rows y^T K + Q . dy/dr and y^T D, p'-columns D y, and in K the
+   rates' own dependence on r through y), and the p-columns of K from the
+   scaling identity of NOTES with the degree weights -4 Q + 2 Q0 of the
+   axial force (Q0: its B part), as on the Gauss route.  The transport inertia, the load of a free-p element,
+   the bending force and CONSERVATIVE's end fluxes stay on Gauss points /
+   the end points.  Same numbers as the Gauss route to rounding (tests:
+   64 EPS of the largest entry; at small strain eps both routes' rounding
+   relative to Q is ~EPS/eps, the Green strain's cancellation).  Per
+   element call (bench/bench_inv_ale.c, -O3 -march=native): invariants are
+   slower for Q alone (0.65-0.85 x the Gauss route's speed), slightly
+   faster for the damped ALE cable's Q+K+D (1.05 x), even for the undamped
+   one, and slower for the beam (0.8 x), whose Gauss route evaluates the
+   bending at the axial points.
+   Chains of fixed-length cable elements: coordinates node by node x = [x,
+   y, x', y'] (vlbe_ale_chain's layout with every p fixed and no sliding
+   node), n = 4 (ne + 1); K, D in band storage, row i holding columns i-7
+   .. i+7: entry (i, j) at K[i*VLBE_ALE_INV_BW + j - i + VLBE_ALE_INV_KD].
+   vlbe_ale_inv_chain_force loops over the elements (gather, element call,
+   scatter); the system invariants (vlbe_ale_inv_sys_*) hold B and I of the
+   whole chain assembled once in the caller's buffer and evaluate Q, K, D
+   without an element loop.  Their variables are translation-free: as h1'
+   = -h3', element e's r' = h3' d_e + L h2' r_e' + L h4' r_{e+1}' reads
+   only the chord d_e = r_{e+1} - r_e and the two nodal slopes, so the
+   system's slots are the ne chords and ne + 1 slopes (2 ne + 1), B and I
+   are assembled over the 5 ne + 1 slot pairs that share an element (each
+   row a contiguous range of 6 or 11 pairs, 35 ne + 1 numbers; the x/y
+   Kronecker factor is never stored), the Gram entries are of the size of
+   L^2, L, 1 wherever the chain is, and the slot forces and 2x2 blocks go
+   back to the nodal layout by the chain rule of d_e (Q = J^T Q~, K = J^T
+   K~ J, D = J^T D~ J, J = +-1 entries; vlbe__ale_sys_force).  Rounding
+   (tests/test_ale_inv.c): at eps = 1e-4 on 64 elements far from the
+   origin the system route's Q is within ~3 EPS/eps of max|Q| of the
+   Gauss route per element in its own frame and of a long double
+   reference (EPS/eps is the Green strain's own conditioning, the floor of
+   every route), K and D within ~5 EPS; it does not grow with the chain.
+   The Gauss route on the nodal values forms r' from positions of size
+   |r| (~EPS |r|/L / eps); the element invariants work relative to their
+   node 1's position but take the nodal velocities as they are (damped:
+   ~c |v|/L more). */
 
 /* -- invariant-matrix axial force of fixed-length elements --------------
    With both material coordinates fixed the axial force is a polynomial of
