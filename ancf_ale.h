@@ -259,7 +259,7 @@ typedef struct vlbe_ale_inv_sys {
     vlbe_real Lmin, Lmax; /* shortest, longest element (overflow bound)    */
 } vlbe_ale_inv_sys;
 
-/* -- API prototypes ----------------------------------------------------- */
+/* -- planar element and invariants: API prototypes ---------------------- */
 VLBE_API vlbe_status vlbe_ale_elem_init(vlbe_ale_elem *el, const vlbe_ale_mat *mat,
                                         unsigned flags, int nm, int nl, int nt);
 VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -709,6 +709,8 @@ VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slid
    bending points together; with K or D it evaluates the partial rows
    themselves, as the Jacobian needs them.  The two routes agree to rounding
    (test: 64 EPS of max|Q|). */
+
+/* ===== planar ALE-ANCF element ========================================== */
 
 
 /* index in q of basis j's 2-vector (0, 2, 5, 7), the power m_j of L it
