@@ -4483,9 +4483,7 @@ VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_
         if (ch->pfun) {
             if (ch->pfun(ch->user, i, t, r)) return VLBE_ECALLBACK;
         } else {
-            r[0] = nd->p + (nd->pd + VLBE_R(0.5) * nd->pdd * t) * t;
-            r[1] = nd->pd + nd->pdd * t;
-            r[2] = nd->pdd;
+            vlbe__law(nd->p, nd->pd, nd->pdd, t, r);
         }
         if (!vlbe_all_finite(r, 3)) return VLBE_ENONFINITE;
         p3[0] = r[0];
@@ -5470,9 +5468,7 @@ VLBE_INLINE vlbe_status vlbe__ale_law(const vlbe_ale_chain *ch, int k, vlbe_real
         if (ch->afun(ch->user, k, t, a3)) return VLBE_ECALLBACK;
         if (!vlbe_all_finite(a3, 3)) return VLBE_ENONFINITE;
     } else {
-        a3[0] = c->law[0] + (c->law[1] + VLBE_R(0.5) * c->law[2] * t) * t;
-        a3[1] = c->law[1] + c->law[2] * t;
-        a3[2] = c->law[2];
+        vlbe__law(c->law[0], c->law[1], c->law[2], t, a3);
     }
     return VLBE_OK;
 }

@@ -1674,9 +1674,7 @@ VLBE_API void vlbe_cr2d_fix_eval(const vlbe_cr2d_fix *f, vlbe_real t, vlbe_real 
         f->fun(f->ctx, t, g3);
         return;
     }
-    g3[0] = f->g[0] + t * (f->g[1] + VLBE_R(0.5) * t * f->g[2]);
-    g3[1] = f->g[1] + t * f->g[2];
-    g3[2] = f->g[2];
+    vlbe__law(f->g[0], f->g[1], f->g[2], t, g3);
 }
 
 /* the joint when element e is the transition element, else NULL */

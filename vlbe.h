@@ -590,6 +590,17 @@ VLBE_API void vlbe_mat_tvec(int m, int n, const vlbe_real *A, const vlbe_real *x
     for (i = 0; i < m; ++i) vlbe_vec_axpy(n, x[i], A + (size_t)i * (size_t)n, y);
 }
 
+/* -- time laws ---------------------------------------------------------- */
+/* The time law of prescribed coordinates and constraints (chains of
+   ancf_ale.h, beams of corot2d.h): g(t) = g0 + g1 t + g2 t^2 / 2 and its
+   two derivatives, g3 = (g, g', g''). */
+VLBE_INLINE void vlbe__law(vlbe_real g0, vlbe_real g1, vlbe_real g2, vlbe_real t, vlbe_real *g3)
+{
+    g3[0] = g0 + (g1 + VLBE_R(0.5) * g2 * t) * t;
+    g3[1] = g1 + g2 * t;
+    g3[2] = g2;
+}
+
 /* -- Gauss-Legendre ----------------------------------------------------- */
 /* Nodes ascending on [-1, 1] and weights, 21 significant digits (computed
    with 40-digit Newton iteration on P_n; exact for polynomials of degree
