@@ -619,8 +619,9 @@ VLBE_API vlbe_status vlbe_ale_chain_length(const vlbe_ale_chain *ch, vlbe_real t
                                            vlbe_real *rate);
 VLBE_API vlbe_status vlbe_ale_chain_loads(vlbe_ale_chain *ch, const vlbe_ale_load *loads, int n);
 /* vlbe_dae callbacks (user = the chain).  They return 0, or on failure
-   the value of vlbe__ale_fail (1: the state is outside the model's domain,
-   the integrator may retry; -1: fatal) with the status and the element (-1:
+   the value of vlbe_dae's table (vlbe__dae_rc, vlbe.h: 1, the state is
+   outside the model's domain, the integrator may retry; -1: fatal; a point
+   load off the chain: -1) with the status and the element (-1:
    none, or a constraint) in ch->err, ch->err_elem -- the only change a call
    makes to the chain (the convention of every model, vlbe.h at vlbe_dae).  Non-finite q, v (force, force_jac), a (mass_jac) or
    lambda (constr_hess) are found before anything is written: VLBE_ENONFINITE
@@ -4786,7 +4787,7 @@ VLBE_INLINE int vlbe__ale_fail(vlbe_ale_chain *ch, vlbe_status st, int where)
     ch->err = st;
     ch->err_elem = where;
     ch->err_load = -1;
-    return (st == VLBE_ELENGTH || st == VLBE_ESINGULAR || st == VLBE_ENONFINITE) ? 1 : -1;
+    return vlbe__dae_rc(st);
 }
 
 /* coordinates of one element of the chain (10 planar, 14 or 16 in 3D) */
@@ -5051,8 +5052,10 @@ VLBE_INLINE vlbe_status vlbe__ale_load_at(const vlbe_ale_chain *ch, const vlbe_a
                                             vlbe_real t, const vlbe_real *q, vlbe_real *pp, int *e)
 {
     vlbe_status st;
-    pp[0] = ld->p[0] + (ld->p[1] + VLBE_R(0.5) * ld->p[2] * t) * t;
-    pp[1] = ld->p[1] + ld->p[2] * t;
+    vlbe_real g3[3];
+    vlbe__law(ld->p[0], ld->p[1], ld->p[2], t, g3);
+    pp[0] = g3[0];
+    pp[1] = g3[1];
     if (!vlbe_all_finite(pp, 2)) return VLBE_ENONFINITE;
     st = vlbe_ale_chain_locate(ch, t, q, pp[0], e);
     if (st == VLBE_EBOUND && ld->outside) {
@@ -5319,12 +5322,13 @@ VLBE_INLINE vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vlbe
     return VLBE_OK;
 }
 
-/* records a failure of point load k (element e, -1: none) */
+/* records a failure of point load k (element e, -1: none): as
+   vlbe__ale_fail, but a load off the chain is fatal (-1, vlbe_dae's table) */
 VLBE_INLINE int vlbe__ale_load_fail(vlbe_ale_chain *ch, vlbe_status st, int e, int k)
 {
     const int rc = vlbe__ale_fail(ch, st, e);
     ch->err_load = k;
-    return rc;
+    return st == VLBE_EBOUND ? -1 : rc;
 }
 
 /* Checks every point load before anything is written: its data, a finite

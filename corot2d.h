@@ -1398,7 +1398,8 @@ VLBE_API vlbe_status vlbe_cr2d_trans_local(const vlbe_cr2d_elem *el, const vlbe_
    constant value: VLBE_ENONFINITE, 1; s(t) outside the beam: VLBE_EBOUND,
    -1), with the load's index in err_load (-1: the distributed load, or no
    load).  The beam's energies have no load potential.  A callback that
-   fails returns 1 for VLBE_ELENGTH, VLBE_ENONFINITE, VLBE_EBOUND and
+   fails returns the value of vlbe_dae's table (vlbe__dae_rc, vlbe.h): 1
+   for VLBE_ELENGTH, VLBE_ENONFINITE, VLBE_EBOUND and
    VLBE_ESINGULAR (the point lies outside the model's domain, e.g. a
    Newton iterate moved a node of the transition element across the
    joint's exit: the integrators retry smaller) and -1 otherwise, with the
@@ -1701,10 +1702,7 @@ VLBE_INLINE int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
     b->err = st;
     b->err_elem = e;
     b->err_load = -1;
-    return (st == VLBE_ELENGTH || st == VLBE_ENONFINITE || st == VLBE_EBOUND ||
-            st == VLBE_ESINGULAR)
-               ? 1
-               : -1;
+    return vlbe__dae_rc(st);
 }
 
 /* The index map of element e: its entry (i, j), i, j < 6, is the beam
@@ -1998,10 +1996,11 @@ VLBE_API vlbe_status vlbe_cr2d_beam_loads(vlbe_cr2d_beam *b, const vlbe_cr2d_loa
 VLBE_INLINE vlbe_status vlbe__cr2d_load_at(const vlbe_cr2d_beam *b, const vlbe_cr2d_load *ld,
                                              vlbe_real t, vlbe_real *ss, int *e, vlbe_real *xi)
 {
-    vlbe_real a = VLBE_R(0.0);
+    vlbe_real a = VLBE_R(0.0), g3[3];
     int k;
-    ss[0] = ld->s[0] + (ld->s[1] + VLBE_R(0.5) * ld->s[2] * t) * t;
-    ss[1] = ld->s[1] + ld->s[2] * t;
+    vlbe__law(ld->s[0], ld->s[1], ld->s[2], t, g3);
+    ss[0] = g3[0];
+    ss[1] = g3[1];
     if (!vlbe_all_finite(ss, 2)) return VLBE_ENONFINITE;
     for (k = 0; k < b->ne; ++k) {
         const vlbe_real c = a + b->el[k].L;

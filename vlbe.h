@@ -311,11 +311,13 @@ typedef struct vlbe_herm_ale {
            divergence and may retry with a smaller step;
      < 0   fatal: the solver stops with VLBE_ECALLBACK.
    The library's models return 1 or -1 and keep the vlbe_status behind it
-   and the element (or node, constraint) in their err and err_elem fields:
-   1 for VLBE_ELENGTH, VLBE_ESINGULAR and VLBE_ENONFINITE (co-rotational
-   beams: also VLBE_EBOUND, a node outside the prismatic joint), -1 for any
-   other status (VLBE_ECALLBACK of a failing user function, VLBE_EARG, a
-   chain's point load off the chain: VLBE_EBOUND).
+   and the element (or node, constraint) in their err and err_elem fields,
+   by one table (vlbe__dae_rc): 1 for VLBE_ELENGTH, VLBE_ESINGULAR,
+   VLBE_ENONFINITE and VLBE_EBOUND (a point outside its element: a
+   co-rotational beam's node outside the prismatic joint), -1 for any
+   other status (VLBE_ECALLBACK of a failing user function, VLBE_EARG).  A
+   point load off the structure (VLBE_EBOUND of a load) is fatal, -1,
+   in every model: where a load sits does not change with the step.
    The solvers keep the last failing value in vlbe_dae_stats.callback_rc. */
 /* vlbe_dae.flags */
 #define VLBE_DAE_MASS_CONST 1u /* M does not depend on t, q or v: no dM/dq terms, and
@@ -588,6 +590,18 @@ VLBE_API void vlbe_mat_tvec(int m, int n, const vlbe_real *A, const vlbe_real *x
     int i;
     vlbe_vec_zero(n, y);
     for (i = 0; i < m; ++i) vlbe_vec_axpy(n, x[i], A + (size_t)i * (size_t)n, y);
+}
+
+/* -- models' callback values ------------------------------------------- */
+/* The value a model's vlbe_dae callback returns for a failure status: the
+   table of "Callback return values" at vlbe_dae (1: outside the model's
+   domain, the solver may retry smaller; -1: fatal). */
+VLBE_INLINE int vlbe__dae_rc(vlbe_status st)
+{
+    return (st == VLBE_ELENGTH || st == VLBE_ESINGULAR || st == VLBE_ENONFINITE ||
+            st == VLBE_EBOUND)
+               ? 1
+               : -1;
 }
 
 /* -- time laws ---------------------------------------------------------- */
