@@ -2302,6 +2302,41 @@ VLBE_INLINE vlbe_real *vlbe__hht_lu(const vlbe_hht *st)
    beta > 0, gamma >= 0; rtol, atol >= 0 with rtol + atol > 0; ftol >= 0;
    newton_max 1..VLBE_INT_MAX_ITER, modified 0 or 1, max_halvings
    0..VLBE_HHT_MAX_HALVINGS, project 0 or 1. */
+/* The argument checks of vlbe_hht_init and vlbe_bdf_init, in their order:
+   the problem (vlbe_dae_check: VLBE_EARG), both workspaces against the
+   method's _sys queries (asked once the problem passed: VLBE_EWORK), the
+   method's parameters (pok with the problem's n: VLBE_EARG), t0, q0, v0
+   finite (VLBE_ENONFINITE). */
+VLBE_INLINE vlbe_status vlbe__dae_init_args(const vlbe_dae *sys, size_t (*lw)(const vlbe_dae *),
+                                            size_t (*liw)(const vlbe_dae *),
+                                            int (*pok)(const void *par, int n), const void *par,
+                                            const vlbe_real *work, size_t work_len,
+                                            const int *iwork, size_t iwork_len, vlbe_real t0,
+                                            const vlbe_real *q0, const vlbe_real *v0)
+{
+    vlbe_status rc;
+    if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
+    if (!work || !iwork || work_len < lw(sys) || iwork_len < liw(sys)) return VLBE_EWORK;
+    if (!pok(par, sys->n)) return VLBE_EARG;
+    if (!isfinite(t0) || !vlbe_all_finite(q0, sys->n) || !vlbe_all_finite(v0, sys->n))
+        return VLBE_ENONFINITE;
+    return VLBE_OK;
+}
+
+/* The projected start of both integrators: (q0, v0) copied to (qp, vp) and
+   moved onto the constraints by vlbe_dae_project (default tolerance). */
+VLBE_INLINE vlbe_status vlbe__dae_init_project(const vlbe_dae *sys, vlbe_real t0,
+                                               const vlbe_real *q0, const vlbe_real *v0,
+                                               vlbe_real *qp, vlbe_real *vp,
+                                               vlbe_dae_stats *stats, vlbe_real *scratch,
+                                               size_t scratch_len, int *iwork, size_t iwork_len)
+{
+    vlbe_vec_copy(sys->n, q0, qp);
+    vlbe_vec_copy(sys->n, v0, vp);
+    return vlbe_dae_project(sys, t0, qp, vp, VLBE_R(0.0), stats, scratch, scratch_len, iwork,
+                            iwork_len);
+}
+
 VLBE_INLINE int vlbe__hht_params_ok(const vlbe_hht_params *p)
 {
     return isfinite(p->alpha_m) && isfinite(p->alpha_f) && isfinite(p->beta) &&
@@ -2313,6 +2348,12 @@ VLBE_INLINE int vlbe__hht_params_ok(const vlbe_hht_params *p)
            p->max_halvings >= 0 && p->max_halvings <= VLBE_HHT_MAX_HALVINGS &&
            p->reuse_max >= 0 && p->reuse_max <= VLBE_INT_MAX_ITER &&
            (p->project == 0 || p->project == 1);
+}
+
+VLBE_INLINE int vlbe__hht_par_ok(const void *par, int n)
+{
+    (void)n;
+    return vlbe__hht_params_ok((const vlbe_hht_params *)par);
 }
 
 /* Consistent start at t0: with par.project = 1, (q0, v0) projected by
@@ -2338,15 +2379,11 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
     vlbe_real *scratch, *tqdd, *tl;
     vlbe_hht s;
     VLBE_ASSERT(st != NULL && par != NULL && q0 != NULL && v0 != NULL);
-    if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
+    rc = vlbe__dae_init_args(sys, vlbe_hht_work_len_sys, vlbe_hht_iwork_len_sys, vlbe__hht_par_ok,
+                             par, work, work_len, iwork, iwork_len, t0, q0, v0);
+    if (rc != VLBE_OK) return rc;
     n = sys->n;
     m = sys->m;
-    if (!work || !iwork || work_len < vlbe_hht_work_len_sys(sys) ||
-        iwork_len < vlbe_hht_iwork_len_sys(sys))
-        return VLBE_EWORK;
-    if (!vlbe__hht_params_ok(par)) return VLBE_EARG;
-    if (!isfinite(t0) || !vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n))
-        return VLBE_ENONFINITE;
     s.sys = sys;
     s.par = *par;
     s.n = n;
@@ -2374,10 +2411,8 @@ VLBE_API vlbe_status vlbe_hht_init(vlbe_hht *st, const vlbe_dae *sys, const vlbe
     scratch = vlbe__hht_lu(&s);
     if (par->project && m > 0) { /* the projected copy in the backup area */
         vlbe_real *qp = vlbe__hht_backup(&s), *vp = qp + n;
-        vlbe_vec_copy(n, q0, qp);
-        vlbe_vec_copy(n, v0, vp);
-        rc = vlbe_dae_project(sys, t0, qp, vp, VLBE_R(0.0), &s.stats, scratch,
-                              (size_t)(work + work_len - scratch), iwork, iwork_len);
+        rc = vlbe__dae_init_project(sys, t0, q0, v0, qp, vp, &s.stats, scratch,
+                                    (size_t)(work + work_len - scratch), iwork, iwork_len);
         if (rc != VLBE_OK) return rc;
         q0 = qp;
         v0 = vp;
@@ -2946,6 +2981,29 @@ VLBE_INLINE vlbe_real vlbe__bdf_newton_norm(const vlbe_bdf *st, const vlbe_real 
     return vlbe_sqrt(((vlbe_real)n2 * a * a + (vlbe_real)m2 * b * b) / (vlbe_real)(n2 + m2));
 }
 
+/* vlbe_bdf_params valid for a problem of n coordinates (see vlbe_bdf_init) */
+VLBE_INLINE int vlbe__bdf_par_ok(const void *par, int n)
+{
+    const vlbe_bdf_params *p = (const vlbe_bdf_params *)par;
+    int i;
+    if (!(p->rtol >= VLBE_R(0.0)) || !(p->atol >= VLBE_R(0.0)) ||
+        !(p->rtol + p->atol > VLBE_R(0.0)) || !(p->h0 >= VLBE_R(0.0)) ||
+        !(p->h_min >= VLBE_R(0.0)) || !(p->h_max >= VLBE_R(0.0)) || !isfinite(p->rtol) ||
+        !isfinite(p->atol) || !isfinite(p->h0) || !isfinite(p->h_min) || !isfinite(p->h_max) ||
+        p->max_order < 1 || p->max_order > VLBE_BDF_MAXORD || p->newton_max < 1 ||
+        p->newton_max > VLBE_INT_MAX_ITER || p->fixed_step < 0 || p->fixed_step > 1 ||
+        p->stiff_filter < 0 || p->stiff_filter > 1 || p->max_steps < 0 || p->project < 0 ||
+        p->project > 1 || (p->fixed_step && !(p->h0 > VLBE_R(0.0))) ||
+        (p->h_max > VLBE_R(0.0) && p->h_min > p->h_max))
+        return 0;
+    if (p->atolv)
+        for (i = 0; i < 2 * n; ++i)
+            if (!(p->atolv[i] >= VLBE_R(0.0)) || !isfinite(p->atolv[i]) ||
+                !(p->atolv[i] + p->rtol > VLBE_R(0.0)))
+                return 0;
+    return 1;
+}
+
 /* Consistent start at t0 (see vlbe_bdf).  With par.project (default), a
    copy of (q0, v0) goes through vlbe_dae_project (default tolerance), and
    the run starts from the projected copy when the correction (dq, dv) it
@@ -2978,30 +3036,11 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
     vlbe_real *tail, *phi2, *phi1, *tq, ypn;
     vlbe_bdf s, *st_out = st;
     VLBE_ASSERT(st != NULL && par != NULL && q0 != NULL && v0 != NULL);
-    if ((rc = vlbe_dae_check(sys)) != VLBE_OK) return rc;
+    rc = vlbe__dae_init_args(sys, vlbe_bdf_work_len_sys, vlbe_bdf_iwork_len_sys, vlbe__bdf_par_ok,
+                             par, work, work_len, iwork, iwork_len, t0, q0, v0);
+    if (rc != VLBE_OK) return rc;
     n = sys->n;
     m = sys->m;
-    if (!work || !iwork || work_len < vlbe_bdf_work_len_sys(sys) ||
-        iwork_len < vlbe_bdf_iwork_len_sys(sys))
-        return VLBE_EWORK;
-    if (!(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
-        !(par->rtol + par->atol > VLBE_R(0.0)) || !(par->h0 >= VLBE_R(0.0)) ||
-        !(par->h_min >= VLBE_R(0.0)) || !(par->h_max >= VLBE_R(0.0)) ||
-        !isfinite(par->rtol) || !isfinite(par->atol) || !isfinite(par->h0) ||
-        !isfinite(par->h_min) || !isfinite(par->h_max) || par->max_order < 1 ||
-        par->max_order > VLBE_BDF_MAXORD || par->newton_max < 1 ||
-        par->newton_max > VLBE_INT_MAX_ITER || par->fixed_step < 0 || par->fixed_step > 1 ||
-        par->stiff_filter < 0 || par->stiff_filter > 1 || par->max_steps < 0 ||
-        par->project < 0 || par->project > 1 || (par->fixed_step && !(par->h0 > VLBE_R(0.0))) ||
-        (par->h_max > VLBE_R(0.0) && par->h_min > par->h_max))
-        return VLBE_EARG;
-    if (par->atolv)
-        for (i = 0; i < 2 * n; ++i)
-            if (!(par->atolv[i] >= VLBE_R(0.0)) || !isfinite(par->atolv[i]) ||
-                !(par->atolv[i] + par->rtol > VLBE_R(0.0)))
-                return VLBE_EARG;
-    if (!isfinite(t0) || !vlbe_all_finite(q0, n) || !vlbe_all_finite(v0, n))
-        return VLBE_ENONFINITE;
     N2 = 2 * n + 2 * m;
     st = &s; /* built here, copied to *st_out on success */
     st->sys = sys;
@@ -3030,10 +3069,8 @@ VLBE_API vlbe_status vlbe_bdf_init(vlbe_bdf *st, const vlbe_dae *sys, const vlbe
            caller's y0 = (q0, v0) for the weights in delta */
         vlbe_real *qp = vlbe__bdf_vec(st, 1), *vp = qp + n, *d = vlbe__bdf_vec(st, 2),
                   *y0 = vlbe__bdf_vec(st, 3);
-        vlbe_vec_copy(n, q0, qp);
-        vlbe_vec_copy(n, v0, vp);
-        rc = vlbe_dae_project(sys, t0, qp, vp, VLBE_R(0.0), &st->stats, tail,
-                              (size_t)(work + work_len - tail), iwork, iwork_len);
+        rc = vlbe__dae_init_project(sys, t0, q0, v0, qp, vp, &st->stats, tail,
+                                    (size_t)(work + work_len - tail), iwork, iwork_len);
         if (rc != VLBE_OK) return rc;
         vlbe_vec_copy(n, q0, y0);
         vlbe_vec_copy(n, v0, y0 + n);
