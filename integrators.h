@@ -1907,6 +1907,92 @@ VLBE_INLINE vlbe_status vlbe__static_resid(const vlbe_dae *s, vlbe_dae_stats *c,
     return VLBE_OK;
 }
 
+/* What the static solver's Newton step needs besides the iterate: the
+   problem (sys: storage; sl: with M constant), the counters, the time, the
+   sizes and the workspace it solves in. */
+typedef struct vlbe__static_ws {
+    const vlbe_dae *sys, *sl;
+    vlbe_dae_stats *stats;
+    vlbe_real t;
+    int n, m, N, band;
+    size_t NN;
+    vlbe_real *z, *A, *scr, *X;
+    int *inv, *iwork;
+} vlbe__static_ws;
+
+/* The Newton step d at x (lambda in x + n, Q, Cq, F of vlbe__static_resid
+   there) from the iteration matrix [-K + H, s C_q^T; s C_q, 0], s = *sc
+   the ratio of the largest stiffness and constraint entries (1 if either
+   is 0 or not finite), and the line search's merit ||(Psi_q, s Psi_c)||
+   of F: the constraint rows in the units of force like the matrix (with C
+   in its own units a metre of gap would weigh as a newton).  *sc and
+   *merit are set whatever the status. */
+VLBE_INLINE vlbe_status vlbe__static_newton(const vlbe__static_ws *w, const vlbe_real *x,
+                                            const vlbe_real *Q, const vlbe_real *Cq,
+                                            const vlbe_real *F, vlbe_real *d, vlbe_real *sc,
+                                            vlbe_real *merit)
+{
+    const vlbe_dae *sys = w->sys;
+    const int n = w->n, m = w->m, N = w->N;
+    vlbe_real *A = w->A, kmax, cmax;
+    vlbe_status rc;
+    size_t e;
+    int i;
+    for (e = 0; e < w->NN; ++e) A[e] = VLBE_R(0.0);
+    {
+        const vlbe__dae_blk B = w->band ? vlbe__dae_band_blk(sys, A, 1) : vlbe__dae_dblk(A, N, 0);
+        rc = vlbe__dae_btangent(w->sl, w->stats, w->t, x, w->z, w->z, x + n, Q, NULL, VLBE_R(1.0),
+                                &B, VLBE_R(0.0), NULL, w->inv, w->scr);
+        kmax = vlbe_vec_norm_inf((int)w->NN, A); /* only the q block is filled yet */
+        cmax = vlbe_vec_norm_inf((int)vlbe__dae_mlen(sys, 1), Cq);
+        *sc = (kmax > VLBE_R(0.0) && cmax > VLBE_R(0.0) && isfinite(kmax) && isfinite(cmax))
+                  ? kmax / cmax
+                  : VLBE_R(1.0);
+        if (rc == VLBE_OK) vlbe__dae_bsaddle(sys, &B, *sc, Cq);
+    }
+    *merit = vlbe__dae_hypot(vlbe_vec_norm2(n, F), *sc * vlbe_vec_norm2(m, F + n));
+    if (rc != VLBE_OK) return rc;
+    for (i = 0; i < n; ++i) d[i] = -F[i];
+    for (i = 0; i < m; ++i) d[n + i] = -*sc * F[n + i];
+    if (w->band) {
+        vlbe__dae_perm(sys, 1, d, w->X);
+        vlbe__dae_equil(N, A, vlbe__dae_ald(sys, 1), (int)vlbe__dae_ald(sys, 1), NULL, w->X);
+    } else {
+        vlbe__dae_equil(N, A, (size_t)N, N, NULL, d);
+    }
+    ++w->stats->lu_factors;
+    /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
+    if ((rc = vlbe__dae_factor(sys, w->stats, 1, A, w->iwork)) != VLBE_OK) return rc;
+    ++w->stats->lu_solves;
+    ++w->stats->newton_iters;
+    if (w->band) {
+        vlbe__dae_solve(sys, 1, A, w->iwork, w->X);
+        vlbe__dae_unperm(sys, 1, w->X, d);
+    } else {
+        vlbe__dae_solve(sys, 1, A, w->iwork, d);
+    }
+    for (i = 0; i < m; ++i) d[n + i] *= *sc;
+    return vlbe_all_finite(d, N) ? VLBE_OK : VLBE_ENONFINITE;
+}
+
+/* The increment test of vlbe_static_params on the full step d from x: 1
+   when |d_i| <= atol + rtol |x_i + d_i| for every i, or max|d| <= 8 eps
+   max|x + d| (the rounding floor) */
+VLBE_INLINE int vlbe__static_inc_ok(const vlbe_static_params *par, int n, const vlbe_real *x,
+                                    const vlbe_real *d)
+{
+    vlbe_real dmax = VLBE_R(0.0), qmax = VLBE_R(0.0);
+    int i, ok = 1;
+    for (i = 0; i < n; ++i) {
+        vlbe_real qi = vlbe_fabs(x[i] + d[i]), di = vlbe_fabs(d[i]);
+        if (di > par->atol + par->rtol * qi) ok = 0;
+        if (di > dmax) dmax = di;
+        if (qi > qmax) qmax = qi;
+    }
+    if (dmax <= VLBE_R(8.0) * VLBE_EPS * qmax) ok = 1; /* rounding floor */
+    return ok;
+}
+
 /* Solves Q(t,q,0) - C_q^T lambda = 0, C(t,q) = 0 for q and lambda, from the
    given q and lambda (both in/out; lambda may be NULL when m = 0).  Newton
    step d from [-K + H, C_q^T; C_q, 0] d = -Psi, in two phases.
@@ -1990,11 +2076,12 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
                                      int *iwork, size_t iwork_len)
 {
     int n, m, N, i, it, it0 = 0, k, inc_on, inc_ok, band, watch, stall = 0;
-    size_t NN, e;
+    size_t NN;
     vlbe_real *x, *xt, *F, *Ft, *d, *z, *Q, *Qt, *Cq, *Cqt, *A, *scr, *tmp, *pw = NULL,
               *X = NULL;
     int *inv = NULL;
-    vlbe_real fnorm, sc, kmax, cmax, merit, wm = VLBE_R(0.0), ws = VLBE_R(0.0);
+    vlbe_real fnorm, sc = VLBE_R(1.0), merit = VLBE_R(0.0), wm = VLBE_R(0.0), ws = VLBE_R(0.0);
+    vlbe__static_ws w;
     vlbe_dae sl;
     vlbe_dae_stats dummy;
     vlbe_status rc;
@@ -2043,6 +2130,21 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     /* M never enters: no dM/dq terms in the tangent */
     sl = *sys;
     sl.flags |= VLBE_DAE_MASS_CONST;
+    w.sys = sys;
+    w.sl = &sl;
+    w.stats = stats;
+    w.t = t;
+    w.n = n;
+    w.m = m;
+    w.N = N;
+    w.band = band;
+    w.NN = NN;
+    w.z = z;
+    w.A = A;
+    w.scr = scr;
+    w.X = X;
+    w.inv = inv;
+    w.iwork = iwork;
     vlbe_vec_zero(n, z);
     vlbe_vec_copy(n, q, x);
     if (m > 0) vlbe_vec_copy(m, lambda, x + n);
@@ -2063,48 +2165,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             ++stats->newton_fails;
             return VLBE_ENOCONV;
         }
-        /* iteration matrix [-K + H, s C_q^T; s C_q, 0] */
-        for (e = 0; e < NN; ++e) A[e] = VLBE_R(0.0);
-        {
-            const vlbe__dae_blk B = band ? vlbe__dae_band_blk(sys, A, 1) : vlbe__dae_dblk(A, N, 0);
-            rc = vlbe__dae_btangent(&sl, stats, t, x, z, z, x + n, Q, NULL, VLBE_R(1.0), &B,
-                                    VLBE_R(0.0), NULL, inv, scr);
-            kmax = vlbe_vec_norm_inf((int)NN, A); /* only the q block is filled yet */
-            cmax = vlbe_vec_norm_inf((int)vlbe__dae_mlen(sys, 1), Cq);
-            sc = (kmax > VLBE_R(0.0) && cmax > VLBE_R(0.0) && isfinite(kmax) && isfinite(cmax))
-                     ? kmax / cmax
-                     : VLBE_R(1.0);
-            if (rc == VLBE_OK) vlbe__dae_bsaddle(sys, &B, sc, Cq);
-        }
-        /* the line search's merit function: ||(Psi_q, s Psi_c)||, the
-           constraint rows in the units of force like the iteration matrix
-           (with C in its own units a metre of gap would weigh as a newton) */
-        merit = vlbe__dae_hypot(vlbe_vec_norm2(n, F), sc * vlbe_vec_norm2(m, F + n));
-        if (rc == VLBE_OK) {
-            for (i = 0; i < n; ++i) d[i] = -F[i];
-            for (i = 0; i < m; ++i) d[n + i] = -sc * F[n + i];
-            if (band) {
-                vlbe__dae_perm(sys, 1, d, X);
-                vlbe__dae_equil(N, A, vlbe__dae_ald(sys, 1), (int)vlbe__dae_ald(sys, 1), NULL, X);
-            } else {
-                vlbe__dae_equil(N, A, (size_t)N, N, NULL, d);
-            }
-            ++stats->lu_factors;
-            /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
-            rc = vlbe__dae_factor(sys, stats, 1, A, iwork);
-        }
-        if (rc == VLBE_OK) {
-            ++stats->lu_solves;
-            ++stats->newton_iters;
-            if (band) {
-                vlbe__dae_solve(sys, 1, A, iwork, X);
-                vlbe__dae_unperm(sys, 1, X, d);
-            } else {
-                vlbe__dae_solve(sys, 1, A, iwork, d);
-            }
-            for (i = 0; i < m; ++i) d[n + i] *= sc;
-            if (!vlbe_all_finite(d, N)) rc = VLBE_ENONFINITE;
-        }
+        rc = vlbe__static_newton(&w, x, Q, Cq, F, d, &sc, &merit);
         if (rc != VLBE_OK) {
             /* at a watched iterate a singular or non-finite matrix or step,
                or a point outside the domain, sends the iteration back to
@@ -2126,17 +2187,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
             }
         }
         /* increment test on the full step, at the new point */
-        if (inc_on && !back) {
-            vlbe_real dmax = VLBE_R(0.0), qmax = VLBE_R(0.0);
-            full_ok = 1;
-            for (i = 0; i < n; ++i) {
-                vlbe_real qi = vlbe_fabs(x[i] + d[i]), di = vlbe_fabs(d[i]);
-                if (di > par->atol + par->rtol * qi) full_ok = 0;
-                if (di > dmax) dmax = di;
-                if (qi > qmax) qmax = qi;
-            }
-            if (dmax <= VLBE_R(8.0) * VLBE_EPS * qmax) full_ok = 1; /* rounding floor */
-        }
+        if (inc_on && !back) full_ok = vlbe__static_inc_ok(par, n, x, d);
         /* backtracking line search on the merit (the watchdog phase: the
            full step whatever its merit) */
         for (k = 0; k <= par->max_halvings && !back; ++k) {
