@@ -70,6 +70,11 @@ OUT = out
 HEADERS := $(wildcard vlbe.h ancf_ale.h rancf.h corot2d.h integrators.h)
 reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
 
+# -- scenes: the scene set-ups, run drivers, closed forms and the chart
+# writer that examples, tests and benchmarks share (scenes/*.h) ------------
+SCENE_DIR = scenes
+SCENE_HDRS := $(wildcard $(SCENE_DIR)/*.h)
+
 # -- tests: one binary per tests/test_*.c and build configuration ----------
 TEST_DIR = tests
 TEST_SRCS := $(wildcard $(TEST_DIR)/test_*.c)
@@ -77,7 +82,7 @@ TEST_NAMES := $(basename $(notdir $(TEST_SRCS)))
 # tests include the examples (VLBE_EXAMPLE_NO_MAIN): they are dependencies too
 # tests/test_fuzz_corpus.c includes the fuzz harnesses
 TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(wildcard $(EXAMPLE_DIR)/*.c $(EXAMPLE_DIR)/*.h) \
-            $(wildcard fuzz/*.c fuzz/*.h)
+            $(SCENE_HDRS) $(wildcard fuzz/*.c fuzz/*.h)
 # the corpus replay marks its snapshots defined for valgrind (fuzz/fuzz_util.h)
 # where valgrind's client-request header is installed
 MEMCHECK_DEF := $(if $(wildcard /usr/include/valgrind/memcheck.h),-DVLBE_FUZZ_MEMCHECK)
@@ -115,7 +120,7 @@ EXAMPLE_DIR = examples
 EXAMPLE_SRCS := $(wildcard $(EXAMPLE_DIR)/*.c)
 EXAMPLE_NAMES := $(basename $(notdir $(EXAMPLE_SRCS)))
 EXAMPLE_BINS := $(addprefix $(BUILD)/examples/,$(EXAMPLE_NAMES))
-EXAMPLE_DEPS := $(HEADERS) $(wildcard $(EXAMPLE_DIR)/*.h) bench/svgplot.h
+EXAMPLE_DEPS := $(HEADERS) $(wildcard $(EXAMPLE_DIR)/*.h) $(SCENE_HDRS)
 # first_chain.c is the README's first program, not a paper scene (make
 # check-first runs it)
 DEMO_SCENES ?= $(filter-out first_chain,$(EXAMPLE_NAMES))
@@ -127,7 +132,7 @@ BENCH_PORTABLE_FLAGS = -O2
 BENCH_BINS := $(addprefix $(BUILD)/bench/,$(BENCH_NAMES))
 BENCH_PORTABLE_BINS := $(addprefix $(BUILD)/bench/portable/,$(BENCH_NAMES))
 # bench files may include the examples (their problem definitions)
-BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(EXAMPLE_SRCS) $(wildcard $(EXAMPLE_DIR)/*.h)
+BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(EXAMPLE_SRCS) $(wildcard $(EXAMPLE_DIR)/*.h) $(SCENE_HDRS)
 # the work-precision runs of `make demo` (every bench/wp_*.c): portable
 # flags, the examples' warnings
 DEMO_WP_NAMES := $(basename $(notdir $(wildcard bench/wp_*.c)))
@@ -160,9 +165,9 @@ check-headers:
 	@printf '#include "%s"\n' $(call reverse,$(HEADERS)) | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -
 	@printf '#include "%s"\n' $(call reverse,$(HEADERS)) | $(CC) $(CSTD) $(WARN) -DVLBE_USE_FLOAT -I. -x c -fsyntax-only -
 	@printf '#include "%s"\n' $(call reverse,$(HEADERS)) | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -
-	@echo "check-headers: bench/svgplot.h (C99 twice, C++11)"
-	@printf '#include "bench/svgplot.h"\n#include "bench/svgplot.h"\n' | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -
-	@printf '#include "bench/svgplot.h"\n' | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -
+	@echo "check-headers: $(SCENE_DIR)/svgplot.h (C99 twice, C++11)"
+	@printf '#include "$(SCENE_DIR)/svgplot.h"\n#include "$(SCENE_DIR)/svgplot.h"\n' | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -
+	@printf '#include "$(SCENE_DIR)/svgplot.h"\n' | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -
 
 # every ```c block of README.md and docs/*.md compiled and linked, double
 # and float (tests/doc_blocks.sh says how fragments and mirrors of
@@ -372,7 +377,7 @@ check-first: $(FIRST_BINS)
 
 # Each example prints, besides its own report, comparison rows
 #   ROW|<scene>|<quantity [unit]>|<published>|<computed>|<relative error>|<cpu seconds>
-# (svgp_compare_row() in bench/svgplot.h writes one; "-" for no value); the
+# (svgp_compare_row() in scenes/svgplot.h writes one; "-" for no value); the
 # demo collects them into one table, out/demo/table.txt.  Examples run from
 # the repository root and write their charts to out/<name>*.svg.
 DEMO_TABLE = awk -F'|' '{ n++; for (i = 2; i <= 7; i++) { c[n, i] = $$i; if (length($$i) > w[i]) w[i] = length($$i) } } \

@@ -21,7 +21,7 @@
 #define _POSIX_C_SOURCE 199309L
 #define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/sliding_beam.c"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

@@ -35,7 +35,7 @@
 #define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/pendulum.c"
 #include "../examples/andrews.c"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

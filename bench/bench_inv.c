@@ -88,7 +88,7 @@
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
 #include "../examples/ex_spin.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

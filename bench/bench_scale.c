@@ -22,7 +22,7 @@
 #define _POSIX_C_SOURCE 199309L
 #include "bench_util.h"
 #include "clamped_chain.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 
 #include <stdio.h>
 #include <stdlib.h>

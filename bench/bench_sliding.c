@@ -27,7 +27,7 @@
 #define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/falling_beam.c"
 #include "../examples/suspended_beam.c"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

@@ -76,7 +76,7 @@
    The advice of vlbe_bdf_params.max_order follows from these two. */
 #define _POSIX_C_SOURCE 199309L
 #include "../examples/ex_spin.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

@@ -53,7 +53,7 @@
 #define _POSIX_C_SOURCE 199309L
 #define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/moving_string.c"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

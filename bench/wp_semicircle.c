@@ -27,7 +27,7 @@
 #define _POSIX_C_SOURCE 199309L
 #define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/semicircle.c"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #define WC_NNE 3

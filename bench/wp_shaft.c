@@ -26,7 +26,7 @@
 #define _POSIX_C_SOURCE 199309L
 #define VLBE_EXAMPLE_NO_MAIN
 #include "../examples/spinning_shaft.c"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #define WS_NNE 3

@@ -86,7 +86,7 @@
    legend of each series names its failed steps. */
 #define _POSIX_C_SOURCE 199309L
 #include "../examples/ex_sbeam.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

@@ -89,7 +89,7 @@
    (the runs are deterministic: only the time varies). */
 #define _POSIX_C_SOURCE 199309L
 #include "../examples/ex_spin.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

@@ -318,7 +318,7 @@ done:
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 static void cr_row(const char *what, double exact, double ours, double cpu)
 {

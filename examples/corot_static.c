@@ -373,7 +373,7 @@ static inline int cs_rigid(int ne, unsigned flags, double psi0, double dpsi, int
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #define CS_NN 5      /* N = 4, 8, 16, 32, 64 */
 #define CS_NSTEP 16  /* load steps of the roll-up */

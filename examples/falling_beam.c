@@ -83,7 +83,7 @@ static inline int fb_dynamic_status(vlbe_status s)
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #define FB_NFORM 3 /* ALE-ANCF paper form, ALE-ANCF conservative, ALE-RANCF */
 #define FB_SHAPE_PTS 50 /* Figure 12: points per element */

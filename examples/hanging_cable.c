@@ -38,7 +38,7 @@
 #define EX_HC_PTS 201     /* points of an analytic mode shape  */
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 int main(int argc, char **argv)
 {

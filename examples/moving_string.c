@@ -550,7 +550,7 @@ static inline double ms_divergence(int ne, int kind, double lo, double hi)
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 /* midpoint deflection histories of the 4-element string and beam */
 static void ms_chart(const char *dir)

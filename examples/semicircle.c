@@ -172,7 +172,7 @@ static inline ex_slide_out sc_run(const ex_slide_cfg *c, ex_slide_hist *hi)
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #define SC_NRUN 7
 #define SC_NT 3

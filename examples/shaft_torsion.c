@@ -466,7 +466,7 @@ static inline double st_dft_peak(const st_hist *o, double flo, double fhi)
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #define ST_NCONV 12
 static const int st_nes[ST_NCONV] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 20, 40};

@@ -26,7 +26,7 @@
    follow), and the amplitudes. Output: out/sliding_beam_{a,b}.csv (t, tip
    x, tip y, free length, energy) and out/sliding_beam_tip.svg. */
 #include "ex_sbeam.h"
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #include <stdio.h>
 

@@ -56,7 +56,7 @@
    (the three curves) and out/sliding_xcheck_{a,b}_diff.svg (the
    differences against CR). */
 #include "ex_xcheck.h"
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #include <stdio.h>
 

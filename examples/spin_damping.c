@@ -60,7 +60,7 @@
    each model, nan after a stop) and <outdir>/spin_damping_w<W>.svg
    (transverse tip, all models, and the abs. M reference). */
 #include "ex_spin.h"
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #include <stdio.h>
 

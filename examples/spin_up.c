@@ -22,7 +22,7 @@
    models; the linear columns empty after its stop) and
    out/spin_up_w<W>.svg (transverse tip deflection, both models). */
 #include "ex_spin.h"
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #include <stdio.h>
 

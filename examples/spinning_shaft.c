@@ -65,7 +65,7 @@
 #include "ex_ale.h"
 #include "ex_katz.h"
 #include "ex_run.h"
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -65,7 +65,7 @@ static inline double sb_rate_max(const ex_slide_hist *hi, double t0, double t1)
 }
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 #define SB_NFORM 3   /* ALE-ANCF paper form, ALE-ANCF conservative, ALE-RANCF */
 #define SB_WIN 0.05  /* s: the window after (and before) a merge */

@@ -28,7 +28,7 @@
 #include <stdlib.h>
 
 #ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 int main(int argc, char **argv)
 {
