@@ -1,6 +1,6 @@
 /* bench_cr2d.c -- cost of the planar co-rotational element of corot2d.h per
    call, and wall time of the sliding-beam scene (Hsiao et al. section 3,
-   examples/ex_sbeam.h), against the performance targets: one conventional
+   scenes/ex_sbeam.h), against the performance targets: one conventional
    element, forces + tangent + mass, at most 0.5 us; case (b) with 24
    elements to t = 3 s at dt = 1 ms in at most 0.5 s wall.
 

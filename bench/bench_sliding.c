@@ -1,6 +1,6 @@
 /* bench_sliding.c -- wall and CPU time of the sliding-mass scenes of the
    planar ALE-ANCF and ALE-RANCF elements (ale-rancf 6.1 falling beam, 6.2
-   suspended beam; examples/ex_slide.h), against the performance targets: the
+   suspended beam; scenes/ex_slide.h), against the performance targets: the
    falling beam with 40 ALE-ANCF elements up to the mass leaving in at most
    2 s wall (the paper's ALE-ANCF motion time, Table 1: 325 s); with 40
    ALE-RANCF elements in at most 3 s wall with the length control (and the

@@ -10,7 +10,7 @@
    writes <outdir>/wp_semicircle.csv and <outdir>/wp_semicircle.svg.
 
    Runs: sc_run (examples/semicircle.c, the model and loop of
-   examples/ex_slide.h) for 1 s with N = 4, 8, 16 elements x h = 2e-3,
+   scenes/ex_slide.h) for 1 s with N = 4, 8, 16 elements x h = 2e-3,
    1e-3, 5e-4 s, both element forms.  CPU: the median of 3 runs (the whole
    run: integration and length control).
    Error of a run: the distance of the mass position at t = 1 s from that of

@@ -33,7 +33,7 @@
    Output: a table, then one comparison row per line for `make demo`:
      ROW|andrews|<quantity>|<published>|<computed>|<relative error>|<cpu seconds> */
 #include "../integrators.h"
-#include "ex_run.h"
+#include "../scenes/ex_run.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -4,11 +4,11 @@
    rotating state (vlbe_dae_linearize in the turning frame, integrators.h)
    and the gyroscopic eigenproblem (vlbe_eig_quad, vlbe.h), against the
    exact frequencies of the rotating Euler-Bernoulli beam (ex_cant_rot of
-   examples/ex_cant.h).  -- part of vlbe          SPDX-License-Identifier: MIT
+   scenes/ex_cant.h).  -- part of vlbe          SPDX-License-Identifier: MIT
 
    cc -O2 examples/campbell_rotating.c -lm && ./a.out [outdir]
 
-   Beam: that of the spin-up scene (examples/ex_spin.h): L = 10 m,
+   Beam: that of the spin-up scene (scenes/ex_spin.h): L = 10 m,
    EA = 2.8e7 N, EI = 1.4e4 N m^2, rhoA = 1.2 kg/m, no rotary inertia,
    clamped on the hub axis (position and slope held); first bending
    frequency at rest w0 = 1.8751^2 sqrt(EI / (rhoA L^4)) = 3.80 rad/s.
@@ -54,7 +54,7 @@
    with an output directory campbell_rotating.csv / .svg. */
 #include "../ancf_ale.h"
 #include "../integrators.h"
-#include "ex_cant.h"
+#include "../scenes/ex_cant.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -75,8 +75,8 @@
    the CSV files corot_static_shapes.csv, corot_static_conv.csv. */
 #include "../corot2d.h"
 #include "../integrators.h"
-#include "ex_cant.h"
-#include "ex_cr2d.h"
+#include "../scenes/ex_cant.h"
+#include "../scenes/ex_cr2d.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -47,7 +47,7 @@
    failure of this program (the exit code is 1 only for ALE-ANCF failures
    and for statuses that are no dynamics outcome: EARG, EWORK, ECALLBACK).
 
-   The model and the run loop are examples/ex_slide.h (shared with the
+   The model and the run loop are scenes/ex_slide.h (shared with the
    suspended beam of section 6.2).
 
    Output rows ROW|falling|..., out/falling_beam_<N>[_cons|_rancf].csv (t,
@@ -58,7 +58,7 @@
    just before and just after the first two length-control events (50
    material points per element), with the largest distance between the
    two curves at equal material coordinate printed. */
-#include "ex_slide.h"
+#include "../scenes/ex_slide.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -33,7 +33,7 @@
 
    Frequency from the response: the transverse displacement of the middle
    node (x = l/2) over 0.5 s, its strongest line by a Blackman-Harris
-   windowed DFT (examples/ex_freq.h, exact to ~1e-7 here), integrated with
+   windowed DFT (scenes/ex_freq.h, exact to ~1e-7 here), integrated with
    generalized-alpha (rho_inf 0.9) at h and h/2 and extrapolated to h -> 0
    by Richardson (the scheme is second order: the period error is
    c (omega h)^2; the extrapolated value is accurate to O(h^4)).
@@ -72,9 +72,9 @@
    and, with an output directory, moving_string.csv / .svg (midpoint
    deflection over time). */
 #include "../ancf_ale.h"
-#include "ex_ale.h"
-#include "ex_freq.h"
-#include "ex_run.h"
+#include "../scenes/ex_ale.h"
+#include "../scenes/ex_freq.h"
+#include "../scenes/ex_run.h"
 
 #include <stdio.h>
 #include <stdlib.h>

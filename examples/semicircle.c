@@ -9,7 +9,7 @@
    (0, 0) and (2R, 0), pinned at both ends, beam length L = pi R, section
    radius 0.02 m, rho = 7200 kg/m^3, E = 200 MPa, no damping, gravity
    9.81 m/s^2; a 0.8 kg mass released at rest at p0 = L/16 slides without
-   friction.  Model and run loop: examples/ex_slide.h (cfg.R > 0): N arc
+   friction.  Model and run loop: scenes/ex_slide.h (cfg.R > 0): N arc
    elements of central angle pi/N (vlbe_rancf_arc, eq. 43) with
    cfg.rational = 1, or ALE-ANCF Hermite cubics through the same nodes with
    unit tangents; the sliding node at p0 made by exact segmentation.
@@ -45,7 +45,7 @@
    y, mass x, y, p, energy, arc length, its rate), out/semicircle_path.svg
    (with the start shape), out/semicircle_length.svg,
    out/semicircle_rate.svg, out/semicircle_energy.svg. */
-#include "ex_slide.h"
+#include "../scenes/ex_slide.h"
 
 #include <stdio.h>
 #include <stdlib.h>

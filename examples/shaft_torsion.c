@@ -94,9 +94,9 @@
    and, in the output directory (default "out"), shaft_torsion.csv / .svg:
    relative error of f1..f5 against eq. 58 over N, ours and the paper's. */
 #include "../ancf_ale.h"
-#include "ex_ale.h"
-#include "ex_freq.h"
-#include "ex_run.h"
+#include "../scenes/ex_ale.h"
+#include "../scenes/ex_freq.h"
+#include "../scenes/ex_run.h"
 
 #include <stdio.h>
 #include <stdlib.h>

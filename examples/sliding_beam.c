@@ -16,7 +16,7 @@
    (b) L = 1.05 m, L0 = 0.35 m, the smooth deployment of eq. (55), c0 =
        0.7 m, t0 = 1.2 s, 0 <= t <= 3 s.
    At t = 0 the tip is deflected by 0.024 m by a static lateral tip force
-   (removed at t = 0).  The model and its bookkeeping: examples/ex_sbeam.h.
+   (removed at t = 0).  The model and its bookkeeping: scenes/ex_sbeam.h.
 
    The paper gives its results as plots only (Figs. 4, 5): the rows report
    what the plots show in numbers -- the periods of the tip oscillation
@@ -25,7 +25,7 @@
    of that period (the quasi-static estimate a slowly sliding beam should
    follow), and the amplitudes. Output: out/sliding_beam_{a,b}.csv (t, tip
    x, tip y, free length, energy) and out/sliding_beam_tip.svg. */
-#include "ex_sbeam.h"
+#include "../scenes/ex_sbeam.h"
 #include "../scenes/svgplot.h"
 
 #include <stdio.h>

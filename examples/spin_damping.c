@@ -59,7 +59,7 @@
    Output: <outdir>/spin_damping_w<W>.csv (t, axial and transverse tip of
    each model, nan after a stop) and <outdir>/spin_damping_w<W>.svg
    (transverse tip, all models, and the abs. M reference). */
-#include "ex_spin.h"
+#include "../scenes/ex_spin.h"
 #include "../scenes/svgplot.h"
 
 #include <stdio.h>

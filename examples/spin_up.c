@@ -10,7 +10,7 @@
    angle theta(t) = (W/Ts)[t^2/2 + (Ts/2pi)^2 (cos(2 pi t/Ts) - 1)] for t <=
    Ts = 15 s, W (t - Ts/2) after; run to 20 s.  8 elements, HHT alpha =
    -0.05, h = 5 ms (convergence in mesh and step printed below).  Model and
-   run driver: examples/ex_spin.h.  The linear run stops with VLBE_EBOUND
+   run driver: scenes/ex_spin.h.  The linear run stops with VLBE_EBOUND
    when the tip leaves |tip| <= L/10 = 1 m in the hub frame.
 
    No published table exists for this scene (the literature shows plots):
@@ -21,7 +21,7 @@
    Output: out/spin_up_w<W>.csv (t, axial and transverse tip of both
    models; the linear columns empty after its stop) and
    out/spin_up_w<W>.svg (transverse tip deflection, both models). */
-#include "ex_spin.h"
+#include "../scenes/ex_spin.h"
 #include "../scenes/svgplot.h"
 
 #include <stdio.h>

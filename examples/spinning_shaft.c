@@ -3,7 +3,7 @@
    travels along the axis at v and turns about it at omega (Katz 2001).
    Four 3D beam-shaft elements (ancf_ale.h, vlbe_ale3_*) in a chain whose
    third node follows the load, so every element changes length, against
-   the exact modal series of eq. (59) (examples/ex_katz.h).
+   the exact modal series of eq. (59) (scenes/ex_katz.h).
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 
    cc -O2 examples/spinning_shaft.c -lm && ./a.out [outdir]
@@ -62,9 +62,9 @@
    traverse in case a = 0.5, at 0.67 and 2.7 in case a = 1.5) grows late
    in the traverse and dominates. */
 #include "../ancf_ale.h"
-#include "ex_ale.h"
-#include "ex_katz.h"
-#include "ex_run.h"
+#include "../scenes/ex_ale.h"
+#include "../scenes/ex_katz.h"
+#include "../scenes/ex_run.h"
 #include "../scenes/svgplot.h"
 
 #include <stdio.h>

@@ -38,7 +38,7 @@
    Output rows ROW|suspended|..., out/suspended_beam[_cons|_rancf].csv (t,
    midspan y, mass x, y, p, energy, arc length, its rate) and
    out/suspended_beam_{length,energy,rate}.svg (all three). */
-#include "ex_slide.h"
+#include "../scenes/ex_slide.h"
 
 #include <stdio.h>
 #include <stdlib.h>

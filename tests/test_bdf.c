@@ -15,7 +15,7 @@
       h_min too large (ESTEP), small workspace (EWORK), bad arguments
       (EARG), each leaving the state at the last accepted step;
    5. a stiff undamped spring on a spinning arm (the hub scene of
-      examples/ex_spin.h in miniature, rheonomic constraints): the Newton
+      scenes/ex_spin.h in miniature, rheonomic constraints): the Newton
       rate is measured afresh at every step (a stale one let fixed-step
       BDF2 drift off by 3 rad), and the filtered error estimate keeps the
       variable-step run free of the rejection cascade of the plain one. */
@@ -694,7 +694,7 @@ static void test_advance_exact(void **state)
    constraints); point 2 (1 kg) hangs from point 1 on an undamped spring of
    stiffness 1e6 N/m and rest length 1 m (1000 rad/s, 1e3 times the slow
    swing).  theta' rises smoothly from 0 to 2 pi rad/s in 2 s as in
-   examples/ex_spin.h, then stays; the run ends at 4 s.  q = (x1, y1, x2,
+   scenes/ex_spin.h, then stays; the run ends at 4 s.  q = (x1, y1, x2,
    y2), start at rest along +x (consistent: theta = theta' = 0).  What is
    compared: the angle of the spring against the arm at 4 s with the
    reference rs_reference() below (-1.7564598 (m:rs_ref) rad). */

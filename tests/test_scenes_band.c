@@ -178,7 +178,7 @@ static void hist_free(hist *h)
 }
 
 /* ======================================================================= */
-/* spin-up (examples/ex_spin.h; spin_up.c, spin_damping.c)                  */
+/* spin-up (scenes/ex_spin.h; spin_up.c, spin_damping.c)                  */
 /* ======================================================================= */
 static sp_model g_sp;
 
@@ -283,7 +283,7 @@ static void test_spin_cr(void **state)
 }
 
 /* ======================================================================= */
-/* sliding mass with length control (examples/ex_slide.h)                   */
+/* sliding mass with length control (scenes/ex_slide.h)                   */
 /* ======================================================================= */
 /* kappa of the scene's beam: its section, the longest element the length
    control lets through (1.5 L_std) */

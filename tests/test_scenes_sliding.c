@@ -1,5 +1,5 @@
 /* test_scenes_sliding.c -- regression tests of the sliding-beam scene of
-   the co-rotational issue (Hsiao et al. section 3; examples/ex_sbeam.h,
+   the co-rotational issue (Hsiao et al. section 3; scenes/ex_sbeam.h,
    examples/sliding_beam.c) against closed forms.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 

@@ -1,5 +1,5 @@
 /* test_scenes_spin.c -- regression tests of the spin-up scene (rotating-beam
-   scenes 1 and 2; examples/ex_spin.h, examples/spin_up.c): the nonlinear
+   scenes 1 and 2; scenes/ex_spin.h, examples/spin_up.c): the nonlinear
    co-rotational beam, the nonlinear ANCF beam and the LINEAR element in
    the floating hub frame.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
