@@ -19,8 +19,7 @@
    Scene: REPS runs of each case, median wall (CLOCK_MONOTONIC) and CPU,
    with the step, rejected-step, Newton, LU and restart counts. */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/sliding_beam.c"
+#include "../scenes/sliding_beam.h"
 #include "../scenes/svgplot.h"
 #include "bench_util.h"
 

@@ -24,9 +24,8 @@
    the runs are deterministic).  The falling beam runs HHT-alpha -0.05 at
    h = 1e-3 s to the mass leaving; the suspended beam 2 s at h = 1e-3 s. */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/falling_beam.c"
-#include "../examples/suspended_beam.c"
+#include "../scenes/falling_beam.h"
+#include "../scenes/suspended_beam.h"
 #include "../scenes/svgplot.h"
 #include "bench_util.h"
 

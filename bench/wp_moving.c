@@ -51,8 +51,7 @@
    of 5 runs when the first takes under 0.02 s, of 3 under 0.25 s, else the
    single run (the runs are deterministic: only the time varies). */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/moving_string.c"
+#include "../scenes/moving_string.h"
 #include "../scenes/svgplot.h"
 #include "bench_util.h"
 

@@ -37,7 +37,6 @@
 #define EX_HC_SHAPE_N 16  /* mesh of the mode-shape chart      */
 #define EX_HC_PTS 201     /* points of an analytic mode shape  */
 
-#ifndef VLBE_EXAMPLE_NO_MAIN
 #include "../scenes/svgplot.h"
 
 int main(int argc, char **argv)
@@ -205,4 +204,3 @@ int main(int argc, char **argv)
     }
     return rc;
 }
-#endif

@@ -60,8 +60,6 @@
 
 #include <stdio.h>
 
-#ifndef VLBE_EXAMPLE_NO_MAIN
-
 enum {
     R_CR, R_ALE, R_AM,       /* paper settings */
     R_CR4, R_ALE4, R_AM6,    /* refined        */
@@ -412,4 +410,3 @@ int main(int argc, char **argv)
     rc |= xs_case('b', dir, undamped);
     return rc;
 }
-#endif

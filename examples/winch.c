@@ -27,7 +27,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#ifndef VLBE_EXAMPLE_NO_MAIN
 #include "../scenes/svgplot.h"
 
 int main(int argc, char **argv)
@@ -133,4 +132,3 @@ int main(int argc, char **argv)
     ex_winch_hist_free(&hi);
     return rc;
 }
-#endif

@@ -1,12 +1,13 @@
 /* clamped_chain.h -- the clamped chain of the scaling benchmarks
-   (bench/bench_scale.c, bench/wp_chain.c): a planar ALE-ANCF chain, Lagrangian nodes, 10 m, steel-like
-   section (rhoA 7.85 kg/m, EA 2.1e8 N, EI 1.75e3 N m^2), gravity through
-   the distributed load, clamped at node 0 (VLBE_ALE_CON_POS +
-   VLBE_ALE_CON_SLOPE), straight and at rest at t = 0; HHT-alpha -0.05 with
-   the default Newton settings.  Variants: CC_DENSE, CC_BAND (banded,
-   vlbe_ale_chain_band, the same Newton settings), CC_BAND_REUSE (banded,
-   vlbe_hht_params.reuse_max = 2: a stale iteration matrix refreshed when
-   it needs more than two further iterations).
+   (bench/bench_scale.c, bench/wp_chain.c): a planar ALE-ANCF chain,
+   Lagrangian nodes, 10 m, steel-like section (rhoA 7.85 kg/m, EA 2.1e8 N,
+   EI 1.75e3 N m^2), gravity through the distributed load, clamped at node
+   0 (VLBE_ALE_CON_POS + VLBE_ALE_CON_SLOPE), straight and at rest at
+   t = 0; HHT-alpha -0.05 with the default Newton settings.  Variants:
+   CC_DENSE, CC_BAND (banded, vlbe_ale_chain_band, the same Newton
+   settings), CC_BAND_REUSE (banded, vlbe_hht_params.reuse_max = 2: a stale
+   iteration matrix refreshed when it needs more than two further
+   iterations).
    -- part of vlbe                                  SPDX-License-Identifier: MIT
    Include after bench/bench_util.h (its timer benchu_now and
    benchu_cmp_double). */

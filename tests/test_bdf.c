@@ -22,8 +22,7 @@
 #include "test_util.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/pendulum.c"
+#include "../scenes/pendulum.h"
 #include "pend_faults.h"
 
 #include <complex.h>
@@ -33,7 +32,7 @@
 #define EPS ((double)VLBE_EPS)
 
 /* -- the pendulum ----------------------------------------------------------
-   The problem of examples/pendulum.c (m = 1 kg, L = 1 m, g = 9.81 m/s^2,
+   The problem of scenes/pendulum.h (m = 1 kg, L = 1 m, g = 9.81 m/s^2,
    q = (x, y), C = (x^2 + y^2 - L^2)/2; there also lambda = -3 m g y / L^2
    and the period PEND_T_PUBLISHED for the 90 degree amplitude), its
    callbacks wrapped by pend_faults.h so that the failure tests can inject
@@ -1010,7 +1009,7 @@ static void test_spinning_spring(void **state)
    Step cap: 2.2e4, ten times the 2.1e3 (m:andr_steps) steps of the run
    (analytic Jacobians; the differences take a few more). */
 #ifndef VLBE_USE_FLOAT
-#include "../examples/andrews.c"
+#include "../scenes/andrews.h"
 #endif
 
 static void test_andrews(void **state)

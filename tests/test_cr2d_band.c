@@ -52,7 +52,6 @@
    callbacks compute the same sums in the same order, so the float build
    runs the same checks. */
 #include "test_util.h"
-#define VLBE_EXAMPLE_NO_MAIN
 #include "../scenes/ex_sbeam.h"
 #include "cr2d_fixtures.h"
 

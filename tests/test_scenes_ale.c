@@ -36,9 +36,8 @@
 #include "../ancf_ale.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/falling_beam.c"
-#include "../examples/suspended_beam.c"
+#include "../scenes/falling_beam.h"
+#include "../scenes/suspended_beam.h"
 
 #include <float.h>
 #include <stdlib.h>

@@ -26,8 +26,7 @@
 #include "../ancf_ale.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/semicircle.c"
+#include "../scenes/semicircle.h"
 
 #include <float.h>
 #include <stdlib.h>

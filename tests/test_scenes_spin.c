@@ -29,8 +29,7 @@
    error that test resolves (a float run of it gives d(16) = 6.2e-4, 2.8e-4
    in double, and d(8)/d(16) = 1.25 where it asks for more than 2). */
 #include "test_util.h"
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/spin_up.c"
+#include "../scenes/spin_up.h"
 
 static sp_model g_m;
 

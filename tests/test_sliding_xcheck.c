@@ -36,8 +36,7 @@
    every build.  Set VLBE_TEST_REPORT=1 to print the measured numbers. */
 #include "test_util.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/sliding_xcheck.c"
+#include "../scenes/ex_xcheck.h"
 
 #include <string.h>
 

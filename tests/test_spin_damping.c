@@ -32,8 +32,7 @@
    tolerances follow the precision).  Measured errors against tolerances:
    VLBE_TEST_REPORT=1. */
 #include "test_util.h"
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/spin_damping.c"
+#include "../scenes/spin_damping.h"
 
 #define TEPS ((double)VLBE_EPS) /* the working precision, as a double */
 
