@@ -79,10 +79,9 @@ SCENE_HDRS := $(wildcard $(SCENE_DIR)/*.h)
 TEST_DIR = tests
 TEST_SRCS := $(wildcard $(TEST_DIR)/test_*.c)
 TEST_NAMES := $(basename $(notdir $(TEST_SRCS)))
-# tests include the examples (VLBE_EXAMPLE_NO_MAIN): they are dependencies too
+# tests include the scene headers: they are dependencies too;
 # tests/test_fuzz_corpus.c includes the fuzz harnesses
-TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(wildcard $(EXAMPLE_DIR)/*.c $(EXAMPLE_DIR)/*.h) \
-            $(SCENE_HDRS) $(wildcard fuzz/*.c fuzz/*.h)
+TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(SCENE_HDRS) $(wildcard fuzz/*.c fuzz/*.h)
 # the corpus replay marks its snapshots defined for valgrind (fuzz/fuzz_util.h)
 # where valgrind's client-request header is installed
 MEMCHECK_DEF := $(if $(wildcard /usr/include/valgrind/memcheck.h),-DVLBE_FUZZ_MEMCHECK)
@@ -120,7 +119,7 @@ EXAMPLE_DIR = examples
 EXAMPLE_SRCS := $(wildcard $(EXAMPLE_DIR)/*.c)
 EXAMPLE_NAMES := $(basename $(notdir $(EXAMPLE_SRCS)))
 EXAMPLE_BINS := $(addprefix $(BUILD)/examples/,$(EXAMPLE_NAMES))
-EXAMPLE_DEPS := $(HEADERS) $(wildcard $(EXAMPLE_DIR)/*.h) $(SCENE_HDRS)
+EXAMPLE_DEPS := $(HEADERS) $(SCENE_HDRS)
 # first_chain.c is the README's first program, not a paper scene (make
 # check-first runs it)
 DEMO_SCENES ?= $(filter-out first_chain,$(EXAMPLE_NAMES))
@@ -131,8 +130,8 @@ BENCH_FLAGS = -O3 -march=native
 BENCH_PORTABLE_FLAGS = -O2
 BENCH_BINS := $(addprefix $(BUILD)/bench/,$(BENCH_NAMES))
 BENCH_PORTABLE_BINS := $(addprefix $(BUILD)/bench/portable/,$(BENCH_NAMES))
-# bench files may include the examples (their problem definitions)
-BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(EXAMPLE_SRCS) $(wildcard $(EXAMPLE_DIR)/*.h) $(SCENE_HDRS)
+# bench files include the scene headers (the problem definitions)
+BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(SCENE_HDRS)
 # the work-precision runs of `make demo` (every bench/wp_*.c): portable
 # flags, the examples' warnings
 DEMO_WP_NAMES := $(basename $(notdir $(wildcard bench/wp_*.c)))
@@ -551,7 +550,7 @@ M4_LD = -T $(M4_DIR)/mps2_an386.ld $(M4_DIR)/startup.S
 M4_NAMES = m4_base m4_lu m4_ale m4_ale3 m4_rancf m4_cr2d m4_hht m4_bdf
 M4_ELFS := $(addprefix $(BUILD)/m4/,$(addsuffix .elf,$(M4_NAMES)))
 M4_HOST_BINS := $(addprefix $(BUILD)/m4/host/,$(M4_NAMES))
-M4_DEPS = $(HEADERS) $(M4_DIR)/m4_out.h $(EXAMPLE_DIR)/pendulum.c
+M4_DEPS = $(HEADERS) $(M4_DIR)/m4_out.h $(SCENE_DIR)/pendulum.h $(SCENE_DIR)/ex_run.h
 M4_KERNEL_RE = ^vlbe_(ale|ale3|rancf|cr2d)_
 M4_SYSTEM_RE = _(chain|beam|inv_sys)_|_inv_chain_
 M4_PROBE = printf 'int main(void) { return 0; }\n' | \
@@ -654,7 +653,7 @@ check-m4: $(M4_ELFS) $(M4_HOST_BINS) $(BUILD)/m4/host-dbl/m4_hht $(BUILD)/m4/m4_
 # knows ends the path; the bare-metal trap it does not)
 LINT_OPTS = --enable=warning,performance,portability --error-exitcode=1 --inline-suppr -q \
   --std=c99 --suppress=missingIncludeSystem -I. -D__unix__
-LINT_FILES := $(HEADERS) $(wildcard bench/*.h bench/*.c tests/*.h tests/*.c examples/*.h examples/*.c)
+LINT_FILES := $(HEADERS) $(wildcard bench/*.h bench/*.c tests/*.h tests/*.c $(SCENE_DIR)/*.h examples/*.c)
 # twice, double and float: cppcheck otherwise mixes both configurations of
 # vlbe_real in its whole-program (ctu) checks and reports false overruns
 lint:
