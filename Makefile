@@ -70,14 +70,18 @@ OUT = out
 HEADERS := $(wildcard vlbe.h ancf_ale.h rancf.h corot2d.h integrators.h)
 reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
 
+# -- scenes: the scene set-ups, run drivers, closed forms and the chart
+# writer that examples, tests and benchmarks share (scenes/*.h) ------------
+SCENE_DIR = scenes
+SCENE_HDRS := $(wildcard $(SCENE_DIR)/*.h)
+
 # -- tests: one binary per tests/test_*.c and build configuration ----------
 TEST_DIR = tests
 TEST_SRCS := $(wildcard $(TEST_DIR)/test_*.c)
 TEST_NAMES := $(basename $(notdir $(TEST_SRCS)))
-# tests include the examples (VLBE_EXAMPLE_NO_MAIN): they are dependencies too
+# tests include the scene headers: they are dependencies too;
 # tests/test_fuzz_corpus.c includes the fuzz harnesses
-TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(wildcard $(EXAMPLE_DIR)/*.c $(EXAMPLE_DIR)/*.h) \
-            $(wildcard fuzz/*.c fuzz/*.h)
+TEST_DEPS = $(HEADERS) $(wildcard $(TEST_DIR)/*.h) $(SCENE_HDRS) $(wildcard fuzz/*.c fuzz/*.h)
 # the corpus replay marks its snapshots defined for valgrind (fuzz/fuzz_util.h)
 # where valgrind's client-request header is installed
 MEMCHECK_DEF := $(if $(wildcard /usr/include/valgrind/memcheck.h),-DVLBE_FUZZ_MEMCHECK)
@@ -115,7 +119,7 @@ EXAMPLE_DIR = examples
 EXAMPLE_SRCS := $(wildcard $(EXAMPLE_DIR)/*.c)
 EXAMPLE_NAMES := $(basename $(notdir $(EXAMPLE_SRCS)))
 EXAMPLE_BINS := $(addprefix $(BUILD)/examples/,$(EXAMPLE_NAMES))
-EXAMPLE_DEPS := $(HEADERS) $(wildcard $(EXAMPLE_DIR)/*.h) bench/svgplot.h
+EXAMPLE_DEPS := $(HEADERS) $(SCENE_HDRS)
 # first_chain.c is the README's first program, not a paper scene (make
 # check-first runs it)
 DEMO_SCENES ?= $(filter-out first_chain,$(EXAMPLE_NAMES))
@@ -126,8 +130,8 @@ BENCH_FLAGS = -O3 -march=native
 BENCH_PORTABLE_FLAGS = -O2
 BENCH_BINS := $(addprefix $(BUILD)/bench/,$(BENCH_NAMES))
 BENCH_PORTABLE_BINS := $(addprefix $(BUILD)/bench/portable/,$(BENCH_NAMES))
-# bench files may include the examples (their problem definitions)
-BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(EXAMPLE_SRCS) $(wildcard $(EXAMPLE_DIR)/*.h)
+# bench files include the scene headers (the problem definitions)
+BENCH_DEPS := $(HEADERS) $(wildcard bench/*.h) $(SCENE_HDRS)
 # the work-precision runs of `make demo` (every bench/wp_*.c): portable
 # flags, the examples' warnings
 DEMO_WP_NAMES := $(basename $(notdir $(wildcard bench/wp_*.c)))
@@ -160,9 +164,9 @@ check-headers:
 	@printf '#include "%s"\n' $(call reverse,$(HEADERS)) | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -
 	@printf '#include "%s"\n' $(call reverse,$(HEADERS)) | $(CC) $(CSTD) $(WARN) -DVLBE_USE_FLOAT -I. -x c -fsyntax-only -
 	@printf '#include "%s"\n' $(call reverse,$(HEADERS)) | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -
-	@echo "check-headers: bench/svgplot.h (C99 twice, C++11)"
-	@printf '#include "bench/svgplot.h"\n#include "bench/svgplot.h"\n' | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -
-	@printf '#include "bench/svgplot.h"\n' | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -
+	@echo "check-headers: $(SCENE_DIR)/svgplot.h (C99 twice, C++11)"
+	@printf '#include "$(SCENE_DIR)/svgplot.h"\n#include "$(SCENE_DIR)/svgplot.h"\n' | $(CC) $(CSTD) $(WARN) -I. -x c -fsyntax-only -
+	@printf '#include "$(SCENE_DIR)/svgplot.h"\n' | $(CXX) -std=c++11 $(CXXWARN) -I. -x c++ -fsyntax-only -
 
 # every ```c block of README.md and docs/*.md compiled and linked, double
 # and float (tests/doc_blocks.sh says how fragments and mirrors of
@@ -372,7 +376,7 @@ check-first: $(FIRST_BINS)
 
 # Each example prints, besides its own report, comparison rows
 #   ROW|<scene>|<quantity [unit]>|<published>|<computed>|<relative error>|<cpu seconds>
-# (svgp_compare_row() in bench/svgplot.h writes one; "-" for no value); the
+# (svgp_compare_row() in scenes/svgplot.h writes one; "-" for no value); the
 # demo collects them into one table, out/demo/table.txt.  Examples run from
 # the repository root and write their charts to out/<name>*.svg.
 DEMO_TABLE = awk -F'|' '{ n++; for (i = 2; i <= 7; i++) { c[n, i] = $$i; if (length($$i) > w[i]) w[i] = length($$i) } } \
@@ -546,7 +550,7 @@ M4_LD = -T $(M4_DIR)/mps2_an386.ld $(M4_DIR)/startup.S
 M4_NAMES = m4_base m4_lu m4_ale m4_ale3 m4_rancf m4_cr2d m4_hht m4_bdf
 M4_ELFS := $(addprefix $(BUILD)/m4/,$(addsuffix .elf,$(M4_NAMES)))
 M4_HOST_BINS := $(addprefix $(BUILD)/m4/host/,$(M4_NAMES))
-M4_DEPS = $(HEADERS) $(M4_DIR)/m4_out.h $(EXAMPLE_DIR)/pendulum.c
+M4_DEPS = $(HEADERS) $(M4_DIR)/m4_out.h $(SCENE_DIR)/pendulum.h $(SCENE_DIR)/ex_run.h
 M4_KERNEL_RE = ^vlbe_(ale|ale3|rancf|cr2d)_
 M4_SYSTEM_RE = _(chain|beam|inv_sys)_|_inv_chain_
 M4_PROBE = printf 'int main(void) { return 0; }\n' | \
@@ -649,7 +653,7 @@ check-m4: $(M4_ELFS) $(M4_HOST_BINS) $(BUILD)/m4/host-dbl/m4_hht $(BUILD)/m4/m4_
 # knows ends the path; the bare-metal trap it does not)
 LINT_OPTS = --enable=warning,performance,portability --error-exitcode=1 --inline-suppr -q \
   --std=c99 --suppress=missingIncludeSystem -I. -D__unix__
-LINT_FILES := $(HEADERS) $(wildcard bench/*.h bench/*.c tests/*.h tests/*.c examples/*.h examples/*.c)
+LINT_FILES := $(HEADERS) $(wildcard bench/*.h bench/*.c tests/*.h tests/*.c $(SCENE_DIR)/*.h examples/*.c)
 # twice, double and float: cppcheck otherwise mixes both configurations of
 # vlbe_real in its whole-program (ctu) checks and reports false overruns
 lint:

@@ -50,7 +50,7 @@
    1.15 times its min is marked '*' (machine busy: rerun). */
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

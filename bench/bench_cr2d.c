@@ -1,6 +1,6 @@
 /* bench_cr2d.c -- cost of the planar co-rotational element of corot2d.h per
    call, and wall time of the sliding-beam scene (Hsiao et al. section 3,
-   examples/ex_sbeam.h), against the performance targets: one conventional
+   scenes/ex_sbeam.h), against the performance targets: one conventional
    element, forces + tangent + mass, at most 0.5 us; case (b) with 24
    elements to t = 3 s at dt = 1 ms in at most 0.5 s wall.
 
@@ -19,9 +19,8 @@
    Scene: REPS runs of each case, median wall (CLOCK_MONOTONIC) and CPU,
    with the step, rejected-step, Newton, LU and restart counts. */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/sliding_beam.c"
-#include "svgplot.h"
+#include "../scenes/sliding_beam.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

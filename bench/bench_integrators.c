@@ -7,8 +7,9 @@
    run from the repository root:  build/bench/bench_integrators [tag]
    writes out/bench/integrators[-tag].csv (out/bench must exist).
 
-   The problems are the examples' (examples/pendulum.c, examples/andrews.c,
-   included with VLBE_EXAMPLE_NO_MAIN); this file adds only the timing.
+   The problems are the examples' (scenes/pendulum.h, scenes/andrews.h,
+   shared with examples/pendulum.c and examples/andrews.c); this file adds
+   only the timing.
 
    Pendulum: t in [0, 3] s (one full period between the first two crossings
    of x = 0), HHT-alpha (alpha = -0.05) at h = 1e-3 with the analytic
@@ -32,10 +33,9 @@
    comes from a separate run with pend_run_sys / pend_run_bdf of the example
    (crossings of x = 0), not from the timed runs. */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/pendulum.c"
-#include "../examples/andrews.c"
-#include "svgplot.h"
+#include "../scenes/pendulum.h"
+#include "../scenes/andrews.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

@@ -29,7 +29,7 @@
    batch >= 0.2 ms.  Reported: median (min) ns per call over the batches; a
    row whose median exceeds 1.15 times its min is marked '*'.
 
-   Per step of scene 1 (examples/ex_spin.h: the ANCF beam with bending, L
+   Per step of scene 1 (scenes/ex_spin.h: the ANCF beam with bending, L
    = 10 m, spin-up to W = 6 rad/s; cfg.inv = SP_GAUSS, SP_INV_ELEM,
    SP_INV_SYS; the invariant routes take the axial force from the tables
    and keep bending on Gauss points, the system route with a second element
@@ -87,8 +87,8 @@
    (87 us); the clamp's rows set kl = ku = 10 for the whole chain. */
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
-#include "../examples/ex_spin.h"
-#include "svgplot.h"
+#include "../scenes/ex_spin.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>
@@ -264,7 +264,7 @@ static void measure(cfg *cs, int nc, long *bad)
     }
 }
 
-/* -- per step of scene 1 (examples/ex_spin.h) -------------------------------- */
+/* -- per step of scene 1 (scenes/ex_spin.h) -------------------------------- */
 #define STEP_W 6.0       /* rad/s, scene 1                                  */
 #define STEP_T0 8.0      /* s: the timed window of the scene: from here     */
 #define STEP_T1 10.0     /* s: to here (400 steps of 5 ms)                   */
@@ -584,7 +584,7 @@ static int step_bench(const char *tag)
             }
     fail = step_measure(sc, NCH * NSTO * NROUTE);
     if (fail < 0) return -1;
-    printf("\nscene 1 per step: ANCF beam with bending (examples/ex_spin.h, W = %g rad/s), "
+    printf("\nscene 1 per step: ANCF beam with bending (scenes/ex_spin.h, W = %g rad/s), "
            "HHT-alpha -0.05, h = 5 ms, timed t in [%g, %g] s (from the state of a run from rest); "
            "us per step: median (min) of %d interleaved rounds; callbacks timed inside the runs\n",
            STEP_W, STEP_T0, STEP_T1, STEP_ROUNDS);

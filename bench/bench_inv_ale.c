@@ -29,7 +29,7 @@
    That both routes give the same numbers is tests/test_ale_inv.c's part. */
 #define _POSIX_C_SOURCE 199309L
 #include "../ancf_ale.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

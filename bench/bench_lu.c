@@ -35,7 +35,7 @@
    vlbe_band_lu_flops (the flops without interchanges, n kl (2 ku + 1)). */
 #define _POSIX_C_SOURCE 199309L
 #include "../vlbe.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

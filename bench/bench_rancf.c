@@ -59,7 +59,7 @@
    whose median exceeds 1.15 times its min (machine busy: rerun). */
 #define _POSIX_C_SOURCE 199309L
 #include "../rancf.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

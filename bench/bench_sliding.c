@@ -1,6 +1,6 @@
 /* bench_sliding.c -- wall and CPU time of the sliding-mass scenes of the
    planar ALE-ANCF and ALE-RANCF elements (ale-rancf 6.1 falling beam, 6.2
-   suspended beam; examples/ex_slide.h), against the performance targets: the
+   suspended beam; scenes/ex_slide.h), against the performance targets: the
    falling beam with 40 ALE-ANCF elements up to the mass leaving in at most
    2 s wall (the paper's ALE-ANCF motion time, Table 1: 325 s); with 40
    ALE-RANCF elements in at most 3 s wall with the length control (and the
@@ -24,10 +24,9 @@
    the runs are deterministic).  The falling beam runs HHT-alpha -0.05 at
    h = 1e-3 s to the mass leaving; the suspended beam 2 s at h = 1e-3 s. */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/falling_beam.c"
-#include "../examples/suspended_beam.c"
-#include "svgplot.h"
+#include "../scenes/falling_beam.h"
+#include "../scenes/suspended_beam.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

@@ -43,7 +43,7 @@
 #include "../corot2d.h"
 #include "../ancf_ale.h"
 #include "../integrators.h"
-#include "svgplot.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

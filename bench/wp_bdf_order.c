@@ -1,7 +1,7 @@
 /* wp_bdf_order.c -- BDF's highest order (vlbe_bdf_params.max_order 1..5)
    on undamped stiff structures: steps, CPU time and error at three
    tolerances, on a flexible slider crank and on the spinning ANCF beam of
-   examples/ex_spin.h.
+   scenes/ex_spin.h.
 
    build (from the repository root; `make demo` builds it with -O2, `make
    bench` with -O3 -march=native):
@@ -30,7 +30,7 @@
    node from its reference position at the 16 sample times t_k = T k / 16
    (the steps land on them), divided by the rod's length.
 
-   (b) Spinning beam (SP_*): examples/ex_spin.h, SP_ANCF with Gauss points,
+   (b) Spinning beam (SP_*): scenes/ex_spin.h, SP_ANCF with Gauss points,
    8 elements, spin-up to W = 6 rad/s in Ts = 15 s (sp_cfg_default), the
    beam whose axial modes (up to 3.7e4 rad/s) the max_order comment of
    integrators.h cites.  Run: the first SP_T = 10 s of the spin-up (the
@@ -75,8 +75,8 @@
      (at 1e-3 it takes 327 steps), order 1 from 1e-5 on.
    The advice of vlbe_bdf_params.max_order follows from these two. */
 #define _POSIX_C_SOURCE 199309L
-#include "../examples/ex_spin.h"
-#include "svgplot.h"
+#include "../scenes/ex_spin.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

@@ -1,4 +1,4 @@
-/* wp_chain.c -- the clamped chain of bench/clamped_chain.h: work-precision
+/* wp_chain.c -- the clamped chain of scenes/clamped_chain.h: work-precision
    of HHT with dense and with banded iteration matrices, and the time per
    step against the number of elements (run by make demo)
    -- part of vlbe                                  SPDX-License-Identifier: MIT
@@ -20,8 +20,8 @@
    chain_scale.svg (default outdir: out). */
 #define _POSIX_C_SOURCE 199309L
 #include "bench_util.h"
-#include "clamped_chain.h"
-#include "svgplot.h"
+#include "../scenes/clamped_chain.h"
+#include "../scenes/svgplot.h"
 
 #include <stdio.h>
 

@@ -11,8 +11,8 @@
    drift_pendulum.svg and the same for andrews; prints one summary line per
    series (best error reached, its CPU time, observed order).
 
-   The problems are the examples' (examples/pendulum.c, examples/andrews.c,
-   included with VLBE_EXAMPLE_NO_MAIN).
+   The problems are the examples' (scenes/pendulum.h, scenes/andrews.h,
+   shared with examples/pendulum.c and examples/andrews.c).
    Pendulum: t in [0, 3] s (one full period between the first two crossings
    of x = 0, found on the cubic Hermite interpolant as in the example);
    error = relative error of the period against pend_period_exact() (AGM).
@@ -35,10 +35,9 @@
    also records the constraint drift of every step (max |C| and |C_q v| over
    the run) and the counters; the runs are deterministic. */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/pendulum.c"
-#include "../examples/andrews.c"
-#include "svgplot.h"
+#include "../scenes/pendulum.h"
+#include "../scenes/andrews.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

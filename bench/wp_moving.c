@@ -12,7 +12,7 @@
    prints the best CPU time per integrator to reach 1e-4 and 1e-6.
 
    Integrators (each on every mesh; 0.5 s of free vibration, the frequency
-   of the midpoint deflection by ex_peak_freq of examples/ex_freq.h):
+   of the midpoint deflection by ex_peak_freq of scenes/ex_freq.h):
    - generalized-alpha rho_inf 0.9 (the example's) and HHT-alpha alpha =
      -0.05, fixed step h = 8e-4, 4e-4, 2e-4, 1e-4, 5e-5 s through
      ms_freq_run() of the example ("raw": one run, error O(h^2));
@@ -51,9 +51,8 @@
    of 5 runs when the first takes under 0.02 s, of 3 under 0.25 s, else the
    single run (the runs are deterministic: only the time varies). */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/moving_string.c"
-#include "svgplot.h"
+#include "../scenes/moving_string.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>

@@ -9,8 +9,8 @@
    run:  build/demo/wp_semicircle [outdir]              (default outdir: out)
    writes <outdir>/wp_semicircle.csv and <outdir>/wp_semicircle.svg.
 
-   Runs: sc_run (examples/semicircle.c, the model and loop of
-   examples/ex_slide.h) for 1 s with N = 4, 8, 16 elements x h = 2e-3,
+   Runs: sc_run (scenes/semicircle.h, the model and loop of
+   scenes/ex_slide.h) for 1 s with N = 4, 8, 16 elements x h = 2e-3,
    1e-3, 5e-4 s, both element forms.  CPU: the median of 3 runs (the whole
    run: integration and length control).
    Error of a run: the distance of the mass position at t = 1 s from that of
@@ -25,9 +25,8 @@
    timing make the motion sensitive -- so t = 1 s measures little more than
    that sensitivity; t = 0.5 s, before most events, shows convergence. */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/semicircle.c"
-#include "svgplot.h"
+#include "../scenes/semicircle.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #define WC_NNE 3

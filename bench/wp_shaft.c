@@ -9,7 +9,7 @@
    run:  build/demo/wp_shaft [outdir]                   (default outdir: out)
    writes <outdir>/wp_shaft.csv and <outdir>/wp_shaft.svg.
 
-   Runs: the example's ss_run with 4, 8, 16 elements, the paper's moving
+   Runs: ss_run (scenes/spinning_shaft.h) with 4, 8, 16 elements, the paper's moving
    mesh (the load on the middle node) and a fixed mesh (equal elements,
    the load a moving point force), 125 ... 2000 steps over the traverse,
    the load from 0.005 l to 0.995 l, the shaft starting at rest (SS_Z0_COARSE:
@@ -24,9 +24,8 @@
    modes, 1e-6 U_s); eq. (59) as written differs from it by up to 1.4e-3
    U_s (case 1) and 4.4e-4 U_s (case 2), the floor of an error against it. */
 #define _POSIX_C_SOURCE 199309L
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/spinning_shaft.c"
-#include "svgplot.h"
+#include "../scenes/spinning_shaft.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #define WS_NNE 3

@@ -1,5 +1,5 @@
 /* wp_sliding.c -- work-precision of scene 2, the beam sliding through a
-   prismatic joint (Hsiao et al., section 3; examples/ex_sbeam.h,
+   prismatic joint (Hsiao et al., section 3; scenes/ex_sbeam.h,
    examples/sliding_beam.c): error of the tip deflection against CPU time
    (log-log) over the step size and the integrator, cases (a) and (b).
 
@@ -85,8 +85,8 @@
    time varies).  Failed runs are timed to the failure (CSV), not charted; the
    legend of each series names its failed steps. */
 #define _POSIX_C_SOURCE 199309L
-#include "../examples/ex_sbeam.h"
-#include "svgplot.h"
+#include "../scenes/ex_sbeam.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>
@@ -479,7 +479,7 @@ int main(int argc, char **argv)
     if (benchu_mkdir(dir, "wp_sliding")) return 1;
     benchu_cpu_info(model, sizeof model, &mhz);
     printf("wp_sliding: work-precision of the sliding beam (Hsiao et al. section 3, "
-           "examples/ex_sbeam.h), vlbe %s, %s, compiler %s, %s, %s, %.0f MHz%s\n",
+           "scenes/ex_sbeam.h), vlbe %s, %s, compiler %s, %s, %s, %.0f MHz%s\n",
            VLBE_VERSION_STRING, sizeof(vlbe_real) == sizeof(double) ? "double" : "float",
            __VERSION__, VLBE_BENCH_FLAGS, model, mhz, full ? ", full" : "");
     scs[0] = &sa;

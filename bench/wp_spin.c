@@ -1,5 +1,5 @@
 /* wp_spin.c -- work-precision of the rotating-beam scene 1, the spin-up of a
-   cantilever on a hub at W = 6 rad/s (examples/ex_spin.h,
+   cantilever on a hub at W = 6 rad/s (scenes/ex_spin.h,
    examples/spin_up.c): error of the tip deflection in the hub frame
    against CPU time (log-log) over model x mesh x step x integrator.
 
@@ -88,8 +88,8 @@
    the first takes under 0.05 s, of 3 under 0.2 s, else the single run
    (the runs are deterministic: only the time varies). */
 #define _POSIX_C_SOURCE 199309L
-#include "../examples/ex_spin.h"
-#include "svgplot.h"
+#include "../scenes/ex_spin.h"
+#include "../scenes/svgplot.h"
 #include "bench_util.h"
 
 #include <stdio.h>
@@ -578,7 +578,7 @@ int main(int argc, char **argv)
 
     if (benchu_mkdir(dir, "wp_spin")) return 1;
     benchu_cpu_info(model, sizeof model, &mhz);
-    printf("wp_spin: work-precision of the spin-up, W = %g rad/s (examples/ex_spin.h), vlbe %s, "
+    printf("wp_spin: work-precision of the spin-up, W = %g rad/s (scenes/ex_spin.h), vlbe %s, "
            "%s, compiler %s, %s, %s, %.0f MHz%s\n",
            W_SCENE, VLBE_VERSION_STRING, sizeof(vlbe_real) == sizeof(double) ? "double" : "float",
            __VERSION__, VLBE_BENCH_FLAGS, model, mhz, full ? ", full" : "");

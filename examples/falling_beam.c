@@ -4,6 +4,9 @@
 
    cc -O2 -I. examples/falling_beam.c -lm && ./a.out [outdir]
 
+   The scene's configuration is scenes/falling_beam.h (shared with the
+   tests and bench/bench_sliding.c).
+
    Beam: L = 1 m, circular section r = 0.01 m, rho = 7200 kg/m^3,
    E = 20 MPa, no damping, gravity 9.81 m/s^2 (-y); left end clamped
    (position and slope direction), right end free.  Mass 0.8 kg, sliding
@@ -47,7 +50,7 @@
    failure of this program (the exit code is 1 only for ALE-ANCF failures
    and for statuses that are no dynamics outcome: EARG, EWORK, ECALLBACK).
 
-   The model and the run loop are examples/ex_slide.h (shared with the
+   The model and the run loop are scenes/ex_slide.h (shared with the
    suspended beam of section 6.2).
 
    Output rows ROW|falling|..., out/falling_beam_<N>[_cons|_rancf].csv (t,
@@ -58,32 +61,8 @@
    just before and just after the first two length-control events (50
    material points per element), with the largest distance between the
    two curves at equal material coordinate printed. */
-#include "ex_slide.h"
-
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-
-#define FB_NRUN 5
-
-/* the scene: N elements, element flags (0 or VLBE_ALE_CONSERVATIVE), step h */
-static inline void fb_cfg(ex_slide_cfg *c, int N, unsigned flags, double h)
-{
-    ex_slide_cfg_paper(c, N, EX_SLIDE_CLAMP_FREE, 0.8, 0.1, 0.4);
-    c->flags = flags;
-    c->h = h;
-}
-
-/* a status with which a run may end as a measured outcome of the model
-   (Newton failure, step halvings exhausted, inverted element, bad weight
-   ...), as opposed to a set-up or programming error */
-static inline int fb_dynamic_status(vlbe_status s)
-{
-    return s != VLBE_EARG && s != VLBE_EWORK && s != VLBE_ECALLBACK;
-}
-
-#ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/falling_beam.h"
+#include "../scenes/svgplot.h"
 
 #define FB_NFORM 3 /* ALE-ANCF paper form, ALE-ANCF conservative, ALE-RANCF */
 #define FB_SHAPE_PTS 50 /* Figure 12: points per element */
@@ -339,4 +318,3 @@ int main(int argc, char **argv)
     ex_slide_hist_free(&shp[1]);
     return rc;
 }
-#endif

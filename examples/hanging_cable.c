@@ -6,7 +6,7 @@
    cc -O2 -I. examples/hanging_cable.c -lm && ./a.out [outdir [N ...]]
 
    The model, the measurement and the physics corrections are in
-   examples/ex_cable.h (shared with tests/test_scenes_cable.c): L = 10 m,
+   scenes/ex_cable.h (shared with tests/test_scenes_cable.c): L = 10 m,
    rhoA = 1 kg/m, EA = 1e7 N, EI = 1e-7 N m^2, g = 9.81, N Lagrangian
    ALE-ANCF elements, static equilibrium by vlbe_dae_static, then a start in
    the analytic k-th mode (lateral velocities, 10 um at the free end) and
@@ -27,7 +27,7 @@
    less the corrections against the elements, log-log) and
    out/hanging_cable_modes.svg (the analytic mode shapes and the nodes of
    the eigenvectors at 16 elements). */
-#include "ex_cable.h"
+#include "../scenes/ex_cable.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -37,8 +37,7 @@
 #define EX_HC_SHAPE_N 16  /* mesh of the mode-shape chart      */
 #define EX_HC_PTS 201     /* points of an analytic mode shape  */
 
-#ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 int main(int argc, char **argv)
 {
@@ -205,4 +204,3 @@ int main(int argc, char **argv)
     }
     return rc;
 }
-#endif

@@ -5,6 +5,9 @@
 
    cc -O2 examples/sliding_beam.c -lm && ./a.out [outdir]
 
+   The observer of the runs is scenes/sliding_beam.h (shared with
+   tests/test_scenes_sliding.c and bench/bench_cr2d.c).
+
    Section A = 4.3434e-5 m^2, I = 1.059e-11 m^4, E = 68.96 GPa, rho =
    3144.3858 kg/m^3; 14 elements inside the joint and 10 outside at t = 0;
    dt = 1 ms, HHT alpha = -0.05 (the trapezoidal Newmark the paper names
@@ -16,7 +19,7 @@
    (b) L = 1.05 m, L0 = 0.35 m, the smooth deployment of eq. (55), c0 =
        0.7 m, t0 = 1.2 s, 0 <= t <= 3 s.
    At t = 0 the tip is deflected by 0.024 m by a static lateral tip force
-   (removed at t = 0).  The model and its bookkeeping: examples/ex_sbeam.h.
+   (removed at t = 0).  The model and its bookkeeping: scenes/ex_sbeam.h.
 
    The paper gives its results as plots only (Figs. 4, 5): the rows report
    what the plots show in numbers -- the periods of the tip oscillation
@@ -25,63 +28,7 @@
    of that period (the quasi-static estimate a slowly sliding beam should
    follow), and the amplitudes. Output: out/sliding_beam_{a,b}.csv (t, tip
    x, tip y, free length, energy) and out/sliding_beam_tip.svg. */
-#include "ex_sbeam.h"
-#include "../bench/svgplot.h"
-
-#include <stdio.h>
-
-#define SB_NPER 256
-
-/* what the observer collects */
-typedef struct sb_obs {
-    FILE *csv;
-    long n, cap;
-    double *t, *y;
-    double ylast, tlast, tcross[SB_NPER], amp[SB_NPER];
-    int ncross;
-    double amax;
-} sb_obs;
-
-static inline void sb_observe(void *ctx, const sb_model *m, double t, const vlbe_real *q,
-                              const vlbe_real *v)
-{
-    sb_obs *o = (sb_obs *)ctx;
-    const double y = (double)q[m->n - 2];
-    double g[3], E[2] = {0.0, 0.0};
-    vlbe_real Er[2];
-    sb_ua(&m->cfg, t, g);
-    if (vlbe_cr2d_beam_energy(&m->beam, q, v, Er) == VLBE_OK) {
-        E[0] = (double)Er[0];
-        E[1] = (double)Er[1];
-    }
-    if (o->csv) {
-        double row[6];
-        row[0] = t;
-        row[1] = sb_x(m, q, m->nn - 1);
-        row[2] = y;
-        row[3] = m->cfg.L0 + g[0];
-        row[4] = E[0];
-        row[5] = E[1];
-        svgp_csv_row(o->csv, 6, row);
-    }
-    if (o->n < o->cap) {
-        o->t[o->n] = t;
-        o->y[o->n] = y;
-        ++o->n;
-    }
-    if (fabs(y) > o->amax) o->amax = fabs(y);
-    if (o->n > 1 && o->ylast < 0.0 && y >= 0.0 && o->ncross < SB_NPER) {
-        /* upward zero crossing, linear interpolation */
-        o->tcross[o->ncross] = o->tlast + (t - o->tlast) * (-o->ylast) / (y - o->ylast);
-        o->amp[o->ncross] = o->amax;
-        o->amax = 0.0;
-        ++o->ncross;
-    }
-    o->ylast = y;
-    o->tlast = t;
-}
-
-#ifndef VLBE_EXAMPLE_NO_MAIN
+#include "../scenes/sliding_beam.h"
 
 int main(int argc, char **argv)
 {
@@ -150,4 +97,3 @@ int main(int argc, char **argv)
     }
     return ok ? 0 : 1;
 }
-#endif

@@ -1,6 +1,6 @@
 /* sliding_xcheck.c -- cross-check of the sliding beam through a prismatic
    joint (Hsiao et al. section 3, cases (a) and (b); the co-rotational model
-   of examples/ex_sbeam.h, run with sb_run) by two models built otherwise:
+   of scenes/ex_sbeam.h, run with sb_run) by two models built otherwise:
    the planar ALE-ANCF chain of ancf_ale.h with the joint as constraints at
    a moving material point, and a linear variable-length assumed-modes
    model (Lagrange's equations of the axially moving cantilever).
@@ -9,7 +9,7 @@
    cc -O2 examples/sliding_xcheck.c -lm && ./a.out [outdir] [--undamped | --budget]
 
    The models, their assumptions and the derivation of the assumed-modes
-   equations are in examples/ex_xcheck.h.  The scene: sb_cfg_paper (A =
+   equations are in scenes/ex_xcheck.h.  The scene: sb_cfg_paper (A =
    4.3434e-5 m^2, I = 1.059e-11 m^4, E = 68.96 GPa, rho = 3144.3858 kg/m^3;
    (a) L = 0.762 m, L0 = 0.521 m, U_A = -0.03 t - 0.027 t^2, 2.5 s;
    (b) L = 1.05 m, L0 = 0.35 m, eq. (55) with c0 = 0.7 m, t0 = 1.2 s, 3 s),
@@ -55,12 +55,10 @@
    each model, paper settings and refined), out/sliding_xcheck_{a,b}.svg
    (the three curves) and out/sliding_xcheck_{a,b}_diff.svg (the
    differences against CR). */
-#include "ex_xcheck.h"
-#include "../bench/svgplot.h"
+#include "../scenes/ex_xcheck.h"
+#include "../scenes/svgplot.h"
 
 #include <stdio.h>
-
-#ifndef VLBE_EXAMPLE_NO_MAIN
 
 enum {
     R_CR, R_ALE, R_AM,       /* paper settings */
@@ -412,4 +410,3 @@ int main(int argc, char **argv)
     rc |= xs_case('b', dir, undamped);
     return rc;
 }
-#endif

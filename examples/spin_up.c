@@ -6,11 +6,14 @@
 
    cc -O2 examples/spin_up.c -lm && ./a.out [outdir]
 
+   The list of models and the comparison of two runs are
+   scenes/spin_up.h (shared with the tests).
+
    L = 10 m, EA = 2.8e7 N, EI = 1.4e4 N m^2, rhoA = 1.2 kg/m, rhoI = 0; hub
    angle theta(t) = (W/Ts)[t^2/2 + (Ts/2pi)^2 (cos(2 pi t/Ts) - 1)] for t <=
    Ts = 15 s, W (t - Ts/2) after; run to 20 s.  8 elements, HHT alpha =
    -0.05, h = 5 ms (convergence in mesh and step printed below).  Model and
-   run driver: examples/ex_spin.h.  The linear run stops with VLBE_EBOUND
+   run driver: scenes/ex_spin.h.  The linear run stops with VLBE_EBOUND
    when the tip leaves |tip| <= L/10 = 1 m in the hub frame.
 
    No published table exists for this scene (the literature shows plots):
@@ -21,30 +24,8 @@
    Output: out/spin_up_w<W>.csv (t, axial and transverse tip of both
    models; the linear columns empty after its stop) and
    out/spin_up_w<W>.svg (transverse tip deflection, both models). */
-#include "ex_spin.h"
-#include "../bench/svgplot.h"
-
-#include <stdio.h>
-
-/* the models in the order of the runs, tables and CSV columns */
-#define SP_NMODEL 3
-static const int sp_models[SP_NMODEL] = {SP_CR, SP_LINEAR, SP_ANCF};
-static const char *const sp_model_name[SP_NMODEL] = {"CR", "linear", "ANCF"};
-static const char *const sp_model_label[SP_NMODEL] = {
-    "co-rotational (nonlinear)", "linear, floating frame", "ANCF (nonlinear)"};
-
-/* max over the 0.5 s samples both runs reached of |transverse a - b| */
-static inline double sp_sample_diff(const sp_out *a, const sp_out *b)
-{
-    double d = 0.0;
-    int k;
-    for (k = 0; k < SP_NS; ++k)
-        if (!isnan(a->tip_s[k][1]) && !isnan(b->tip_s[k][1]))
-            d = fmax(d, fabs(a->tip_s[k][1] - b->tip_s[k][1]));
-    return d;
-}
-
-#ifndef VLBE_EXAMPLE_NO_MAIN
+#include "../scenes/spin_up.h"
+#include "../scenes/svgplot.h"
 
 static void print_run(const char *name, const sp_cfg *c, const sp_out *o)
 {
@@ -227,4 +208,3 @@ int main(int argc, char **argv)
     }
     return ok ? 0 : 1;
 }
-#endif

@@ -4,6 +4,9 @@
 
    cc -O2 -I. examples/suspended_beam.c -lm && ./a.out [outdir]
 
+   The scene's configuration is scenes/suspended_beam.h (shared with
+   tests/test_scenes_ale.c and bench/bench_sliding.c).
+
    The beam of section 6.1 (L = 1 m, r = 0.01 m, rho = 7200 kg/m^3,
    E = 20 MPa, no damping, gravity 9.81 m/s^2), pinned at both ends on a
    straight horizontal start; a 5 kg mass, released at rest 0.1 m from the
@@ -38,34 +41,8 @@
    Output rows ROW|suspended|..., out/suspended_beam[_cons|_rancf].csv (t,
    midspan y, mass x, y, p, energy, arc length, its rate) and
    out/suspended_beam_{length,energy,rate}.svg (all three). */
-#include "ex_slide.h"
-
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-
-/* the scene: element flags (0 or VLBE_ALE_CONSERVATIVE), step h, end time */
-static inline void sb_cfg(ex_slide_cfg *c, unsigned flags, double h, double t_end)
-{
-    ex_slide_cfg_paper(c, 3, EX_SLIDE_PIN_PIN, 5.0, 0.1, 0.0);
-    c->flags = flags;
-    c->h = h;
-    c->t_end = t_end;
-}
-
-/* largest |rate of the arc length| over the recorded rows with t in
-   (t0, t1]; 0 when there are none */
-static inline double sb_rate_max(const ex_slide_hist *hi, double t0, double t1)
-{
-    double m = 0.0;
-    int k;
-    for (k = 0; k < hi->n; ++k)
-        if (hi->t[k] > t0 && hi->t[k] <= t1 && fabs(hi->rate[k]) > m) m = fabs(hi->rate[k]);
-    return m;
-}
-
-#ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/suspended_beam.h"
+#include "../scenes/svgplot.h"
 
 #define SB_NFORM 3   /* ALE-ANCF paper form, ALE-ANCF conservative, ALE-RANCF */
 #define SB_WIN 0.05  /* s: the window after (and before) a merge */
@@ -219,4 +196,3 @@ int main(int argc, char **argv)
     for (f = 0; f < SB_NFORM; ++f) ex_slide_hist_free(&hist[f]);
     return rc;
 }
-#endif

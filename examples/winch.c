@@ -7,7 +7,7 @@
    cc -O2 -I. examples/winch.c -lm && ./a.out [outdir [t_end [Lstd]]]
 
    The model, the run and the facts it is checked against are in
-   examples/ex_winch.h (shared with tests/test_scenes_cable.c): 10 m of rope
+   scenes/ex_winch.h (shared with tests/test_scenes_cable.c): 10 m of rope
    (rhoA = 1 kg/m, EA = 1e6 N, no bending) hanging from the winch with a
    10 kg end mass, elements of Lstd = 0.5 m, paid out at V = 0.9 m/s,
    HHT-alpha -0.05 at h = 2 ms.  Here elements of Lstd = 0.1 m on the
@@ -22,13 +22,12 @@
    ROW|winch|...; out/winch_stretch.svg (the stretch of the rope, model and
    steady rope, against time) and out/winch_elements.svg (the elements
    against the paid-out length, model and ne(l)). */
-#include "ex_winch.h"
+#include "../scenes/ex_winch.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 
-#ifndef VLBE_EXAMPLE_NO_MAIN
-#include "../bench/svgplot.h"
+#include "../scenes/svgplot.h"
 
 int main(int argc, char **argv)
 {
@@ -133,4 +132,3 @@ int main(int argc, char **argv)
     ex_winch_hist_free(&hi);
     return rc;
 }
-#endif

@@ -8,7 +8,7 @@
 #   sh tests/mutate.sh [id ...]       (make mutate [MUTATIONS="id ..."])
 #
 # Work area build/mutate/ (MUTATE_DIR): tree/ the copy (headers, Makefile,
-# tests/, examples/, fuzz/, bench/svgplot.h), logs/ every build and run
+# tests/, scenes/, fuzz/), logs/ every build and run
 # log, report.txt the table
 #     id | description | caught by (suite:test, ...) | verdict
 # with verdicts killed, SURVIVED, survived (explained: the entry carries
@@ -132,9 +132,8 @@ all_suites=$(awk -F'\t' '{ n = split($3, a, " "); for (i = 1; i <= n; ++i) if (!
 
 # -- the copy of the tree -------------------------------------------------
 fresh_tree() {
-    rm -rf "$tree" && mkdir -p "$tree/bench" || return 1
-    (cd "$root" && cp $headers Makefile "$tree/" && cp -R tests examples fuzz "$tree/" &&
-        cp bench/svgplot.h "$tree/bench/")
+    rm -rf "$tree" && mkdir -p "$tree" || return 1
+    (cd "$root" && cp $headers Makefile "$tree/" && cp -R tests scenes fuzz "$tree/")
 }
 
 # builds the suites $2.. in the copy; log $1; prints the suites not built

@@ -1,20 +1,19 @@
-/* pend_faults.h -- the pendulum of examples/pendulum.c with faults injected
+/* pend_faults.h -- the pendulum of scenes/pendulum.h with faults injected
    into its callbacks, shared by the integrator suites -- part of vlbe
                                                    SPDX-License-Identifier: MIT
 
-   Include it after the example:
-       #define VLBE_EXAMPLE_NO_MAIN
-       #include "../examples/pendulum.c"
+   Include it after the scene:
+       #include "../scenes/pendulum.h"
        #include "pend_faults.h"
 
-   faulty_setup(sys, f, mode) fills sys with the example's pendulum
+   faulty_setup(sys, f, mode) fills sys with the scene's pendulum
    (pend_setup: the analytic Jacobians) whose mass, force and constraint go
    through the wrappers below with f as user data; it starts with no fault
    (mode is not used: arm the fault by setting f->mode).  Armed, the fault
    hits every call after the first f->after counted ones (f->calls counts
    them); after = 0: at once; with f->count > 0 only that many calls (a
    transient fault: one bad Newton iterate).  The callbacks that do not read their user
-   data (constr_jac, constr_acc, force_jac, constr_hess) stay the example's. */
+   data (constr_jac, constr_acc, force_jac, constr_hess) stay the scene's. */
 #ifndef VLBE_TEST_PEND_FAULTS_H
 #define VLBE_TEST_PEND_FAULTS_H
 

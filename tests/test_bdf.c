@@ -15,15 +15,14 @@
       h_min too large (ESTEP), small workspace (EWORK), bad arguments
       (EARG), each leaving the state at the last accepted step;
    5. a stiff undamped spring on a spinning arm (the hub scene of
-      examples/ex_spin.h in miniature, rheonomic constraints): the Newton
+      scenes/ex_spin.h in miniature, rheonomic constraints): the Newton
       rate is measured afresh at every step (a stale one let fixed-step
       BDF2 drift off by 3 rad), and the filtered error estimate keeps the
       variable-step run free of the rejection cascade of the plain one. */
 #include "test_util.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/pendulum.c"
+#include "../scenes/pendulum.h"
 #include "pend_faults.h"
 
 #include <complex.h>
@@ -33,7 +32,7 @@
 #define EPS ((double)VLBE_EPS)
 
 /* -- the pendulum ----------------------------------------------------------
-   The problem of examples/pendulum.c (m = 1 kg, L = 1 m, g = 9.81 m/s^2,
+   The problem of scenes/pendulum.h (m = 1 kg, L = 1 m, g = 9.81 m/s^2,
    q = (x, y), C = (x^2 + y^2 - L^2)/2; there also lambda = -3 m g y / L^2
    and the period PEND_T_PUBLISHED for the 90 degree amplitude), its
    callbacks wrapped by pend_faults.h so that the failure tests can inject
@@ -694,7 +693,7 @@ static void test_advance_exact(void **state)
    constraints); point 2 (1 kg) hangs from point 1 on an undamped spring of
    stiffness 1e6 N/m and rest length 1 m (1000 rad/s, 1e3 times the slow
    swing).  theta' rises smoothly from 0 to 2 pi rad/s in 2 s as in
-   examples/ex_spin.h, then stays; the run ends at 4 s.  q = (x1, y1, x2,
+   scenes/ex_spin.h, then stays; the run ends at 4 s.  q = (x1, y1, x2,
    y2), start at rest along +x (consistent: theta = theta' = 0).  What is
    compared: the angle of the spring against the arm at 4 s with the
    reference rs_reference() below (-1.7564598 (m:rs_ref) rad). */
@@ -1010,7 +1009,7 @@ static void test_spinning_spring(void **state)
    Step cap: 2.2e4, ten times the 2.1e3 (m:andr_steps) steps of the run
    (analytic Jacobians; the differences take a few more). */
 #ifndef VLBE_USE_FLOAT
-#include "../examples/andrews.c"
+#include "../scenes/andrews.h"
 #endif
 
 static void test_andrews(void **state)

@@ -79,8 +79,7 @@
 #include "ale_fixtures.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/moving_string.c"
+#include "../scenes/moving_string.h"
 
 #include <float.h>
 #include <stdlib.h>

@@ -56,7 +56,7 @@
                             first layout */
 #include "test_util.h"
 #include "../rancf.h"
-#include "../examples/ex_ale.h"
+#include "../scenes/ex_ale.h"
 #include "ale_fixtures.h"
 #include "rancf_fixtures.h"
 

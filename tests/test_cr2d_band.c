@@ -41,7 +41,7 @@
                       within it: the entry at its new place; beam_init
                       restarts in dense mode; no fixes: constr_jac takes
                       Cq NULL, or writes n ld zeros
-     band_relayout    the sliding beam (examples/ex_sbeam.h) keeps its
+     band_relayout    the sliding beam (scenes/ex_sbeam.h) keeps its
                       banded mode across the re-layout when nodes cross the
                       exit: the order of the new fixes, kl = 8, copied
                       into its vlbe_dae
@@ -52,8 +52,7 @@
    callbacks compute the same sums in the same order, so the float build
    runs the same checks. */
 #include "test_util.h"
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/ex_sbeam.h"
+#include "../scenes/ex_sbeam.h"
 #include "cr2d_fixtures.h"
 
 #include <string.h>
@@ -496,7 +495,7 @@ static void test_band_errors(void **state)
     assert_true(c.bm.order == NULL && c.bm.order_cap == 0 && c.bm.kl == 0 && c.bm.ku == 0);
 }
 
-/* The sliding beam of examples/ex_sbeam.h (the paper's case (b): 14
+/* The sliding beam of scenes/ex_sbeam.h (the paper's case (b): 14
    elements inside, 10 outside), made banded after its first layout: when
    nodes leave the joint (the state moved 1.5 inside elements out) the
    re-layout rebuilds the fixes and the beam keeps the caller's order,

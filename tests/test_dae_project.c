@@ -4,7 +4,7 @@
    cc -std=c99 -Wall -Wextra -Wpedantic ... -O2 tests/test_dae_project.c -lcmocka -lm
 
    Tests
-     pendulum_closest        the pendulum of examples/pendulum.c (M = m I)
+     pendulum_closest        the pendulum of scenes/pendulum.h (M = m I)
                              started 20 % off the circle with a radial
                              velocity: q -> L q / |q| (the closest point of
                              the circle: every Gauss-Newton correction lies
@@ -32,8 +32,7 @@
 #include "test_util.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/pendulum.c"
+#include "../scenes/pendulum.h"
 
 #include <string.h>
 

@@ -46,9 +46,8 @@
 #include "test_util.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/pendulum.c"
-#include "../examples/andrews.c"
+#include "../scenes/pendulum.h"
+#include "../scenes/andrews.h"
 #include "pend_faults.h"
 
 #include <string.h>

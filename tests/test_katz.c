@@ -1,10 +1,10 @@
 /* test_katz.c -- the analytic reference of the spinning-shaft scene
-   (VLBSE scene 4.3; examples/ex_katz.h: Katz 2001, paper section 4.3,
+   (VLBSE scene 4.3; scenes/ex_katz.h: Katz 2001, paper section 4.3,
    eqs. 59-63) checked against independent facts.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 
    ORACLE CHECKS, NOT LIBRARY TESTS.  Nothing here calls vlbe: every test
-   checks examples/ex_katz.h, the exact modal-series solution that the
+   checks scenes/ex_katz.h, the exact modal-series solution that the
    spinning-shaft scene (examples/spinning_shaft.c, tests/test_scenes_shaft.c,
    bench/wp_shaft.c) compares vlbe's ANCF shaft with.  They make that
    comparison rest on a verified reference: a wrong oracle would pass or
@@ -49,7 +49,7 @@
    and justified at each test; VLBE_TEST_REPORT=1 prints the measured
    errors beside them. */
 #include "test_util.h"
-#include "../examples/ex_katz.h"
+#include "../scenes/ex_katz.h"
 
 #define KPI 3.14159265358979323846
 #define KEPS 2.220446049250313e-16 /* double: the reference computes in double */

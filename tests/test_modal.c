@@ -34,9 +34,8 @@
    Set VLBE_TEST_REPORT=1 to print measured errors beside the tolerances. */
 #include "test_util.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/campbell_rotating.c"
-#include "../examples/moving_string.c"
+#include "../scenes/campbell_rotating.h"
+#include "../scenes/moving_string.h"
 
 #define DBL_ONLY()                                                                             \
     do {                                                                                       \

@@ -1,6 +1,6 @@
 /* test_scenes_ale.c -- cmocka suite of the sliding-mass scenes of the planar
    ALE-ANCF element (ale-rancf sections 6.1 and 6.2: examples/falling_beam.c,
-   examples/suspended_beam.c, their model and run loop examples/ex_slide.h)
+   examples/suspended_beam.c, their model and run loop scenes/ex_slide.h)
    and of vlbe_ale_chain_length           -- part of vlbe
                                                    SPDX-License-Identifier: MIT
    cc -std=c99 -Wall -Wextra -Wpedantic ... -O2 tests/test_scenes_ale.c -lcmocka -lm
@@ -36,9 +36,8 @@
 #include "../ancf_ale.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/falling_beam.c"
-#include "../examples/suspended_beam.c"
+#include "../scenes/falling_beam.h"
+#include "../scenes/suspended_beam.h"
 
 #include <float.h>
 #include <stdlib.h>

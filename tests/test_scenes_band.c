@@ -80,15 +80,14 @@
    reason. */
 #include "test_util.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/spin_up.c"
-#include "../examples/falling_beam.c"
-#include "../examples/semicircle.c"
-#include "../examples/moving_string.c"
-#include "../examples/shaft_torsion.c"
-#include "../examples/spinning_shaft.c"
-#include "../examples/sliding_xcheck.c"
-#include "../examples/corot_static.c"
+#include "../scenes/spin_up.h"
+#include "../scenes/falling_beam.h"
+#include "../scenes/semicircle.h"
+#include "../scenes/moving_string.h"
+#include "../scenes/shaft_torsion.h"
+#include "../scenes/spinning_shaft.h"
+#include "../scenes/ex_xcheck.h"
+#include "../scenes/corot_static.h"
 
 #define EPS ((double)VLBE_EPS)
 #define IS_FLOAT ((double)VLBE_EPS > 1e-10)
@@ -178,7 +177,7 @@ static void hist_free(hist *h)
 }
 
 /* ======================================================================= */
-/* spin-up (examples/ex_spin.h; spin_up.c, spin_damping.c)                  */
+/* spin-up (scenes/ex_spin.h; spin_up.c, spin_damping.c)                  */
 /* ======================================================================= */
 static sp_model g_sp;
 
@@ -283,7 +282,7 @@ static void test_spin_cr(void **state)
 }
 
 /* ======================================================================= */
-/* sliding mass with length control (examples/ex_slide.h)                   */
+/* sliding mass with length control (scenes/ex_slide.h)                   */
 /* ======================================================================= */
 /* kappa of the scene's beam: its section, the longest element the length
    control lets through (1.5 L_std) */

@@ -1,6 +1,6 @@
 /* test_scenes_cable.c -- cmocka suite of the long-cable scenes: the hanging
    cable's lateral frequencies against the Bessel closed form and the winch
-   paying out a rope (examples/ex_cable.h, examples/ex_winch.h, the examples
+   paying out a rope (scenes/ex_cable.h, scenes/ex_winch.h, the examples
    hanging_cable.c and winch.c)              -- part of vlbe
                                                    SPDX-License-Identifier: MIT
    cc -std=c99 -Wall -Wextra -Wpedantic ... -O2 tests/test_scenes_cable.c -lcmocka -lm
@@ -28,7 +28,7 @@
 #include "../ancf_ale.h"
 #include "../integrators.h"
 
-#include "../examples/ex_winch.h"
+#include "../scenes/ex_winch.h"
 
 #include <float.h>
 #include <stdlib.h>
@@ -225,7 +225,7 @@ static void hc_eig(int N, int clamped, double *om)
 }
 #endif
 
-/* 16 elements (examples/ex_cable.h: L = 10 m, EA = 1e7 N, EI = 1e-7 N m^2,
+/* 16 elements (scenes/ex_cable.h: L = 10 m, EA = 1e7 N, EI = 1e-7 N m^2,
    pinned), modes 1-3 measured from the time history, e = omega / omega_k -
    1 against the closed form, corr_k = the first-order extension and bending
    corrections (-2.8e-6, -1.8e-6, -1.7e-6 (m:hc_corr3); bending below 1e-8;
@@ -348,7 +348,7 @@ static void test_clamped_top(void **state)
 /* 4. the winch                                                              */
 /* ======================================================================= */
 
-/* examples/ex_winch.h's scene for 3 s: 10 m of rope (20 elements of 0.5 m),
+/* scenes/ex_winch.h's scene for 3 s: 10 m of rope (20 elements of 0.5 m),
    paid out at 0.9 m/s: 2.7 m, 5 splits.  Facts asserted (header comment of
    ex_winch.h):
    - the element count is N0 + floor(V t / Lstd + 1/2) after every step

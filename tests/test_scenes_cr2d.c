@@ -29,8 +29,7 @@
 #include "../corot2d.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/corot_static.c"
+#include "../scenes/corot_static.h"
 
 #include <float.h>
 #include <stdlib.h>

@@ -36,8 +36,7 @@
    Set VLBE_TEST_REPORT=1 to print measured errors beside the tolerances. */
 #include "test_util.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/moving_string.c"
+#include "../scenes/moving_string.h"
 
 #include <float.h>
 

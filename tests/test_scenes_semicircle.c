@@ -1,6 +1,6 @@
 /* test_scenes_semicircle.c -- cmocka suite of the semicircle scene of
    ale-rancf section 6.3 (examples/semicircle.c, its model and run loop
-   examples/ex_slide.h with cfg.R > 0)              -- part of vlbe
+   scenes/ex_slide.h with cfg.R > 0)              -- part of vlbe
                                                    SPDX-License-Identifier: MIT
    cc -std=c99 -Wall -Wextra -Wpedantic ... -O2 tests/test_scenes_semicircle.c -lcmocka -lm
 
@@ -26,8 +26,7 @@
 #include "../ancf_ale.h"
 #include "../integrators.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/semicircle.c"
+#include "../scenes/semicircle.h"
 
 #include <float.h>
 #include <stdlib.h>

@@ -87,8 +87,7 @@
    Float: the scene's time runs fail (VLBE_ENOCONV: see SHAFT_DOUBLE_ONLY)
    and are skipped; the chain checks and the frozen frequencies run. */
 #include "test_util.h"
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/spinning_shaft.c"
+#include "../scenes/spinning_shaft.h"
 
 #define EPS ((double)VLBE_EPS)
 #define FD_ERR (cbrt(EPS) * cbrt(EPS))

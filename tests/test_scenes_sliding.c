@@ -1,5 +1,5 @@
 /* test_scenes_sliding.c -- regression tests of the sliding-beam scene of
-   the co-rotational issue (Hsiao et al. section 3; examples/ex_sbeam.h,
+   the co-rotational issue (Hsiao et al. section 3; scenes/ex_sbeam.h,
    examples/sliding_beam.c) against closed forms.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 
@@ -32,8 +32,7 @@
    1.3e-5 max|A|): static_start asserts that this is reported as
    VLBE_ESINGULAR, and the dynamic tests skip in float. */
 #include "test_util.h"
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/sliding_beam.c"
+#include "../scenes/sliding_beam.h"
 
 #define EPS ((double)VLBE_EPS)
 

@@ -1,5 +1,5 @@
 /* test_scenes_spin.c -- regression tests of the spin-up scene (rotating-beam
-   scenes 1 and 2; examples/ex_spin.h, examples/spin_up.c): the nonlinear
+   scenes 1 and 2; scenes/ex_spin.h, examples/spin_up.c): the nonlinear
    co-rotational beam, the nonlinear ANCF beam and the LINEAR element in
    the floating hub frame.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
@@ -29,8 +29,7 @@
    error that test resolves (a float run of it gives d(16) = 6.2e-4, 2.8e-4
    in double, and d(8)/d(16) = 1.25 where it asks for more than 2). */
 #include "test_util.h"
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/spin_up.c"
+#include "../scenes/spin_up.h"
 
 static sp_model g_m;
 

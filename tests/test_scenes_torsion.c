@@ -36,8 +36,7 @@
    Set VLBE_TEST_REPORT=1 to print the measured errors beside their
    tolerances. */
 #include "test_util.h"
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/shaft_torsion.c"
+#include "../scenes/shaft_torsion.h"
 
 #include <float.h>
 

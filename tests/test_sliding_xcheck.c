@@ -1,6 +1,6 @@
 /* test_sliding_xcheck.c -- cmocka suite of the sliding-beam cross-check
    (examples/sliding_xcheck.c; the ALE-ANCF and assumed-modes models in
-   examples/ex_xcheck.h, the co-rotational one in examples/ex_sbeam.h)
+   scenes/ex_xcheck.h, the co-rotational one in scenes/ex_sbeam.h)
    -- part of vlbe                                 SPDX-License-Identifier: MIT
    cc -std=c99 -Wall -Wextra -Wpedantic ... -O2 tests/test_sliding_xcheck.c -lcmocka -lm
 
@@ -36,8 +36,7 @@
    every build.  Set VLBE_TEST_REPORT=1 to print the measured numbers. */
 #include "test_util.h"
 
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/sliding_xcheck.c"
+#include "../scenes/ex_xcheck.h"
 
 #include <string.h>
 

@@ -1,5 +1,5 @@
 /* test_spin_damping.c -- damping on relative coordinates in the spin-up
-   scene (rotating-beam scene 3; examples/spin_damping.c, examples/ex_spin.h
+   scene (rotating-beam scene 3; examples/spin_damping.c, scenes/ex_spin.h
    SP_ANCF): Kelvin-Voigt damping from the strain rates against damping on
    the absolute nodal velocities, Q_d = -(abs_a M + abs_b K0) v.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
@@ -32,8 +32,7 @@
    tolerances follow the precision).  Measured errors against tolerances:
    VLBE_TEST_REPORT=1. */
 #include "test_util.h"
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../examples/spin_damping.c"
+#include "../scenes/spin_damping.h"
 
 #define TEPS ((double)VLBE_EPS) /* the working precision, as a double */
 

@@ -1,5 +1,5 @@
 /* m4_bdf.c -- BDF of integrators.h on the Cortex-M4F (make check-m4): the
-   index-3 Cartesian pendulum of examples/pendulum.c (mass 1 kg, rod 1 m,
+   index-3 Cartesian pendulum of scenes/pendulum.h (mass 1 kg, rod 1 m,
    g = 9.81, released at rest from the horizontal; C = (x^2 + y^2 - L^2)/2,
    analytic Jacobians) to t = 1 s, twice: fixed steps of 1/128 s (orders
    1..5), printing q, v, lambda, mu at t = 0.25, 0.5, 0.75, 1 (step and
@@ -9,9 +9,8 @@
    -- part of vlbe                                  SPDX-License-Identifier: MIT */
 #include "../../integrators.h"
 #include "m4_out.h"
-/* the problem: examples/pendulum.c's callbacks (its runs stay out) */
-#define VLBE_EXAMPLE_NO_MAIN
-#include "../../examples/pendulum.c"
+/* the problem: the callbacks of scenes/pendulum.h */
+#include "../../scenes/pendulum.h"
 
 #define WORK_CAP 1024
 #define IWORK_CAP 64

@@ -60,7 +60,7 @@
      material length) plus m, against m + rhoA (L0 + V t);
    - the number of elements against ne(t) above.
 
-   Storage: cfg.banded goes to ex_cable_wire (examples/ex_cable.h). */
+   Storage: cfg.banded goes to ex_cable_wire (scenes/ex_cable.h). */
 #ifndef VLBE_EX_WINCH_H
 #define VLBE_EX_WINCH_H
 

@@ -5,8 +5,9 @@
 
    Reference code for the examples and tests: plain double (not vlbe_real),
    <math.h> only, no complex.h (complex numbers are explicit real pairs), no
-   allocation, no printing.  Include it beside the other examples headers
-   with #include "ex_katz.h"; it compiles as C99 and as C++.
+   allocation, no printing.  Include it as the other scene headers, relative
+   to the file: #include "../scenes/ex_katz.h" from examples/ or tests/; it
+   compiles as C99 and as C++.
 
    ex_katz k;
    double u1, u2, T, us;

@@ -1,16 +1,18 @@
-/* clamped_chain.h -- the clamped chain of the scaling benchmarks (bench_scale.c,
-   wp_chain.c): a planar ALE-ANCF chain, Lagrangian nodes, 10 m, steel-like
-   section (rhoA 7.85 kg/m, EA 2.1e8 N, EI 1.75e3 N m^2), gravity through
-   the distributed load, clamped at node 0 (VLBE_ALE_CON_POS +
-   VLBE_ALE_CON_SLOPE), straight and at rest at t = 0; HHT-alpha -0.05 with
-   the default Newton settings.  Variants: CC_DENSE, CC_BAND (banded,
-   vlbe_ale_chain_band, the same Newton settings), CC_BAND_REUSE (banded,
-   vlbe_hht_params.reuse_max = 2: a stale iteration matrix refreshed when
-   it needs more than two further iterations).
+/* clamped_chain.h -- the clamped chain of the scaling benchmarks
+   (bench/bench_scale.c, bench/wp_chain.c): a planar ALE-ANCF chain,
+   Lagrangian nodes, 10 m, steel-like section (rhoA 7.85 kg/m, EA 2.1e8 N,
+   EI 1.75e3 N m^2), gravity through the distributed load, clamped at node
+   0 (VLBE_ALE_CON_POS + VLBE_ALE_CON_SLOPE), straight and at rest at
+   t = 0; HHT-alpha -0.05 with the default Newton settings.  Variants:
+   CC_DENSE, CC_BAND (banded, vlbe_ale_chain_band, the same Newton
+   settings), CC_BAND_REUSE (banded, vlbe_hht_params.reuse_max = 2: a stale
+   iteration matrix refreshed when it needs more than two further
+   iterations).
    -- part of vlbe                                  SPDX-License-Identifier: MIT
-   Include after bench_util.h. */
-#ifndef VLBE_BENCH_CLAMPED_CHAIN_H
-#define VLBE_BENCH_CLAMPED_CHAIN_H
+   Include after bench/bench_util.h (its timer benchu_now and
+   benchu_cmp_double). */
+#ifndef VLBE_SCENE_CLAMPED_CHAIN_H
+#define VLBE_SCENE_CLAMPED_CHAIN_H
 
 #include "../ancf_ale.h"
 #include "../integrators.h"
@@ -149,4 +151,4 @@ static inline double cc_slope(int n, const double *x, const double *y)
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-#endif /* VLBE_BENCH_CLAMPED_CHAIN_H */
+#endif /* VLBE_SCENE_CLAMPED_CHAIN_H */

@@ -1,7 +1,7 @@
 /* ex_cable.h -- the long-cable scenes: a uniform cable hanging under gravity
    (its small lateral oscillations against the Bessel closed form) and the
    wiring of a cable chain into a vlbe_dae, shared by examples/hanging_cable.c,
-   examples/winch.c (examples/ex_winch.h), their test tests/test_scenes_cable.c
+   examples/winch.c (scenes/ex_winch.h), their test tests/test_scenes_cable.c
    and the benchmarks.                             -- part of vlbe
                                                    SPDX-License-Identifier: MIT
 

@@ -1,4 +1,4 @@
-/* ex_xcheck.h -- two models of the sliding beam of examples/ex_sbeam.h
+/* ex_xcheck.h -- two models of the sliding beam of scenes/ex_sbeam.h
    (Hsiao et al. section 3) built independently of the co-rotational one,
    for the cross-check examples/sliding_xcheck.c and its tests: the planar
    ALE-ANCF chain of ancf_ale.h (joint = constraints at a moving material

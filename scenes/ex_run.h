@@ -3,11 +3,12 @@
    and after every accepted step, counters, CPU time and the end state.
    -- part of vlbe                                  SPDX-License-Identifier: MIT
 
-   Examples include it with #include "ex_run.h" (it sits beside them), so
-   `cc -O2 examples/x.c -lm` still works from anywhere.  The benchmarks use
-   the same loop with their own workspace (so nothing is allocated inside
-   the timed run) and without an observer.  Otherwise the workspace is
-   malloc'ed here: examples may allocate, the headers never do. */
+   Examples include it with #include "../scenes/ex_run.h" (relative to the
+   file), so `cc -O2 examples/x.c -lm` still works from anywhere.  The
+   benchmarks use the same loop with their own workspace (so nothing is
+   allocated inside the timed run) and without an observer.  Otherwise the
+   workspace is malloc'ed here: scenes and examples may allocate, the
+   library headers never do. */
 #ifndef VLBE_EX_RUN_H
 #define VLBE_EX_RUN_H
 
@@ -28,7 +29,7 @@ typedef vlbe_status (*ex_observer)(void *ctx, double t, const vlbe_real *q, cons
 
 /* BDF: the smallest step an example's run may average, relative to t_end,
    when bdf->h_min does not set one.  The examples' stiffest BDF run, the
-   undamped ANCF beam of examples/ex_spin.h at order 5, steps at 2e-5 s over
+   undamped ANCF beam of scenes/ex_spin.h at order 5, steps at 2e-5 s over
    20 s, 1e-6 of the run; ten times below that a run is stuck, not resolving
    anything.  ex_run stops a BDF run after t_end / h_floor accepted steps
    (plus one per mark and two) with VLBE_ESTEP and a message. */
