@@ -5965,7 +5965,7 @@ VLBE_INLINE vlbe_status vlbe__ale_merge_aux(const vlbe_ale_chain *ch, int i, vlb
    merged cubic is the Hermite interpolant of the outer nodes; it differs
    from the two pieces unless they form one cubic, by the interpolation
    error of the removed node (the caller measures the change of positions
-   and energy when it matters; examples/ex_slide.h reports it).  A chain
+   and energy when it matters; scenes/ex_slide.h reports it).  A chain
    with per-element types (vlbe_ale_etype) asks its merge for the merged
    element (rancf.h: weights through the removed node, eqs. 30-38); t is
    the time of q (prescribed material coordinates).  Node i must carry no

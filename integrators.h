@@ -345,7 +345,7 @@ typedef struct vlbe_bdf_params {
                              2.4 s, 2.4e-6) and 14 times more accurate at 1e-3
                              (1.2e-5 in 0.36 s against 1.8e-4 in 0.053 s): its
                              fast motion needs short steps anyway.  On the
-                             examples/ex_spin.h ANCF beam (10 s of spin-up, axial
+                             scenes/ex_spin.h ANCF beam (10 s of spin-up, axial
                              modes up to 3.7e4 rad/s), whose slow motion allows
                              steps of 1e-2 s, order 2 takes 534 to 3388 steps
                              (0.11 to 0.63 s) at rtol 1e-3 to 1e-5 while 4 and 5
@@ -3370,7 +3370,7 @@ VLBE_INLINE void vlbe__bdf_solve(vlbe_bdf *st, vlbe_real *d)
    multipliers): when h changes their BDF values jump by O(h^k) instead of
    O(h^(k+1)) (Petzold 1982).  On a curved spring manifold -- a rotating
    beam, where BDF1's chord velocity has a radial part w_hub^2 R h / 2 --
-   these jumps dominate the plain estimate (examples/ex_spin.h at t = 10 s
+   these jumps dominate the plain estimate (scenes/ex_spin.h at t = 10 s
    after fixed steps of 1e-3 s: a doubled h gives 80 times the estimate of
    the same h at order 1, 220 times at order 2, where h changed by 10 %
    already gives 9 times).  Step changes then cause the rejections that
@@ -3460,7 +3460,7 @@ VLBE_INLINE void vlbe__bdf_restore(vlbe_bdf *st, vlbe_real h, int k, int ns)
    with the structure, the true rate of the iteration passes 1 in the
    stiff directions, and the unconverged corrections accepted on the old
    rate put fixed-step BDF2 (h = 1e-3) on the spin-up scene of
-   examples/ex_spin.h into divergence at t = 2.6 s, and test_bdf.c's
+   scenes/ex_spin.h into divergence at t = 2.6 s, and test_bdf.c's
    spinning spring 3 rad off.)  With a stale cj the correction is scaled
    by 2 / (1 + cj / cj_lu).  Returns VLBE_OK with trial y, y' and
    e = y - y_pred, or ENOCONV / ENONFINITE / ESINGULAR / ECALLBACK. */

@@ -44,7 +44,7 @@ static inline double cr_unit(void) { return sqrt(CR_EI / (CR_RHOA * CR_L * CR_L 
 
 /* Pq = the components of q that G^2 acts on (x and y of every vector),
    times -1/Om^2 G^2 = +1: the centrifugal load is Om^2 M Pq. */
-static void cr_proj(const cr_model *c, const vlbe_real *q, vlbe_real *Pq)
+static inline void cr_proj(const cr_model *c, const vlbe_real *q, vlbe_real *Pq)
 {
     int i, k;
     for (i = 0; i < c->n; ++i) Pq[i] = 0;
@@ -58,7 +58,8 @@ static void cr_proj(const cr_model *c, const vlbe_real *q, vlbe_real *Pq)
    replaced: its user stays the chain (every other callback is the
    chain's), whose own pointer (ch.user, for pfun / afun, unused here)
    leads to the model. */
-static int cr_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+static inline int cr_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                           vlbe_real *Q)
 {
     cr_model *c = (cr_model *)((vlbe_ale_chain *)u)->user;
     int rc = c->sys.force(c->sys.user, t, q, v, Q), i;
@@ -70,8 +71,8 @@ static int cr_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v
     return 0;
 }
 
-static int cr_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
-                        vlbe_real *K, vlbe_real *D)
+static inline int cr_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                               vlbe_real *K, vlbe_real *D)
 {
     cr_model *c = (cr_model *)((vlbe_ale_chain *)u)->user;
     int rc = c->sys.force_jac(c->sys.user, t, q, v, K, D), i, k;
@@ -80,7 +81,8 @@ static int cr_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_rea
     for (i = 0; i < c->n; ++i) /* d(Om^2 M P q)/dq = Om^2 M P */
         for (k = 0; k < 2 * (c->ne + 1); ++k) {
             const int j = c->vec[k];
-            K[(size_t)i * (size_t)c->n + (size_t)j] += c->Om * c->Om * c->M[(size_t)i * (size_t)c->n + (size_t)j];
+            K[(size_t)i * (size_t)c->n + (size_t)j] +=
+                c->Om * c->Om * c->M[(size_t)i * (size_t)c->n + (size_t)j];
             K[(size_t)i * (size_t)c->n + (size_t)j + 1] +=
                 c->Om * c->Om * c->M[(size_t)i * (size_t)c->n + (size_t)j + 1];
         }
@@ -90,7 +92,7 @@ static int cr_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_rea
 /* ne elements, planar (d = 2) or 3D without spin angle (d = 3), along x
    from the origin, clamped there; the axial stiffness is eaf EA (eaf = 1:
    the scene's). */
-static int cr_build(cr_model *c, int ne, int d, double eaf)
+static inline int cr_build(cr_model *c, int ne, int d, double eaf)
 {
     vlbe_ale_con k;
     int i;
@@ -142,8 +144,8 @@ static int cr_build(cr_model *c, int ne, int d, double eaf)
    the straight unstressed beam with lambda = 0): the lowest CR_NW lag and
    flap frequencies (flap: 3D only, else -1); *remax (may be NULL) the
    largest real part of the eigenvalues (> 0: unstable). */
-static vlbe_status cr_freqs(cr_model *c, vlbe_real Om, const vlbe_real *q, const vlbe_real *lam,
-                            double *lag, double *flap, double *remax)
+static inline vlbe_status cr_freqs(cr_model *c, vlbe_real Om, const vlbe_real *q,
+                                   const vlbe_real *lam, double *lag, double *flap, double *remax)
 {
     const int n = c->n;
     vlbe_lin_frame fr;
@@ -240,8 +242,8 @@ done:
    by continuation (stressed) or the straight unstressed beam; lag and
    flap frequencies per speed, remax (may be NULL) the largest real part
    of the eigenvalues per speed, the CPU time of the sweep. */
-static int cr_sweep(int ne, int d, double eaf, int stressed, int nom, const double *Om,
-                    double (*lag)[CR_NW], double (*flap)[CR_NW], double *remax, double *cpu)
+static inline int cr_sweep(int ne, int d, double eaf, int stressed, int nom, const double *Om,
+                           double (*lag)[CR_NW], double (*flap)[CR_NW], double *remax, double *cpu)
 {
     cr_model *c = (cr_model *)malloc(sizeof *c);
     vlbe_static_params sp;

@@ -78,7 +78,7 @@ typedef struct ss_err {
 
 /* Material coordinate p and rate p' of node i of the paper's mesh (ne
    elements, ne/2 on either side) with the load at pl moving at v. */
-static void ss_mesh(int ne, double l, double pl, double v, int i, double *p, double *pd)
+static inline void ss_mesh(int ne, double l, double pl, double v, int i, double *p, double *pd)
 {
     const int half = ne / 2;
     if (i <= half) {
@@ -91,7 +91,7 @@ static void ss_mesh(int ne, double l, double pl, double v, int i, double *p, dou
 }
 
 /* p, p', p'' of node i on the chain's clock, which starts at t0 */
-static int ss_pfun(void *user, int i, vlbe_real t, vlbe_real *p3)
+static inline int ss_pfun(void *user, int i, vlbe_real t, vlbe_real *p3)
 {
     const ss_scene *s = (const ss_scene *)user;
     double p, pd;
@@ -105,7 +105,8 @@ static int ss_pfun(void *user, int i, vlbe_real t, vlbe_real *p3)
 /* chain force plus the turning load: on the load node, or (fixed mesh)
    S(z)^T F at the load's material point z = v t (constant in q: no
    Jacobian) */
-static int ss_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
+static inline int ss_force(void *user, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
+                           vlbe_real *Q)
 {
     ss_scene *s = (ss_scene *)user;
     const double tt = (double)t + s->t0, w = s->ref.omega * tt; /* chain clock starts at t0 */
@@ -155,8 +156,8 @@ SS_FWD(ss_constr_acc, (void *u, vlbe_real t, const vlbe_real *q, const vlbe_real
 /* Sets up case (a, kw) with ne elements (even, <= SS_NE_MAX), the load
    from z0 l; q0, v0 (the chain's n; may be NULL) the start state at t0:
    the straight shaft at rest, spinning at Omega.  0 on success. */
-static int ss_setup(ss_scene *s, double a, double kw, int ne, int fixed, double z0,
-                    vlbe_real *q0, vlbe_real *v0)
+static inline int ss_setup(ss_scene *s, double a, double kw, int ne, int fixed, double z0,
+                           vlbe_real *q0, vlbe_real *v0)
 {
     vlbe_ale3_mat mat;
     vlbe_ale_con c;
@@ -233,8 +234,8 @@ static inline int ss_band(ss_scene *s)
 
 /* the observer: samples of the load point and of material midspan, every
    s->every steps and at the end */
-static vlbe_status ss_obs(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
-                          const vlbe_real *lam)
+static inline vlbe_status ss_obs(void *ctx, double t, const vlbe_real *q, const vlbe_real *v,
+                                 const vlbe_real *lam)
 {
     ss_scene *s = (ss_scene *)ctx;
     vlbe_real r[3], rl[3];
@@ -260,7 +261,8 @@ static vlbe_status ss_obs(void *ctx, double t, const vlbe_real *q, const vlbe_re
 }
 
 /* (U - U_exact) / U_s of the samples against ref, into e[k][i] */
-static void ss_errors(const ss_scene *s, const ex_katz *ref, int nmodes, double (*e)[SS_NSAMP_MAX])
+static inline void ss_errors(const ss_scene *s, const ex_katz *ref, int nmodes,
+                             double (*e)[SS_NSAMP_MAX])
 {
     const double us = ex_katz_us(ref);
     int i, k;
@@ -274,7 +276,7 @@ static void ss_errors(const ss_scene *s, const ex_katz *ref, int nmodes, double 
 }
 
 /* the largest errors of e[k][0 .. ns-1] and where they occur */
-static void ss_maxerr(const ss_scene *s, double (*e)[SS_NSAMP_MAX], ss_err *m)
+static inline void ss_maxerr(const ss_scene *s, double (*e)[SS_NSAMP_MAX], ss_err *m)
 {
     int i, k;
     for (k = 0; k < 4; ++k) {
@@ -294,9 +296,9 @@ static void ss_maxerr(const ss_scene *s, double (*e)[SS_NSAMP_MAX], ss_err *m)
    without the rhoJ terms (s->ref0), both from nmodes modes; the error
    history against eq. 59 is left in s->e, the samples in s; out: the
    run's counters.  Returns the run status. */
-static vlbe_status ss_integrate(ss_scene *s, const vlbe_real *q0, const vlbe_real *v0,
-                                long nsteps, double alpha, int nmodes, ss_err *err, ss_err *err0,
-                                ex_run_out *out)
+static inline vlbe_status ss_integrate(ss_scene *s, const vlbe_real *q0, const vlbe_real *v0,
+                                       long nsteps, double alpha, int nmodes, ss_err *err,
+                                       ss_err *err0, ex_run_out *out)
 {
     vlbe_hht_params par;
     ex_method m;
@@ -329,9 +331,9 @@ static vlbe_status ss_integrate(ss_scene *s, const vlbe_real *q0, const vlbe_rea
 
 /* Runs case (a, kw) with ne elements (fixed: the fixed mesh), the load from
    z0 l to (1 - z0) l, the shaft starting at rest: ss_setup, ss_integrate. */
-static vlbe_status ss_run(ss_scene *s, double a, double kw, int ne, int fixed, double z0,
-                          long nsteps, double alpha, int nmodes, ss_err *err, ss_err *err0,
-                          ex_run_out *out)
+static inline vlbe_status ss_run(ss_scene *s, double a, double kw, int ne, int fixed, double z0,
+                                 long nsteps, double alpha, int nmodes, ss_err *err, ss_err *err0,
+                                 ex_run_out *out)
 {
     vlbe_real q0[SS_NE_MAX * 8 + 8], v0[SS_NE_MAX * 8 + 8];
     if (ss_setup(s, a, kw, ne, fixed, z0, q0, v0)) return VLBE_EARG;
@@ -396,7 +398,7 @@ static inline void ss_split(const ss_scene *s, int k, double cyc, double *lo, do
    nodes fixed at their material points, the straight shaft at rest.  M
    and K = -dQ/dq of the chain (n x n, the chain's n; s is set up as a
    fixed mesh).  0 on success. */
-static int ss_frozen_mk(ss_scene *s, int ne, double z, vlbe_real *M, vlbe_real *K)
+static inline int ss_frozen_mk(ss_scene *s, int ne, double z, vlbe_real *M, vlbe_real *K)
 {
     const vlbe_real r0[3] = {0, 0, 0}, dir[3] = {0, 0, 1};
     vlbe_real q[SS_NE_MAX * 8 + 8], v[SS_NE_MAX * 8 + 8];
@@ -419,7 +421,7 @@ static int ss_frozen_mk(ss_scene *s, int ne, double z, vlbe_real *M, vlbe_real *
 /* The X1 bending coordinates of the frozen chain in s: x, x' of every
    node but x of the two supports (held by the constraints); their
    indices into idx (2 ne of them).  Returns their number. */
-static int ss_bending_dofs(const ss_scene *s, int *idx)
+static inline int ss_bending_dofs(const ss_scene *s, int *idx)
 {
     int i, nb = 0;
     for (i = 0; i <= s->ne; ++i) {
