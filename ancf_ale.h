@@ -151,7 +151,7 @@ API
    vlbe_status vlbe_ale_chain_dae(ch, sys)                  fill a vlbe_dae with them
    vlbe_status vlbe_ale_chain_insert(ch, e, ph, t, q, v, qn, vn)  split element e
    vlbe_status vlbe_ale_chain_remove(ch, i, t, q, v, qn, vn)  merge at node i
-   vlbe_status vlbe_ale_chain_length_control(ch, &s, Lstd, t, q, v, qn, vn, &chg)
+   vlbe_status vlbe_ale_chain_length_control(ch, Lstd, t, q, v, &s, qn, vn, &chg)
 
 REFERENCES
    [R] Z. Ding, B. Ouyang, A variable-length rational finite element based on
@@ -674,10 +674,10 @@ VLBE_API vlbe_status vlbe_ale_chain_insert(vlbe_ale_chain *ch, int e, vlbe_real 
 VLBE_API vlbe_status vlbe_ale_chain_remove(vlbe_ale_chain *ch, int i, vlbe_real t,
                                            const vlbe_real *q, const vlbe_real *v, vlbe_real *qn,
                                            vlbe_real *vn);
-VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slider, vlbe_real Lstd,
-                                                   vlbe_real t, const vlbe_real *q,
-                                                   const vlbe_real *v, vlbe_real *qn,
-                                                   vlbe_real *vn, int *changed);
+VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, vlbe_real Lstd, vlbe_real t,
+                                                   const vlbe_real *q, const vlbe_real *v,
+                                                   int *slider, vlbe_real *qn, vlbe_real *vn,
+                                                   int *changed);
 
 /* ===== implementation =================================================== */
 
@@ -6029,7 +6029,9 @@ VLBE_INLINE int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
 }
 
 /* Length control of a sliding node (Figure 7 of [R]), keeping the two
-   elements next to node *slider between 0.5 and 1.5 Lstd:
+   elements next to node *slider between 0.5 and 1.5 Lstd (arguments: the
+   chain; the inputs Lstd, t, q, v; the node *slider, in and out; the
+   outputs qn, vn, *changed):
    (a) the paper's rule: when the element on one side is longer than
        1.5 Lstd, insert a node at distance Lstd from that element's far node
        (the new element away from the slider has length Lstd) and remove the
@@ -6059,10 +6061,10 @@ VLBE_INLINE int vlbe__ale_removable(const vlbe_ale_chain *ch, int i)
    elements the callbacks refuse); the errors of vlbe_ale_chain_pnode,
    _insert and _remove.  On failure nothing changes: the chain, its nodes,
    constraints and element objects, qn, vn, *slider and *changed. */
-VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, int *slider, vlbe_real Lstd,
-                                                   vlbe_real t, const vlbe_real *q,
-                                                   const vlbe_real *v, vlbe_real *qn,
-                                                   vlbe_real *vn, int *changed)
+VLBE_API vlbe_status vlbe_ale_chain_length_control(vlbe_ale_chain *ch, vlbe_real Lstd, vlbe_real t,
+                                                   const vlbe_real *q, const vlbe_real *v,
+                                                   int *slider, vlbe_real *qn, vlbe_real *vn,
+                                                   int *changed)
 {
     vlbe_real pl[3], ps[3], pr[3], Ll = VLBE_R(0.0), Lr = VLBE_R(0.0), at,
         aux[VLBE_ALE_ETYPE_AUX] = {0};

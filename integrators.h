@@ -132,7 +132,7 @@ API
    size_t vlbe_static_work_len(n, m), vlbe_static_iwork_len(n, m)
    vlbe_status vlbe_dae_static(sys, par, t, q, lam, st, w, lw, iw, liw)  static equilibrium
    void vlbe_hht_params_newmark(p, beta, gamma)           classic Newmark
-   vlbe_status vlbe_hht_params_hht(p, alpha)              HHT-alpha, alpha in [-1/3, 0]
+   vlbe_status vlbe_hht_params_alpha(p, alpha)            HHT-alpha, alpha in [-1/3, 0]
    vlbe_status vlbe_hht_params_genalpha(p, rho_inf)       generalized-alpha, rho_inf in [0, 1]
    size_t vlbe_hht_work_len(n, m), vlbe_hht_iwork_len(n, m)
    vlbe_status vlbe_hht_init(st, sys, par, t0, q0, v0, w, lw, iw, liw)
@@ -458,7 +458,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
                                      int *iwork, size_t iwork_len);
 
 VLBE_API void vlbe_hht_params_newmark(vlbe_hht_params *p, vlbe_real beta, vlbe_real gamma);
-VLBE_API vlbe_status vlbe_hht_params_hht(vlbe_hht_params *p, vlbe_real alpha);
+VLBE_API vlbe_status vlbe_hht_params_alpha(vlbe_hht_params *p, vlbe_real alpha);
 VLBE_API vlbe_status vlbe_hht_params_genalpha(vlbe_hht_params *p, vlbe_real rho_inf);
 VLBE_API size_t vlbe_hht_work_len(int n, int m);
 VLBE_API size_t vlbe_hht_iwork_len(int n, int m);
@@ -2282,7 +2282,7 @@ VLBE_API void vlbe_hht_params_newmark(vlbe_hht_params *p, vlbe_real beta, vlbe_r
 /* HHT-alpha (Hilber-Hughes-Taylor) with alpha in [-1/3, 0], expressed in the
    generalized-alpha family: alpha_m = 0, alpha_f = -alpha, gamma = 1/2 - alpha,
    beta = (1 - alpha)^2 / 4.  Spectral radius at infinity (1 + alpha)/(1 - alpha). */
-VLBE_API vlbe_status vlbe_hht_params_hht(vlbe_hht_params *p, vlbe_real alpha)
+VLBE_API vlbe_status vlbe_hht_params_alpha(vlbe_hht_params *p, vlbe_real alpha)
 {
     VLBE_ASSERT(p != NULL);
     if (!(alpha >= -VLBE_R(1.0) / VLBE_R(3.0) && alpha <= VLBE_R(0.0))) return VLBE_EARG;

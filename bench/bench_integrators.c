@@ -223,7 +223,7 @@ int main(int argc, char **argv)
         j->h = 1e-3;
         j->nsteps = (long)floor(j->t_end / j->h + 0.5);
         j->min_samples = 11;
-        vlbe_hht_params_hht(&j->hp, VLBE_R(-0.05));
+        vlbe_hht_params_alpha(&j->hp, VLBE_R(-0.05));
     }
     jobs[0].name = "HHT-a -0.05, analytic Jacobians";
     jobs[1].name = "HHT-a, analytic, Newton tol 1e-12";

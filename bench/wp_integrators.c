@@ -87,7 +87,7 @@ static ex_method g_ws; /* workspace of all runs (ws_alloc) */
 
 static void fam_params(int fam, vlbe_hht_params *par)
 {
-    if (fam == FAM_HHT) vlbe_hht_params_hht(par, VLBE_R(-0.05));
+    if (fam == FAM_HHT) vlbe_hht_params_alpha(par, VLBE_R(-0.05));
     else if (fam == FAM_GENA) vlbe_hht_params_genalpha(par, VLBE_R(0.8));
     else vlbe_hht_params_newmark(par, VLBE_R(0.25), VLBE_R(0.5));
 }

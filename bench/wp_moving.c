@@ -182,7 +182,7 @@ static double run_once(int var, int ne, int bend, double x, point *pt)
         f = bdf_freq_run(ne, bend, x, BDF_DT_OUT, T_END, &pt->st, &pt->status);
     } else {
         if (var == V_GA) vlbe_hht_params_genalpha(&par, VLBE_R(0.9));
-        else vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+        else vlbe_hht_params_alpha(&par, VLBE_R(-0.05));
         f = ms_freq_run(ne, bend, x, T_END, &par, NULL, &pt->st, NULL);
         pt->status = f > 0.0 ? VLBE_OK : VLBE_ECALLBACK; /* ms_freq_run gives no status */
     }

@@ -40,7 +40,7 @@ int main(void)
     TRY(vlbe_ale_chain_layout(&ch));             /* coordinates: ch.n, equations: ch.m */
     TRY(vlbe_ale_chain_dae(&ch, &sys));
     vlbe_ale_chain_straight(&ch, r0, dir, q0);   /* straight, at rest */
-    TRY(vlbe_hht_params_hht(&par, VLBE_R(-0.05)));
+    TRY(vlbe_hht_params_alpha(&par, VLBE_R(-0.05)));
     TRY(vlbe_hht_init(&hht, &sys, &par, 0, q0, v0, work, 4096, iwork, 64));
     for (i = 1; i <= 1000; ++i) {                /* 1 s in steps of 1 ms */
         TRY(vlbe_hht_step(&hht, VLBE_R(1e-3)));

@@ -42,7 +42,7 @@ int main(void)
             vlbe_hht_params par;
             pend_result r;
             double err;
-            if (im == 0) vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+            if (im == 0) vlbe_hht_params_alpha(&par, VLBE_R(-0.05));
             else if (im == 1) vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
             else vlbe_hht_params_newmark(&par, VLBE_R(0.25), VLBE_R(0.5));
 #ifndef VLBE_USE_FLOAT

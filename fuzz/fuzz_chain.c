@@ -177,8 +177,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             fz_snap(&changed, sizeof changed, "changed");
             fz_snap(&slider, sizeof slider, "slider");
             fz_note("vlbe_ale_chain_length_control(slider=%d, nn=%d, Lstd=%g)", slider, nn, (double)Lstd);
-            st = vlbe_ale_chain_length_control(&ch, &slider, Lstd, t, q, v, qn, vn, &changed);
-            if (st == VLBE_OK) FUZZ_CHECK(changed >= 0 && changed <= 3, "length_control: *changed not 0..3");
+            st = vlbe_ale_chain_length_control(&ch, Lstd, t, q, v, &slider, qn, vn, &changed);
+            if (st == VLBE_OK)
+                FUZZ_CHECK(changed >= 0 && changed <= 3, "length_control: *changed not 0..3");
         }
         break;
     case 5:

@@ -545,7 +545,7 @@ static inline vlbe_status andr_run_bdf(double rtol, andr_result *res)
    defaults the Newton errors of 1e4..1e5 steps add up to about 1e-6. */
 static inline void andr_params_for(int method, vlbe_hht_params *par)
 {
-    if (method == 0) vlbe_hht_params_hht(par, VLBE_R(-0.05));
+    if (method == 0) vlbe_hht_params_alpha(par, VLBE_R(-0.05));
     else if (method == 1) vlbe_hht_params_genalpha(par, VLBE_R(0.8));
     else vlbe_hht_params_newmark(par, VLBE_R(0.25), VLBE_R(0.5));
 #ifndef VLBE_USE_FLOAT

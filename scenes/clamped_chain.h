@@ -90,7 +90,7 @@ static inline int cc_init(cc_scene *s, int ne, int variant)
     s->v0 = (vlbe_real *)calloc((size_t)s->ch.n, sizeof *s->v0);
     if (!s->w || !s->iw || !s->q0 || !s->v0) return -1;
     vlbe_ale_chain_straight(&s->ch, r0, dir, s->q0);
-    if (vlbe_hht_params_hht(&par, VLBE_R(-0.05))) return -1;
+    if (vlbe_hht_params_alpha(&par, VLBE_R(-0.05))) return -1;
     par.reuse_max = variant == CC_BAND_REUSE ? 2 : 0;
     return vlbe_hht_init(&s->st, &s->sys, &par, 0, s->q0, s->v0, s->w, s->lw, s->iw, s->liw) ? -1
                                                                                             : 0;

@@ -612,7 +612,7 @@ static inline ex_cable_freq_out ex_cable_freq(ex_cable *m, const vlbe_real *qs, 
     }
     ex_cable_proj(m, om, c);
     ex_cable_mode_rates(m, om, run->amp, v0);
-    if ((r.status = vlbe_hht_params_hht(&par, (vlbe_real)run->alpha)) != VLBE_OK) {
+    if ((r.status = vlbe_hht_params_alpha(&par, (vlbe_real)run->alpha)) != VLBE_OK) {
         free(c);
         return r;
     }

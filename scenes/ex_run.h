@@ -77,7 +77,7 @@ static inline vlbe_status ex_hht_pick(vlbe_hht_params *par, double alpha, double
         vlbe_hht_params_newmark(par, VLBE_R(0.25), VLBE_R(0.5));
         return VLBE_OK;
     }
-    return vlbe_hht_params_hht(par, (vlbe_real)alpha);
+    return vlbe_hht_params_alpha(par, (vlbe_real)alpha);
 }
 
 /* y' = f(t, y) for ex_rk4_step: dy (n) from (t, y), ctx the caller's */

@@ -513,7 +513,7 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
     if (!m || !q || !w || !iw || ex_slide_build(m, c, q, v)) goto done;
     Eref = res.E0 = ex_slide_energy(&m->ch, 0, q, v, &res.T_max);
     if (hist && hist->n < hist->cap) ex_slide_record(m, c, 0.0, q, v, res.E0, hist);
-    vlbe_hht_params_hht(&par, (vlbe_real)c->alpha);
+    vlbe_hht_params_alpha(&par, (vlbe_real)c->alpha);
     par.max_halvings = c->halvings;
     res.status = vlbe_hht_init(&st, &m->sys, &par, 0, q, v, w, lw, iw, liw);
     while (res.status == VLBE_OK && t < c->t_end - 0.5 * c->h) {
@@ -557,8 +557,8 @@ static inline ex_slide_out ex_slide_run(const ex_slide_cfg *c, ex_slide_hist *hi
             c1 = clock();
             vlbe_vec_copy(m->ch.n, st.q, q);
             vlbe_vec_copy(m->ch.n, st.v, v);
-            res.status = vlbe_ale_chain_length_control(&m->ch, &m->slider, (vlbe_real)m->Lstd,
-                                                       st.t, q, v, qn, vn, &changed);
+            res.status = vlbe_ale_chain_length_control(&m->ch, (vlbe_real)m->Lstd, st.t, q, v,
+                                                       &m->slider, qn, vn, &changed);
             res.cpu_lc += (double)(clock() - c1) / CLOCKS_PER_SEC;
             if (res.status == VLBE_OK && changed) {
                 const double jump = ex_slide_energy(&m->ch, st.t, qn, vn, NULL) - E;

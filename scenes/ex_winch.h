@@ -340,7 +340,7 @@ static inline ex_winch_out ex_winch_run(const ex_winch_cfg *c, ex_winch_hist *hi
     iw = (int *)malloc(liw * sizeof *iw);
     if (!w || !iw) goto done;
     r.ne0 = m->ch.nn - 1;
-    if ((r.status = vlbe_hht_params_hht(&par, (vlbe_real)c->alpha)) != VLBE_OK) goto done;
+    if ((r.status = vlbe_hht_params_alpha(&par, (vlbe_real)c->alpha)) != VLBE_OK) goto done;
     r.status = vlbe_hht_init(&st, &m->sys, &par, VLBE_R(0.0), q, v, w, lw, iw, liw);
     E0 = ex_winch_energy(m, VLBE_R(0.0), q, v);
     P_prev = ex_winch_inflow(m, VLBE_R(0.0), q, v);

@@ -151,7 +151,7 @@ typedef struct hht_run {
 
 static void hht_alloc(hht_run *h, int halvings)
 {
-    assert_int_equal(vlbe_hht_params_hht(&h->par, VLBE_R(-0.1)), VLBE_OK);
+    assert_int_equal(vlbe_hht_params_alpha(&h->par, VLBE_R(-0.1)), VLBE_OK);
     h->par.max_halvings = halvings;
     h->lw = vlbe_hht_work_len(N_MAX, M_MAX);
     h->liw = vlbe_hht_iwork_len(N_MAX, M_MAX);
@@ -2410,7 +2410,7 @@ static void lc_unit(const lc_case *k, const char *key)
     S0 = chain_scale(&c.ch, 0, q, &l, NULL);
     chain_sample(&c.ch, 0, q, NPTS, sample_r0, sample_rp0);
     for (i = 0; i < N_MAX; ++i) qn[i] = vn[i] = VLBE_R(7.0);
-    assert_int_equal(vlbe_ale_chain_length_control(&c.ch, &s, Lstd, 0, q, v, qn, vn, &changed),
+    assert_int_equal(vlbe_ale_chain_length_control(&c.ch, Lstd, 0, q, v, &s, qn, vn, &changed),
                      VLBE_OK);
     assert_int_equal(changed, k->changed);
     assert_int_equal(s, k->slider_new);
@@ -2555,8 +2555,8 @@ static void lc_run(int control, lc_result *r)
             int changed;
             vlbe_vec_copy(c.ch.n, h.hs.q, q);
             vlbe_vec_copy(c.ch.n, h.hs.v, v);
-            assert_int_equal(vlbe_ale_chain_length_control(&c.ch, &slider, (vlbe_real)LC_LSTD, t,
-                                                           q, v, qn, vn, &changed),
+            assert_int_equal(vlbe_ale_chain_length_control(&c.ch, (vlbe_real)LC_LSTD, t, q, v,
+                                                           &slider, qn, vn, &changed),
                              VLBE_OK);
             assert_int_equal(c.node[slider].pmode, VLBE_ALE_PFREE);
             if (changed) {

@@ -608,7 +608,7 @@ static void test_relayout(void **state)
     bstate_make(ch, 66, &s_op);
     s = 3;
     changed = -1;
-    assert_int_equal(vlbe_ale_chain_length_control(ch, &s, VLBE_R(0.25), s_op.t, s_op.q, s_op.v, qn,
+    assert_int_equal(vlbe_ale_chain_length_control(ch, VLBE_R(0.25), s_op.t, s_op.q, s_op.v, &s, qn,
                                                    vn, &changed),
                      VLBE_OK);
     assert_int_equal(changed, 2);
@@ -623,7 +623,7 @@ static void test_relayout(void **state)
     bstate_make(ch, 73, &s_op);
     s = 2;
     changed = -1;
-    assert_int_equal(vlbe_ale_chain_length_control(ch, &s, VLBE_R(0.18), s_op.t, s_op.q, s_op.v, qn,
+    assert_int_equal(vlbe_ale_chain_length_control(ch, VLBE_R(0.18), s_op.t, s_op.q, s_op.v, &s, qn,
                                                    vn, &changed),
                      VLBE_OK);
     assert_int_equal(changed, 1);
@@ -689,7 +689,7 @@ static void test_ework(void **state)
     snap_check(&cA, &snap0);
     s = 3;
     changed = -1;
-    assert_int_equal(vlbe_ale_chain_length_control(ch, &s, VLBE_R(0.25), s_op.t, s_op.q, s_op.v, qn,
+    assert_int_equal(vlbe_ale_chain_length_control(ch, VLBE_R(0.25), s_op.t, s_op.q, s_op.v, &s, qn,
                                                    vn, &changed),
                      VLBE_EWORK);
     snap_check(&cA, &snap0);

@@ -519,7 +519,7 @@ static void hht_begin(hht_run *h, const vlbe_dae *sys, const vlbe_real *q)
     vlbe_real v[N_MAX];
     int i;
     for (i = 0; i < sys->n; ++i) v[i] = VLBE_R(0.0);
-    assert_int_equal(vlbe_hht_params_hht(&h->par, VLBE_R(-0.1)), VLBE_OK);
+    assert_int_equal(vlbe_hht_params_alpha(&h->par, VLBE_R(-0.1)), VLBE_OK);
     /* full Newton to the rounding level: both runs stop where their
        increments are rounding, not at a tolerance that their different
        roundings could cross at different iterations */

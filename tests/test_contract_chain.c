@@ -473,8 +473,9 @@ static void test_failed_untouched(void **state)
     fill(NMAX, SENT, vn);
     sl = 2;
     chg = -7;
-    assert_int_equal(vlbe_ale_chain_length_control(&r.ch, &sl, VLBE_R(1.0), 0, r.q, r.v, qn, vn, &chg),
-                     VLBE_ELENGTH);
+    assert_int_equal(
+        vlbe_ale_chain_length_control(&r.ch, VLBE_R(1.0), 0, r.q, r.v, &sl, qn, vn, &chg),
+        VLBE_ELENGTH);
     assert_int_equal(sl, 2);
     assert_int_equal(chg, -7);
     assert_all_equal(NMAX, qn, SENT);
@@ -483,8 +484,8 @@ static void test_failed_untouched(void **state)
     assert_memory_equal(r_els0, r_els, sizeof r_els);
     /* the same with Lmin = 0: done (node 1 removed, the slider follows) */
     r.ch.Lmin = VLBE_R(0.0);
-    assert_int_equal(vlbe_ale_chain_length_control(&r.ch, &sl, VLBE_R(1.0), 0, r.q, r.v, qn, vn, &chg),
-                     VLBE_OK);
+    assert_int_equal(
+        vlbe_ale_chain_length_control(&r.ch, VLBE_R(1.0), 0, r.q, r.v, &sl, qn, vn, &chg), VLBE_OK);
     assert_int_equal(sl, 1);
     assert_int_equal(chg, 3);
     assert_int_equal(r.ch.nn, 4);
@@ -592,7 +593,7 @@ static void test_lc_args(void **state)
         fill(NMAX, SENT, vn);
         sl = 2;
         chg = -7;
-        assert_int_equal(vlbe_ale_chain_length_control(&r.ch, &sl, Lstd, 0, r.q, r.v, qn, vn, &chg),
+        assert_int_equal(vlbe_ale_chain_length_control(&r.ch, Lstd, 0, r.q, r.v, &sl, qn, vn, &chg),
                          VLBE_EARG);
         assert_int_equal(sl, 2);
         assert_int_equal(chg, -7);
@@ -607,8 +608,9 @@ static void test_lc_args(void **state)
         chg = -7;
         snap_take(&r.ch, &s0);
         fill(NMAX, SENT, qn);
-        assert_int_equal(vlbe_ale_chain_length_control(&r.ch, &sl, VLBE_R(1.0), 0, r.q, r.v, qn, vn, &chg),
-                         VLBE_EARG);
+        assert_int_equal(
+            vlbe_ale_chain_length_control(&r.ch, VLBE_R(1.0), 0, r.q, r.v, &sl, qn, vn, &chg),
+            VLBE_EARG);
         assert_int_equal(sl, bad_sl[k]);
         assert_int_equal(chg, -7);
         assert_all_equal(NMAX, qn, SENT);
@@ -616,8 +618,8 @@ static void test_lc_args(void **state)
     }
     /* a slider at a chain end: nothing to do, qn = q, *changed = 0 */
     sl = 0;
-    assert_int_equal(vlbe_ale_chain_length_control(&r.ch, &sl, VLBE_R(1.0), 0, r.q, r.v, qn, vn, &chg),
-                     VLBE_OK);
+    assert_int_equal(
+        vlbe_ale_chain_length_control(&r.ch, VLBE_R(1.0), 0, r.q, r.v, &sl, qn, vn, &chg), VLBE_OK);
     assert_int_equal(chg, 0);
     assert_memory_equal(qn, r.q, sizeof(vlbe_real) * (size_t)r.ch.n);
     /* 3D chain */
@@ -626,8 +628,9 @@ static void test_lc_args(void **state)
     sl = 1;
     chg = -7;
     fill(NMAX, SENT, qn);
-    assert_int_equal(vlbe_ale_chain_length_control(&d.ch, &sl, VLBE_R(0.5), 0, d.q, d.v, qn, vn, &chg),
-                     VLBE_EARG);
+    assert_int_equal(
+        vlbe_ale_chain_length_control(&d.ch, VLBE_R(0.5), 0, d.q, d.v, &sl, qn, vn, &chg),
+        VLBE_EARG);
     assert_int_equal(chg, -7);
     assert_all_equal(NMAX, qn, SENT);
     snap_check(&d.ch, &s0);

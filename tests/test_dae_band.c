@@ -366,7 +366,7 @@ static void test_band_hht_run(void **state)
     vlbe_hht hd, hb;
     int an, k;
     (void)state;
-    assert_int_equal(vlbe_hht_params_hht(&par, VLBE_R(-0.1)), VLBE_OK);
+    assert_int_equal(vlbe_hht_params_alpha(&par, VLBE_R(-0.1)), VLBE_OK);
     /* the automatic reuse_max differs with the storage (banded refreshes a
        stale matrix sooner): the same explicit value for both makes the two
        runs take the same decisions */
@@ -488,7 +488,7 @@ static void test_band_user_solver(void **state)
     vlbe_bdf bu;
     int k, band;
     (void)state;
-    assert_int_equal(vlbe_hht_params_hht(&par, VLBE_R(-0.1)), VLBE_OK);
+    assert_int_equal(vlbe_hht_params_alpha(&par, VLBE_R(-0.1)), VLBE_OK);
     for (band = 0; band < 2; ++band) {
         double dq;
         ch_setup(&cb, &sb, P0, band, 1);
@@ -573,7 +573,7 @@ static void test_band_args(void **state)
         vlbe_hht st;
         vlbe_hht_params par;
         size_t lw = vlbe_hht_work_len_sys(&sb), liw = vlbe_hht_iwork_len_sys(&sb);
-        assert_int_equal(vlbe_hht_params_hht(&par, VLBE_R(-0.1)), VLBE_OK);
+        assert_int_equal(vlbe_hht_params_alpha(&par, VLBE_R(-0.1)), VLBE_OK);
         assert_int_equal(vlbe_hht_init(&st, &sb, &par, 0, q, v, wb, lw - 1, iwb, liw), VLBE_EWORK);
         assert_int_equal(vlbe_hht_init(&st, &sb, &par, 0, q, v, wb, lw, iwb, liw - 1), VLBE_EWORK);
         assert_int_equal(vlbe_hht_init(&st, &sb, &par, 0, q, v, wb, lw, iwb, liw), VLBE_OK);

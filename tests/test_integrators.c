@@ -107,9 +107,9 @@ static void test_params_presets(void **state)
     (void)state;
     vlbe_hht_params_newmark(&p, VLBE_R(0.25), VLBE_R(0.5)); /* p defined whatever follows */
     /* out of range and NaN */
-    assert_int_equal(vlbe_hht_params_hht(&p, VLBE_R(0.01)), VLBE_EARG);
-    assert_int_equal(vlbe_hht_params_hht(&p, VLBE_R(-0.34)), VLBE_EARG);
-    assert_int_equal(vlbe_hht_params_hht(&p, (vlbe_real)NAN), VLBE_EARG);
+    assert_int_equal(vlbe_hht_params_alpha(&p, VLBE_R(0.01)), VLBE_EARG);
+    assert_int_equal(vlbe_hht_params_alpha(&p, VLBE_R(-0.34)), VLBE_EARG);
+    assert_int_equal(vlbe_hht_params_alpha(&p, (vlbe_real)NAN), VLBE_EARG);
     assert_int_equal(vlbe_hht_params_genalpha(&p, VLBE_R(-0.01)), VLBE_EARG);
     assert_int_equal(vlbe_hht_params_genalpha(&p, VLBE_R(1.01)), VLBE_EARG);
     assert_int_equal(vlbe_hht_params_genalpha(&p, (vlbe_real)NAN), VLBE_EARG);
@@ -117,7 +117,7 @@ static void test_params_presets(void **state)
        4 eps absolute for the zero alpha_m/alpha_f) is all rounding allows. */
     for (i = 0; i < 4; ++i) {
         double a = (double)(vlbe_real)alphas[i];
-        assert_int_equal(vlbe_hht_params_hht(&p, (vlbe_real)a), VLBE_OK);
+        assert_int_equal(vlbe_hht_params_alpha(&p, (vlbe_real)a), VLBE_OK);
         ASSERT_CLOSE(p.alpha_m, 0.0, 0.0, 0.0);
         ASSERT_CLOSE(p.alpha_f, -a, 4 * EPS, 0.0);
         ASSERT_CLOSE(p.gamma, 0.5 - a, 4 * EPS, 0.0);
@@ -151,10 +151,10 @@ static void test_params_presets(void **state)
    not the Newton error, is measured. */
 static void pend_params(int method, vlbe_hht_params *par)
 {
-    if (method == 0) vlbe_hht_params_hht(par, VLBE_R(-0.05));
+    if (method == 0) vlbe_hht_params_alpha(par, VLBE_R(-0.05));
     else if (method == 1) vlbe_hht_params_genalpha(par, VLBE_R(0.8));
     else if (method == 2) vlbe_hht_params_newmark(par, VLBE_R(0.25), VLBE_R(0.5));
-    else vlbe_hht_params_hht(par, VLBE_R(-0.1));
+    else vlbe_hht_params_alpha(par, VLBE_R(-0.1));
 #ifndef VLBE_USE_FLOAT
     par->rtol = par->atol = VLBE_R(1e-12);
 #endif
@@ -285,7 +285,7 @@ static void test_pendulum_constraint(void **state)
         vlbe_hht_params par;
         pend_result r;
         double bound;
-        if (k == 0) vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+        if (k == 0) vlbe_hht_params_alpha(&par, VLBE_R(-0.05));
         else if (k == 1) vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
         else vlbe_hht_params_genalpha(&par, VLBE_R(0.0));
         bound = sqrt(2.0) * ((double)par.atol + (double)par.rtol * PEND_L) * PEND_L +
@@ -500,8 +500,8 @@ static double rho_measured(const vlbe_hht_params *par, double W, long skip, long
 
 static void osc_params(int k, vlbe_hht_params *p)
 {
-    if (k == 0) vlbe_hht_params_hht(p, VLBE_R(-0.05));
-    else if (k == 1) vlbe_hht_params_hht(p, VLBE_R(-0.3));
+    if (k == 0) vlbe_hht_params_alpha(p, VLBE_R(-0.05));
+    else if (k == 1) vlbe_hht_params_alpha(p, VLBE_R(-0.3));
     else if (k == 2) vlbe_hht_params_genalpha(p, VLBE_R(0.8));
     else if (k == 3) vlbe_hht_params_genalpha(p, VLBE_R(0.5));
     else vlbe_hht_params_newmark(p, VLBE_R(0.25), VLBE_R(0.5));
@@ -672,7 +672,7 @@ static void check_fault_n(int mode, long count, vlbe_status expect0, vlbe_status
     for (halv = 0; halv < 2; ++halv) {
         const vlbe_status expect = halv ? expect1 : expect0;
         faulty_setup(&sys, &f, mode);
-        vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+        vlbe_hht_params_alpha(&par, VLBE_R(-0.05));
         par.max_halvings = 3 * halv; /* halving must not hide the fault */
         pend_initial(&f.p, q0, v0);
         assert_int_equal(run_init(r, &sys, &par, q0, v0), VLBE_OK);
@@ -791,7 +791,7 @@ static void test_row_scaling(void **state)
     sys.force = osc2_force;
     sys.force_jac = osc2_force_jac;
     for (mod = 0; mod < 2; ++mod) {
-        vlbe_hht_params_hht(&par, VLBE_R(-0.1));
+        vlbe_hht_params_alpha(&par, VLBE_R(-0.1));
         par.modified = mod;
         assert_int_equal(run_init(r, &sys, &par, q0, v0), VLBE_OK);
         assert_true(r->st.qdd[0] == r->st.qdd[1] && r->st.qdd[0] != VLBE_R(0.0));
@@ -839,7 +839,7 @@ static void test_fail_noconv_and_recovery(void **state)
     (void)state;
     assert_non_null(r);
     pend_setup(&sys, &p);
-    vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+    vlbe_hht_params_alpha(&par, VLBE_R(-0.05));
     pend_initial(&p, q0, v0);
     assert_int_equal(run_init(r, &sys, &par, q0, v0), VLBE_OK);
     assert_int_equal(vlbe_hht_step(&r->st, VLBE_R(0.05)), VLBE_OK);
@@ -873,7 +873,7 @@ static void test_fail_args(void **state)
     (void)state;
     assert_non_null(r);
     pend_setup(&sys, &p);
-    vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+    vlbe_hht_params_alpha(&par, VLBE_R(-0.05));
     pend_initial(&p, q0, v0);
     assert_int_equal(vlbe_hht_init(&r->st, &sys, &par, 0, q0, v0, r->w, lw - 1, r->iw, liw),
                      VLBE_EWORK);
@@ -890,7 +890,7 @@ static void test_fail_args(void **state)
     assert_int_equal(vlbe_hht_init(&r->st, &bad, &par, 0, q0, v0, r->w, lw, r->iw, liw), VLBE_EARG);
     par.beta = VLBE_R(0.0);
     assert_int_equal(vlbe_hht_init(&r->st, &sys, &par, 0, q0, v0, r->w, lw, r->iw, liw), VLBE_EARG);
-    vlbe_hht_params_hht(&par, VLBE_R(-0.05));
+    vlbe_hht_params_alpha(&par, VLBE_R(-0.05));
     q0[0] = (vlbe_real)NAN;
     assert_int_equal(vlbe_hht_init(&r->st, &sys, &par, 0, q0, v0, r->w, lw, r->iw, liw),
                      VLBE_ENONFINITE);
@@ -1024,7 +1024,7 @@ static void test_hht_residual_test(void **state)
     /* every preset leaves the test off; init rejects ftol < 0, NaN, Inf */
     vlbe_hht_params_newmark(&par, VLBE_R(0.25), VLBE_R(0.5));
     ASSERT_CLOSE(par.ftol, 0.0, 0.0, 0.0);
-    vlbe_hht_params_hht(&par, VLBE_R(-0.1));
+    vlbe_hht_params_alpha(&par, VLBE_R(-0.1));
     ASSERT_CLOSE(par.ftol, 0.0, 0.0, 0.0);
     vlbe_hht_params_genalpha(&par, VLBE_R(0.8));
     ASSERT_CLOSE(par.ftol, 0.0, 0.0, 0.0);

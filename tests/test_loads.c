@@ -1195,7 +1195,7 @@ static void test_cr2d_moving_quasistatic(void **state)
     sys.constr = vlbe_cr2d_beam_constr;
     sys.constr_jac = vlbe_cr2d_beam_constr_jac;
     sys.constr_acc = vlbe_cr2d_beam_constr_acc;
-    assert_int_equal(vlbe_hht_params_hht(&hp, VLBE_R(-0.05)), VLBE_OK);
+    assert_int_equal(vlbe_hht_params_alpha(&hp, VLBE_R(-0.05)), VLBE_OK);
     assert_true(vlbe_hht_work_len(sys.n, sys.m) <= 40000);
     assert_int_equal(vlbe_hht_init(&st, &sys, &hp, 0, b->q, b->v, w, 40000, iw, 200), VLBE_OK);
     for (k = 1; k <= nstep; ++k) {

@@ -110,7 +110,7 @@ static void test_tolerance_defaults(void **state)
     int k;
     (void)state;
     vlbe_hht_params_newmark(&h[0], VLBE_R(0.25), VLBE_R(0.5));
-    assert_int_equal(vlbe_hht_params_hht(&h[1], VLBE_R(-0.05)), VLBE_OK);
+    assert_int_equal(vlbe_hht_params_alpha(&h[1], VLBE_R(-0.05)), VLBE_OK);
     assert_int_equal(vlbe_hht_params_genalpha(&h[2], VLBE_R(0.8)), VLBE_OK);
     vlbe_bdf_params_default(&b);
     vlbe_static_params_default(&s);
@@ -176,7 +176,7 @@ static void test_cantilever_dynamic(void **state)
     int k, nk = 1000;
     (void)state;
     ct_setup(&c);
-    assert_int_equal(vlbe_hht_params_hht(&par, VLBE_R(-0.05)), VLBE_OK);
+    assert_int_equal(vlbe_hht_params_alpha(&par, VLBE_R(-0.05)), VLBE_OK);
     assert_int_equal(vlbe_hht_init(&st, &c.sys, &par, 0, c.q, c.v, c.w, CT_WLEN, c.iw, CT_IWLEN),
                      VLBE_OK);
     for (k = 0; k < nk; ++k) {

@@ -758,8 +758,9 @@ static void test_length_control(void **state)
     memcpy(co0, c.con, sizeof co0);
     memcpy(els_b, els_a, sizeof els_b);
     s = 2;
-    assert_int_equal(vlbe_ale_chain_length_control(&c.ch, &s, (vlbe_real)Lstd, 0, q, v, qn, vn, &chg),
-                     VLBE_EWORK);
+    assert_int_equal(
+        vlbe_ale_chain_length_control(&c.ch, (vlbe_real)Lstd, 0, q, v, &s, qn, vn, &chg),
+        VLBE_EWORK);
     assert_int_equal(s, 2);
     assert_memory_equal(&ch0, &c.ch, sizeof ch0);
     assert_memory_equal(nd0, c.node, sizeof nd0);
@@ -774,8 +775,8 @@ static void test_length_control(void **state)
     assert_int_equal(vlbe_ale_chain_gather(&c.ch, 0, 0, q, NULL, qa, NULL, idx, &md), VLBE_OK);
     assert_int_equal(vlbe_ale_chain_gather(&c.ch, 1, 0, q, NULL, qb, NULL, idx, &md), VLBE_OK);
     assert_int_equal(vlbe_rancf_merge(2, qa, qa + 5, qb + 5, km, NULL), VLBE_OK);
-    assert_int_equal(vlbe_ale_chain_length_control(&c.ch, &s, (vlbe_real)Lstd, 0, q, v, qn, vn, &chg),
-                     VLBE_OK);
+    assert_int_equal(
+        vlbe_ale_chain_length_control(&c.ch, (vlbe_real)Lstd, 0, q, v, &s, qn, vn, &chg), VLBE_OK);
     assert_int_equal(chg, 2);
     assert_int_equal(c.ch.nn, 5);
     assert_int_equal(c.ch.n, n0);

@@ -50,7 +50,7 @@
 static double newton_share(void)
 {
     vlbe_hht_params p;
-    assert_int_equal(vlbe_hht_params_hht(&p, VLBE_R(-0.05)), VLBE_OK);
+    assert_int_equal(vlbe_hht_params_alpha(&p, VLBE_R(-0.05)), VLBE_OK);
     return 1e3 * (double)p.rtol;
 }
 

@@ -175,7 +175,7 @@ static void test_hht_frequency(void **state)
             sys.mass = osc_mass;
             sys.force = osc_force;
             sys.force_jac = osc_jac;
-            assert_int_equal(vlbe_hht_params_hht(&par, VLBE_R(-0.05)), VLBE_OK);
+            assert_int_equal(vlbe_hht_params_alpha(&par, VLBE_R(-0.05)), VLBE_OK);
             meth.hht = &par;
             meth.h = h = T / 200.0;
             q0[0] = (vlbe_real)sin(phase[i]);

@@ -52,7 +52,7 @@ int main(void)
         v0 = (vlbe_real *)calloc((size_t)ch.n, sizeof *v0);
         if (w && iw && q0 && v0) {
             vlbe_ale_chain_straight(&ch, r0, dir, q0);
-            if (vlbe_hht_params_hht(&par, VLBE_R(-0.05)) == VLBE_OK &&
+            if (vlbe_hht_params_alpha(&par, VLBE_R(-0.05)) == VLBE_OK &&
                 vlbe_hht_init(&st, &sys, &par, 0, q0, v0, w, lw, iw, liw) == VLBE_OK) {
                 for (k = 0; k < 10 && vlbe_hht_step(&st, VLBE_R(1e-3)) == VLBE_OK; ++k) continue;
                 if (k == 10) {

@@ -2,7 +2,7 @@
    check-m4): the clamped cantilever of 4 Lagrangian ALE-ANCF elements
    (ancf_ale.h chain, nodes at p = 0, 0.25, 0.5, 0.75, 1; rhoA 7.85, EA
    2.1e8, EI 1.75e3, gravity 9.81), clamped at node 0 (position and slope),
-   straight and at rest at t = 0; vlbe_hht_params_hht(-0.05) with its
+   straight and at rest at t = 0; vlbe_hht_params_alpha(-0.05) with its
    defaults, h = 1e-3, 1000 steps.  Prints the tip (x, y, x', y' and their
    rates) every 250 steps and the counters; a failed step prints its status
    and the program exits nonzero.  The vlbe_dae is the chain's
@@ -73,7 +73,7 @@ int main(void)
         return m4_exit();
     }
     vlbe_ale_chain_straight(&ch, r0, dir, q0);
-    if (m4_status("hht_params_hht", vlbe_hht_params_hht(&par, VLBE_R(-0.05)))) return m4_exit();
+    if (m4_status("hht_params_hht", vlbe_hht_params_alpha(&par, VLBE_R(-0.05)))) return m4_exit();
     if (m4_status("hht_init", vlbe_hht_init(&st, &sys, &par, VLBE_R(0.0), q0, v0, work, lw, iwork,
                                             liw)))
         return m4_exit();
