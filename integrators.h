@@ -1678,6 +1678,53 @@ VLBE_INLINE void vlbe__lin_unband(const vlbe_dae *s, const vlbe_real *B, vlbe_re
         }
 }
 
+/* a frame of valid dimension and finite angular velocity, nvec >= 0 with
+   the indices given */
+VLBE_INLINE int vlbe__lin_frame_ok(const vlbe_lin_frame *f)
+{
+    return (f->dim == 2 || f->dim == 3) && f->nvec >= 0 && (f->nvec == 0 || f->vec) &&
+           isfinite(f->omega[0]) && isfinite(f->omega[1]) && isfinite(f->omega[2]);
+}
+
+/* 1 when the frame's vectors lie inside q (n coordinates) and none
+   overlaps another (marks in mark[0..n-1]) */
+VLBE_INLINE int vlbe__lin_frame_vecs(int n, const vlbe_lin_frame *f, int *mark)
+{
+    int i, j, k;
+    for (i = 0; i < n; ++i) mark[i] = 0;
+    for (k = 0; k < f->nvec; ++k) {
+        const int o = f->vec[k];
+        if (o < 0 || o > n - f->dim) return 0;
+        for (j = o; j < o + f->dim; ++j) {
+            if (mark[j]) return 0;
+            mark[j] = 1;
+        }
+    }
+    return 1;
+}
+
+/* A = C_q^T (n x m, row-major) from C_q as the constraint Jacobian
+   callback wrote it: dense m x n, or its rows in the band of the augmented
+   order */
+VLBE_INLINE void vlbe__lin_cqt(const vlbe_dae *sys, const vlbe_real *Cq, vlbe_real *A)
+{
+    const int n = sys->n, m = sys->m, band = vlbe__dae_banded(sys);
+    int j, k;
+    for (k = 0; k < m; ++k)
+        for (j = 0; j < n; ++j) {
+            vlbe_real x;
+            if (band) {
+                const int ok = sys->order[n + k], oj = sys->order[j];
+                x = (oj - ok <= sys->ku && ok - oj <= sys->kl)
+                        ? Cq[VLBE_BAND_IDX(vlbe__dae_bld(sys), sys->kl, ok, oj)]
+                        : VLBE_R(0.0);
+            } else {
+                x = Cq[(size_t)k * (size_t)n + (size_t)j];
+            }
+            A[(size_t)j * (size_t)m + (size_t)k] = x;
+        }
+}
+
 /* x[0..len-1] finite (len a size_t: n^2 may pass an int) */
 VLBE_INLINE int vlbe__lin_finite(size_t len, const vlbe_real *x)
 {
@@ -1694,7 +1741,7 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
                                         vlbe_real *Kr, vlbe_dae_stats *stats, vlbe_real *work,
                                         size_t work_len, int *iwork, size_t iwork_len)
 {
-    int n, m, i, j, k, r, nred, band, rot;
+    int n, m, r, nred, band, rot;
     size_t nn, e;
     vlbe_real *M, *K, *D, *T, *Nb, *Q, *A, *tau, *cn, *scr, *Mb = NULL, *Kb = NULL, *Db = NULL,
               *Cqb = NULL;
@@ -1709,28 +1756,12 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
     if (n > VLBE__LIN_NMAX || !isfinite(t) || !q || !v || !a || (m > 0 && !lambda) || !nr ||
         !Mr || !Dr || !Kr)
         return VLBE_EARG;
-    rot = 0;
-    if (frame) {
-        if ((frame->dim != 2 && frame->dim != 3) || frame->nvec < 0 ||
-            (frame->nvec > 0 && !frame->vec) || !isfinite(frame->omega[0]) ||
-            !isfinite(frame->omega[1]) || !isfinite(frame->omega[2]))
-            return VLBE_EARG;
-        rot = frame->nvec > 0;
-    }
+    if (frame && !vlbe__lin_frame_ok(frame)) return VLBE_EARG;
+    rot = frame && frame->nvec > 0;
     if (!work || !iwork || work_len < vlbe_dae_lin_work_len_sys(sys) ||
         iwork_len < vlbe_dae_lin_iwork_len_sys(sys))
         return VLBE_EWORK;
-    if (rot) { /* the vectors inside q, none overlapping another (marks in iwork) */
-        for (i = 0; i < n; ++i) iwork[i] = 0;
-        for (k = 0; k < frame->nvec; ++k) {
-            const int o = frame->vec[k];
-            if (o < 0 || o > n - frame->dim) return VLBE_EARG;
-            for (j = o; j < o + frame->dim; ++j) {
-                if (iwork[j]) return VLBE_EARG;
-                iwork[j] = 1;
-            }
-        }
-    }
+    if (rot && !vlbe__lin_frame_vecs(n, frame, iwork)) return VLBE_EARG;
     band = vlbe__dae_banded(sys);
     if (band) {
         inv = iwork + n;
@@ -1768,19 +1799,7 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
     if ((rc = vlbe__dae_force(&sl, stats, t, q, v, Q)) != VLBE_OK) return rc;
     if ((rc = vlbe__dae_cjac(&sl, stats, t, q, band ? Cqb : T, NULL)) != VLBE_OK) return rc;
     if (!vlbe_all_finite(Q, n)) return VLBE_ENONFINITE;
-    for (k = 0; k < m; ++k)
-        for (j = 0; j < n; ++j) {
-            vlbe_real x;
-            if (band) {
-                const int ok = sys->order[n + k], oj = sys->order[j];
-                x = (oj - ok <= sys->ku && ok - oj <= sys->kl)
-                        ? Cqb[VLBE_BAND_IDX(vlbe__dae_bld(sys), sys->kl, ok, oj)]
-                        : VLBE_R(0.0);
-            } else {
-                x = T[(size_t)k * (size_t)n + (size_t)j];
-            }
-            A[(size_t)j * (size_t)m + (size_t)k] = x;
-        }
+    vlbe__lin_cqt(sys, band ? Cqb : T, A);
     if (!vlbe__lin_finite((size_t)n * (size_t)m, A)) return VLBE_ENONFINITE;
     if (band) vlbe__lin_unband(sys, Mb, M); /* (only the entries inside the matrix are read) */
     if (!vlbe__lin_finite(nn, M)) return VLBE_ENONFINITE;
