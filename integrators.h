@@ -2520,6 +2520,96 @@ VLBE_INLINE vlbe_real vlbe__dae_wrms(int n, const vlbe_real *x, const vlbe_real 
     return vlbe_sqrt(s / (vlbe_real)(n > 0 ? n : 1));
 }
 
+/* The residual of an HHT Newton iterate at (t1, tq, tv, tqdd, tl):
+   r_q = M q'' + C_q^T lambda - Q, r_c = C / bp (the constraint rows
+   scaled like the iteration matrix), with M (unless kept constant), Q,
+   C_q and C evaluated there; pw, tmp: banded scratch. */
+VLBE_INLINE vlbe_status vlbe__hht_resid(vlbe_hht *st, vlbe_real t1, vlbe_real bp,
+                                        const vlbe_real *tq, const vlbe_real *tv,
+                                        const vlbe_real *tqdd, const vlbe_real *tl, vlbe_real *M,
+                                        vlbe_real *Q, vlbe_real *Cq, vlbe_real *C, vlbe_real *r,
+                                        vlbe_real *pw, vlbe_real *tmp)
+{
+    const vlbe_dae *s = st->sys;
+    const int n = st->n, m = st->m;
+    int i, j;
+    vlbe_status rc;
+    if (!st->have_m_) {
+        if ((rc = vlbe__dae_mass(s, &st->stats, t1, tq, tv, M)) != VLBE_OK) return rc;
+        st->have_m_ = (s->flags & VLBE_DAE_MASS_CONST) != 0; /* constant: kept */
+    }
+    if ((rc = vlbe__dae_force(s, &st->stats, t1, tq, tv, Q)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_cjac(s, &st->stats, t1, tq, Cq, NULL)) != VLBE_OK) return rc;
+    if ((rc = vlbe__dae_constr(s, &st->stats, t1, tq, C)) != VLBE_OK) return rc;
+    if (vlbe__dae_banded(s)) {
+        vlbe__dae_bprod(s, 0, M, tqdd, r, pw);
+        for (i = 0; i < n; ++i) r[i] -= Q[i];
+        if (m > 0) {
+            vlbe__dae_bprod(s, 2, Cq, tl, tmp, pw);
+            for (i = 0; i < n; ++i) r[i] += tmp[i];
+        }
+        for (j = 0; j < m; ++j) r[n + j] = C[j] / bp;
+    } else {
+        vlbe_mat_vec(n, n, M, tqdd, r);
+        for (i = 0; i < n; ++i) r[i] -= Q[i];
+        for (j = 0; j < m; ++j) {
+            vlbe_vec_axpy(n, tl[j], Cq + (size_t)j * n, r);
+            r[n + j] = C[j] / bp;
+        }
+    }
+    return vlbe_all_finite(r, n + m) ? VLBE_OK : VLBE_ENONFINITE;
+}
+
+/* The HHT iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v,
+   C_q^T; C_q, 0] at the iterate, its rows equilibrated (scales into rs)
+   and factored into LU (pivots in st->piv_); st->have_lu_ and h_lu_ record
+   it, a failed factorization drops it. */
+VLBE_INLINE vlbe_status vlbe__hht_matrix(vlbe_hht *st, vlbe_real h, vlbe_real t1, vlbe_real bp,
+                                         vlbe_real gp, const vlbe_real *tq, const vlbe_real *tv,
+                                         const vlbe_real *tqdd, const vlbe_real *tl,
+                                         const vlbe_real *Q, const vlbe_real *M,
+                                         const vlbe_real *Cq, vlbe_real *LU, vlbe_real *rs,
+                                         vlbe_real *scr)
+{
+    const vlbe_dae *s = st->sys;
+    const int n = st->n, m = st->m, N = n + m, band = vlbe__dae_banded(s);
+    vlbe__dae_blk B;
+    size_t ld = (size_t)N;
+    int i, j;
+    vlbe_status rc;
+    if (band) {
+        B = vlbe__dae_band_blk(s, LU, 1);
+        ld = B.ld;
+        vlbe_vec_zero((int)vlbe__dae_alen(s, 1), LU);
+        vlbe__dae_badd(s, &B, VLBE_R(1.0), M, 0);
+        vlbe__dae_bsaddle(s, &B, VLBE_R(1.0), Cq);
+    } else {
+        B = vlbe__dae_dblk(LU, N, 0);
+        for (i = 0; i < n; ++i) {
+            for (j = 0; j < n; ++j) LU[(size_t)i * N + j] = M[(size_t)i * n + j];
+            for (j = 0; j < m; ++j) LU[(size_t)i * N + n + j] = Cq[(size_t)j * n + i];
+        }
+        for (i = 0; i < m; ++i) {
+            for (j = 0; j < n; ++j) LU[(size_t)(n + i) * N + j] = Cq[(size_t)i * n + j];
+            for (j = 0; j < m; ++j) LU[(size_t)(n + i) * N + n + j] = VLBE_R(0.0);
+        }
+    }
+    rc = vlbe__dae_btangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, &B, gp, &B,
+                            band ? st->piv_ + N : NULL, scr);
+    if (rc != VLBE_OK) return rc;
+    vlbe__dae_equil(N, LU, ld, band ? (int)ld : N, rs, NULL);
+    ++st->stats.lu_factors;
+    /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
+    rc = vlbe__dae_factor(s, &st->stats, 1, LU, st->piv_);
+    if (rc != VLBE_OK) {
+        st->have_lu_ = 0;
+        return rc;
+    }
+    st->have_lu_ = 1;
+    st->h_lu_ = h;
+    return VLBE_OK;
+}
+
 /* One attempt of one step of size h from the accepted state at st->t to
    t1 (~ st->t + h, given by the caller without drift) into the trial
    arrays; the accepted state is not touched. */
@@ -2558,31 +2648,8 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
     for (it = 0; it < p->newton_max || pending; ++it) {
         vlbe_real nrm = VLBE_R(0.0), nv, nq = VLBE_R(0.0);
         int conv = 0, left = p->newton_max - 1 - it;
-        /* residual: r_q = M q'' + C_q^T lambda - Q, r_c = C / bp (scaled) */
-        if (!st->have_m_) {
-            if ((rc = vlbe__dae_mass(s, &st->stats, t1, tq, tv, M)) != VLBE_OK) return rc;
-            st->have_m_ = (s->flags & VLBE_DAE_MASS_CONST) != 0; /* constant: kept */
-        }
-        if ((rc = vlbe__dae_force(s, &st->stats, t1, tq, tv, Q)) != VLBE_OK) return rc;
-        if ((rc = vlbe__dae_cjac(s, &st->stats, t1, tq, Cq, NULL)) != VLBE_OK) return rc;
-        if ((rc = vlbe__dae_constr(s, &st->stats, t1, tq, C)) != VLBE_OK) return rc;
-        if (band) {
-            vlbe__dae_bprod(s, 0, M, tqdd, r, pw);
-            for (i = 0; i < n; ++i) r[i] -= Q[i];
-            if (m > 0) {
-                vlbe__dae_bprod(s, 2, Cq, tl, tmp, pw);
-                for (i = 0; i < n; ++i) r[i] += tmp[i];
-            }
-            for (j = 0; j < m; ++j) r[n + j] = C[j] / bp;
-        } else {
-            vlbe_mat_vec(n, n, M, tqdd, r);
-            for (i = 0; i < n; ++i) r[i] -= Q[i];
-            for (j = 0; j < m; ++j) {
-                vlbe_vec_axpy(n, tl[j], Cq + (size_t)j * n, r);
-                r[n + j] = C[j] / bp;
-            }
-        }
-        if (!vlbe_all_finite(r, N)) return VLBE_ENONFINITE;
+        rc = vlbe__hht_resid(st, t1, bp, tq, tv, tqdd, tl, M, Q, Cq, C, r, pw, tmp);
+        if (rc != VLBE_OK) return rc;
         /* residual test (ftol > 0, eq. 53) at an iterate that passed the
            increment test.  If it fails, this residual drives the next
            iteration: with a fresh iteration matrix, if the stored one is
@@ -2603,38 +2670,8 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
         }
         /* iteration matrix [M + bp (Ma + C_q^T l - Q)_q + gp (Ma - Q)_v, C_q^T; C_q, 0] */
         if (!st->have_lu_ || full) {
-            vlbe__dae_blk B;
-            size_t ld = (size_t)N;
-            if (band) {
-                B = vlbe__dae_band_blk(s, LU, 1);
-                ld = B.ld;
-                vlbe_vec_zero((int)vlbe__dae_alen(s, 1), LU);
-                vlbe__dae_badd(s, &B, VLBE_R(1.0), M, 0);
-                vlbe__dae_bsaddle(s, &B, VLBE_R(1.0), Cq);
-            } else {
-                B = vlbe__dae_dblk(LU, N, 0);
-                for (i = 0; i < n; ++i) {
-                    for (j = 0; j < n; ++j) LU[(size_t)i * N + j] = M[(size_t)i * n + j];
-                    for (j = 0; j < m; ++j) LU[(size_t)i * N + n + j] = Cq[(size_t)j * n + i];
-                }
-                for (i = 0; i < m; ++i) {
-                    for (j = 0; j < n; ++j) LU[(size_t)(n + i) * N + j] = Cq[(size_t)i * n + j];
-                    for (j = 0; j < m; ++j) LU[(size_t)(n + i) * N + n + j] = VLBE_R(0.0);
-                }
-            }
-            rc = vlbe__dae_btangent(s, &st->stats, t1, tq, tv, tqdd, tl, Q, M, bp, &B, gp, &B,
-                                    band ? st->piv_ + N : NULL, scr);
+            rc = vlbe__hht_matrix(st, h, t1, bp, gp, tq, tv, tqdd, tl, Q, M, Cq, LU, rs, scr);
             if (rc != VLBE_OK) return rc;
-            vlbe__dae_equil(N, LU, ld, band ? (int)ld : N, rs, NULL);
-            ++st->stats.lu_factors;
-            /* reports a non-finite matrix itself (VLBE_ENONFINITE) */
-            rc = vlbe__dae_factor(s, &st->stats, 1, LU, st->piv_);
-            if (rc != VLBE_OK) {
-                st->have_lu_ = 0;
-                return rc;
-            }
-            st->have_lu_ = 1;
-            st->h_lu_ = h;
             fresh = 1;
             prev = VLBE_R(0.0);
         }
