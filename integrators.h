@@ -3607,6 +3607,65 @@ VLBE_INLINE void vlbe__bdf_unsave(vlbe_bdf *st, int k)
     vlbe_vec_copy(L, c + 4 * L, st->sigma_);
 }
 
+/* Order and step for the next step after an accepted step of order *k and
+   size h, variable-step mode (Brenan-Campbell-Petzold sec. 5.2.2, the
+   strategy of DASSL): the start-up phase (until the order would drop or
+   reaches kmax) raises the order and doubles h every step; then the order
+   k-1 when knew says so, else k+1 is tried (the last k+1 steps all of
+   order k: phi_{k+2} holds the previous e, its norm terk+1) against the
+   estimates terk-1, terk; the step from the estimate est of the order
+   kept, r = (2 est + 1e-4)^(-1/(k+1)): doubled when r >= 2 (after a step
+   cut short for t_stop back up to what the estimate allows, at most the
+   planned hnat), cut to h max(0.5, min(0.9, r)) when r <= 1, else kept. */
+VLBE_INLINE void vlbe__bdf_next(vlbe_bdf *st, int kmax, int knew, int kdiff, int ns, int shortened,
+                                vlbe_real h, vlbe_real hnat, vlbe_real est, vlbe_real erkm1,
+                                vlbe_real terk, vlbe_real terkm1, const vlbe_real *e, vlbe_real *d,
+                                vlbe_real *yp, int *kk, vlbe_real *hnew)
+{
+    const int N2 = vlbe__bdf_n2(st);
+    int k = *kk, j;
+    vlbe_real r;
+    if (knew == k - 1 || k == kmax) st->phase_ = 1;
+    if (st->phase_ == 0) {
+        /* start-up phase: raise the order and double h every step */
+        *kk = k + 1;
+        *hnew = shortened ? (hnat > VLBE_R(2.0) * h ? hnat : VLBE_R(2.0) * h) : VLBE_R(2.0) * h;
+        return;
+    }
+    if (knew == k - 1) {
+        k = knew;
+        est = erkm1;
+    } else if (k < kmax && k + 1 < ns && kdiff != 1) {
+        /* try order k+1: phi_{k+2} holds the previous e */
+        vlbe_real *pk2 = vlbe__bdf_phi(st, k + 2), terkp1;
+        for (j = 0; j < N2; ++j) d[j] = e[j] - pk2[j];
+        terkp1 = vlbe__bdf_enorm(st, d, yp); /* (k+2) * erkp1 */
+        if (k == 1) {
+            if (terkp1 < VLBE_R(0.5) * terk) {
+                ++k;
+                est = terkp1 / (vlbe_real)(k + 1);
+            }
+        } else if (terkm1 <= (terk < terkp1 ? terk : terkp1)) {
+            --k;
+            est = erkm1;
+        } else if (terkp1 < terk) {
+            ++k;
+            est = terkp1 / (vlbe_real)(k + 1);
+        }
+    }
+    r = vlbe_pow(VLBE_R(2.0) * est + VLBE_R(1e-4), -VLBE_R(1.0) / (vlbe_real)(k + 1));
+    if (r >= VLBE_R(2.0)) {
+        *hnew = VLBE_R(2.0) * h;
+        /* after a step cut short for t_stop, go back up to the step the
+           estimate allows, at most the one planned */
+        if (shortened && h * r > *hnew) *hnew = h * r < hnat ? h * r : hnat;
+    } else if (r <= VLBE_R(1.0)) {
+        r = r < VLBE_R(0.5) ? VLBE_R(0.5) : (r > VLBE_R(0.9) ? VLBE_R(0.9) : r);
+        *hnew = h * r;
+    }
+    *kk = k;
+}
+
 /* One accepted step (several attempts if needed) with t + h <= t_stop.
    t_stop <= t or not finite: VLBE_EARG.  On failure the state is as it was
    before the call (t, h, order, q, v, lambda, mu and the history of
@@ -3778,7 +3837,7 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
     /* accepted: new state, then order and step for the next step */
     {
         int kdiff = k - st->kold_, kstep = k, j;
-        vlbe_real hnew = h, r;
+        vlbe_real hnew = h;
         vlbe_real *y = vlbe__bdf_vec(st, 0);
         vlbe_vec_copy(N2, y, st->q);
         st->t = t1;
@@ -3796,45 +3855,8 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
         if (p->fixed_step) {
             if (k < kmax) ++k;
         } else {
-            if (knew == k - 1 || k == kmax) st->phase_ = 1;
-            if (st->phase_ == 0) {
-                /* start-up phase: raise the order and double h every step */
-                ++k;
-                hnew = shortened ? (hnat > VLBE_R(2.0) * h ? hnat : VLBE_R(2.0) * h)
-                                 : VLBE_R(2.0) * h;
-            } else {
-                if (knew == k - 1) {
-                    k = knew;
-                    est = erkm1;
-                } else if (k < kmax && k + 1 < ns && kdiff != 1) {
-                    /* try order k+1: phi_{k+2} holds the previous e */
-                    vlbe_real *pk2 = vlbe__bdf_phi(st, k + 2), terkp1;
-                    for (j = 0; j < N2; ++j) d[j] = e[j] - pk2[j];
-                    terkp1 = vlbe__bdf_enorm(st, d, yp); /* (k+2) * erkp1 */
-                    if (k == 1) {
-                        if (terkp1 < VLBE_R(0.5) * terk) {
-                            ++k;
-                            est = terkp1 / (vlbe_real)(k + 1);
-                        }
-                    } else if (terkm1 <= (terk < terkp1 ? terk : terkp1)) {
-                        --k;
-                        est = erkm1;
-                    } else if (terkp1 < terk) {
-                        ++k;
-                        est = terkp1 / (vlbe_real)(k + 1);
-                    }
-                }
-                r = vlbe_pow(VLBE_R(2.0) * est + VLBE_R(1e-4), -VLBE_R(1.0) / (vlbe_real)(k + 1));
-                if (r >= VLBE_R(2.0)) {
-                    hnew = VLBE_R(2.0) * h;
-                    /* after a step cut short for t_stop, go back up to the
-                       step the estimate allows, at most the one planned */
-                    if (shortened && h * r > hnew) hnew = h * r < hnat ? h * r : hnat;
-                } else if (r <= VLBE_R(1.0)) {
-                    r = r < VLBE_R(0.5) ? VLBE_R(0.5) : (r > VLBE_R(0.9) ? VLBE_R(0.9) : r);
-                    hnew = h * r;
-                }
-            }
+            vlbe__bdf_next(st, kmax, knew, kdiff, ns, shortened, h, hnat, est, erkm1, terk,
+                           terkm1, e, d, yp, &k, &hnew);
         }
         /* divided differences for the next step */
         if (kstep < kmax) vlbe_vec_copy(N2, e, vlbe__bdf_phi(st, kstep + 2));
