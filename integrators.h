@@ -1725,15 +1725,6 @@ VLBE_INLINE void vlbe__lin_cqt(const vlbe_dae *sys, const vlbe_real *Cq, vlbe_re
         }
 }
 
-/* x[0..len-1] finite (len a size_t: n^2 may pass an int) */
-VLBE_INLINE int vlbe__lin_finite(size_t len, const vlbe_real *x)
-{
-    size_t i;
-    for (i = 0; i < len; ++i)
-        if (!isfinite(x[i])) return 0;
-    return 1;
-}
-
 VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const vlbe_real *q,
                                         const vlbe_real *v, const vlbe_real *a,
                                         const vlbe_real *lambda, const vlbe_lin_frame *frame,
@@ -1800,9 +1791,9 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
     if ((rc = vlbe__dae_cjac(&sl, stats, t, q, band ? Cqb : T, NULL)) != VLBE_OK) return rc;
     if (!vlbe_all_finite(Q, n)) return VLBE_ENONFINITE;
     vlbe__lin_cqt(sys, band ? Cqb : T, A);
-    if (!vlbe__lin_finite((size_t)n * (size_t)m, A)) return VLBE_ENONFINITE;
+    if (!vlbe_all_finite(A, n * m)) return VLBE_ENONFINITE; /* m <= n <= 46340: fits an int */
     if (band) vlbe__lin_unband(sys, Mb, M); /* (only the entries inside the matrix are read) */
-    if (!vlbe__lin_finite(nn, M)) return VLBE_ENONFINITE;
+    if (!vlbe__mat_finite(n, M)) return VLBE_ENONFINITE;
     /* K = -dQ/dq + d(M a)/dq + d(C_q^T lambda)/dq, D = -dQ/dv + d(M a)/dv */
     if (band) {
         const size_t ml = vlbe__dae_mlen(sys, 0);
@@ -1825,7 +1816,7 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
         vlbe__lin_unband(sys, Kb, K);
         vlbe__lin_unband(sys, Db, D);
     }
-    if (!vlbe__lin_finite(nn, K) || !vlbe__lin_finite(nn, D)) return VLBE_ENONFINITE;
+    if (!vlbe__mat_finite(n, K) || !vlbe__mat_finite(n, D)) return VLBE_ENONFINITE;
     /* the rotating frame: D~ = D + 2 M G, K~ = K + M G^2 + D G */
     if (rot) {
         for (e = 0; e < nn; ++e) T[e] = VLBE_R(0.0);
@@ -1843,7 +1834,8 @@ VLBE_API vlbe_status vlbe_dae_linearize(const vlbe_dae *sys, vlbe_real t, const 
         vlbe__lin_reduce(n, nred, Nb, D, T);
         vlbe__lin_reduce(n, nred, Nb, K, T);
         e = (size_t)nred * (size_t)nred;
-        if (!vlbe__lin_finite(e, M) || !vlbe__lin_finite(e, D) || !vlbe__lin_finite(e, K))
+        if (!vlbe__mat_finite(nred, M) || !vlbe__mat_finite(nred, D) ||
+            !vlbe__mat_finite(nred, K))
             return VLBE_ENONFINITE;
         vlbe_vec_copy((int)e, M, Mr);
         vlbe_vec_copy((int)e, D, Dr);
