@@ -1212,6 +1212,48 @@ VLBE_INLINE const vlbe__ale_lay *vlbe__ale_lay2(void)
     return &ly;
 }
 
+/* The basis at one point scaled to the current L: N[k][a][j] = L^(m_j - k
+   - |a|) b[k][a][j] (Hermite), H[k][a][j] = L^(-k - |a|) l[k][a][j]
+   (linear); rows k0..kmax, partials a < na at k = 0, a < min(na, 3)
+   above. */
+typedef struct vlbe__ale_lpt {
+    vlbe_real N[3][VLBE_DA_N][4];
+    vlbe_real H[2][VLBE_DA_N][2];
+} vlbe__ale_lpt;
+
+VLBE_INLINE void vlbe__ale_lpt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
+                                    int na, vlbe__ale_lpt *VLBE_RESTRICT pt)
+{
+    int k, a, j;
+    for (k = k0; k <= kmax; ++k) {
+        const int nak = (k == 0 || na < 3) ? na : 3;
+        for (a = 0; a < nak; ++a) {
+            const int d = 4 - k - (a == 0 ? 0 : (a < 3 ? 1 : 2));
+            for (j = 0; j < 4; ++j) pt->N[k][a][j] = gp->b[k][a][j] * Lp[d + (j & 1)];
+            if (k < 2)
+                for (j = 0; j < 2; ++j) pt->H[k][a][j] = gp->l[k][a][j] * Lp[d];
+        }
+    }
+}
+
+/* out = sum_j n[j] x_j over the four d-vectors of x (r1, r1', r2, r2') */
+VLBE_INLINE void vlbe__ale_lsum(const vlbe__ale_lay *ly, const vlbe_real *n, const vlbe_real *x,
+                                vlbe_real *out)
+{
+    const int d = ly->d;
+    int j, c;
+    for (c = 0; c < d; ++c) out[c] = VLBE_R(0.0);
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < d; ++c) out[c] += n[j] * x[ly->e[j] + c];
+}
+
+/* sum_j h[j] x_th_j over the two spin angles (0 without spin) */
+VLBE_INLINE vlbe_real vlbe__ale_lsum_th(const vlbe__ale_lay *ly, const vlbe_real *h,
+                                      const vlbe_real *x)
+{
+    return ly->spin ? h[0] * x[ly->th[0]] + h[1] * x[ly->th[1]] : VLBE_R(0.0);
+}
+
 /* dF = d F for a force of the standard row degrees (1 + m_j on the
    position and slope rows, 1 on spin-angle rows, 0 on p-rows): inertia,
    loads, bending. */
@@ -2029,45 +2071,87 @@ VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, cons
     return vlbe__ale_force(el, mode | el->flags, q, qd, Q, K, D, 1, NULL);
 }
 
-/* One point's part w G^T G of M (eq. 19): e-e blocks and p1-p2 for
-   i <= j, the e-p coupling on the p-rows (vlbe__ale_mass_mirror completes). */
-VLBE_INLINE void vlbe__ale_mass_pt(const vlbe__ale_pt *pt, int pm, vlbe_real w, vlbe_real *M)
+/* ===== mass, mass Jacobian, kinetic energy: both elements ================
+   One implementation for the planar element (eq. 19) and the 3D one (eq.
+   28 of [V]), driven by the layout (vlbe__ale_lay).  At a mass point G_r =
+   dr/dq = [N_j I_d | X_k] and, with spin, G_th = dtheta/dq = [H_j | Xt_k],
+   X_k = dr/dp_k and Xt_k = dtheta/dp_k at fixed e (k = 1, 2, only for a
+   free p_k); M = sum_g w_g (rhoA G_r^T G_r + rhoI G_th^T G_th). */
+
+/* x . y over d components */
+VLBE_INLINE vlbe_real vlbe__ale_dot(int d, const vlbe_real *x, const vlbe_real *y)
 {
-    int i, j, k, l;
+    vlbe_real s = VLBE_R(0.0);
+    int c;
+    for (c = 0; c < d; ++c) s += x[c] * y[c];
+    return s;
+}
+
+/* X_k = dr/dp_k and Xt_k = dtheta/dp_k of the coordinates x at one point,
+   for the p_k in pm (zero for the others). */
+VLBE_INLINE void vlbe__ale_xp(const vlbe__ale_lay *ly, const vlbe__ale_lpt *pt, int pm,
+                              const vlbe_real *x, vlbe_real (*X)[3], vlbe_real *Xt)
+{
+    int k, c;
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            vlbe__ale_lsum(ly, pt->N[0][1 + k], x, X[k]);
+            Xt[k] = vlbe__ale_lsum_th(ly, pt->H[0][1 + k], x);
+        } else {
+            for (c = 0; c < 3; ++c) X[k][c] = VLBE_R(0.0);
+            Xt[k] = VLBE_R(0.0);
+        }
+}
+
+/* One point's part wa G_r^T G_r + wi G_th^T G_th of M: the e-e and th-th
+   blocks for i <= j, p1-p2 for k <= l, every coupling with a p on the
+   p-row (vlbe__ale_mass_mirror completes M). */
+VLBE_INLINE void vlbe__ale_mass_pt(const vlbe__ale_lay *ly, const vlbe__ale_lpt *pt, int pm,
+                                   const vlbe_real (*X)[3], const vlbe_real *Xt, vlbe_real wa,
+                                   vlbe_real wi, vlbe_real *M)
+{
+    const int n = ly->n, d = ly->d;
+    const vlbe_real *N = pt->N[0][0], *H = pt->H[0][0];
+    int i, j, k, l, c;
     for (i = 0; i < 4; ++i) {
-        const int r = VLBE__ALE_E(i);
-        const vlbe_real wn = w * pt->N[0][0][i];
+        const int r = ly->e[i];
+        const vlbe_real wn = wa * N[i];
         for (j = i; j < 4; ++j) {
-            const vlbe_real t = wn * pt->N[0][0][j];
-            const int c = VLBE__ALE_E(j);
-            M[r * 10 + c] += t;
-            M[(r + 1) * 10 + c + 1] += t;
+            const vlbe_real t = wn * N[j];
+            for (c = 0; c < d; ++c) M[(r + c) * n + ly->e[j] + c] += t;
         }
         for (k = 0; k < 2; ++k)
-            if (pm & (1 << k)) { /* e-p coupling, stored on the p-row */
-                M[VLBE__ALE_P(k) * 10 + r] += wn * pt->X[0][1 + k][0];
-                M[VLBE__ALE_P(k) * 10 + r + 1] += wn * pt->X[0][1 + k][1];
-            }
+            if (pm & (1 << k))
+                for (c = 0; c < d; ++c) M[ly->p[k] * n + r + c] += wn * X[k][c];
     }
+    if (ly->spin)
+        for (i = 0; i < 2; ++i) {
+            const vlbe_real hi = wi * H[i];
+            for (j = i; j < 2; ++j) M[ly->th[i] * n + ly->th[j]] += hi * H[j];
+            for (k = 0; k < 2; ++k)
+                if (pm & (1 << k)) M[ly->p[k] * n + ly->th[i]] += hi * Xt[k];
+        }
     for (k = 0; k < 2; ++k)
         for (l = k; l < 2; ++l)
-            if ((pm & (1 << k)) && (pm & (1 << l)))
-                M[VLBE__ALE_P(k) * 10 + VLBE__ALE_P(l)] +=
-                    w * vlbe_v2_dot(pt->X[0][1 + k], pt->X[0][1 + l]);
+            if ((pm & (1 << k)) && (pm & (1 << l))) {
+                const vlbe_real s = wa * vlbe__ale_dot(d, X[k], X[l]);
+                M[ly->p[k] * n + ly->p[l]] += ly->spin ? s + wi * Xt[k] * Xt[l] : s;
+            }
 }
 
 /* Mirror the parts vlbe__ale_mass_pt accumulated into their transposed
-   places. */
-VLBE_INLINE void vlbe__ale_mass_mirror(vlbe_real *M)
+   places: M is exactly symmetric. */
+VLBE_INLINE void vlbe__ale_mass_mirror(const vlbe__ale_lay *ly, vlbe_real *M)
 {
+    const int n = ly->n;
     int i, j;
-    for (i = 0; i < 10; ++i)
+    for (i = 0; i < n; ++i)
         for (j = 0; j < i; ++j) {
-            const int pi = i == 4 || i == 9, pj = j == 4 || j == 9;
+            const int pi = i == ly->p[0] || i == ly->p[1], pj = j == ly->p[0] || j == ly->p[1];
             if (pi && !pj)
-                M[j * 10 + i] = M[i * 10 + j];
+                M[j * n + i] = M[i * n + j];
             else
-                M[i * 10 + j] = M[j * 10 + i];
+                M[i * n + j] = M[j * n + i];
         }
 }
 
@@ -2080,9 +2164,9 @@ VLBE_INLINE void vlbe__ale_mass_mirror(vlbe_real *M)
    components mp, ms; d components: |X.X| <= d Xc^2), so every entry and
    every partial sum is at most rho L (A + 2 Xc)^2 for d <= 4, and the
    factors at most (A + 2 Xc)^2.  1 when both stay below REAL_MAX / 4.
-   mp, ms: 0 with both p fixed (X is not formed then). */
+   mp, ms: 0 with both p fixed (X is not formed then).  rho: rhoA + rhoI. */
 VLBE_INLINE int vlbe__ale_mass_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
-                                    vlbe_real mp, vlbe_real ms)
+                                  vlbe_real mp, vlbe_real ms)
 {
     const vlbe_real A = bmax * (L > VLBE_R(1.0) ? L : VLBE_R(1.0));
     const vlbe_real g = A + VLBE_R(4.0) * bmax * (mp * iL + ms);
@@ -2090,18 +2174,18 @@ VLBE_INLINE int vlbe__ale_mass_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vl
            rho * L * (g * g) <= VLBE_R(0.25) * VLBE_REAL_MAX;
 }
 
-/* d(M a)/dq bounded before it is formed (vlbe_ale_mass_jac, 3D too), with
-   g, A, Xc of vlbe__ale_mass_ok (M <= rho L g^2), U = max(1, 1/L) (|p1/p2
-   partial of N| <= bmax U), am the largest |a_i|, ms the largest slope
-   component: |G a| <= 4 am g, the e-columns (w c N, w N_p z, w c X with
-   c = sum ap N_p) at most 8 rho L am bmax U g, M a at most 16 am rho L
-   g^2, and the p-columns of the scaling identity ((dF - ap M_p + sum_slope
-   (J_e q + M_e a)) / L, 6 slope components at most) at most rho L am U
-   (40 g^2 + 48 ms bmax U g); all below 256 rho L (1 + am) U h^2 with h = g
-   + bmax U (1 + ms).  1 when that and its factor without rho L stay below
-   REAL_MAX / 4. */
+/* d(M a)/dq bounded before it is formed, with g, A, Xc of
+   vlbe__ale_mass_ok (M <= rho L g^2), U = max(1, 1/L) (|p1/p2 partial of
+   N| <= bmax U), am the largest |a_i|, ms the largest slope component:
+   |G a| <= 4 am g, the e-columns (w c N, w N_p z, w c X with c = sum ap
+   N_p) at most 8 rho L am bmax U g, M a at most 16 am rho L g^2, and the
+   p-columns of the scaling identity ((dF - ap M_p + sum_slope (J_e q +
+   M_e a)) / L, 6 slope components at most) at most rho L am U (40 g^2 +
+   48 ms bmax U g); all below 256 rho L (1 + am) U h^2 with h = g + bmax U
+   (1 + ms).  1 when that and its factor without rho L stay below
+   REAL_MAX / 4 (which implies vlbe__ale_mass_ok). */
 VLBE_INLINE int vlbe__ale_mjac_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vlbe_real iL,
-                                    vlbe_real mp, vlbe_real ms, vlbe_real am)
+                                  vlbe_real mp, vlbe_real ms, vlbe_real am)
 {
     const vlbe_real A = bmax * (L > VLBE_R(1.0) ? L : VLBE_R(1.0));
     const vlbe_real U = iL > VLBE_R(1.0) ? iL : VLBE_R(1.0);
@@ -2110,116 +2194,223 @@ VLBE_INLINE int vlbe__ale_mjac_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vl
     return f <= VLBE_R(0.25) * VLBE_REAL_MAX && rho * L * f <= VLBE_R(0.25) * VLBE_REAL_MAX;
 }
 
-/* largest position and slope component of the two nodes of a planar q */
-VLBE_INLINE void vlbe__ale_qmax(const vlbe_real *q, vlbe_real *mp, vlbe_real *ms)
+/* largest position or spin-angle component (they scale with 1/L in the
+   p-partials) and slope component of the two nodes */
+VLBE_INLINE void vlbe__ale_qmax(const vlbe__ale_lay *ly, const vlbe_real *q, vlbe_real *mp,
+                                vlbe_real *ms)
 {
-    int i;
+    int i, c;
     *mp = *ms = VLBE_R(0.0);
-    for (i = 0; i < 2; ++i) { /* node i: r at 5 i, r' at 5 i + 2 */
-        const vlbe_real a = vlbe_fabs(q[5 * i]), b = vlbe_fabs(q[5 * i + 1]);
-        const vlbe_real c = vlbe_fabs(q[5 * i + 2]), d = vlbe_fabs(q[5 * i + 3]);
-        *mp = a > *mp ? a : *mp;
-        *mp = b > *mp ? b : *mp;
-        *ms = c > *ms ? c : *ms;
-        *ms = d > *ms ? d : *ms;
+    for (i = 0; i < 2; ++i) {
+        for (c = 0; c < ly->d; ++c) {
+            const vlbe_real a = vlbe_fabs(q[ly->e[2 * i] + c]);
+            const vlbe_real b = vlbe_fabs(q[ly->e[2 * i + 1] + c]);
+            *mp = a > *mp ? a : *mp;
+            *ms = b > *ms ? b : *ms;
+        }
+        if (ly->spin) {
+            const vlbe_real a = vlbe_fabs(q[ly->th[i]]);
+            *mp = a > *mp ? a : *mp;
+        }
     }
 }
 
-/* M(q) = rhoA int G^T G dp (eq. 19), bounded first (vlbe__ale_mass_ok):
-   VLBE_ENONFINITE, nothing written, when it could overflow. */
-VLBE_INLINE vlbe_status vlbe__ale_mass(const vlbe_ale_elem *el, int pm, const vlbe_real *q,
-                                         vlbe_real *VLBE_RESTRICT M)
+/* The density, mass rule and bound of one element, as the kernels below
+   take them (rhoI = 0: no spin field). */
+typedef struct vlbe__ale_inertia {
+    const vlbe_ale_rule *rm;
+    vlbe_real rhoA, rhoI, bmax;
+} vlbe__ale_inertia;
+
+/* M(q), bounded first (vlbe__ale_mass_ok): VLBE_ENONFINITE, nothing
+   written, when it could overflow. */
+VLBE_INLINE vlbe_status vlbe__ale_mass(const vlbe__ale_lay *ly, const vlbe__ale_inertia *in,
+                                       int pm, const vlbe_real *q, vlbe_real *VLBE_RESTRICT M)
 {
-    const vlbe_real L = q[9] - q[4];
-    vlbe_real Lp[6], mp = VLBE_R(0.0), ms = VLBE_R(0.0);
-    vlbe__ale_pt pt;
+    const vlbe_real L = q[ly->p[1]] - q[ly->p[0]];
+    vlbe_real Lp[6], X[2][3], Xt[2], mp = VLBE_R(0.0), ms = VLBE_R(0.0);
+    vlbe__ale_lpt pt;
     int g, i;
     vlbe__ale_lpow(L, Lp);
-    if (pm) vlbe__ale_qmax(q, &mp, &ms);
-    if (!vlbe__ale_mass_ok(el->bmax, el->mat.rhoA, L, Lp[3], mp, ms)) return VLBE_ENONFINITE;
-    for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
-    for (g = 0; g < el->rm.n; ++g) {
-        vlbe__ale_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, q, NULL, 0, &pt);
-        vlbe__ale_mass_pt(&pt, pm, el->mat.rhoA * el->rm.g[g].w * L, M);
+    if (pm) vlbe__ale_qmax(ly, q, &mp, &ms);
+    if (!vlbe__ale_mass_ok(in->bmax, in->rhoA + in->rhoI, L, Lp[3], mp, ms))
+        return VLBE_ENONFINITE;
+    for (i = 0; i < ly->n * ly->n; ++i) M[i] = VLBE_R(0.0);
+    for (g = 0; g < in->rm->n; ++g) {
+        const vlbe_real gw = in->rm->g[g].w;
+        vlbe__ale_lpt_eval(&in->rm->g[g], Lp, 0, 0, pm ? 3 : 1, &pt);
+        vlbe__ale_xp(ly, &pt, pm, q, X, Xt);
+        vlbe__ale_mass_pt(ly, &pt, pm, (const vlbe_real(*)[3])X, Xt, in->rhoA * gw * L,
+                          in->rhoI * gw * L, M);
     }
-    vlbe__ale_mass_mirror(M);
+    vlbe__ale_mass_mirror(ly, M);
     return VLBE_OK;
 }
 
+/* Mq = d(M a)/dq (zero with both p fixed: M is constant).  With z = G a
+   per field, d(G^T z)/de_j = G^T dz/de_j + (dG/de_j)^T z, dz/de_j = c_j
+   = sum_k a_pk dN_j/dp_k (the p-columns of G are linear in e); the
+   p-columns by the scaling identity with D = M and the rates a
+   (vlbe__ale_pcols).  Mq is written only after the bound check. */
+VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, const vlbe__ale_inertia *in,
+                                           int pm, const vlbe_real *q, const vlbe_real *a,
+                                           vlbe_real *VLBE_RESTRICT J)
+{
+    const int n = ly->n, d = ly->d;
+    vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Ma[VLBE_ALE3_NQ], dF[VLBE_ALE3_NQ];
+    vlbe_real ap[2], Lp[6], L, mp, ms, am = VLBE_R(0.0);
+    vlbe__ale_lpt pt;
+    int g, i, j, k, c;
+    for (i = 0; i < n * n; ++i) J[i] = VLBE_R(0.0);
+    if (!pm) return VLBE_OK;
+    L = q[ly->p[1]] - q[ly->p[0]];
+    ap[0] = (pm & 1) ? a[ly->p[0]] : VLBE_R(0.0);
+    ap[1] = (pm & 2) ? a[ly->p[1]] : VLBE_R(0.0);
+    vlbe__ale_lpow(L, Lp);
+    vlbe__ale_qmax(ly, q, &mp, &ms);
+    for (i = 0; i < n; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
+    if (!vlbe__ale_mjac_ok(in->bmax, in->rhoA + in->rhoI, L, Lp[3], mp, ms, am))
+        return VLBE_ENONFINITE;
+    for (i = 0; i < n; ++i) Ma[i] = VLBE_R(0.0);
+    for (i = 0; i < n * n; ++i) M[i] = VLBE_R(0.0);
+    for (g = 0; g < in->rm->n; ++g) { /* d(M a)/dq and M itself */
+        const vlbe_real gw = in->rm->g[g].w, wa = in->rhoA * gw * L, wi = in->rhoI * gw * L;
+        vlbe_real X[2][3], Xt[2], z[3], zt = VLBE_R(0.0), cN[4], cH[2];
+        vlbe__ale_lpt_eval(&in->rm->g[g], Lp, 0, 0, 3, &pt);
+        vlbe__ale_xp(ly, &pt, 3, q, X, Xt);
+        vlbe__ale_lsum(ly, pt.N[0][0], a, z); /* z = G_r a, zt = G_th a */
+        if (ly->spin) zt = vlbe__ale_lsum_th(ly, pt.H[0][0], a);
+        for (k = 0; k < 2; ++k)
+            if (pm & (1 << k)) {
+                for (c = 0; c < d; ++c) z[c] += ap[k] * X[k][c];
+                zt += ap[k] * Xt[k];
+            }
+        for (j = 0; j < 4; ++j) cN[j] = ap[0] * pt.N[0][1][j] + ap[1] * pt.N[0][2][j];
+        for (j = 0; j < 2; ++j) cH[j] = ap[0] * pt.H[0][1][j] + ap[1] * pt.H[0][2][j];
+        for (j = 0; j < 4; ++j) { /* M a: e-rows */
+            const vlbe_real wn = wa * pt.N[0][0][j];
+            for (c = 0; c < d; ++c) Ma[ly->e[j] + c] += wn * z[c];
+        }
+        if (ly->spin)
+            for (j = 0; j < 2; ++j) Ma[ly->th[j]] += wi * pt.H[0][0][j] * zt;
+        for (k = 0; k < 2; ++k)
+            if (pm & (1 << k)) {
+                const vlbe_real s = wa * vlbe__ale_dot(d, X[k], z);
+                Ma[ly->p[k]] += ly->spin ? s + wi * Xt[k] * zt : s;
+            }
+        for (j = 0; j < 4; ++j) { /* J: the e-columns */
+            const int cj = ly->e[j];
+            const vlbe_real wc = wa * cN[j];
+            if (wc != VLBE_R(0.0))
+                for (i = 0; i < 4; ++i) {
+                    const vlbe_real t = wc * pt.N[0][0][i];
+                    for (c = 0; c < d; ++c) J[(ly->e[i] + c) * n + cj + c] += t;
+                }
+            for (k = 0; k < 2; ++k)
+                if (pm & (1 << k)) {
+                    vlbe_real *row = J + ly->p[k] * n;
+                    const vlbe_real bb = wa * pt.N[0][1 + k][j];
+                    for (c = 0; c < d; ++c) row[cj + c] += bb * z[c] + wc * X[k][c];
+                }
+        }
+        if (ly->spin)
+            for (j = 0; j < 2; ++j) { /* J: the spin-angle columns */
+                const int cj = ly->th[j];
+                const vlbe_real wc = wi * cH[j];
+                for (i = 0; i < 2; ++i) J[ly->th[i] * n + cj] += wc * pt.H[0][0][i];
+                for (k = 0; k < 2; ++k)
+                    if (pm & (1 << k))
+                        J[ly->p[k] * n + cj] += wi * pt.H[0][1 + k][j] * zt + wc * Xt[k];
+            }
+        vlbe__ale_mass_pt(ly, &pt, pm, (const vlbe_real(*)[3])X, Xt, wa, wi, M);
+    }
+    vlbe__ale_mass_mirror(ly, M);
+    vlbe__ale_degree(ly, Ma, dF);
+    vlbe__ale_pcols(ly, L, pm, dF, ap, q, a, J, M);
+    return VLBE_OK;
+}
+
+/* Kinetic energy T = int (rhoA |r_t|^2 + rhoI theta_t^2) / 2 dp with r_t
+   = G_r q', theta_t = G_th q', and the potential V = -int f . r dp of the
+   distributed load f, over the mass points. */
+VLBE_INLINE void vlbe__ale_kin_pot(const vlbe__ale_lay *ly, const vlbe__ale_inertia *in,
+                                   const vlbe_real *f, int pm, const vlbe_real *q,
+                                   const vlbe_real *qd, vlbe_real *T, vlbe_real *V)
+{
+    const int d = ly->d;
+    const vlbe_real L = q[ly->p[1]] - q[ly->p[0]];
+    vlbe_real Lp[6], X[2][3], Xt[2];
+    vlbe__ale_lpt pt;
+    int g, k, c;
+    vlbe__ale_lpow(L, Lp);
+    *T = *V = VLBE_R(0.0);
+    for (g = 0; g < in->rm->n; ++g) {
+        const vlbe_real w = in->rm->g[g].w * L;
+        vlbe_real v[3], r[3], vt = VLBE_R(0.0);
+        vlbe__ale_lpt_eval(&in->rm->g[g], Lp, 0, 0, pm ? 3 : 1, &pt);
+        vlbe__ale_xp(ly, &pt, pm, q, X, Xt);
+        vlbe__ale_lsum(ly, pt.N[0][0], qd, v);
+        if (ly->spin) vt = vlbe__ale_lsum_th(ly, pt.H[0][0], qd);
+        for (k = 0; k < 2; ++k)
+            if (pm & (1 << k)) {
+                for (c = 0; c < d; ++c) v[c] += qd[ly->p[k]] * X[k][c];
+                vt += qd[ly->p[k]] * Xt[k];
+            }
+        *T += w * VLBE_R(0.5) * in->rhoA * vlbe__ale_dot(d, v, v);
+        if (ly->spin) *T += w * VLBE_R(0.5) * in->rhoI * vt * vt;
+        vlbe__ale_lsum(ly, pt.N[0][0], q, r);
+        *V -= w * vlbe__ale_dot(d, f, r);
+    }
+}
+
+/* The planar element's density, mass rule and bound */
+VLBE_INLINE void vlbe__ale_inertia2(const vlbe_ale_elem *el, vlbe__ale_inertia *in)
+{
+    in->rm = &el->rm;
+    in->rhoA = el->mat.rhoA;
+    in->rhoI = VLBE_R(0.0);
+    in->bmax = el->bmax;
+}
+
+/* M(q) = rhoA int G^T G dp (eq. 19), through vlbe__ale_mass */
 VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
                                    vlbe_real *VLBE_RESTRICT M)
 {
+    vlbe__ale_inertia in;
     vlbe_status st;
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
-    return vlbe__ale_mass(el, vlbe__ale_pmask(mode | el->flags), q, M);
+    vlbe__ale_inertia2(el, &in);
+    return vlbe__ale_mass(vlbe__ale_lay2(), &in, vlbe__ale_pmask(mode | el->flags), q, M);
 }
 
 VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
                                        const vlbe_real *a, vlbe_real *VLBE_RESTRICT Mq)
 {
-    vlbe_real M[100], Ma[10], J[100], dF[10], ap[2], Lp[6], L;
-    vlbe__ale_pt pt;
+    vlbe__ale_inertia in;
     vlbe_status st;
-    int g, i, j, pm;
     VLBE_ASSERT(el != NULL && q != NULL && a != NULL && Mq != NULL);
-    pm = vlbe__ale_pmask(mode | el->flags);
     if ((st = vlbe__ale_check(q, a)) != VLBE_OK) return st;
-    for (i = 0; i < 100; ++i) J[i] = VLBE_R(0.0);
-    if (pm) { /* with both p fixed M is constant and J stays zero */
-        vlbe_real mp, ms, am = VLBE_R(0.0);
-        L = q[9] - q[4];
-        ap[0] = (pm & 1) ? a[4] : VLBE_R(0.0);
-        ap[1] = (pm & 2) ? a[9] : VLBE_R(0.0);
-        vlbe__ale_lpow(L, Lp);
-        vlbe__ale_qmax(q, &mp, &ms);
-        for (i = 0; i < 10; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
-        if (!vlbe__ale_mjac_ok(el->bmax, el->mat.rhoA, L, Lp[3], mp, ms, am))
-            return VLBE_ENONFINITE;
-        for (i = 0; i < 10; ++i) Ma[i] = VLBE_R(0.0);
-        for (i = 0; i < 100; ++i) M[i] = VLBE_R(0.0);
-        for (g = 0; g < el->rm.n; ++g) { /* d(M a)/dq and M itself */
-            const vlbe_ale_gp *gp = &el->rm.g[g];
-            const vlbe_real w = el->mat.rhoA * gp->w * L;
-            vlbe_real z[2], c[4];
-            vlbe__ale_pt_eval(gp, Lp, 0, 0, 3, q, a, 1, &pt);
-            vlbe__ale_rate(&pt, 0, pm, ap, z);
-            for (j = 0; j < 4; ++j) c[j] = ap[0] * pt.N[0][1][j] + ap[1] * pt.N[0][2][j];
-            vlbe__ale_gtz(&pt, pm, w, z, c, Ma, J);
-            vlbe__ale_mass_pt(&pt, pm, w, M);
-        }
-        vlbe__ale_mass_mirror(M);
-        vlbe__ale_degree(vlbe__ale_lay2(), Ma, dF);
-        vlbe__ale_pcols(vlbe__ale_lay2(), L, pm, dF, ap, q, a, J, M);
-    }
-    for (i = 0; i < 100; ++i) Mq[i] = J[i];
-    return VLBE_OK;
+    vlbe__ale_inertia2(el, &in);
+    return vlbe__ale_mass_jac(vlbe__ale_lay2(), &in, vlbe__ale_pmask(mode | el->flags), q, a, Mq);
 }
 
 VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
                                      const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
 {
     const vlbe_ale_mat *mt = &el->mat;
-    vlbe_real L, pd[2], Lp[6], gy[4], T = VLBE_R(0.0), U = VLBE_R(0.0), V = VLBE_R(0.0);
+    vlbe_real L, Lp[6], gy[4], T, U = VLBE_R(0.0), V;
+    vlbe__ale_inertia in;
     vlbe__ale_pt pt;
     vlbe_status st;
-    int g, pm;
+    int g;
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
     mode |= el->flags;
-    pm = vlbe__ale_pmask(mode);
     if ((st = vlbe__ale_check(q, qd)) != VLBE_OK) return st;
+    vlbe__ale_inertia2(el, &in);
+    vlbe__ale_kin_pot(vlbe__ale_lay2(), &in, mt->f, vlbe__ale_pmask(mode), q, qd, &T, &V);
     L = q[9] - q[4];
-    pd[0] = (pm & 1) ? qd[4] : VLBE_R(0.0);
-    pd[1] = (pm & 2) ? qd[9] : VLBE_R(0.0);
     vlbe__ale_lpow(L, Lp);
-    for (g = 0; g < el->rm.n; ++g) {
-        const vlbe_ale_gp *gp = &el->rm.g[g];
-        vlbe_real v[2];
-        vlbe__ale_pt_eval(gp, Lp, 0, 0, pm ? 3 : 1, q, qd, 1, &pt);
-        vlbe__ale_rate(&pt, 0, pm, pd, v);
-        T += gp->w * L * VLBE_R(0.5) * mt->rhoA * vlbe_v2_dot(v, v);
-        V -= gp->w * L * vlbe_v2_dot(mt->f, pt.X[0][0]);
-    }
     for (g = 0; g < el->rl.n; ++g) {
         vlbe_real eps;
         vlbe__ale_pt_eval(&el->rl.g[g], Lp, 1, 1, 1, q, NULL, 0, &pt);
@@ -3057,47 +3248,6 @@ VLBE_INLINE vlbe_status vlbe__ale3_check(const vlbe__ale_lay *ly, const vlbe_rea
     return vlbe__ale_len(q[ly->p[0]], q[ly->p[1]]);
 }
 
-/* The basis at one point scaled to the current L: N[k][a][j] = L^(m_j - k
-   - |a|) b[k][a][j] (Hermite), H[k][a][j] = L^(-k - |a|) l[k][a][j]
-   (linear); rows k0..kmax, partials a < na at k = 0, a < min(na, 3)
-   above. */
-typedef struct vlbe__ale3_pt {
-    vlbe_real N[3][VLBE_DA_N][4];
-    vlbe_real H[2][VLBE_DA_N][2];
-} vlbe__ale3_pt;
-
-VLBE_INLINE void vlbe__ale3_pt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
-                                    int na, vlbe__ale3_pt *VLBE_RESTRICT pt)
-{
-    int k, a, j;
-    for (k = k0; k <= kmax; ++k) {
-        const int nak = (k == 0 || na < 3) ? na : 3;
-        for (a = 0; a < nak; ++a) {
-            const int d = 4 - k - (a == 0 ? 0 : (a < 3 ? 1 : 2));
-            for (j = 0; j < 4; ++j) pt->N[k][a][j] = gp->b[k][a][j] * Lp[d + (j & 1)];
-            if (k < 2)
-                for (j = 0; j < 2; ++j) pt->H[k][a][j] = gp->l[k][a][j] * Lp[d];
-        }
-    }
-}
-
-/* out = sum_j n[j] x_j over the four 3-vectors of x (r1, r1', r2, r2') */
-VLBE_INLINE void vlbe__ale3_sum(const vlbe__ale_lay *ly, const vlbe_real *n, const vlbe_real *x,
-                                vlbe_real *out)
-{
-    int j, c;
-    for (c = 0; c < 3; ++c) out[c] = VLBE_R(0.0);
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < 3; ++c) out[c] += n[j] * x[ly->e[j] + c];
-}
-
-/* sum_j h[j] x_th_j over the two spin angles (0 without spin) */
-VLBE_INLINE vlbe_real vlbe__ale3_tsum(const vlbe__ale_lay *ly, const vlbe_real *h,
-                                      const vlbe_real *x)
-{
-    return ly->spin ? h[0] * x[ly->th[0]] + h[1] * x[ly->th[1]] : VLBE_R(0.0);
-}
-
 /* [v]x applied: out = v x u, and the matrix rows of [v]x */
 VLBE_INLINE void vlbe__ale3_skew(const vlbe_real *v, vlbe_real *S)
 {
@@ -3216,7 +3366,7 @@ VLBE_INLINE vlbe_status vlbe__ale3_bend(const vlbe_real *a, const vlbe_real *b,
    of the spin angles (H' against the twist row) and, for a free p_k, the
    part Y_k^T T of its row (Y: 2 rows of 7, the p_k-partials of the
    strains; T: nr rows of VLBE_ALE3_NQ, those of the strain rows in use). */
-VLBE_INLINE void vlbe__ale3_sub_ztt(const vlbe__ale_lay *ly, const vlbe__ale3_pt *pt,
+VLBE_INLINE void vlbe__ale3_sub_ztt(const vlbe__ale_lay *ly, const vlbe__ale_lpt *pt,
                                     vlbe_real w, int bend, int twist, int pm, int nr,
                                     const int *rows, const vlbe_real *Y, const vlbe_real *T,
                                     vlbe_real *X)
@@ -3266,26 +3416,26 @@ VLBE_INLINE vlbe_status vlbe__ale3_strain_gp(const vlbe_ale3_elem *el, const vlb
     const vlbe_ale3_mat *mt = &el->mat;
     const int n = ly->n, jac = K != NULL, nz = bend ? 6 : 3;
     const vlbe_real w = gp->w * Lp[5];
-    vlbe__ale3_pt pt;
+    vlbe__ale_lpt pt;
     vlbe_real y[7], Y[2][7], yd[7], G[7] = {0, 0, 0, 0, 0, 0, 0}, Gx[7] = {0, 0, 0, 0, 0, 0, 0};
     vlbe_real A[49], Ad[49], T[7][VLBE_ALE3_NQ], Nd[3][4], Hd[2];
     int i, j, k, c, rows[7], nr = 0;
     vlbe_status st;
-    vlbe__ale3_pt_eval(gp, Lp, 1, bend ? 2 : 1, pm ? 3 : 1, &pt);
+    vlbe__ale_lpt_eval(gp, Lp, 1, bend ? 2 : 1, pm ? 3 : 1, &pt);
     for (c = 0; c < 7; ++c) y[c] = yd[c] = Y[0][c] = Y[1][c] = VLBE_R(0.0);
-    vlbe__ale3_sum(ly, pt.N[1][0], q, y);
-    if (bend) vlbe__ale3_sum(ly, pt.N[2][0], q, y + 3);
-    if (twist) y[6] = vlbe__ale3_tsum(ly, pt.H[1][0], q);
+    vlbe__ale_lsum(ly, pt.N[1][0], q, y);
+    if (bend) vlbe__ale_lsum(ly, pt.N[2][0], q, y + 3);
+    if (twist) y[6] = vlbe__ale_lsum_th(ly, pt.H[1][0], q);
     for (k = 0; k < 2; ++k)
         if (pm & (1 << k)) {
-            vlbe__ale3_sum(ly, pt.N[1][1 + k], q, Y[k]);
-            if (bend) vlbe__ale3_sum(ly, pt.N[2][1 + k], q, Y[k] + 3);
-            if (twist) Y[k][6] = vlbe__ale3_tsum(ly, pt.H[1][1 + k], q);
+            vlbe__ale_lsum(ly, pt.N[1][1 + k], q, Y[k]);
+            if (bend) vlbe__ale_lsum(ly, pt.N[2][1 + k], q, Y[k] + 3);
+            if (twist) Y[k][6] = vlbe__ale_lsum_th(ly, pt.H[1][1 + k], q);
         }
     if (damp) {
-        vlbe__ale3_sum(ly, pt.N[1][0], qd, yd);
-        if (bend) vlbe__ale3_sum(ly, pt.N[2][0], qd, yd + 3);
-        if (twist) yd[6] = vlbe__ale3_tsum(ly, pt.H[1][0], qd);
+        vlbe__ale_lsum(ly, pt.N[1][0], qd, yd);
+        if (bend) vlbe__ale_lsum(ly, pt.N[2][0], qd, yd + 3);
+        if (twist) yd[6] = vlbe__ale_lsum_th(ly, pt.H[1][0], qd);
         for (k = 0; k < 2; ++k)
             for (c = 0; c < 7; ++c) yd[c] += pd[k] * Y[k][c];
     }
@@ -3428,7 +3578,7 @@ VLBE_INLINE vlbe_status vlbe__ale3_strain_gp(const vlbe_ale3_elem *el, const vlb
    columns).  pt holds k = 0 with all partials when pm != 0. */
 VLBE_INLINE void vlbe__ale3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe_real *f,
                                        const vlbe__ale_lay *ly,
-                                       const vlbe__ale3_pt *pt, int pm, const vlbe_real *pd,
+                                       const vlbe__ale_lpt *pt, int pm, const vlbe_real *pd,
                                        vlbe_real w, const vlbe_real *q, const vlbe_real *qd,
                                        vlbe_real *Q, vlbe_real *K, vlbe_real *D)
 {
@@ -3441,16 +3591,16 @@ VLBE_INLINE void vlbe__ale3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe_real 
     for (c = 0; c < 3; ++c) z[c] = f[c];
     if (pm) {
         for (k = 0; k < 2; ++k) {
-            vlbe__ale3_sum(ly, pt->N[0][1 + k], q, X[k]);
-            vlbe__ale3_sum(ly, pt->N[0][1 + k], qd, V[k]);
+            vlbe__ale_lsum(ly, pt->N[0][1 + k], q, X[k]);
+            vlbe__ale_lsum(ly, pt->N[0][1 + k], qd, V[k]);
             if (spin) {
-                Xt[k] = vlbe__ale3_tsum(ly, pt->H[0][1 + k], q);
-                Vt[k] = vlbe__ale3_tsum(ly, pt->H[0][1 + k], qd);
+                Xt[k] = vlbe__ale_lsum_th(ly, pt->H[0][1 + k], q);
+                Vt[k] = vlbe__ale_lsum_th(ly, pt->H[0][1 + k], qd);
             }
         }
         for (k = 0; k < 3; ++k) {
-            vlbe__ale3_sum(ly, pt->N[0][VLBE_DA_11 + k], q, Xkl[k]);
-            if (spin) Xtl[k] = vlbe__ale3_tsum(ly, pt->H[0][VLBE_DA_11 + k], q);
+            vlbe__ale_lsum(ly, pt->N[0][VLBE_DA_11 + k], q, Xkl[k]);
+            if (spin) Xtl[k] = vlbe__ale_lsum_th(ly, pt->H[0][VLBE_DA_11 + k], q);
         }
         for (c = 0; c < 3; ++c)
             z[c] -= mt->rhoA * (VLBE_R(2.0) * (pd[0] * V[0][c] + pd[1] * V[1][c]) +
@@ -3556,8 +3706,8 @@ VLBE_INLINE vlbe_status vlbe__ale3_forces(const vlbe_ale3_elem *el, const vlbe__
     if (pm || f0)
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_ale_gp *gp = &el->rm.g[g];
-            vlbe__ale3_pt pt; /* per point: its storage is shared with the strain points' */
-            vlbe__ale3_pt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
+            vlbe__ale_lpt pt; /* per point: its storage is shared with the strain points' */
+            vlbe__ale_lpt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
             vlbe__ale3_inertia_pt(mt, f, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
         }
     if (mt->EA != VLBE_R(0.0) || bend || twist)
@@ -3616,227 +3766,82 @@ VLBE_API vlbe_status vlbe_ale3_force(const vlbe_ale3_elem *el, unsigned mode, co
     return vlbe__ale3_force(el, mode, q, qd, Q, K, D, NULL);
 }
 
-/* largest position or spin-angle component (they scale with 1/L in the
-   p-partials) and slope component of the two nodes of a 3D q */
-VLBE_INLINE void vlbe__ale3_qmax(const vlbe__ale_lay *ly, const vlbe_real *q, vlbe_real *mp,
-                                 vlbe_real *ms)
+/* The 3D element's layout, density, mass rule and bound, and the check
+   of q and u (a rate or an acceleration; NULL: none) */
+VLBE_INLINE vlbe_status vlbe__ale3_setup(const vlbe_ale3_elem *el, unsigned mode,
+                                         const vlbe_real *q, const vlbe_real *u, vlbe__ale_lay *ly,
+                                         vlbe__ale_inertia *in)
 {
-    int i, c;
-    *mp = *ms = VLBE_R(0.0);
-    for (i = 0; i < 2; ++i) {
-        for (c = 0; c < 3; ++c) {
-            const vlbe_real a = vlbe_fabs(q[ly->e[2 * i] + c]);
-            const vlbe_real b = vlbe_fabs(q[ly->e[2 * i + 1] + c]);
-            *mp = a > *mp ? a : *mp;
-            *ms = b > *ms ? b : *ms;
-        }
-        if (ly->spin) {
-            const vlbe_real a = vlbe_fabs(q[ly->th[i]]);
-            *mp = a > *mp ? a : *mp;
-        }
-    }
+    vlbe__ale_layout(mode, ly);
+    in->rm = &el->rm;
+    in->rhoA = el->mat.rhoA;
+    in->rhoI = el->mat.rhoI;
+    in->bmax = el->bmax;
+    return vlbe__ale3_check(ly, q, u);
 }
 
-/* M(q) (eq. 28): w rhoA G_r^T G_r + w rhoI G_th^T G_th summed over the
-   mass points, G_r = [N_j I | X_k], G_th = [H_j | Theta_k].  Bounded
-   first (vlbe__ale_mass_ok): VLBE_ENONFINITE, nothing written, when it
-   could overflow. */
+/* M(q) (eq. 28), through vlbe__ale_mass */
 VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
                                     vlbe_real *VLBE_RESTRICT M)
 {
-    const vlbe_ale3_mat *mt = &el->mat;
     vlbe__ale_lay ly;
-    vlbe__ale3_pt pt;
-    vlbe_real Lp[6], L, X[2][3], Xt[2];
-    vlbe_real mp = VLBE_R(0.0), ms = VLBE_R(0.0);
+    vlbe__ale_inertia in;
     vlbe_status st;
-    int g, i, j, k, l, c, n, pm;
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
     mode |= el->flags;
-    vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__ale3_check(&ly, q, NULL)) != VLBE_OK) return st;
-    n = ly.n;
-    pm = vlbe__ale_pmask(mode);
-    L = q[ly.p[1]] - q[ly.p[0]];
-    vlbe__ale_lpow(L, Lp);
-    if (pm) vlbe__ale3_qmax(&ly, q, &mp, &ms);
-    if (!vlbe__ale_mass_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms))
-        return VLBE_ENONFINITE;
-    for (i = 0; i < n * n; ++i) M[i] = VLBE_R(0.0);
-    for (g = 0; g < el->rm.n; ++g) {
-        const vlbe_real w = el->rm.g[g].w * L, wa = w * mt->rhoA, wi = w * mt->rhoI;
-        vlbe__ale3_pt_eval(&el->rm.g[g], Lp, 0, 0, pm ? 3 : 1, &pt);
-        for (k = 0; k < 2; ++k) {
-            Xt[k] = VLBE_R(0.0);
-            if (pm & (1 << k)) {
-                vlbe__ale3_sum(&ly, pt.N[0][1 + k], q, X[k]);
-                Xt[k] = vlbe__ale3_tsum(&ly, pt.H[0][1 + k], q);
-            }
-        }
-        for (i = 0; i < 4; ++i) {
-            const vlbe_real ni = wa * pt.N[0][0][i];
-            for (j = 0; j < 4; ++j)
-                for (c = 0; c < 3; ++c) M[(ly.e[i] + c) * n + ly.e[j] + c] += ni * pt.N[0][0][j];
-            for (k = 0; k < 2; ++k)
-                if (pm & (1 << k))
-                    for (c = 0; c < 3; ++c) {
-                        M[(ly.e[i] + c) * n + ly.p[k]] += ni * X[k][c];
-                        M[ly.p[k] * n + ly.e[i] + c] += ni * X[k][c];
-                    }
-        }
-        if (ly.spin)
-            for (i = 0; i < 2; ++i) {
-                const vlbe_real hi = wi * pt.H[0][0][i];
-                for (j = 0; j < 2; ++j) M[ly.th[i] * n + ly.th[j]] += hi * pt.H[0][0][j];
-                for (k = 0; k < 2; ++k)
-                    if (pm & (1 << k)) {
-                        M[ly.th[i] * n + ly.p[k]] += hi * Xt[k];
-                        M[ly.p[k] * n + ly.th[i]] += hi * Xt[k];
-                    }
-            }
-        for (k = 0; k < 2; ++k)
-            for (l = 0; l < 2; ++l)
-                if ((pm & (1 << k)) && (pm & (1 << l)))
-                    M[ly.p[k] * n + ly.p[l]] += wa * vlbe_v3_dot(X[k], X[l]) + wi * Xt[k] * Xt[l];
-    }
-    return VLBE_OK;
+    if ((st = vlbe__ale3_setup(el, mode, q, NULL, &ly, &in)) != VLBE_OK) return st;
+    return vlbe__ale_mass(&ly, &in, vlbe__ale_pmask(mode), q, M);
 }
 
-/* Mq = d(M a)/dq (zero with both p fixed: M is constant).  With z = rho G a
-   per field, d(G^T z)/de_j = G^T dz/de_j + (dG/de_j)^T z, dz/de_j = rho
-   sum_k a_pk dN_j/dp_k (the p-columns of G are linear in e), and the
-   p-columns by the scaling identity with D = M and the rates a. */
 VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
                                         const vlbe_real *q, const vlbe_real *a,
                                         vlbe_real *VLBE_RESTRICT Mq)
 {
-    const vlbe_ale3_mat *mt = &el->mat;
-    vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ], *const J = Mq; /* written only after
-                                                                   the last check */
-    vlbe_real Ma[VLBE_ALE3_NQ], dF[VLBE_ALE3_NQ], ap[2], Lp[6], L;
     vlbe__ale_lay ly;
-    vlbe__ale3_pt pt;
+    vlbe__ale_inertia in;
     vlbe_status st;
-    int g, i, j, k, c, n, nn, pm;
     VLBE_ASSERT(el != NULL && q != NULL && a != NULL && Mq != NULL);
     mode |= el->flags;
-    vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__ale3_check(&ly, q, a)) != VLBE_OK) return st;
-    n = ly.n;
-    nn = n * n;
-    pm = vlbe__ale_pmask(mode);
-    if (!pm)
-        for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
-    else {
-        vlbe_real mp, ms, am = VLBE_R(0.0);
-        if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
-        L = q[ly.p[1]] - q[ly.p[0]];
-        ap[0] = (pm & 1) ? a[ly.p[0]] : VLBE_R(0.0);
-        ap[1] = (pm & 2) ? a[ly.p[1]] : VLBE_R(0.0);
-        vlbe__ale_lpow(L, Lp);
-        vlbe__ale3_qmax(&ly, q, &mp, &ms);
-        for (i = 0; i < n; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
-        if (!vlbe__ale_mjac_ok(el->bmax, mt->rhoA + mt->rhoI, L, Lp[3], mp, ms, am))
-            return VLBE_ENONFINITE;
-        for (i = 0; i < nn; ++i) J[i] = VLBE_R(0.0);
-        for (i = 0; i < n; ++i) Ma[i] = VLBE_R(0.0);
-        for (g = 0; g < el->rm.n; ++g) {
-            const vlbe_real w = el->rm.g[g].w * L;
-            vlbe_real X[2][3], Xt[2] = {0, 0}, z[3], zt = VLBE_R(0.0), c4[4], c2[2];
-            vlbe__ale3_pt_eval(&el->rm.g[g], Lp, 0, 0, 3, &pt);
-            vlbe__ale3_sum(&ly, pt.N[0][0], a, z);
-            if (ly.spin) zt = vlbe__ale3_tsum(&ly, pt.H[0][0], a);
-            for (k = 0; k < 2; ++k) {
-                vlbe__ale3_sum(&ly, pt.N[0][1 + k], q, X[k]);
-                if (ly.spin) Xt[k] = vlbe__ale3_tsum(&ly, pt.H[0][1 + k], q);
-                for (c = 0; c < 3; ++c) z[c] += ap[k] * X[k][c];
-                zt += ap[k] * Xt[k];
-            }
-            for (c = 0; c < 3; ++c) z[c] *= mt->rhoA;
-            zt *= mt->rhoI;
-            for (j = 0; j < 4; ++j) {
-                c4[j] = mt->rhoA * (ap[0] * pt.N[0][1][j] + ap[1] * pt.N[0][2][j]);
-                for (c = 0; c < 3; ++c) Ma[ly.e[j] + c] += w * pt.N[0][0][j] * z[c];
-            }
-            for (j = 0; j < 2; ++j) {
-                c2[j] = mt->rhoI * (ap[0] * pt.H[0][1][j] + ap[1] * pt.H[0][2][j]);
-                if (ly.spin) Ma[ly.th[j]] += w * pt.H[0][0][j] * zt;
-            }
-            for (k = 0; k < 2; ++k)
-                if (pm & (1 << k)) Ma[ly.p[k]] += w * (vlbe_v3_dot(X[k], z) + Xt[k] * zt);
-            for (j = 0; j < 4; ++j)
-                for (c = 0; c < 3; ++c) {
-                    const int cj = ly.e[j] + c;
-                    for (i = 0; i < 4; ++i) J[(ly.e[i] + c) * n + cj] += w * pt.N[0][0][i] * c4[j];
-                    for (k = 0; k < 2; ++k)
-                        if (pm & (1 << k))
-                            J[ly.p[k] * n + cj] += w * (pt.N[0][1 + k][j] * z[c] + X[k][c] * c4[j]);
-                }
-            if (ly.spin)
-                for (j = 0; j < 2; ++j) {
-                    const int cj = ly.th[j];
-                    for (i = 0; i < 2; ++i) J[ly.th[i] * n + cj] += w * pt.H[0][0][i] * c2[j];
-                    for (k = 0; k < 2; ++k)
-                        if (pm & (1 << k))
-                            J[ly.p[k] * n + cj] += w * (pt.H[0][1 + k][j] * zt + Xt[k] * c2[j]);
-                }
-        }
-        vlbe__ale_degree(&ly, Ma, dF);
-        vlbe__ale_pcols(&ly, L, pm, dF, ap, q, a, J, M);
-    }
-    return VLBE_OK;
+    if ((st = vlbe__ale3_setup(el, mode, q, a, &ly, &in)) != VLBE_OK) return st;
+    return vlbe__ale_mass_jac(&ly, &in, vlbe__ale_pmask(mode), q, a, Mq);
 }
 
-/* E = {T, U, V}: kinetic energy q'^T M q' / 2, strain energy int (EA eps^2
-   + EJ |k|^2 + GI phi^2)/2 dp, load potential -int f . r dp. */
+/* E = {T, U, V}: kinetic energy and load potential by vlbe__ale_kin_pot,
+   strain energy int (EA eps^2 + EJ |k|^2 + GI phi^2)/2 dp. */
 VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, const vlbe_real *q,
                                       const vlbe_real *qd, vlbe_real *VLBE_RESTRICT E)
 {
     const vlbe_ale3_mat *mt = &el->mat;
-    vlbe_real Lp[6], L, T = VLBE_R(0.0), U = VLBE_R(0.0);
-    vlbe_real V = VLBE_R(0.0);
+    vlbe_real Lp[6], L, T, U = VLBE_R(0.0), V;
     vlbe__ale_lay ly;
-    vlbe__ale3_pt pt;
+    vlbe__ale_inertia in;
+    vlbe__ale_lpt pt;
     vlbe_status st;
     int g, bend, twist;
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
     mode |= el->flags;
-    vlbe__ale_layout(mode, &ly);
-    if ((st = vlbe__ale3_check(&ly, q, qd)) != VLBE_OK) return st;
-    { /* T through M, whose storage ends here (pt below may reuse it) */
-        vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
-        const int n = ly.n;
-        int i, j;
-        if ((st = vlbe_ale3_mass(el, mode, q, M)) != VLBE_OK) return st;
-        for (i = 0; i < n; ++i)
-            for (j = 0; j < n; ++j) T += VLBE_R(0.5) * qd[i] * M[i * n + j] * qd[j];
-    }
+    if ((st = vlbe__ale3_setup(el, mode, q, qd, &ly, &in)) != VLBE_OK) return st;
+    vlbe__ale_kin_pot(&ly, &in, mt->f, vlbe__ale_pmask(mode), q, qd, &T, &V);
     bend = !(mode & VLBE_ALE_NO_BEND) && mt->EJ != VLBE_R(0.0);
     twist = ly.spin && !(mode & VLBE_ALE3_NO_TWIST) && mt->GI != VLBE_R(0.0);
     L = q[ly.p[1]] - q[ly.p[0]];
     vlbe__ale_lpow(L, Lp);
-    for (g = 0; g < el->rm.n; ++g) {
-        vlbe_real r[3];
-        vlbe__ale3_pt_eval(&el->rm.g[g], Lp, 0, 0, 1, &pt);
-        vlbe__ale3_sum(&ly, pt.N[0][0], q, r);
-        V -= el->rm.g[g].w * L * vlbe_v3_dot(mt->f, r);
-    }
     for (g = 0; g < el->rs.n; ++g) {
         const vlbe_real w = el->rs.g[g].w * L;
         vlbe_real a[3], b[3], G[7], kk = VLBE_R(0.0), eps, phi;
-        vlbe__ale3_pt_eval(&el->rs.g[g], Lp, 1, bend ? 2 : 1, 1, &pt);
-        vlbe__ale3_sum(&ly, pt.N[1][0], q, a);
+        vlbe__ale_lpt_eval(&el->rs.g[g], Lp, 1, bend ? 2 : 1, 1, &pt);
+        vlbe__ale_lsum(&ly, pt.N[1][0], q, a);
         eps = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
         U += w * VLBE_R(0.5) * mt->EA * eps * eps;
         if (bend) {
-            vlbe__ale3_sum(&ly, pt.N[2][0], q, b);
+            vlbe__ale_lsum(&ly, pt.N[2][0], q, b);
             if ((st = vlbe__ale3_bend(a, b, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL,
                                     &kk)) != VLBE_OK)
                 return st;
             U += w * VLBE_R(0.5) * mt->EJ * kk;
         }
         if (twist) {
-            phi = vlbe__ale3_tsum(&ly, pt.H[1][0], q);
+            phi = vlbe__ale_lsum_th(&ly, pt.H[1][0], q);
             U += w * VLBE_R(0.5) * mt->GI * phi * phi;
         }
     }
@@ -3863,9 +3868,9 @@ VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_rea
     if ((st = vlbe__ale3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 1, 0, &b);
-    vlbe__ale3_sum(&ly, b.h[0][0], q, x);
-    vlbe__ale3_sum(&ly, b.h[1][0], q, x + 3);
-    x[6] = vlbe__ale3_tsum(&ly, b.l[0][0], q);
+    vlbe__ale_lsum(&ly, b.h[0][0], q, x);
+    vlbe__ale_lsum(&ly, b.h[1][0], q, x + 3);
+    x[6] = vlbe__ale_lsum_th(&ly, b.l[0][0], q);
     if (!vlbe_all_finite(x, 7)) return VLBE_ENONFINITE;
     for (i = 0; i < 3; ++i) {
         if (r) r[i] = x[i];
@@ -3890,15 +3895,15 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
     if ((st = vlbe__ale3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 2, 0, &b);
-    vlbe__ale3_sum(&ly, b.h[1][0], q, a);
-    vlbe__ale3_sum(&ly, b.h[2][0], q, r2);
+    vlbe__ale_lsum(&ly, b.h[1][0], q, a);
+    vlbe__ale_lsum(&ly, b.h[2][0], q, r2);
     if (kap &&
         (st = vlbe__ale3_bend(a, r2, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL, &kk)) !=
             VLBE_OK)
         return st;
     x[0] = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
     x[1] = vlbe_sqrt(kk);
-    x[2] = vlbe__ale3_tsum(&ly, b.l[1][0], q);
+    x[2] = vlbe__ale_lsum_th(&ly, b.l[1][0], q);
     if ((eps && !isfinite(x[0])) || (kap && !isfinite(x[1])) || (phi && !isfinite(x[2])))
         return VLBE_ENONFINITE;
     if (eps) *eps = x[0];
@@ -3931,12 +3936,12 @@ VLBE_INLINE vlbe_status vlbe__ale3_point_add(unsigned mode, const vlbe_real *q, 
     vlbe_herm_ale_eval(pf, q[ly.p[0]], q[ly.p[1]], 0, 2, &b);
     if (torque) {
         for (j = 0; j < 2; ++j) Q[ly.th[j]] += b.l[0][0][j] * T;
-        for (k = 0; k < 2; ++k) Q[ly.p[k]] += vlbe__ale3_tsum(&ly, b.l[0][1 + k], q) * T;
+        for (k = 0; k < 2; ++k) Q[ly.p[k]] += vlbe__ale_lsum_th(&ly, b.l[0][1 + k], q) * T;
     } else {
         for (j = 0; j < 4; ++j)
             for (c = 0; c < 3; ++c) Q[ly.e[j] + c] += b.h[0][0][j] * F[c];
         for (k = 0; k < 2; ++k) {
-            vlbe__ale3_sum(&ly, b.h[0][1 + k], q, x);
+            vlbe__ale_lsum(&ly, b.h[0][1 + k], q, x);
             Q[ly.p[k]] += vlbe_v3_dot(x, F);
         }
     }
@@ -3958,9 +3963,9 @@ VLBE_INLINE vlbe_status vlbe__ale3_point_add(unsigned mode, const vlbe_real *q, 
                 }
         for (l = 0; l < 2; ++l) {
             if (torque)
-                row[ly.p[l]] += vlbe__ale3_tsum(&ly, b.l[0][dd[k][l]], q) * T;
+                row[ly.p[l]] += vlbe__ale_lsum_th(&ly, b.l[0][dd[k][l]], q) * T;
             else {
-                vlbe__ale3_sum(&ly, b.h[0][dd[k][l]], q, x);
+                vlbe__ale_lsum(&ly, b.h[0][dd[k][l]], q, x);
                 row[ly.p[l]] += vlbe_v3_dot(x, F);
             }
         }
