@@ -2261,8 +2261,10 @@ VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, const vlbe__
     vlbe_real ap[2], Lp[6], L, mp, ms, am = VLBE_R(0.0);
     vlbe__ale_lpt pt;
     int g, i, j, k, c;
-    for (i = 0; i < n * n; ++i) J[i] = VLBE_R(0.0);
-    if (!pm) return VLBE_OK;
+    if (!pm) {
+        for (i = 0; i < n * n; ++i) J[i] = VLBE_R(0.0);
+        return VLBE_OK;
+    }
     L = q[ly->p[1]] - q[ly->p[0]];
     ap[0] = (pm & 1) ? a[ly->p[0]] : VLBE_R(0.0);
     ap[1] = (pm & 2) ? a[ly->p[1]] : VLBE_R(0.0);
@@ -2272,7 +2274,7 @@ VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, const vlbe__
     if (!vlbe__ale_mjac_ok(in->bmax, in->rhoA + in->rhoI, L, Lp[3], mp, ms, am))
         return VLBE_ENONFINITE;
     for (i = 0; i < n; ++i) Ma[i] = VLBE_R(0.0);
-    for (i = 0; i < n * n; ++i) M[i] = VLBE_R(0.0);
+    for (i = 0; i < n * n; ++i) M[i] = J[i] = VLBE_R(0.0);
     for (g = 0; g < in->rm->n; ++g) { /* d(M a)/dq and M itself */
         const vlbe_real gw = in->rm->g[g].w, wa = in->rhoA * gw * L, wi = in->rhoI * gw * L;
         vlbe_real X[2][3], Xt[2], z[3], zt = VLBE_R(0.0), cN[4], cH[2];
