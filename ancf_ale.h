@@ -1214,15 +1214,15 @@ VLBE_INLINE const vlbe__ale_lay *vlbe__ale_lay2(void)
 
 /* The basis at one point scaled to the current L: N[k][a][j] = L^(m_j - k
    - |a|) b[k][a][j] (Hermite), H[k][a][j] = L^(-k - |a|) l[k][a][j]
-   (linear); rows k0..kmax, partials a < na at k = 0, a < min(na, 3)
-   above. */
+   (linear, only with spin); rows k0..kmax, partials a < na at k = 0,
+   a < min(na, 3) above. */
 typedef struct vlbe__ale_lpt {
     vlbe_real N[3][VLBE_DA_N][4];
     vlbe_real H[2][VLBE_DA_N][2];
 } vlbe__ale_lpt;
 
 VLBE_INLINE void vlbe__ale_lpt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, int k0, int kmax,
-                                    int na, vlbe__ale_lpt *VLBE_RESTRICT pt)
+                                    int na, int spin, vlbe__ale_lpt *VLBE_RESTRICT pt)
 {
     int k, a, j;
     for (k = k0; k <= kmax; ++k) {
@@ -1230,21 +1230,22 @@ VLBE_INLINE void vlbe__ale_lpt_eval(const vlbe_ale_gp *gp, const vlbe_real *Lp, 
         for (a = 0; a < nak; ++a) {
             const int d = 4 - k - (a == 0 ? 0 : (a < 3 ? 1 : 2));
             for (j = 0; j < 4; ++j) pt->N[k][a][j] = gp->b[k][a][j] * Lp[d + (j & 1)];
-            if (k < 2)
+            if (spin && k < 2)
                 for (j = 0; j < 2; ++j) pt->H[k][a][j] = gp->l[k][a][j] * Lp[d];
         }
     }
 }
 
-/* out = sum_j n[j] x_j over the four d-vectors of x (r1, r1', r2, r2') */
-VLBE_INLINE void vlbe__ale_lsum(const vlbe__ale_lay *ly, const vlbe_real *n, const vlbe_real *x,
-                                vlbe_real *out)
+/* out = sum_j n[j] x_j over the four d-vectors of x (r1, r1', r2, r2');
+   d = ly->d, an argument of its own so that the 3D kernels' literal 3
+   unrolls the loops */
+VLBE_INLINE void vlbe__ale_lsum(const vlbe__ale_lay *ly, int d, const vlbe_real *n,
+                                const vlbe_real *x, vlbe_real *out)
 {
-    const int d = ly->d;
-    int j, c;
-    for (c = 0; c < d; ++c) out[c] = VLBE_R(0.0);
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < d; ++c) out[c] += n[j] * x[ly->e[j] + c];
+    const vlbe_real *x0 = x + ly->e[0], *x1 = x + ly->e[1], *x2 = x + ly->e[2],
+                    *x3 = x + ly->e[3];
+    int c;
+    for (c = 0; c < d; ++c) out[c] = n[0] * x0[c] + n[1] * x1[c] + n[2] * x2[c] + n[3] * x3[c];
 }
 
 /* sum_j h[j] x_th_j over the two spin angles (0 without spin) */
@@ -2089,13 +2090,13 @@ VLBE_INLINE vlbe_real vlbe__ale_dot(int d, const vlbe_real *x, const vlbe_real *
 
 /* X_k = dr/dp_k and Xt_k = dtheta/dp_k of the coordinates x at one point,
    for the p_k in pm (zero for the others). */
-VLBE_INLINE void vlbe__ale_xp(const vlbe__ale_lay *ly, const vlbe__ale_lpt *pt, int pm,
+VLBE_INLINE void vlbe__ale_xp(const vlbe__ale_lay *ly, int d, const vlbe__ale_lpt *pt, int pm,
                               const vlbe_real *x, vlbe_real (*X)[3], vlbe_real *Xt)
 {
     int k, c;
     for (k = 0; k < 2; ++k)
         if (pm & (1 << k)) {
-            vlbe__ale_lsum(ly, pt->N[0][1 + k], x, X[k]);
+            vlbe__ale_lsum(ly, d, pt->N[0][1 + k], x, X[k]);
             Xt[k] = vlbe__ale_lsum_th(ly, pt->H[0][1 + k], x);
         } else {
             for (c = 0; c < 3; ++c) X[k][c] = VLBE_R(0.0);
@@ -2106,11 +2107,11 @@ VLBE_INLINE void vlbe__ale_xp(const vlbe__ale_lay *ly, const vlbe__ale_lpt *pt, 
 /* One point's part wa G_r^T G_r + wi G_th^T G_th of M: the e-e and th-th
    blocks for i <= j, p1-p2 for k <= l, every coupling with a p on the
    p-row (vlbe__ale_mass_mirror completes M). */
-VLBE_INLINE void vlbe__ale_mass_pt(const vlbe__ale_lay *ly, const vlbe__ale_lpt *pt, int pm,
+VLBE_INLINE void vlbe__ale_mass_pt(const vlbe__ale_lay *ly, int d, const vlbe__ale_lpt *pt, int pm,
                                    const vlbe_real (*X)[3], const vlbe_real *Xt, vlbe_real wa,
                                    vlbe_real wi, vlbe_real *M)
 {
-    const int n = ly->n, d = ly->d;
+    const int n = ly->n;
     const vlbe_real *N = pt->N[0][0], *H = pt->H[0][0];
     int i, j, k, l, c;
     for (i = 0; i < 4; ++i) {
@@ -2134,25 +2135,32 @@ VLBE_INLINE void vlbe__ale_mass_pt(const vlbe__ale_lay *ly, const vlbe__ale_lpt 
     for (k = 0; k < 2; ++k)
         for (l = k; l < 2; ++l)
             if ((pm & (1 << k)) && (pm & (1 << l))) {
-                const vlbe_real s = wa * vlbe__ale_dot(d, X[k], X[l]);
-                M[ly->p[k] * n + ly->p[l]] += ly->spin ? s + wi * Xt[k] * Xt[l] : s;
+                vlbe_real t = wa * vlbe__ale_dot(d, X[k], X[l]);
+                if (ly->spin) t += wi * Xt[k] * Xt[l];
+                M[ly->p[k] * n + ly->p[l]] += t;
             }
 }
 
-/* Mirror the parts vlbe__ale_mass_pt accumulated into their transposed
-   places: M is exactly symmetric. */
-VLBE_INLINE void vlbe__ale_mass_mirror(const vlbe__ale_lay *ly, vlbe_real *M)
+/* Complete M from the parts vlbe__ale_mass_pt accumulated (the blocks it
+   writes, not a scan of all n^2 entries): M is exactly symmetric. */
+VLBE_INLINE void vlbe__ale_mass_mirror(const vlbe__ale_lay *ly, int d, int pm, vlbe_real *M)
 {
     const int n = ly->n;
-    int i, j;
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < i; ++j) {
-            const int pi = i == ly->p[0] || i == ly->p[1], pj = j == ly->p[0] || j == ly->p[1];
-            if (pi && !pj)
-                M[j * n + i] = M[i * n + j];
-            else
-                M[i * n + j] = M[j * n + i];
+    int i, j, k, c;
+    for (i = 0; i < 4; ++i)
+        for (j = i + 1; j < 4; ++j)
+            for (c = 0; c < d; ++c)
+                M[(ly->e[j] + c) * n + ly->e[i] + c] = M[(ly->e[i] + c) * n + ly->e[j] + c];
+    if (ly->spin) M[ly->th[1] * n + ly->th[0]] = M[ly->th[0] * n + ly->th[1]];
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            const int p = ly->p[k];
+            for (i = 0; i < 4; ++i)
+                for (c = 0; c < d; ++c) M[(ly->e[i] + c) * n + p] = M[p * n + ly->e[i] + c];
+            if (ly->spin)
+                for (i = 0; i < 2; ++i) M[ly->th[i] * n + p] = M[p * n + ly->th[i]];
         }
+    if ((pm & 3) == 3) M[ly->p[1] * n + ly->p[0]] = M[ly->p[0] * n + ly->p[1]];
 }
 
 /* A mass matrix sum_g w_g G^T G (w_g > 0, sum w_g = rho L) is bounded
@@ -2196,13 +2204,13 @@ VLBE_INLINE int vlbe__ale_mjac_ok(vlbe_real bmax, vlbe_real rho, vlbe_real L, vl
 
 /* largest position or spin-angle component (they scale with 1/L in the
    p-partials) and slope component of the two nodes */
-VLBE_INLINE void vlbe__ale_qmax(const vlbe__ale_lay *ly, const vlbe_real *q, vlbe_real *mp,
-                                vlbe_real *ms)
+VLBE_INLINE void vlbe__ale_qmax(const vlbe__ale_lay *ly, int d, const vlbe_real *q,
+                                vlbe_real *mp, vlbe_real *ms)
 {
     int i, c;
     *mp = *ms = VLBE_R(0.0);
     for (i = 0; i < 2; ++i) {
-        for (c = 0; c < ly->d; ++c) {
+        for (c = 0; c < d; ++c) {
             const vlbe_real a = vlbe_fabs(q[ly->e[2 * i] + c]);
             const vlbe_real b = vlbe_fabs(q[ly->e[2 * i + 1] + c]);
             *mp = a > *mp ? a : *mp;
@@ -2223,8 +2231,9 @@ typedef struct vlbe__ale_inertia {
 } vlbe__ale_inertia;
 
 /* M(q), bounded first (vlbe__ale_mass_ok): VLBE_ENONFINITE, nothing
-   written, when it could overflow. */
-VLBE_INLINE vlbe_status vlbe__ale_mass(const vlbe__ale_lay *ly, const vlbe__ale_inertia *in,
+   written, when it could overflow.  d = ly->d: a literal at every call
+   (vlbe__ale_lsum). */
+VLBE_INLINE vlbe_status vlbe__ale_mass(const vlbe__ale_lay *ly, int d, const vlbe__ale_inertia *in,
                                        int pm, const vlbe_real *q, vlbe_real *VLBE_RESTRICT M)
 {
     const vlbe_real L = q[ly->p[1]] - q[ly->p[0]];
@@ -2232,18 +2241,18 @@ VLBE_INLINE vlbe_status vlbe__ale_mass(const vlbe__ale_lay *ly, const vlbe__ale_
     vlbe__ale_lpt pt;
     int g, i;
     vlbe__ale_lpow(L, Lp);
-    if (pm) vlbe__ale_qmax(ly, q, &mp, &ms);
+    if (pm) vlbe__ale_qmax(ly, d, q, &mp, &ms);
     if (!vlbe__ale_mass_ok(in->bmax, in->rhoA + in->rhoI, L, Lp[3], mp, ms))
         return VLBE_ENONFINITE;
     for (i = 0; i < ly->n * ly->n; ++i) M[i] = VLBE_R(0.0);
     for (g = 0; g < in->rm->n; ++g) {
         const vlbe_real gw = in->rm->g[g].w;
-        vlbe__ale_lpt_eval(&in->rm->g[g], Lp, 0, 0, pm ? 3 : 1, &pt);
-        vlbe__ale_xp(ly, &pt, pm, q, X, Xt);
-        vlbe__ale_mass_pt(ly, &pt, pm, (const vlbe_real(*)[3])X, Xt, in->rhoA * gw * L,
+        vlbe__ale_lpt_eval(&in->rm->g[g], Lp, 0, 0, pm ? 3 : 1, ly->spin, &pt);
+        vlbe__ale_xp(ly, d, &pt, pm, q, X, Xt);
+        vlbe__ale_mass_pt(ly, d, &pt, pm, (const vlbe_real(*)[3])X, Xt, in->rhoA * gw * L,
                           in->rhoI * gw * L, M);
     }
-    vlbe__ale_mass_mirror(ly, M);
+    vlbe__ale_mass_mirror(ly, d, pm, M);
     return VLBE_OK;
 }
 
@@ -2252,11 +2261,11 @@ VLBE_INLINE vlbe_status vlbe__ale_mass(const vlbe__ale_lay *ly, const vlbe__ale_
    = sum_k a_pk dN_j/dp_k (the p-columns of G are linear in e); the
    p-columns by the scaling identity with D = M and the rates a
    (vlbe__ale_pcols).  Mq is written only after the bound check. */
-VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, const vlbe__ale_inertia *in,
-                                           int pm, const vlbe_real *q, const vlbe_real *a,
-                                           vlbe_real *VLBE_RESTRICT J)
+VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, int d,
+                                           const vlbe__ale_inertia *in, int pm, const vlbe_real *q,
+                                           const vlbe_real *a, vlbe_real *VLBE_RESTRICT J)
 {
-    const int n = ly->n, d = ly->d;
+    const int n = ly->n;
     vlbe_real M[VLBE_ALE3_NQ * VLBE_ALE3_NQ], Ma[VLBE_ALE3_NQ], dF[VLBE_ALE3_NQ];
     vlbe_real ap[2], Lp[6], L, mp, ms, am = VLBE_R(0.0);
     vlbe__ale_lpt pt;
@@ -2269,7 +2278,7 @@ VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, const vlbe__
     ap[0] = (pm & 1) ? a[ly->p[0]] : VLBE_R(0.0);
     ap[1] = (pm & 2) ? a[ly->p[1]] : VLBE_R(0.0);
     vlbe__ale_lpow(L, Lp);
-    vlbe__ale_qmax(ly, q, &mp, &ms);
+    vlbe__ale_qmax(ly, d, q, &mp, &ms);
     for (i = 0; i < n; ++i) am = vlbe_fabs(a[i]) > am ? vlbe_fabs(a[i]) : am;
     if (!vlbe__ale_mjac_ok(in->bmax, in->rhoA + in->rhoI, L, Lp[3], mp, ms, am))
         return VLBE_ENONFINITE;
@@ -2277,10 +2286,10 @@ VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, const vlbe__
     for (i = 0; i < n * n; ++i) M[i] = J[i] = VLBE_R(0.0);
     for (g = 0; g < in->rm->n; ++g) { /* d(M a)/dq and M itself */
         const vlbe_real gw = in->rm->g[g].w, wa = in->rhoA * gw * L, wi = in->rhoI * gw * L;
-        vlbe_real X[2][3], Xt[2], z[3], zt = VLBE_R(0.0), cN[4], cH[2];
-        vlbe__ale_lpt_eval(&in->rm->g[g], Lp, 0, 0, 3, &pt);
-        vlbe__ale_xp(ly, &pt, 3, q, X, Xt);
-        vlbe__ale_lsum(ly, pt.N[0][0], a, z); /* z = G_r a, zt = G_th a */
+        vlbe_real X[2][3], Xt[2], z[3], zt = VLBE_R(0.0), cN[4], cH[2] = {0, 0};
+        vlbe__ale_lpt_eval(&in->rm->g[g], Lp, 0, 0, 3, ly->spin, &pt);
+        vlbe__ale_xp(ly, d, &pt, 3, q, X, Xt);
+        vlbe__ale_lsum(ly, d, pt.N[0][0], a, z); /* z = G_r a, zt = G_th a */
         if (ly->spin) zt = vlbe__ale_lsum_th(ly, pt.H[0][0], a);
         for (k = 0; k < 2; ++k)
             if (pm & (1 << k)) {
@@ -2288,7 +2297,8 @@ VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, const vlbe__
                 zt += ap[k] * Xt[k];
             }
         for (j = 0; j < 4; ++j) cN[j] = ap[0] * pt.N[0][1][j] + ap[1] * pt.N[0][2][j];
-        for (j = 0; j < 2; ++j) cH[j] = ap[0] * pt.H[0][1][j] + ap[1] * pt.H[0][2][j];
+        if (ly->spin)
+            for (j = 0; j < 2; ++j) cH[j] = ap[0] * pt.H[0][1][j] + ap[1] * pt.H[0][2][j];
         for (j = 0; j < 4; ++j) { /* M a: e-rows */
             const vlbe_real wn = wa * pt.N[0][0][j];
             for (c = 0; c < d; ++c) Ma[ly->e[j] + c] += wn * z[c];
@@ -2324,9 +2334,9 @@ VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, const vlbe__
                     if (pm & (1 << k))
                         J[ly->p[k] * n + cj] += wi * pt.H[0][1 + k][j] * zt + wc * Xt[k];
             }
-        vlbe__ale_mass_pt(ly, &pt, pm, (const vlbe_real(*)[3])X, Xt, wa, wi, M);
+        vlbe__ale_mass_pt(ly, d, &pt, pm, (const vlbe_real(*)[3])X, Xt, wa, wi, M);
     }
-    vlbe__ale_mass_mirror(ly, M);
+    vlbe__ale_mass_mirror(ly, d, pm, M);
     vlbe__ale_degree(ly, Ma, dF);
     vlbe__ale_pcols(ly, L, pm, dF, ap, q, a, J, M);
     return VLBE_OK;
@@ -2335,11 +2345,10 @@ VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, const vlbe__
 /* Kinetic energy T = int (rhoA |r_t|^2 + rhoI theta_t^2) / 2 dp with r_t
    = G_r q', theta_t = G_th q', and the potential V = -int f . r dp of the
    distributed load f, over the mass points. */
-VLBE_INLINE void vlbe__ale_kin_pot(const vlbe__ale_lay *ly, const vlbe__ale_inertia *in,
+VLBE_INLINE void vlbe__ale_kin_pot(const vlbe__ale_lay *ly, int d, const vlbe__ale_inertia *in,
                                    const vlbe_real *f, int pm, const vlbe_real *q,
                                    const vlbe_real *qd, vlbe_real *T, vlbe_real *V)
 {
-    const int d = ly->d;
     const vlbe_real L = q[ly->p[1]] - q[ly->p[0]];
     vlbe_real Lp[6], X[2][3], Xt[2];
     vlbe__ale_lpt pt;
@@ -2349,9 +2358,9 @@ VLBE_INLINE void vlbe__ale_kin_pot(const vlbe__ale_lay *ly, const vlbe__ale_iner
     for (g = 0; g < in->rm->n; ++g) {
         const vlbe_real w = in->rm->g[g].w * L;
         vlbe_real v[3], r[3], vt = VLBE_R(0.0);
-        vlbe__ale_lpt_eval(&in->rm->g[g], Lp, 0, 0, pm ? 3 : 1, &pt);
-        vlbe__ale_xp(ly, &pt, pm, q, X, Xt);
-        vlbe__ale_lsum(ly, pt.N[0][0], qd, v);
+        vlbe__ale_lpt_eval(&in->rm->g[g], Lp, 0, 0, pm ? 3 : 1, ly->spin, &pt);
+        vlbe__ale_xp(ly, d, &pt, pm, q, X, Xt);
+        vlbe__ale_lsum(ly, d, pt.N[0][0], qd, v);
         if (ly->spin) vt = vlbe__ale_lsum_th(ly, pt.H[0][0], qd);
         for (k = 0; k < 2; ++k)
             if (pm & (1 << k)) {
@@ -2360,7 +2369,7 @@ VLBE_INLINE void vlbe__ale_kin_pot(const vlbe__ale_lay *ly, const vlbe__ale_iner
             }
         *T += w * VLBE_R(0.5) * in->rhoA * vlbe__ale_dot(d, v, v);
         if (ly->spin) *T += w * VLBE_R(0.5) * in->rhoI * vt * vt;
-        vlbe__ale_lsum(ly, pt.N[0][0], q, r);
+        vlbe__ale_lsum(ly, d, pt.N[0][0], q, r);
         *V -= w * vlbe__ale_dot(d, f, r);
     }
 }
@@ -2383,7 +2392,7 @@ VLBE_API vlbe_status vlbe_ale_mass(const vlbe_ale_elem *el, unsigned mode, const
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
     if ((st = vlbe__ale_check(q, NULL)) != VLBE_OK) return st;
     vlbe__ale_inertia2(el, &in);
-    return vlbe__ale_mass(vlbe__ale_lay2(), &in, vlbe__ale_pmask(mode | el->flags), q, M);
+    return vlbe__ale_mass(vlbe__ale_lay2(), 2, &in, vlbe__ale_pmask(mode | el->flags), q, M);
 }
 
 VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -2394,7 +2403,7 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
     VLBE_ASSERT(el != NULL && q != NULL && a != NULL && Mq != NULL);
     if ((st = vlbe__ale_check(q, a)) != VLBE_OK) return st;
     vlbe__ale_inertia2(el, &in);
-    return vlbe__ale_mass_jac(vlbe__ale_lay2(), &in, vlbe__ale_pmask(mode | el->flags), q, a, Mq);
+    return vlbe__ale_mass_jac(vlbe__ale_lay2(), 2, &in, vlbe__ale_pmask(mode | el->flags), q, a, Mq);
 }
 
 VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -2410,7 +2419,7 @@ VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, con
     mode |= el->flags;
     if ((st = vlbe__ale_check(q, qd)) != VLBE_OK) return st;
     vlbe__ale_inertia2(el, &in);
-    vlbe__ale_kin_pot(vlbe__ale_lay2(), &in, mt->f, vlbe__ale_pmask(mode), q, qd, &T, &V);
+    vlbe__ale_kin_pot(vlbe__ale_lay2(), 2, &in, mt->f, vlbe__ale_pmask(mode), q, qd, &T, &V);
     L = q[9] - q[4];
     vlbe__ale_lpow(L, Lp);
     for (g = 0; g < el->rl.n; ++g) {
@@ -3423,20 +3432,20 @@ VLBE_INLINE vlbe_status vlbe__ale3_strain_gp(const vlbe_ale3_elem *el, const vlb
     vlbe_real A[49], Ad[49], T[7][VLBE_ALE3_NQ], Nd[3][4], Hd[2];
     int i, j, k, c, rows[7], nr = 0;
     vlbe_status st;
-    vlbe__ale_lpt_eval(gp, Lp, 1, bend ? 2 : 1, pm ? 3 : 1, &pt);
+    vlbe__ale_lpt_eval(gp, Lp, 1, bend ? 2 : 1, pm ? 3 : 1, 1, &pt);
     for (c = 0; c < 7; ++c) y[c] = yd[c] = Y[0][c] = Y[1][c] = VLBE_R(0.0);
-    vlbe__ale_lsum(ly, pt.N[1][0], q, y);
-    if (bend) vlbe__ale_lsum(ly, pt.N[2][0], q, y + 3);
+    vlbe__ale_lsum(ly, 3, pt.N[1][0], q, y);
+    if (bend) vlbe__ale_lsum(ly, 3, pt.N[2][0], q, y + 3);
     if (twist) y[6] = vlbe__ale_lsum_th(ly, pt.H[1][0], q);
     for (k = 0; k < 2; ++k)
         if (pm & (1 << k)) {
-            vlbe__ale_lsum(ly, pt.N[1][1 + k], q, Y[k]);
-            if (bend) vlbe__ale_lsum(ly, pt.N[2][1 + k], q, Y[k] + 3);
+            vlbe__ale_lsum(ly, 3, pt.N[1][1 + k], q, Y[k]);
+            if (bend) vlbe__ale_lsum(ly, 3, pt.N[2][1 + k], q, Y[k] + 3);
             if (twist) Y[k][6] = vlbe__ale_lsum_th(ly, pt.H[1][1 + k], q);
         }
     if (damp) {
-        vlbe__ale_lsum(ly, pt.N[1][0], qd, yd);
-        if (bend) vlbe__ale_lsum(ly, pt.N[2][0], qd, yd + 3);
+        vlbe__ale_lsum(ly, 3, pt.N[1][0], qd, yd);
+        if (bend) vlbe__ale_lsum(ly, 3, pt.N[2][0], qd, yd + 3);
         if (twist) yd[6] = vlbe__ale_lsum_th(ly, pt.H[1][0], qd);
         for (k = 0; k < 2; ++k)
             for (c = 0; c < 7; ++c) yd[c] += pd[k] * Y[k][c];
@@ -3593,15 +3602,15 @@ VLBE_INLINE void vlbe__ale3_inertia_pt(const vlbe_ale3_mat *mt, const vlbe_real 
     for (c = 0; c < 3; ++c) z[c] = f[c];
     if (pm) {
         for (k = 0; k < 2; ++k) {
-            vlbe__ale_lsum(ly, pt->N[0][1 + k], q, X[k]);
-            vlbe__ale_lsum(ly, pt->N[0][1 + k], qd, V[k]);
+            vlbe__ale_lsum(ly, 3, pt->N[0][1 + k], q, X[k]);
+            vlbe__ale_lsum(ly, 3, pt->N[0][1 + k], qd, V[k]);
             if (spin) {
                 Xt[k] = vlbe__ale_lsum_th(ly, pt->H[0][1 + k], q);
                 Vt[k] = vlbe__ale_lsum_th(ly, pt->H[0][1 + k], qd);
             }
         }
         for (k = 0; k < 3; ++k) {
-            vlbe__ale_lsum(ly, pt->N[0][VLBE_DA_11 + k], q, Xkl[k]);
+            vlbe__ale_lsum(ly, 3, pt->N[0][VLBE_DA_11 + k], q, Xkl[k]);
             if (spin) Xtl[k] = vlbe__ale_lsum_th(ly, pt->H[0][VLBE_DA_11 + k], q);
         }
         for (c = 0; c < 3; ++c)
@@ -3709,7 +3718,7 @@ VLBE_INLINE vlbe_status vlbe__ale3_forces(const vlbe_ale3_elem *el, const vlbe__
         for (g = 0; g < el->rm.n; ++g) {
             const vlbe_ale_gp *gp = &el->rm.g[g];
             vlbe__ale_lpt pt; /* per point: its storage is shared with the strain points' */
-            vlbe__ale_lpt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, &pt);
+            vlbe__ale_lpt_eval(gp, Lp, 0, 0, pm ? VLBE_DA_N : 1, 1, &pt);
             vlbe__ale3_inertia_pt(mt, f, ly, &pt, pm, pd, gp->w * L, q, qd, Q, K, D);
         }
     if (mt->EA != VLBE_R(0.0) || bend || twist)
@@ -3792,7 +3801,7 @@ VLBE_API vlbe_status vlbe_ale3_mass(const vlbe_ale3_elem *el, unsigned mode, con
     VLBE_ASSERT(el != NULL && q != NULL && M != NULL);
     mode |= el->flags;
     if ((st = vlbe__ale3_setup(el, mode, q, NULL, &ly, &in)) != VLBE_OK) return st;
-    return vlbe__ale_mass(&ly, &in, vlbe__ale_pmask(mode), q, M);
+    return vlbe__ale_mass(&ly, 3, &in, vlbe__ale_pmask(mode), q, M);
 }
 
 VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
@@ -3805,7 +3814,7 @@ VLBE_API vlbe_status vlbe_ale3_mass_jac(const vlbe_ale3_elem *el, unsigned mode,
     VLBE_ASSERT(el != NULL && q != NULL && a != NULL && Mq != NULL);
     mode |= el->flags;
     if ((st = vlbe__ale3_setup(el, mode, q, a, &ly, &in)) != VLBE_OK) return st;
-    return vlbe__ale_mass_jac(&ly, &in, vlbe__ale_pmask(mode), q, a, Mq);
+    return vlbe__ale_mass_jac(&ly, 3, &in, vlbe__ale_pmask(mode), q, a, Mq);
 }
 
 /* E = {T, U, V}: kinetic energy and load potential by vlbe__ale_kin_pot,
@@ -3823,7 +3832,7 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
     VLBE_ASSERT(el != NULL && q != NULL && qd != NULL && E != NULL);
     mode |= el->flags;
     if ((st = vlbe__ale3_setup(el, mode, q, qd, &ly, &in)) != VLBE_OK) return st;
-    vlbe__ale_kin_pot(&ly, &in, mt->f, vlbe__ale_pmask(mode), q, qd, &T, &V);
+    vlbe__ale_kin_pot(&ly, 3, &in, mt->f, vlbe__ale_pmask(mode), q, qd, &T, &V);
     bend = !(mode & VLBE_ALE_NO_BEND) && mt->EJ != VLBE_R(0.0);
     twist = ly.spin && !(mode & VLBE_ALE3_NO_TWIST) && mt->GI != VLBE_R(0.0);
     L = q[ly.p[1]] - q[ly.p[0]];
@@ -3831,12 +3840,12 @@ VLBE_API vlbe_status vlbe_ale3_energy(const vlbe_ale3_elem *el, unsigned mode, c
     for (g = 0; g < el->rs.n; ++g) {
         const vlbe_real w = el->rs.g[g].w * L;
         vlbe_real a[3], b[3], G[7], kk = VLBE_R(0.0), eps, phi;
-        vlbe__ale_lpt_eval(&el->rs.g[g], Lp, 1, bend ? 2 : 1, 1, &pt);
-        vlbe__ale_lsum(&ly, pt.N[1][0], q, a);
+        vlbe__ale_lpt_eval(&el->rs.g[g], Lp, 1, bend ? 2 : 1, 1, 1, &pt);
+        vlbe__ale_lsum(&ly, 3, pt.N[1][0], q, a);
         eps = VLBE_R(0.5) * (vlbe_v3_dot(a, a) - VLBE_R(1.0));
         U += w * VLBE_R(0.5) * mt->EA * eps * eps;
         if (bend) {
-            vlbe__ale_lsum(&ly, pt.N[2][0], q, b);
+            vlbe__ale_lsum(&ly, 3, pt.N[2][0], q, b);
             if ((st = vlbe__ale3_bend(a, b, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL,
                                     &kk)) != VLBE_OK)
                 return st;
@@ -3870,8 +3879,8 @@ VLBE_API vlbe_status vlbe_ale3_point(unsigned mode, const vlbe_real *q, vlbe_rea
     if ((st = vlbe__ale3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 1, 0, &b);
-    vlbe__ale_lsum(&ly, b.h[0][0], q, x);
-    vlbe__ale_lsum(&ly, b.h[1][0], q, x + 3);
+    vlbe__ale_lsum(&ly, 3, b.h[0][0], q, x);
+    vlbe__ale_lsum(&ly, 3, b.h[1][0], q, x + 3);
     x[6] = vlbe__ale_lsum_th(&ly, b.l[0][0], q);
     if (!vlbe_all_finite(x, 7)) return VLBE_ENONFINITE;
     for (i = 0; i < 3; ++i) {
@@ -3897,8 +3906,8 @@ VLBE_API vlbe_status vlbe_ale3_strain(unsigned mode, const vlbe_real *q, vlbe_re
     if ((st = vlbe__ale3_check(&ly, q, NULL)) != VLBE_OK) return st;
     if (!isfinite(p)) return VLBE_ENONFINITE;
     vlbe_herm_ale_eval(p, q[ly.p[0]], q[ly.p[1]], 2, 0, &b);
-    vlbe__ale_lsum(&ly, b.h[1][0], q, a);
-    vlbe__ale_lsum(&ly, b.h[2][0], q, r2);
+    vlbe__ale_lsum(&ly, 3, b.h[1][0], q, a);
+    vlbe__ale_lsum(&ly, 3, b.h[2][0], q, r2);
     if (kap &&
         (st = vlbe__ale3_bend(a, r2, NULL, NULL, VLBE_R(0.0), VLBE_R(0.0), G, NULL, NULL, &kk)) !=
             VLBE_OK)
@@ -3943,7 +3952,7 @@ VLBE_INLINE vlbe_status vlbe__ale3_point_add(unsigned mode, const vlbe_real *q, 
         for (j = 0; j < 4; ++j)
             for (c = 0; c < 3; ++c) Q[ly.e[j] + c] += b.h[0][0][j] * F[c];
         for (k = 0; k < 2; ++k) {
-            vlbe__ale_lsum(&ly, b.h[0][1 + k], q, x);
+            vlbe__ale_lsum(&ly, 3, b.h[0][1 + k], q, x);
             Q[ly.p[k]] += vlbe_v3_dot(x, F);
         }
     }
@@ -3967,7 +3976,7 @@ VLBE_INLINE vlbe_status vlbe__ale3_point_add(unsigned mode, const vlbe_real *q, 
             if (torque)
                 row[ly.p[l]] += vlbe__ale_lsum_th(&ly, b.l[0][dd[k][l]], q) * T;
             else {
-                vlbe__ale_lsum(&ly, b.h[0][dd[k][l]], q, x);
+                vlbe__ale_lsum(&ly, 3, b.h[0][dd[k][l]], q, x);
                 row[ly.p[l]] += vlbe_v3_dot(x, F);
             }
         }
