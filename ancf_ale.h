@@ -3379,8 +3379,8 @@ VLBE_INLINE vlbe_status vlbe__ale3_bend(const vlbe_real *a, const vlbe_real *b,
    strains; T: nr rows of VLBE_ALE3_NQ, those of the strain rows in use). */
 VLBE_INLINE void vlbe__ale3_sub_ztt(const vlbe__ale_lay *ly, const vlbe__ale_lpt *pt,
                                     vlbe_real w, int bend, int twist, int pm, int nr,
-                                    const int *rows, const vlbe_real *Y, const vlbe_real *T,
-                                    vlbe_real *X)
+                                    const int *rows, const vlbe_real *Y,
+                                    const vlbe_real *VLBE_RESTRICT T, vlbe_real *VLBE_RESTRICT X)
 {
     const int n = ly->n;
     int i, j, c, k;
