@@ -2079,15 +2079,6 @@ VLBE_API vlbe_status vlbe_ale_force(const vlbe_ale_elem *el, unsigned mode, cons
    X_k = dr/dp_k and Xt_k = dtheta/dp_k at fixed e (k = 1, 2, only for a
    free p_k); M = sum_g w_g (rhoA G_r^T G_r + rhoI G_th^T G_th). */
 
-/* x . y over d components */
-VLBE_INLINE vlbe_real vlbe__ale_dot(int d, const vlbe_real *x, const vlbe_real *y)
-{
-    vlbe_real s = VLBE_R(0.0);
-    int c;
-    for (c = 0; c < d; ++c) s += x[c] * y[c];
-    return s;
-}
-
 /* X_k = dr/dp_k and Xt_k = dtheta/dp_k of the coordinates x at one point,
    for the p_k in pm (zero for the others). */
 VLBE_INLINE void vlbe__ale_xp(const vlbe__ale_lay *ly, int d, const vlbe__ale_lpt *pt, int pm,
@@ -2135,7 +2126,7 @@ VLBE_INLINE void vlbe__ale_mass_pt(const vlbe__ale_lay *ly, int d, const vlbe__a
     for (k = 0; k < 2; ++k)
         for (l = k; l < 2; ++l)
             if ((pm & (1 << k)) && (pm & (1 << l))) {
-                vlbe_real t = wa * vlbe__ale_dot(d, X[k], X[l]);
+                vlbe_real t = wa * vlbe_vec_dot(d, X[k], X[l]);
                 if (ly->spin) t += wi * Xt[k] * Xt[l];
                 M[ly->p[k] * n + ly->p[l]] += t;
             }
@@ -2307,7 +2298,7 @@ VLBE_INLINE vlbe_status vlbe__ale_mass_jac(const vlbe__ale_lay *ly, int d,
             for (j = 0; j < 2; ++j) Ma[ly->th[j]] += wi * pt.H[0][0][j] * zt;
         for (k = 0; k < 2; ++k)
             if (pm & (1 << k)) {
-                const vlbe_real s = wa * vlbe__ale_dot(d, X[k], z);
+                const vlbe_real s = wa * vlbe_vec_dot(d, X[k], z);
                 Ma[ly->p[k]] += ly->spin ? s + wi * Xt[k] * zt : s;
             }
         for (j = 0; j < 4; ++j) { /* J: the e-columns */
@@ -2367,10 +2358,10 @@ VLBE_INLINE void vlbe__ale_kin_pot(const vlbe__ale_lay *ly, int d, const vlbe__a
                 for (c = 0; c < d; ++c) v[c] += qd[ly->p[k]] * X[k][c];
                 vt += qd[ly->p[k]] * Xt[k];
             }
-        *T += w * VLBE_R(0.5) * in->rhoA * vlbe__ale_dot(d, v, v);
+        *T += w * VLBE_R(0.5) * in->rhoA * vlbe_vec_dot(d, v, v);
         if (ly->spin) *T += w * VLBE_R(0.5) * in->rhoI * vt * vt;
         vlbe__ale_lsum(ly, d, pt.N[0][0], q, r);
-        *V -= w * vlbe__ale_dot(d, f, r);
+        *V -= w * vlbe_vec_dot(d, f, r);
     }
 }
 
@@ -2403,7 +2394,8 @@ VLBE_API vlbe_status vlbe_ale_mass_jac(const vlbe_ale_elem *el, unsigned mode, c
     VLBE_ASSERT(el != NULL && q != NULL && a != NULL && Mq != NULL);
     if ((st = vlbe__ale_check(q, a)) != VLBE_OK) return st;
     vlbe__ale_inertia2(el, &in);
-    return vlbe__ale_mass_jac(vlbe__ale_lay2(), 2, &in, vlbe__ale_pmask(mode | el->flags), q, a, Mq);
+    return vlbe__ale_mass_jac(vlbe__ale_lay2(), 2, &in, vlbe__ale_pmask(mode | el->flags), q, a,
+                              Mq);
 }
 
 VLBE_API vlbe_status vlbe_ale_energy(const vlbe_ale_elem *el, unsigned mode, const vlbe_real *q,
@@ -4875,16 +4867,14 @@ VLBE_INLINE size_t vlbe__ale_mat_len(const vlbe_ale_chain *ch)
     return (size_t)(ch->n + ch->m) * (size_t)(ch->kl + ch->ku + 1);
 }
 
-/* scatter an ne x ne element matrix into the chain's matrix A */
+/* scatter an ne x ne element matrix (global coordinates idx, < 0: none)
+   into the chain's matrix A (vlbe__scatter) */
 VLBE_INLINE void vlbe__ale_scatter(const vlbe_ale_chain *ch, int ne, const int *idx,
-                                     const vlbe_real *Ae, vlbe_real *A)
+                                   const vlbe_real *Ae, vlbe_real *A)
 {
-    int i, j;
-    for (i = 0; i < ne; ++i) {
-        if (idx[i] < 0) continue;
-        for (j = 0; j < ne; ++j)
-            if (idx[j] >= 0) A[vlbe__ale_at(ch, idx[i], idx[j])] += Ae[i * ne + j];
-    }
+    size_t r[VLBE_ALE3_NQ], c[VLBE_ALE3_NQ];
+    vlbe__scatter_map(ne, idx, ch->n, ch->order, ch->kl, ch->ku, r, c);
+    (void)vlbe__scatter(ne, r, c, Ae, A); /* finiteness: vlbe__ale_band_finite after */
 }
 
 /* 1 when every entry an element can touch in the assembled matrix A is

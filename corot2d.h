@@ -1705,39 +1705,13 @@ VLBE_INLINE int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
     return vlbe__dae_rc(st);
 }
 
-/* The index map of element e: its entry (i, j), i, j < 6, is the beam
-   matrix's A[map[i] + map[6 + j]].  Dense: row offsets (3e + i) n, columns
-   3e + j.  Banded: entry (order[3e + i], order[3e + j]) of the band, at
-   VLBE_BAND_IDX(ld, kl, r, c) = r ld + c - r + kl = (r (ld - 1) + kl) + c. */
+/* The index map of element e (vlbe__scatter_map): its entry (i, j), i, j
+   < 6, is the beam matrix's A[map[i] + map[6 + j]]; coordinates 3e .. 3e + 5. */
 VLBE_INLINE void vlbe__cr2d_map(const vlbe_cr2d_beam *b, int e, size_t *map)
 {
-    int i;
-    for (i = 0; i < 6; ++i) {
-        const int g = 3 * e + i;
-        if (b->order) {
-            map[i] = (size_t)b->order[g] * (size_t)(b->kl + b->ku) + (size_t)b->kl;
-            map[6 + i] = (size_t)b->order[g];
-        } else {
-            map[i] = (size_t)g * (size_t)b->n;
-            map[6 + i] = (size_t)g;
-        }
-    }
-}
-
-/* A += Ae (6x6) at the places of the index map; 1 when the entries added
-   to are finite afterwards (a NaN/Inf entry stays so under later
-   additions; x - x == 0 only for finite x: no branch in the loop) */
-VLBE_INLINE int vlbe__cr2d_scatter(const size_t *map, const vlbe_real *Ae, vlbe_real *A)
-{
-    size_t i, j;
-    int ok = 1;
-    for (i = 0; i < 6; ++i)
-        for (j = 0; j < 6; ++j) {
-            const vlbe_real x = A[map[i] + map[6 + j]] + Ae[i * 6 + j];
-            A[map[i] + map[6 + j]] = x;
-            ok &= x - x == VLBE_R(0.0);
-        }
-    return ok;
+    int g[6], i;
+    for (i = 0; i < 6; ++i) g[i] = 3 * e + i;
+    vlbe__scatter_map(6, g, b->n, b->order, b->kl, b->ku, map, map + 6);
 }
 
 /* entries of an n x n matrix of the beam (rows m = nfix for Cq): dense n
@@ -1815,7 +1789,7 @@ VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, co
             VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
         vlbe__cr2d_map(b, e, map);
-        if (!vlbe__cr2d_scatter(map, Me, M)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
+        if (!vlbe__scatter(6, map, map + 6, Me, M)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
 }
@@ -2205,7 +2179,8 @@ VLBE_INLINE int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vlbe
             for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
         if (K) {
             vlbe__cr2d_map(b, e, map);
-            if (!vlbe__cr2d_scatter(map, Ke, K)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
+            if (!vlbe__scatter(6, map, map + 6, Ke, K))
+                return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
         }
     }
     for (k = 0; k < b->nloads; ++k) {
@@ -2218,7 +2193,8 @@ VLBE_INLINE int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vlbe
         if (Q)
             for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
         if (K || D) vlbe__cr2d_map(b, e, map);
-        if ((K && !vlbe__cr2d_scatter(map, Ke, K)) || (D && !vlbe__cr2d_scatter(map, De, D)))
+        if ((K && !vlbe__scatter(6, map, map + 6, Ke, K)) ||
+            (D && !vlbe__scatter(6, map, map + 6, De, D)))
             return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
@@ -2251,7 +2227,8 @@ VLBE_INLINE int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const vlb
         if (Q)
             for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
         if (K || D) vlbe__cr2d_map(b, e, map);
-        if ((K && !vlbe__cr2d_scatter(map, Ke, K)) || (D && !vlbe__cr2d_scatter(map, De, D)))
+        if ((K && !vlbe__scatter(6, map, map + 6, Ke, K)) ||
+            (D && !vlbe__scatter(6, map, map + 6, De, D)))
             return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     if ((rc = vlbe__cr2d_beam_loads(b, t, q, v, Q, K, D, Qe, Ke, De)) != 0) return rc;
@@ -2293,7 +2270,7 @@ VLBE_API int vlbe_cr2d_beam_mass_jac(void *user, vlbe_real t, const vlbe_real *q
                                           a + 3 * e, Me)) != VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
         vlbe__cr2d_map(b, e, map);
-        if (!vlbe__cr2d_scatter(map, Me, Mq)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
+        if (!vlbe__scatter(6, map, map + 6, Me, Mq)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
 }

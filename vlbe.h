@@ -592,6 +592,50 @@ VLBE_API void vlbe_mat_tvec(int m, int n, const vlbe_real *A, const vlbe_real *x
     for (i = 0; i < m; ++i) vlbe_vec_axpy(n, x[i], A + (size_t)i * (size_t)n, y);
 }
 
+/* -- assembly of element matrices (chains, beams) ----------------------- */
+/* The places of an element's ne coordinates in a model's assembled n x n
+   matrix, as row offsets r and columns c (entry (i, j) at A[r[i] + c[j]]):
+   g[i] the global coordinate (< 0: none, its row and column are skipped,
+   VLBE__NOMAP); dense storage (order NULL): r = g n, c = g; band storage
+   with the augmented order (see Band storage above): entry (order[g_i],
+   order[g_j]) at VLBE_BAND_IDX(ld, kl, r, c) = (r (ld - 1) + kl) + c,
+   ld = kl + ku + 1. */
+#define VLBE__NOMAP ((size_t)-1)
+VLBE_INLINE void vlbe__scatter_map(int ne, const int *g, int n, const int *order, int kl, int ku,
+                                   size_t *r, size_t *c)
+{
+    int i;
+    for (i = 0; i < ne; ++i)
+        if (g[i] < 0)
+            r[i] = c[i] = VLBE__NOMAP;
+        else if (order) {
+            r[i] = (size_t)order[g[i]] * (size_t)(kl + ku) + (size_t)kl;
+            c[i] = (size_t)order[g[i]];
+        } else {
+            r[i] = (size_t)g[i] * (size_t)n;
+            c[i] = (size_t)g[i];
+        }
+}
+
+/* A += Ae (ne x ne) at the places of vlbe__scatter_map; 1 when every entry
+   added to is finite afterwards (a NaN or Inf entry stays so under later
+   additions; x - x == 0 only for finite x: no branch on the value) */
+VLBE_INLINE int vlbe__scatter(int ne, const size_t *r, const size_t *c, const vlbe_real *Ae,
+                              vlbe_real *A)
+{
+    int i, j, ok = 1;
+    for (i = 0; i < ne; ++i) {
+        if (r[i] == VLBE__NOMAP) continue;
+        for (j = 0; j < ne; ++j)
+            if (c[j] != VLBE__NOMAP) {
+                const vlbe_real x = A[r[i] + c[j]] + Ae[i * ne + j];
+                A[r[i] + c[j]] = x;
+                ok &= x - x == VLBE_R(0.0);
+            }
+    }
+    return ok;
+}
+
 /* -- models' callback values ------------------------------------------- */
 /* The value a model's vlbe_dae callback returns for a failure status: the
    table of "Callback return values" at vlbe_dae (1: outside the model's
