@@ -5821,6 +5821,31 @@ VLBE_API vlbe_status vlbe_ale_chain_dae(vlbe_ale_chain *ch, vlbe_dae *sys)
 }
 
 /* ===== segmentation, merging, length control ============================ */
+/* The new node at ph from the basis b evaluated there (k <= 1, the
+   element's own basis): qh = [r(ph), r'(ph), ph] and, with qd and qhd, the
+   rates of a node moving with the material, [v(ph), v'(ph), 0]; written
+   only when all are finite (shared with rancf.h). */
+VLBE_INLINE vlbe_status vlbe__ale_split_node(const vlbe_herm_ale *b, const vlbe_real *q,
+                                             const vlbe_real *qd, vlbe_real ph, vlbe_real *qh,
+                                             vlbe_real *qhd)
+{
+    vlbe_real h[4], hd[4];
+    int k;
+    for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
+        vlbe__ale_sum(b, k, 0, q, h + 2 * k);
+        if (qd && qhd) vlbe__ale_mat_rate(b, k, q, qd, hd + 2 * k);
+    }
+    if (!vlbe_all_finite(h, 4) || (qd && qhd && !vlbe_all_finite(hd, 4)))
+        return VLBE_ENONFINITE;
+    for (k = 0; k < 4; ++k) qh[k] = h[k];
+    qh[4] = ph;
+    if (qd && qhd) {
+        for (k = 0; k < 4; ++k) qhd[k] = hd[k];
+        qhd[4] = VLBE_R(0.0);
+    }
+    return VLBE_OK;
+}
+
 /* Exact segmentation (cubic subdivision) of an element at the material point
    ph in (p1, p2): the new node H gets qh = [r(ph), r'(ph), ph] and, when qd
    is given, the rates of a node that moves with the material (p_H' = 0):
@@ -5832,28 +5857,14 @@ VLBE_API vlbe_status vlbe_ale_chain_dae(vlbe_ale_chain *ch, vlbe_dae *sys)
 VLBE_API vlbe_status vlbe_ale_split(const vlbe_real *q, const vlbe_real *qd, vlbe_real ph,
                                     vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd)
 {
-    vlbe_real h[4], hd[4];
     vlbe_herm_ale b;
     vlbe_status st;
-    int k;
     VLBE_ASSERT(q != NULL && qh != NULL);
     if ((st = vlbe__ale_check(q, qd)) != VLBE_OK) return st;
     if (!isfinite(ph)) return VLBE_ENONFINITE;
     if (!(ph > q[4] && ph < q[9])) return VLBE_EBOUND;
     vlbe_herm_ale_eval(ph, q[4], q[9], 1, 1, &b);
-    for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
-        vlbe__ale_sum(&b, k, 0, q, h + 2 * k);
-        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, hd + 2 * k);
-    }
-    if (!vlbe_all_finite(h, 4) || (qd && qhd && !vlbe_all_finite(hd, 4)))
-        return VLBE_ENONFINITE;
-    for (k = 0; k < 4; ++k) qh[k] = h[k];
-    qh[4] = ph;
-    if (qd && qhd) {
-        for (k = 0; k < 4; ++k) qhd[k] = hd[k];
-        qhd[4] = VLBE_R(0.0);
-    }
-    return VLBE_OK;
+    return vlbe__ale_split_node(&b, q, qd, ph, qh, qhd);
 }
 
 VLBE_INLINE int vlbe__ale_ncoord(const vlbe_ale_node *nd)

@@ -618,7 +618,7 @@ VLBE_API vlbe_status vlbe_rancf_split(const vlbe_rancf_elem *el, const vlbe_real
                                       vlbe_real *VLBE_RESTRICT qh, vlbe_real *VLBE_RESTRICT qhd,
                                       vlbe_real *VLBE_RESTRICT wl, vlbe_real *VLBE_RESTRICT wr)
 {
-    vlbe_real P[8], x[8], wlo[4], wro[4], h[4], hd[4];
+    vlbe_real P[8], x[8], wlo[4], wro[4];
     vlbe_herm_ale b;
     vlbe_status st;
     int k;
@@ -635,18 +635,7 @@ VLBE_API vlbe_status vlbe_rancf_split(const vlbe_rancf_elem *el, const vlbe_real
                                       NULL)) != VLBE_OK)
         return st;
     vlbe__rancf_eval(el->k, ph, q[4], q[9], 1, 1, &b);
-    for (k = 0; k < 2; ++k) { /* k = 0: r, k = 1: r' */
-        vlbe__ale_sum(&b, k, 0, q, h + 2 * k);
-        if (qd && qhd) vlbe__ale_mat_rate(&b, k, q, qd, hd + 2 * k);
-    }
-    if (!vlbe_all_finite(h, 4) || (qd && qhd && !vlbe_all_finite(hd, 4)))
-        return VLBE_ENONFINITE;
-    for (k = 0; k < 4; ++k) qh[k] = h[k];
-    qh[4] = ph;
-    if (qd && qhd) {
-        for (k = 0; k < 4; ++k) qhd[k] = hd[k];
-        qhd[4] = VLBE_R(0.0);
-    }
+    if ((st = vlbe__ale_split_node(&b, q, qd, ph, qh, qhd)) != VLBE_OK) return st;
     for (k = 0; k < 4; ++k) {
         if (wl) wl[k] = wlo[k];
         if (wr) wr[k] = wro[k];
