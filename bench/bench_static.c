@@ -44,6 +44,7 @@
 #include "../ancf_ale.h"
 #include "../integrators.h"
 #include "../scenes/svgplot.h"
+#include "../scenes/corot_static.h"
 #include "bench_util.h"
 
 #include <stdio.h>
@@ -71,13 +72,7 @@ typedef struct bs_model {
     int kind; /* 0 cr2d, 1 ale tip load, 2 ale pinned-pinned */
     int ne;
     vlbe_dae sys;
-    /* cr2d */
-    vlbe_cr2d_mat cmat;
-    vlbe_cr2d_elem cel[NE_MAX];
-    vlbe_cr2d_fix fix[3];
-    vlbe_cr2d_beam beam;
-    vlbe_real P[3 * (NE_MAX + 1)];
-    int order[3 * (NE_MAX + 1) + 3];
+    cs_model cs; /* cr2d: the cantilever of scenes/corot_static.h */
     /* ale */
     vlbe_ale_mat amat;
     vlbe_ale_elem ael;
@@ -95,25 +90,13 @@ static int bs_build(bs_model *m, int kind, int ne)
     m->kind = kind;
     m->ne = ne;
     m->L = 1.0;
-    if (kind == 0) {
-        m->EI = 68.96e9 * 1.059e-11;
-        m->cmat.EA = (vlbe_real)(68.96e9 * 4.3434e-5);
-        m->cmat.EI = (vlbe_real)m->EI;
-        m->cmat.rhoA = (vlbe_real)(3144.3858 * 4.3434e-5);
-        for (i = 0; i < ne; ++i) {
-            vlbe_real X1[2], X2[2];
-            X1[0] = (vlbe_real)((double)i / ne);
-            X2[0] = (vlbe_real)((double)(i + 1) / ne);
-            X1[1] = X2[1] = VLBE_R(0.0);
-            if (vlbe_cr2d_elem_init(&m->cel[i], &m->cmat, X1, X2, VLBE_CR2D_NO_DAMP)) return -1;
-        }
-        for (i = 0; i < 3; ++i) m->fix[i].dof = i;
-        if (vlbe_cr2d_beam_init(&m->beam, m->cel, ne, m->fix, 3)) return -1;
-        if (vlbe_cr2d_beam_band(&m->beam, m->order, 3 * (ne + 1) + 3)) return -1;
-        m->P[3 * ne + 1] = VLBE_R(-1.0); /* times the load factor, N */
-        m->beam.P = m->P;
-        m->kscale = m->EI / (m->L * m->L);
-        return vlbe_cr2d_beam_dae(&m->beam, &m->sys) ? -1 : 0;
+    if (kind == 0) { /* the elastica: beam.load = k directly */
+        if (cs_build(&m->cs, ne, 0) || cs_band(&m->cs)) return -1;
+        cs_tip_force(&m->cs);
+        m->EI = cs_EI();
+        m->kscale = 1.0;
+        m->sys = m->cs.sys;
+        return 0;
     }
     /* the flat bar of examples/first_chain.c */
     m->EI = 1.75e3;
@@ -162,7 +145,7 @@ static void bs_start(const bs_model *m, vlbe_real *q)
 
 static void bs_load(bs_model *m, double k)
 {
-    if (m->kind == 0) m->beam.load = (vlbe_real)(k * m->kscale);
+    if (m->kind == 0) m->cs.beam.load = (vlbe_real)(k * m->kscale);
     else m->ch.load_factor = (vlbe_real)(k * m->kscale);
 }
 

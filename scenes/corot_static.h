@@ -3,9 +3,10 @@
    an end moment in load steps against the exact arc (cs_rollup,
    cs_arc_exact, cs_arc_errors), (b) the natural frequencies of the
    linearised system at rest (cs_freqs), (c) the forces under rigid
-   rotation (cs_rigid).  Shared by examples/corot_static.c, which states
-   the scene and its closed forms, tests/test_scenes_cr2d.c and
-   tests/test_scenes_band.c.
+   rotation (cs_rigid); with cs_tip_force, the elastica under a tip force.
+   Shared by examples/corot_static.c, which states the scene and its closed
+   forms, tests/test_scenes_cr2d.c, tests/test_scenes_band.c,
+   tests/test_static_cr2d.c and bench/bench_static.c.
    -- part of vlbe                                  SPDX-License-Identifier: MIT */
 #ifndef VLBE_SCENE_COROT_STATIC_H
 #define VLBE_SCENE_COROT_STATIC_H
@@ -25,7 +26,7 @@
 #define CS_I 1.059e-11
 #define CS_E 68.96e9
 #define CS_RHO 3144.3858
-#define CS_NE_MAX 64
+#define CS_NE_MAX 128
 #define CS_PI 3.14159265358979323846
 
 typedef struct cs_model {
@@ -80,6 +81,15 @@ static inline int cs_build_sec(cs_model *m, int ne, unsigned flags, double EA, d
 static inline int cs_build(cs_model *m, int ne, unsigned flags)
 {
     return cs_build_sec(m, ne, flags, cs_EA(), cs_EI(), cs_rhoA());
+}
+
+/* The elastica load instead of the end moment: a transverse tip force
+   -EI / L^2 along y per unit load factor (beam.load = k: the load
+   parameter k = P L^2 / EI of the elastica tables). */
+static inline void cs_tip_force(cs_model *m)
+{
+    m->P[3 * m->ne + 2] = VLBE_R(0.0);
+    m->P[3 * m->ne + 1] = (vlbe_real)(-cs_EI() / (CS_L * CS_L));
 }
 
 /* Banded matrices (vlbe_cr2d_beam_band) and the integrators' banded path

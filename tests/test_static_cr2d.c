@@ -40,12 +40,13 @@
 #include "test_util.h"
 #include "../corot2d.h"
 #include "../integrators.h"
+#include "../scenes/corot_static.h"
 
 #include <stdlib.h>
 #include <string.h>
 
 #define EPS ((double)VLBE_EPS)
-#define NE_MAX 64
+#define NE_MAX CS_NE_MAX
 #define NSTEP 40 /* k = 0.25 .. 10 */
 #define KMAX 10.0
 
@@ -90,41 +91,15 @@ static void elastica_tip(double k, double *x, double *y)
 
 /* ------------------------------------------------------------------------ */
 #ifndef VLBE_USE_FLOAT
-typedef struct cant {
-    vlbe_cr2d_mat mat;
-    vlbe_cr2d_elem el[NE_MAX];
-    vlbe_cr2d_fix fix[3];
-    vlbe_cr2d_beam beam;
-    vlbe_real P[3 * (NE_MAX + 1)];
-    int order[3 * (NE_MAX + 1) + 3];
-    vlbe_dae sys;
-    int ne;
-} cant;
+typedef cs_model cant;
 
-static const double C_EA = 68.96e9 * 4.3434e-5, C_EI = 68.96e9 * 1.059e-11;
-
+/* the paper's cantilever (scenes/corot_static.h) under the elastica's tip
+   force, banded */
 static void cant_build(cant *c, int ne)
 {
-    int i;
-    memset(c, 0, sizeof *c);
-    c->ne = ne;
-    c->mat.EA = (vlbe_real)C_EA;
-    c->mat.EI = (vlbe_real)C_EI;
-    c->mat.rhoA = VLBE_R(0.13657);
-    for (i = 0; i < ne; ++i) {
-        vlbe_real X1[2], X2[2];
-        X1[0] = (vlbe_real)((double)i / ne);
-        X2[0] = (vlbe_real)((double)(i + 1) / ne);
-        X1[1] = X2[1] = VLBE_R(0.0);
-        assert_int_equal(vlbe_cr2d_elem_init(&c->el[i], &c->mat, X1, X2, VLBE_CR2D_NO_DAMP), 0);
-    }
-    for (i = 0; i < 3; ++i) c->fix[i].dof = i;
-    assert_int_equal(vlbe_cr2d_beam_init(&c->beam, c->el, ne, c->fix, 3), VLBE_OK);
-    assert_int_equal(vlbe_cr2d_beam_band(&c->beam, c->order, 3 * (ne + 1) + 3), VLBE_OK);
-    c->P[3 * ne + 1] = (vlbe_real)(-C_EI); /* k EI / L^2 at load factor k, L = 1 */
-    c->beam.P = c->P;
-    c->beam.load = VLBE_R(0.0);
-    assert_int_equal(vlbe_cr2d_beam_dae(&c->beam, &c->sys), VLBE_OK);
+    assert_int_equal(cs_build(c, ne, 0), 0);
+    assert_int_equal(cs_band(c), 0);
+    cs_tip_force(c);
 }
 
 /* Steps k = KMAX j / NSTEP, j = 1..NSTEP, from the straight beam: the tips
@@ -213,7 +188,7 @@ static void test_elastica_defaults(void **state)
         for (j = 1; j <= NSTEP; ++j) {
             const double k = KMAX * j / NSTEP;
             const double tol = 0.3 * (k / 10.0) * (k / 10.0) / ((double)N * N * N * N) +
-                               1.5 * k * C_EI / C_EA;
+                               1.5 * k * cs_EI() / cs_EA();
             const double e = fmax(fabs(tip[2 * j - 2] - ref[2 * j - 2]),
                                   fabs(tip[2 * j - 1] - ref[2 * j - 1]));
             assert_true(its[j - 1] <= its0[j - 1] + 1);
