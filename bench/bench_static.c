@@ -45,6 +45,7 @@
 #include "../integrators.h"
 #include "../scenes/svgplot.h"
 #include "../scenes/corot_static.h"
+#include "../scenes/vonmises_truss.h"
 #include "bench_util.h"
 
 #include <stdio.h>
@@ -198,84 +199,20 @@ static bs_result bs_run(bs_model *m, const vlbe_static_params *par, double kmax,
     return r;
 }
 
-/* -- the truss ----------------------------------------------------------- */
-
-typedef struct bs_truss {
-    double b, h0, EA, P;
-} bs_truss;
-
-static void bs_bar(const bs_truss *tr, const vlbe_real *q, int i, vlbe_real e[2], vlbe_real *l,
-                   vlbe_real *N)
-{
-    const vlbe_real L0 = (vlbe_real)sqrt(tr->b * tr->b + tr->h0 * tr->h0);
-    e[0] = q[0] - (vlbe_real)(i == 0 ? -tr->b : tr->b);
-    e[1] = q[1];
-    *l = vlbe_sqrt(e[0] * e[0] + e[1] * e[1]);
-    *N = (vlbe_real)tr->EA * (*l - L0) / L0;
-}
-static int bs_truss_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
-                          vlbe_real *Q)
-{
-    const bs_truss *tr = (const bs_truss *)u;
-    int i;
-    (void)t;
-    (void)v;
-    Q[0] = VLBE_R(0.0);
-    Q[1] = -(vlbe_real)tr->P;
-    for (i = 0; i < 2; ++i) {
-        vlbe_real e[2], l, N;
-        bs_bar(tr, q, i, e, &l, &N);
-        Q[0] -= N * e[0] / l;
-        Q[1] -= N * e[1] / l;
-    }
-    return 0;
-}
-static int bs_truss_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *K,
-                        vlbe_real *D)
-{
-    const bs_truss *tr = (const bs_truss *)u;
-    const vlbe_real L0 = (vlbe_real)sqrt(tr->b * tr->b + tr->h0 * tr->h0);
-    int i, r, c;
-    (void)t;
-    (void)v;
-    for (i = 0; i < 4; ++i) K[i] = D[i] = VLBE_R(0.0);
-    for (i = 0; i < 2; ++i) {
-        vlbe_real e[2], l, N, nv[2];
-        bs_bar(tr, q, i, e, &l, &N);
-        nv[0] = e[0] / l;
-        nv[1] = e[1] / l;
-        for (r = 0; r < 2; ++r)
-            for (c = 0; c < 2; ++c)
-                K[r * 2 + c] -= (vlbe_real)tr->EA / L0 * nv[r] * nv[c] +
-                                N / l * ((r == c ? VLBE_R(1.0) : VLBE_R(0.0)) - nv[r] * nv[c]);
-    }
-    return 0;
-}
+/* -- the truss (scenes/vonmises_truss.h) --------------------------------- */
 
 /* the 24 truss solves under one setting: iterations, failures, CPU */
 static void bs_truss_run(int s, long *iters, long *fails, double *cpu)
 {
     static const double fs[6] = {1.02, 1.1, 1.3, 2.0, 4.0, 8.0}, xs[4] = {0.0, 0.1, 0.5, 0.9};
     const vlbe_static_params par = solver_params(s);
-    bs_truss tr;
+    vm_truss tr;
     vlbe_dae sys;
     vlbe_real w[256];
-    int iw[8], a, b, k;
-    double plim = 0.0, c0 = benchu_cpu_now();
-    tr.b = 1.0;
-    tr.h0 = 0.2;
-    tr.EA = 1e6;
-    /* the limit load: the largest 2 EA (L0 - l)/L0 w/l, w in [0, h0], on a fine grid */
-    for (k = 0; k <= 20000; ++k) {
-        const double wv = tr.h0 * k / 20000.0, l = sqrt(tr.b * tr.b + wv * wv),
-                     L0 = sqrt(tr.b * tr.b + tr.h0 * tr.h0), p = 2.0 * tr.EA * (L0 - l) / L0 * wv / l;
-        if (p > plim) plim = p;
-    }
-    memset(&sys, 0, sizeof sys);
-    sys.n = 2;
-    sys.user = &tr;
-    sys.force = bs_truss_force;
-    sys.force_jac = bs_truss_jac;
+    int iw[8], a, b;
+    double plim, c0 = benchu_cpu_now();
+    vm_setup(&sys, &tr, 0);
+    plim = vm_limit_load(&tr);
     *iters = *fails = 0;
     for (a = 0; a < 6; ++a)
         for (b = 0; b < 4; ++b) {

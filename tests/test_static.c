@@ -62,6 +62,7 @@
      static_fail_nonfinite     NaN/Inf start, NaN force -> ENONFINITE, untouched */
 #include "test_util.h"
 #include "../integrators.h"
+#include "../scenes/vonmises_truss.h"
 
 #include <string.h>
 
@@ -518,109 +519,12 @@ static void test_static_bead_on_circle(void **state)
 }
 
 /* ------------------------------------------------------------------------ */
-/* von Mises truss: anchors (-b, 0), (b, 0), apex (x, y), bars of axial
-   stiffness EA and length L0 = sqrt(b^2 + h0^2); N = EA (l - L0)/L0 (tension
-   > 0); the bar pulls the apex with -N e/l, e = apex - anchor.  The
-   constraint C = y - w holds the apex at the height w; the x coordinate is
-   free (x = 0 by symmetry, the solve starts off it). */
-typedef struct truss {
-    double b, h0, EA;  /* m, m, N */
-    vlbe_real w;       /* prescribed height */
-    double P;          /* dead load on the apex, downward (truss_force_load) */
-} truss;
-
-static void truss_bar(const truss *tr, const vlbe_real *q, int i, vlbe_real e[2], vlbe_real *l,
-                      vlbe_real *N)
-{
-    vlbe_real b = (vlbe_real)tr->b, L0 = (vlbe_real)sqrt(tr->b * tr->b + tr->h0 * tr->h0);
-    e[0] = q[0] - (i == 0 ? -b : b);
-    e[1] = q[1];
-    *l = vlbe_sqrt(e[0] * e[0] + e[1] * e[1]);
-    *N = (vlbe_real)tr->EA * (*l - L0) / L0;
-}
-static int truss_force(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v, vlbe_real *Q)
-{
-    const truss *tr = (const truss *)u;
-    int i;
-    (void)t;
-    (void)v;
-    Q[0] = Q[1] = VLBE_R(0.0);
-    for (i = 0; i < 2; ++i) {
-        vlbe_real e[2], l, N;
-        truss_bar(tr, q, i, e, &l, &N);
-        Q[0] -= N * e[0] / l;
-        Q[1] -= N * e[1] / l;
-    }
-    return 0;
-}
-/* K = dQ/dq = -sum (EA/L0) n n^T + (N/l) (I - n n^T), n = e/l */
-static int truss_force_jac(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
-                           vlbe_real *K, vlbe_real *D)
-{
-    const truss *tr = (const truss *)u;
-    vlbe_real L0 = (vlbe_real)sqrt(tr->b * tr->b + tr->h0 * tr->h0);
-    int i, r, c;
-    (void)t;
-    (void)v;
-    for (i = 0; i < 4; ++i) K[i] = D[i] = VLBE_R(0.0);
-    for (i = 0; i < 2; ++i) {
-        vlbe_real e[2], l, N, n[2];
-        truss_bar(tr, q, i, e, &l, &N);
-        n[0] = e[0] / l;
-        n[1] = e[1] / l;
-        for (r = 0; r < 2; ++r)
-            for (c = 0; c < 2; ++c)
-                K[r * 2 + c] -= (vlbe_real)tr->EA / L0 * n[r] * n[c] +
-                                N / l * ((r == c ? VLBE_R(1.0) : VLBE_R(0.0)) - n[r] * n[c]);
-    }
-    return 0;
-}
-static int truss_constr(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *C)
-{
-    (void)t;
-    C[0] = q[1] - ((const truss *)u)->w;
-    return 0;
-}
-static int truss_constr_jac(void *u, vlbe_real t, const vlbe_real *q, vlbe_real *Cq, vlbe_real *Ct)
-{
-    (void)u;
-    (void)t;
-    (void)q;
-    Cq[0] = VLBE_R(0.0);
-    Cq[1] = VLBE_R(1.0);
-    if (Ct) Ct[0] = VLBE_R(0.0);
-    return 0;
-}
-/* b = 1 m, h0 = 0.2 m, EA = 1e6 N */
-static void truss_setup(vlbe_dae *sys, truss *tr)
-{
-    vlbe_dae z = {0};
-    tr->b = 1.0;
-    tr->h0 = 0.2;
-    tr->EA = 1e6;
-    tr->w = (vlbe_real)tr->h0;
-    tr->P = 0.0;
-    *sys = z;
-    sys->n = 2;
-    sys->m = 1;
-    sys->flags = VLBE_DAE_NO_CHESS; /* C is linear */
-    sys->user = tr;
-    sys->force = truss_force;
-    sys->force_jac = truss_force_jac;
-    sys->constr = truss_constr;
-    sys->constr_jac = truss_constr_jac;
-}
-/* the load (downward, N) that holds the apex at height w: lambda(w) */
-static double truss_lambda(const truss *tr, double w)
-{
-    double L0 = sqrt(tr->b * tr->b + tr->h0 * tr->h0), l = sqrt(tr->b * tr->b + w * w);
-    return -2.0 * tr->EA * (l - L0) / L0 * w / l;
-}
+/* The von Mises truss: scenes/vonmises_truss.h. */
 /* Rounding of lambda(w): N = EA (l - L0)/L0 carries an absolute error of a
    few eps EA (l and L0 are each rounded to eps relative, ~1 m), times
    2 w/l <= 2 h0/b: 8 eps EA h0/b; 64 eps EA h0/b gives a factor 8.  x stays
    at 0 to the increment tolerance; lambda depends on x only at second order. */
-static double truss_lam_tol(const truss *tr) { return 64.0 * EPS * tr->EA * tr->h0 / tr->b; }
+static double truss_lam_tol(const vm_truss *tr) { return 64.0 * EPS * tr->EA * tr->h0 / tr->b; }
 
 /* Trace w = h0 .. -h0 in 40 steps (the caller's stepping: move w, call again
    from the last solution).  The load P(w) = lambda rises to the upper limit
@@ -628,7 +532,7 @@ static double truss_lam_tol(const truss *tr) { return 64.0 * EPS * tr->EA * tr->
    that load control cannot follow. */
 static void test_static_truss_snapthrough(void **state)
 {
-    truss tr;
+    vm_truss tr;
     vlbe_dae sys;
     vlbe_static_params par;
     vlbe_dae_stats st;
@@ -637,7 +541,7 @@ static void test_static_truss_snapthrough(void **state)
     int k, kmax = -1, kmin = -1;
     long iters = 0, it_min = 1000, it_max = 0;
     (void)state;
-    truss_setup(&sys, &tr);
+    vm_setup(&sys, &tr, 1);
     vlbe_static_params_default(&par);
     tol = truss_lam_tol(&tr);
     q[0] = VLBE_R(0.01); /* off the symmetric solution */
@@ -649,7 +553,7 @@ static void test_static_truss_snapthrough(void **state)
         iters += st.newton_iters;
         if (st.newton_iters < it_min) it_min = st.newton_iters;
         if (st.newton_iters > it_max) it_max = st.newton_iters;
-        le = truss_lambda(&tr, (double)tr.w);
+        le = vm_lambda(&tr, (double)tr.w);
         ASSERT_CLOSE_CTX(lam[0], le, 0.0, tol, "k = %d, w = %g", k, w);
         worst = fmax(worst, fabs((double)lam[0] - le));
         /* x = 0 to the increment test (atol + rtol |x|, or the floor
@@ -674,7 +578,7 @@ static void test_static_truss_snapthrough(void **state)
 
 /* ------------------------------------------------------------------------ */
 typedef struct truss_fd_ctx {
-    truss *tr;
+    vm_truss *tr;
     const vlbe_real *q;
     int j;
 } truss_fd_ctx;
@@ -686,7 +590,7 @@ static double truss_fd_fn(void *ctx, double x, double *out)
     q[0] = c->q[0];
     q[1] = c->q[1];
     q[c->j] = (vlbe_real)x;
-    truss_force(c->tr, 0, q, z, Q);
+    vm_force(c->tr, 0, q, z, Q);
     out[0] = (double)Q[0];
     out[1] = (double)Q[1];
     return (double)q[c->j];
@@ -700,14 +604,14 @@ static double truss_fd_fn(void *ctx, double x, double *out)
    that; lambda, from the same solve, to the rounding bound of the truss. */
 static void test_static_fd_jacobian(void **state)
 {
-    truss tr;
+    vm_truss tr;
     vlbe_dae sys, sfd;
     vlbe_static_params par;
     static const double ws[5] = {0.19, 0.1155, 0.0, -0.05, -0.15};
     double worst_q = 0.0, worst_l = 0.0, tq, tl, extra = -1e9;
     int k, i, j;
     (void)state;
-    truss_setup(&sys, &tr);
+    vm_setup(&sys, &tr, 1);
     sfd = sys;
     sfd.force_jac = NULL;
     vlbe_static_params_default(&par);
@@ -718,7 +622,7 @@ static void test_static_fd_jacobian(void **state)
         truss_fd_ctx c;
         c.tr = &tr;
         c.q = q;
-        truss_force_jac(&tr, 0, q, q, K, D);
+        vm_force_jac(&tr, 0, q, q, K, D);
         for (j = 0; j < 2; ++j) {
             c.j = j;
             tu_central_diff(truss_fd_fn, &c, (double)q[j], tu_fd_step(EPS, 1.0), 2, work, d);
@@ -736,7 +640,7 @@ static void test_static_fd_jacobian(void **state)
         assert_int_equal(solve(&sfd, &par, qf, lf, &sf), VLBE_OK);
         ASSERT_VEC_CLOSE(qf, qa, 2, 0.0, tq);
         ASSERT_CLOSE(lf[0], la[0], 0.0, tl);
-        ASSERT_CLOSE(la[0], truss_lambda(&tr, (double)tr.w), 0.0, tl);
+        ASSERT_CLOSE(la[0], vm_lambda(&tr, (double)tr.w), 0.0, tl);
         worst_q = fmax(worst_q, fmax(fabs((double)qf[0] - (double)qa[0]),
                                      fabs((double)qf[1] - (double)qa[1])));
         worst_l = fmax(worst_l, fabs((double)lf[0] - (double)la[0]));
@@ -1018,17 +922,9 @@ static void test_static_full_step_fallback(void **state)
    defaults return bit for bit).  Tolerance: the increment test's bound
    (bead test) and 64 eps h0 for the rounding of the force balance (bar
    forces 1.2e4 N against a stiffness of 6e4 N/m). */
-static int truss_force_load(void *u, vlbe_real t, const vlbe_real *q, const vlbe_real *v,
-                            vlbe_real *Q)
-{
-    (void)truss_force(u, t, q, v, Q);
-    Q[1] -= (vlbe_real)((const truss *)u)->P;
-    return 0;
-}
-
 static void test_static_snapthrough_load(void **state)
 {
-    truss tr;
+    vm_truss tr;
     vlbe_dae sys;
     vlbe_static_params par, plain, bt;
     vlbe_dae_stats st, sb;
@@ -1036,17 +932,13 @@ static void test_static_snapthrough_load(void **state)
     double plim = 0.0, lo = -1.0, hi, ye, tol;
     int k;
     (void)state;
-    truss_setup(&sys, &tr);
-    sys.m = 0;
-    sys.force = truss_force_load;
-    sys.constr = NULL;
-    sys.constr_jac = NULL;
-    for (k = 0; k <= 20000; ++k) plim = fmax(plim, truss_lambda(&tr, tr.h0 * k / 20000.0));
+    vm_setup(&sys, &tr, 0);
+    plim = vm_limit_load(&tr);
     tr.P = 2.0 * plim;
     hi = -tr.h0;
     for (k = 0; k < 200; ++k) { /* lambda(y) - P: 5.4e5 N - P > 0 at y = -1, -P at y = -h0 */
         const double mid = 0.5 * (lo + hi);
-        if (truss_lambda(&tr, mid) - tr.P > 0.0) lo = mid;
+        if (vm_lambda(&tr, mid) - tr.P > 0.0) lo = mid;
         else hi = mid;
     }
     ye = 0.5 * (lo + hi);
@@ -1078,7 +970,7 @@ static void test_static_snapthrough_load(void **state)
 /* The residual test (eq. 53) on the truss at w = 0.1 m. */
 static void test_static_residual_test(void **state)
 {
-    truss tr;
+    vm_truss tr;
     vlbe_dae sys;
     vlbe_static_params pinc, pres, pboth;
     vlbe_dae_stats si, sr, sb;
@@ -1086,7 +978,7 @@ static void test_static_residual_test(void **state)
     vlbe_real qi[2], li[1], qr[2], lr[1], qb[2], lb[1];
     double ftol, p;
     (void)state;
-    truss_setup(&sys, &tr);
+    vm_setup(&sys, &tr, 1);
     tr.w = VLBE_R(0.1);
     vlbe_static_params_default(&pinc);
     /* ftol: the rounding of Psi is eps times the bar forces (EA (l - L0)/L0
@@ -1119,9 +1011,9 @@ static void test_static_residual_test(void **state)
     assert_true(sb.newton_iters >= si.newton_iters);
     assert_true(sb.newton_iters >= sr.newton_iters);
     /* all three reach the same lambda to the truss bound */
-    ASSERT_CLOSE(lr[0], truss_lambda(&tr, 0.1), 0.0, truss_lam_tol(&tr) + 2.0 * ftol);
-    ASSERT_CLOSE(lb[0], truss_lambda(&tr, 0.1), 0.0, truss_lam_tol(&tr));
-    ASSERT_CLOSE(li[0], truss_lambda(&tr, 0.1), 0.0, truss_lam_tol(&tr));
+    ASSERT_CLOSE(lr[0], vm_lambda(&tr, 0.1), 0.0, truss_lam_tol(&tr) + 2.0 * ftol);
+    ASSERT_CLOSE(lb[0], vm_lambda(&tr, 0.1), 0.0, truss_lam_tol(&tr));
+    ASSERT_CLOSE(li[0], vm_lambda(&tr, 0.1), 0.0, truss_lam_tol(&tr));
     /* an ftol that cannot be met: the force with a jump (kind 2 of the
        scalar problems) has |Psi| >= 1/2 everywhere; the iterates close in
        on the jump until no halving lowers |Psi|: ENOCONV, q untouched */
