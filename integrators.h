@@ -3658,6 +3658,129 @@ VLBE_INLINE void vlbe__bdf_next(vlbe_bdf *st, int kmax, int knew, int kdiff, int
     *kk = k;
 }
 
+/* The first attempt of vlbe_bdf_step toward t_stop (t_stop > t): the
+   step h (fixed: h0; else the planned one within [h_min, h_max], the first
+   without h0 1e-3 of the distance, as DASSL), hnat that step before the
+   landing, hmin the smallest step (4 eps |t|, or h_min), the run of fixed
+   steps h0 (tb, krun; restarted when t was moved: a shortened step, the
+   caller, krun no longer exact in vlbe_real), and the landing: to_stop
+   when the step ends on t_stop exactly; a step that would leave a sliver
+   (< 10% of h) behind is halved; a fixed step h0 that ends within hmin of
+   t_stop ends on it with the coefficients of h0. */
+VLBE_INLINE void vlbe__bdf_plan(const vlbe_bdf *st, vlbe_real t_stop, vlbe_real *h,
+                                vlbe_real *hnat, vlbe_real *hmin, vlbe_real *tb, long *krun,
+                                int *to_stop)
+{
+    const vlbe_bdf_params *p = &st->par;
+    const vlbe_real dist = t_stop - st->t;
+    *h = p->fixed_step ? p->h0 : st->h;
+    if (!p->fixed_step) {
+        if (st->kold_ == 0 && p->h0 == VLBE_R(0.0) && *h > VLBE_R(1e-3) * dist)
+            *h = VLBE_R(1e-3) * dist; /* first step without h0 (DASSL) */
+        if (p->h_max > VLBE_R(0.0) && *h > p->h_max) *h = p->h_max;
+        if (*h < p->h_min) *h = p->h_min;
+    }
+    *hnat = *h;
+    *hmin = VLBE_R(4.0) * VLBE_EPS *
+            (vlbe_fabs(st->t) > vlbe_fabs(t_stop) ? vlbe_fabs(st->t) : vlbe_fabs(t_stop));
+    if (p->h_min > *hmin) *hmin = p->h_min;
+    *tb = st->t_base_;
+    *krun = st->k_run_;
+    if (p->fixed_step && (st->t != *tb + (vlbe_real)*krun * *h ||
+                          (vlbe_real)(*krun + 1) * VLBE_EPS >= VLBE_R(1.0))) {
+        *tb = st->t;
+        *krun = 0;
+    }
+    *to_stop = 0;
+    if (p->fixed_step && vlbe_fabs(dist - *h) <= *hmin) {
+        *to_stop = 1;
+    } else if (*h >= dist) {
+        *h = dist;
+        *to_stop = 1;
+    } else if (!p->fixed_step && VLBE_R(1.1) * *h > dist) {
+        *h = VLBE_R(0.5) * dist;
+    }
+}
+
+/* The error estimates of an attempt at order k (book sec. 5.2.2), in the
+   filtered norm: the norm of the corrector's change e (returned), est and
+   terk at order k, erkm1 and terkm1 at k - 1; knew = k - 1 (est = erkm1)
+   when the lower orders' terms say the order should drop, else k.  d, yp:
+   scratch (the trial y' is free once the corrector has converged). */
+VLBE_INLINE vlbe_real vlbe__bdf_errest(vlbe_bdf *st, int k, const vlbe_real *e, vlbe_real *d,
+                                       vlbe_real *yp, vlbe_real *est, vlbe_real *terk,
+                                       vlbe_real *erkm1, vlbe_real *terkm1, int *knew)
+{
+    const int N2 = vlbe__bdf_n2(st);
+    const vlbe_real enorm = vlbe__bdf_enorm(st, e, yp);
+    int j, lower;
+    *knew = k;
+    *est = st->sigma_[k + 1] * enorm;
+    *terk = (vlbe_real)(k + 1) * *est;
+    if (k > 1) {
+        vlbe_real *pk1 = vlbe__bdf_phi(st, k + 1);
+        for (j = 0; j < N2; ++j) d[j] = pk1[j] + e[j];
+        *erkm1 = st->sigma_[k] * vlbe__bdf_enorm(st, d, yp);
+        *terkm1 = (vlbe_real)k * *erkm1;
+        if (k > 2) {
+            vlbe_vec_axpy(N2, VLBE_R(1.0), vlbe__bdf_phi(st, k), d);
+            vlbe_real terkm2 = (vlbe_real)(k - 1) * st->sigma_[k - 1] * vlbe__bdf_enorm(st, d, yp);
+            lower = (*terkm1 > terkm2 ? *terkm1 : terkm2) <= *terk;
+        } else {
+            lower = *terkm1 <= VLBE_R(0.5) * *terk;
+        }
+        if (lower) {
+            *knew = k - 1;
+            *est = *erkm1;
+        }
+    }
+    return enorm;
+}
+
+/* An accepted step of size h at order k to t1: the new state and
+   history, then the order and step of the next step (vlbe__bdf_next with
+   the attempt's estimates; fixed steps: the order climbs to max_order,
+   the run of steps h0 from tb, krun goes on unless this step was cut
+   short) and the divided differences phi for it. */
+VLBE_INLINE void vlbe__bdf_accept(vlbe_bdf *st, vlbe_real t1, vlbe_real h, int k, int knew,
+                                  int ns, int shortened, vlbe_real hnat, vlbe_real tb, long krun,
+                                  vlbe_real est, vlbe_real erkm1, vlbe_real terk,
+                                  vlbe_real terkm1)
+{
+    const vlbe_bdf_params *p = &st->par;
+    const int N2 = vlbe__bdf_n2(st), kmax = p->max_order;
+    int kdiff = k - st->kold_, kstep = k, j;
+    vlbe_real hnew = h;
+    vlbe_real *y = vlbe__bdf_vec(st, 0), *yp = vlbe__bdf_vec(st, 1), *e = vlbe__bdf_vec(st, 2),
+              *d = vlbe__bdf_vec(st, 3);
+    vlbe_vec_copy(N2, y, st->q);
+    st->t = t1;
+    if (p->fixed_step) {
+        /* a step cut short for t_stop ends the run */
+        st->t_base_ = h == p->h0 ? tb : t1;
+        st->k_run_ = h == p->h0 ? krun + 1 : 0;
+    }
+    ++st->stats.steps;
+    st->h_last = h;
+    st->order_last = k;
+    st->kold_ = k;
+    st->hold_ = h;
+    st->ns_ = ns;
+    if (p->fixed_step) {
+        if (k < kmax) ++k;
+    } else {
+        vlbe__bdf_next(st, kmax, knew, kdiff, ns, shortened, h, hnat, est, erkm1, terk, terkm1, e,
+                       d, yp, &k, &hnew);
+    }
+    /* divided differences for the next step */
+    if (kstep < kmax) vlbe_vec_copy(N2, e, vlbe__bdf_phi(st, kstep + 2));
+    vlbe_vec_axpy(N2, VLBE_R(1.0), e, vlbe__bdf_phi(st, kstep + 1));
+    for (j = kstep; j >= 1; --j)
+        vlbe_vec_axpy(N2, VLBE_R(1.0), vlbe__bdf_phi(st, j + 1), vlbe__bdf_phi(st, j));
+    st->order = k;
+    st->h = hnew;
+}
+
 /* One accepted step (several attempts if needed) with t + h <= t_stop.
    t_stop <= t or not finite: VLBE_EARG.  On failure the state is as it was
    before the call (t, h, order, q, v, lambda, mu and the history of
@@ -3670,7 +3793,7 @@ VLBE_INLINE void vlbe__bdf_next(vlbe_bdf *st, int kmax, int knew, int kdiff, int
 VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
 {
     const vlbe_bdf_params *p;
-    int N2, k, kmax, ns, knew, nef = 0, ncf = 0, nsf = 0, to_stop, shortened, k0, phase0, jcalc0;
+    int N2, k, ns, knew, nef = 0, ncf = 0, nsf = 0, to_stop, shortened, k0, phase0, jcalc0;
     long nlu0;
     vlbe_real h, hnat, hmin, t1, est, terk, terkm1 = VLBE_R(0.0), erkm1 = VLBE_R(0.0), dist;
     vlbe_real cj0, rate0, tb;
@@ -3683,30 +3806,10 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
     yp = vlbe__bdf_vec(st, 1);
     e = vlbe__bdf_vec(st, 2);
     d = vlbe__bdf_vec(st, 3);
-    kmax = p->max_order;
     dist = t_stop - st->t;
     if (!(dist > VLBE_R(0.0)) || !isfinite(t_stop)) return VLBE_EARG;
     k = st->order;
-    h = p->fixed_step ? p->h0 : st->h;
-    if (!p->fixed_step) {
-        if (st->kold_ == 0 && p->h0 == VLBE_R(0.0) && h > VLBE_R(1e-3) * dist)
-            h = VLBE_R(1e-3) * dist; /* first step without h0 (DASSL) */
-        if (p->h_max > VLBE_R(0.0) && h > p->h_max) h = p->h_max;
-        if (h < p->h_min) h = p->h_min;
-    }
-    hnat = h;
-    hmin = VLBE_R(4.0) * VLBE_EPS *
-           (vlbe_fabs(st->t) > vlbe_fabs(t_stop) ? vlbe_fabs(st->t) : vlbe_fabs(t_stop));
-    if (p->h_min > hmin) hmin = p->h_min;
-    /* fixed steps: the run of steps h0 (restarted when t was moved: a
-       shortened step, the caller, k no longer exact in vlbe_real) */
-    tb = st->t_base_;
-    krun = st->k_run_;
-    if (p->fixed_step &&
-        (st->t != tb + (vlbe_real)krun * h || (vlbe_real)(krun + 1) * VLBE_EPS >= VLBE_R(1.0))) {
-        tb = st->t;
-        krun = 0;
-    }
+    vlbe__bdf_plan(st, t_stop, &h, &hnat, &hmin, &tb, &krun, &to_stop);
     /* what a failure puts back */
     k0 = st->order;
     phase0 = st->phase_;
@@ -3715,22 +3818,10 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
     cj0 = st->cj_;
     rate0 = st->rate_;
     vlbe__bdf_save(st, k0);
-    /* land on t_stop exactly; avoid leaving a sliver (< 10% of h) behind;
-       a fixed step h0 that ends within hmin (4 eps |t|) of t_stop ends on
-       it with the coefficients of h0 */
-    to_stop = shortened = 0;
-    if (p->fixed_step && vlbe_fabs(dist - h) <= hmin) {
-        to_stop = 1;
-    } else if (h >= dist) {
-        h = dist;
-        to_stop = 1;
-    } else if (!p->fixed_step && VLBE_R(1.1) * h > dist) {
-        h = VLBE_R(0.5) * dist;
-    }
     shortened = h < hnat;
     for (;;) {
         vlbe_real enorm, ck, alphas = VLBE_R(0.0), alpha0 = VLBE_R(0.0), cj;
-        int j, failed_newton = 0, lower;
+        int j, failed_newton = 0;
         t1 = to_stop ? t_stop : (p->fixed_step ? tb + (vlbe_real)(krun + 1) * h : st->t + h);
         if (t1 == st->t) {
             rc = VLBE_ESTEP;
@@ -3764,27 +3855,7 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
             if (p->fixed_step) break; /* accepted, no error test */
             /* error estimates at orders k, k-1, k-2 (book sec. 5.2.2), in the
                filtered norm; the trial y' is free now (scratch) */
-            enorm = vlbe__bdf_enorm(st, e, yp);
-            est = st->sigma_[k + 1] * enorm;
-            terk = (vlbe_real)(k + 1) * est;
-            if (k > 1) {
-                vlbe_real *pk1 = vlbe__bdf_phi(st, k + 1);
-                for (j = 0; j < N2; ++j) d[j] = pk1[j] + e[j];
-                erkm1 = st->sigma_[k] * vlbe__bdf_enorm(st, d, yp);
-                terkm1 = (vlbe_real)k * erkm1;
-                if (k > 2) {
-                    vlbe_vec_axpy(N2, VLBE_R(1.0), vlbe__bdf_phi(st, k), d);
-                    vlbe_real terkm2 =
-                        (vlbe_real)(k - 1) * st->sigma_[k - 1] * vlbe__bdf_enorm(st, d, yp);
-                    lower = (terkm1 > terkm2 ? terkm1 : terkm2) <= terk;
-                } else {
-                    lower = terkm1 <= VLBE_R(0.5) * terk;
-                }
-                if (lower) {
-                    knew = k - 1;
-                    est = erkm1;
-                }
-            }
+            enorm = vlbe__bdf_errest(st, k, e, d, yp, &est, &terk, &erkm1, &terkm1, &knew);
             if (ck * enorm <= VLBE_R(1.0)) break; /* accepted */
         } else {
             if (!vlbe__dae_retry(&st->stats, rc)) goto fail;
@@ -3827,37 +3898,7 @@ VLBE_API vlbe_status vlbe_bdf_step(vlbe_bdf *st, vlbe_real t_stop)
     }
 
     /* accepted: new state, then order and step for the next step */
-    {
-        int kdiff = k - st->kold_, kstep = k, j;
-        vlbe_real hnew = h;
-        vlbe_real *y = vlbe__bdf_vec(st, 0);
-        vlbe_vec_copy(N2, y, st->q);
-        st->t = t1;
-        if (p->fixed_step) {
-            /* a step cut short for t_stop ends the run */
-            st->t_base_ = h == p->h0 ? tb : t1;
-            st->k_run_ = h == p->h0 ? krun + 1 : 0;
-        }
-        ++st->stats.steps;
-        st->h_last = h;
-        st->order_last = k;
-        st->kold_ = k;
-        st->hold_ = h;
-        st->ns_ = ns;
-        if (p->fixed_step) {
-            if (k < kmax) ++k;
-        } else {
-            vlbe__bdf_next(st, kmax, knew, kdiff, ns, shortened, h, hnat, est, erkm1, terk,
-                           terkm1, e, d, yp, &k, &hnew);
-        }
-        /* divided differences for the next step */
-        if (kstep < kmax) vlbe_vec_copy(N2, e, vlbe__bdf_phi(st, kstep + 2));
-        vlbe_vec_axpy(N2, VLBE_R(1.0), e, vlbe__bdf_phi(st, kstep + 1));
-        for (j = kstep; j >= 1; --j)
-            vlbe_vec_axpy(N2, VLBE_R(1.0), vlbe__bdf_phi(st, j + 1), vlbe__bdf_phi(st, j));
-        st->order = k;
-        st->h = hnew;
-    }
+    vlbe__bdf_accept(st, t1, h, k, knew, ns, shortened, hnat, tb, krun, est, erkm1, terk, terkm1);
     return VLBE_OK;
 fail:
     /* the state of the call's start: phi and the coefficients from the
