@@ -2004,6 +2004,16 @@ VLBE_INLINE int vlbe__static_inc_ok(const vlbe_static_params *par, int n, const 
     return ok;
 }
 
+/* The parameters of vlbe_dae_static in range (see vlbe_static_params) */
+VLBE_INLINE int vlbe__static_par_ok(const vlbe_static_params *par)
+{
+    return par->rtol >= VLBE_R(0.0) && par->atol >= VLBE_R(0.0) && par->ftol >= VLBE_R(0.0) &&
+           isfinite(par->rtol) && isfinite(par->atol) && isfinite(par->ftol) &&
+           par->rtol + par->atol + par->ftol > VLBE_R(0.0) && par->max_iter >= 1 &&
+           par->max_iter <= VLBE_INT_MAX_ITER && par->max_halvings >= 0 &&
+           par->max_halvings <= 50 && par->watchdog >= 0 && par->watchdog <= VLBE_INT_MAX_ITER;
+}
+
 /* Solves Q(t,q,0) - C_q^T lambda = 0, C(t,q) = 0 for q and lambda, from the
    given q and lambda (both in/out; lambda may be NULL when m = 0).  Newton
    step d from [-K + H, C_q^T; C_q, 0] d = -Psi, in two phases.
@@ -2080,7 +2090,12 @@ VLBE_INLINE int vlbe__static_inc_ok(const vlbe_static_params *par, int n, const 
    Problems, Springer 2004, sec. 3.3 (with the Jacobian of the straight
    beam, the residual after the first full step maps to a correction 10^4
    times that step: 3 times the iterations of plain Newton, or
-   VLBE_ENOCONV). */
+   VLBE_ENOCONV).
+   Implementation, about 180 lines: one Newton iteration in two phases,
+   whose state (the iterate and the trial point swapped in place, the
+   merit and its scale, the watchdog's records, the phase's first
+   iteration) every part of the loop shares; what needs none of it is in
+   helpers (vlbe__static_par_ok, _resid, _newton, _inc_ok). */
 VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_params *par,
                                      vlbe_real t, vlbe_real *q, vlbe_real *lambda,
                                      vlbe_dae_stats *stats, vlbe_real *work, size_t work_len,
@@ -2102,12 +2117,7 @@ VLBE_API vlbe_status vlbe_dae_static(const vlbe_dae *sys, const vlbe_static_para
     N = n + m;
     NN = (size_t)N * (size_t)N;
     if (!par || !q || (m > 0 && !lambda) || !isfinite(t)) return VLBE_EARG;
-    if (!(par->rtol >= VLBE_R(0.0)) || !(par->atol >= VLBE_R(0.0)) ||
-        !(par->ftol >= VLBE_R(0.0)) || !isfinite(par->rtol) || !isfinite(par->atol) ||
-        !isfinite(par->ftol) || !(par->rtol + par->atol + par->ftol > VLBE_R(0.0)) ||
-        par->max_iter < 1 || par->max_iter > VLBE_INT_MAX_ITER || par->max_halvings < 0 ||
-        par->max_halvings > 50 || par->watchdog < 0 || par->watchdog > VLBE_INT_MAX_ITER)
-        return VLBE_EARG;
+    if (!vlbe__static_par_ok(par)) return VLBE_EARG;
     if (!work || !iwork || work_len < vlbe_static_work_len_sys(sys) ||
         iwork_len < vlbe_static_iwork_len_sys(sys))
         return VLBE_EWORK;
@@ -2602,14 +2612,73 @@ VLBE_INLINE vlbe_status vlbe__hht_matrix(vlbe_hht *st, vlbe_real h, vlbe_real t1
     return VLBE_OK;
 }
 
+/* The predictor of an attempt of size h: q''_{n+1} = q''_n, lambda_{n+1} =
+   lambda_n, and from them a (the relation at vlbe_hht_params), q = q_n +
+   h v_n + h^2 ((1/2 - beta) a_n + beta a_{n+1}) and v = v_n + h ((1 -
+   gamma) a_n + gamma a_{n+1}) (Arnold-Bruls). */
+VLBE_INLINE void vlbe__hht_predict(const vlbe_hht *st, vlbe_real h, vlbe_real *tq, vlbe_real *tv,
+                                   vlbe_real *tqdd, vlbe_real *ta, vlbe_real *tl)
+{
+    const vlbe_hht_params *p = &st->par;
+    const vlbe_real am = p->alpha_m, af = p->alpha_f;
+    int i;
+    vlbe_vec_copy(st->n, st->qdd, tqdd);
+    if (st->m) vlbe_vec_copy(st->m, st->lambda, tl);
+    for (i = 0; i < st->n; ++i) {
+        ta[i] = ((VLBE_R(1.0) - af) * tqdd[i] + af * st->qdd[i] - am * st->a[i]) / (VLBE_R(1.0) - am);
+        tq[i] = st->q[i] + h * st->v[i] +
+                h * h * ((VLBE_R(0.5) - p->beta) * st->a[i] + p->beta * ta[i]);
+        tv[i] = st->v[i] + h * ((VLBE_R(1.0) - p->gamma) * st->a[i] + p->gamma * ta[i]);
+    }
+}
+
+/* One Newton correction: the residual r (N) solved with the factored
+   iteration matrix LU (row scaling rs; banded: through X in the matrix's
+   order), then q'' -= dx, lambda -= dl and a, q, v along (dq/dq'' = bp,
+   dv/dq'' = gp); r[0..n) returns the position increment bp dx, for the
+   norm. */
+VLBE_INLINE void vlbe__hht_update(vlbe_hht *st, vlbe_real bp, vlbe_real gp, const vlbe_real *LU,
+                                  const vlbe_real *rs, vlbe_real *X, vlbe_real *r, vlbe_real *tq,
+                                  vlbe_real *tv, vlbe_real *tqdd, vlbe_real *ta, vlbe_real *tl)
+{
+    const vlbe_dae *s = st->sys;
+    const vlbe_real am = st->par.alpha_m, af = st->par.alpha_f;
+    const int n = st->n, m = st->m, N = n + m;
+    int i, j;
+    ++st->stats.lu_solves;
+    ++st->stats.newton_iters;
+    if (vlbe__dae_banded(s)) {
+        vlbe__dae_perm(s, 1, r, X);
+        for (i = 0; i < N; ++i) X[i] *= rs[i];
+        vlbe__dae_solve(s, 1, LU, st->piv_, X);
+        vlbe__dae_unperm(s, 1, X, r);
+    } else {
+        for (i = 0; i < N; ++i) r[i] *= rs[i];
+        vlbe__dae_solve(s, 1, LU, st->piv_, r);
+    }
+    for (i = 0; i < n; ++i) {
+        vlbe_real d = r[i];
+        tqdd[i] -= d;
+        ta[i] -= d * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);
+        tq[i] -= bp * d;
+        tv[i] -= gp * d;
+        r[i] = bp * d; /* position increment, for the norm */
+    }
+    for (j = 0; j < m; ++j) tl[j] -= r[n + j];
+}
+
 /* One attempt of one step of size h from the accepted state at st->t to
    t1 (~ st->t + h, given by the caller without drift) into the trial
-   arrays; the accepted state is not touched. */
+   arrays; the accepted state is not touched.  About 150 lines, a third of
+   them comments: the Newton loop, whose restarts (a stale matrix, a slow
+   contraction, the rounding floor) and residual test (eq. 53) share the
+   iteration's state (it, prev, theta, fresh, full, pending); what needs
+   none of it is in helpers (vlbe__hht_predict, _resid, _matrix, _update). */
 VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t1)
 {
     const vlbe_dae *s = st->sys;
     const vlbe_hht_params *p = &st->par;
-    int n = st->n, m = st->m, N = n + m, i, j, it, fresh, full = !p->modified;
+    int n = st->n, m = st->m, N = n + m, i, it, fresh, full = !p->modified;
     size_t NN = (size_t)N * (size_t)N;
     vlbe_real *tq = vlbe__hht_trial(st), *tv = tq + n, *tqdd = tv + n, *ta = tqdd + n, *tl = ta + n;
     int band = vlbe__dae_banded(s);
@@ -2625,15 +2694,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
     int pending = 0; /* ftol > 0: the increment test passed, the residual is due */
     vlbe_status rc;
 
-    /* predictor: q''_{n+1} = q''_n, lambda_{n+1} = lambda_n */
-    vlbe_vec_copy(n, st->qdd, tqdd);
-    if (m) vlbe_vec_copy(m, st->lambda, tl);
-    for (i = 0; i < n; ++i) {
-        ta[i] = ((VLBE_R(1.0) - af) * tqdd[i] + af * st->qdd[i] - am * st->a[i]) / (VLBE_R(1.0) - am);
-        tq[i] = st->q[i] + h * st->v[i] +
-                h * h * ((VLBE_R(0.5) - p->beta) * st->a[i] + p->beta * ta[i]);
-        tv[i] = st->v[i] + h * ((VLBE_R(1.0) - p->gamma) * st->a[i] + p->gamma * ta[i]);
-    }
+    vlbe__hht_predict(st, h, tq, tv, tqdd, ta, tl);
     /* the stored LU belongs to another step size: drop it */
     if (st->have_lu_ && st->h_lu_ != h) st->have_lu_ = 0;
     fresh = 0;
@@ -2667,27 +2728,7 @@ VLBE_INLINE vlbe_status vlbe__hht_attempt(vlbe_hht *st, vlbe_real h, vlbe_real t
             fresh = 1;
             prev = VLBE_R(0.0);
         }
-        ++st->stats.lu_solves;
-        ++st->stats.newton_iters;
-        if (band) {
-            vlbe__dae_perm(s, 1, r, X);
-            for (i = 0; i < N; ++i) X[i] *= rs[i];
-            vlbe__dae_solve(s, 1, LU, st->piv_, X);
-            vlbe__dae_unperm(s, 1, X, r);
-        } else {
-            for (i = 0; i < N; ++i) r[i] *= rs[i];
-            vlbe__dae_solve(s, 1, LU, st->piv_, r);
-        }
-        /* update: q'' -= dx, lambda -= dl, and a, q, v along */
-        for (i = 0; i < n; ++i) {
-            vlbe_real d = r[i];
-            tqdd[i] -= d;
-            ta[i] -= d * (VLBE_R(1.0) - af) / (VLBE_R(1.0) - am);
-            tq[i] -= bp * d;
-            tv[i] -= gp * d;
-            r[i] = bp * d; /* position increment, for the norm */
-        }
-        for (j = 0; j < m; ++j) tl[j] -= r[n + j];
+        vlbe__hht_update(st, bp, gp, LU, rs, X, r, tq, tv, tqdd, ta, tl);
         /* the whole trial state q, v, q'', a, lambda (contiguous): a and
            q'' may overflow while q and v stay finite (da/dq'' = (1 -
            alpha_f)/(1 - alpha_m) can be far larger than dq/dq'' = bp) */
