@@ -1592,7 +1592,13 @@ VLBE_INLINE void vlbe__ale_inv_out(vlbe_real S, const vlbe_real *y, int jac, vlb
    K given, D must be too).  c: Kelvin-Voigt time (0: undamped, qd not
    read).  Q alone contracts column by column (ten independent sums), with
    K row by row over eight products.  Ks, Ds: the caller's scratch of 64
-   each for the 8 x 8 slot blocks (with K only; left as scratch). */
+   each for the 8 x 8 slot blocks (with K only; left as scratch).  The
+   axial force of eqs. 19, 21 of [R] (eps = (r'.r' - 1)/2, N = EA (eps +
+   c eps')) from the invariants.  About 160 lines: the slot products and
+   the contraction are one pass whose partial sums the Q, K and D parts
+   share (the Q-only path is the hot one of fixed-length chains); the
+   pieces without shared state are helpers (vlbe__ale_inv_slots, _prod,
+   _row, _out). */
 VLBE_INLINE void vlbe__ale_inv_axial(const vlbe_ale_inv *iv, vlbe_real EA, vlbe_real c,
                                        vlbe_real L, int pm, const vlbe_real *pd,
                                        const vlbe_real *q, const vlbe_real *qd, vlbe_real *Q,
@@ -1774,7 +1780,12 @@ VLBE_INLINE void vlbe__ale_inv_load(const vlbe_ale_inv *iv, vlbe_real L, const v
        r_v = 2 A v + A^2 r = 2 ((p2' - p1') O_v/L - s v') + 2 (p2' - p1') s E'/L + s^2 r''
    (v = S e', O_v its slope part).  The material rate of r^(c) (the
    damping) is v^(c) + (p2' - p1') Y2_c - p1' r^(c+1).  Agrees with the
-   Gauss-point route of the Jacobian calls to rounding (test). */
+   Gauss-point route of the Jacobian calls to rounding (test).  About 130
+   lines of straight-line code on purpose: the most frequent call (every
+   residual), one pass per point over the inertia and load (eqs. 15, 19 of
+   [R]), axial (eqs. 19, 21) and bending terms (eq. 22), sharing the
+   point's r, r', r'' and their p-partials; split, each part would gather
+   them again. */
 VLBE_INLINE vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, const vlbe_real *f, int pm,
                                       int damp, int bend, int shared, int inv, const vlbe_real *Lp,
                                       const vlbe_real *pd, const vlbe_real *q, const vlbe_real *qd,
@@ -1909,7 +1920,12 @@ VLBE_INLINE vlbe_status vlbe__ale_q(const vlbe_ale_elem *el, const vlbe_real *f,
 /* The inertia/load, axial and bending terms: Q always, and K and D when K is
    given (e- and p'-columns directly, then the p-columns by the scaling
    identity).  Q, K, D are the caller's zeroed locals; f the distributed
-   load (el->mat.f, or the chain's scaled copy). */
+   load (el->mat.f, or the chain's scaled copy).  Terms: the transport
+   inertia and load (eqs. 15, 19 of [R]) here, per mass point; the axial
+   and bending forces (eqs. 19, 21, 22) by vlbe__ale_strain_gp or the
+   invariants (vlbe__ale_inv_axial); the energy flux of a conservative
+   element by vlbe__ale_flux.  About 120 lines: the mass-point loop with
+   its p'-columns of D is the one part written here. */
 VLBE_INLINE vlbe_status vlbe__ale_forces(const vlbe_ale_elem *el, unsigned mode,
                                            const vlbe_real *f, const vlbe_real *q,
                                            const vlbe_real *qd,
@@ -5180,7 +5196,10 @@ VLBE_INLINE void vlbe__ale_ld_gtb(int nc, int ne, const vlbe_real *G, const vlbe
    Errors: a zero slope under a planar moment or a moment vector
    (VLBE_ESINGULAR), a moment without spin in 3D or a moment vector in a
    planar chain (VLBE_EARG), fun failing (VLBE_ECALLBACK) or non-finite
-   (VLBE_ENONFINITE). */
+   (VLBE_ENONFINITE).  About 150 lines: the four kinds share the point's
+   basis, the map G of the load's variable and the callback's Jacobian
+   terms; the kinds' own parts are in helpers (vlbe__ale_ld_field,
+   _ld_hess, _ld_spin, _ld_gtb). */
 VLBE_INLINE vlbe_status vlbe__ale_load_elem(const vlbe_ale_chain *ch, const vlbe_ale_load *ld,
                                               int e, vlbe_real t, const vlbe_real *pp,
                                               const vlbe_real *qe, const vlbe_real *ve,
