@@ -218,7 +218,7 @@ typedef struct vlbe_cr2d_elem {
     /* private: local mass and linear stiffness tabulated by init, valid
        while mat.rhoA, rhoI, EA, EI equal key_ (checked at each use, so a
        direct change of el->mat is still honoured) */
-    vlbe_real m_[36], k0_[36], key_[4];
+    vlbe_real m_[VLBE_CR2D_NQ * VLBE_CR2D_NQ], k0_[VLBE_CR2D_NQ * VLBE_CR2D_NQ], key_[4];
 } vlbe_cr2d_elem;
 
 /* The prismatic joint of the transition element: exit point C, unit axis
@@ -314,8 +314,8 @@ VLBE_API vlbe_status vlbe_cr2d_elem_init(vlbe_cr2d_elem *el, const vlbe_cr2d_mat
     vlbe__cr2d_lmat(&t, 0, L, t.m_, t.k0_, NULL, NULL);
     /* powers of L up to L^-3 (k0) and L^3 (m): a length so small or so
        large that they overflow is out of range, el stays as it was */
-    if (!vlbe_all_finite(t.m_, 36) || !vlbe_all_finite(t.k0_, 36) || !isfinite(t.c0) ||
-        !isfinite(t.s0))
+    if (!vlbe_all_finite(t.m_, VLBE_CR2D_NQ * VLBE_CR2D_NQ) ||
+        !vlbe_all_finite(t.k0_, VLBE_CR2D_NQ * VLBE_CR2D_NQ) || !isfinite(t.c0) || !isfinite(t.s0))
         return L < VLBE_R(1.0) ? VLBE_ELENGTH : VLBE_ENONFINITE;
     t.key_[0] = mat->rhoA;
     t.key_[1] = mat->rhoI;
@@ -384,31 +384,33 @@ VLBE_INLINE void vlbe__cr2d_lmat(const vlbe_cr2d_elem *el, int tr, vlbe_real L2,
     if (!tr && L2 == L && el->key_[0] == el->mat.rhoA && el->key_[1] == el->mat.rhoI &&
         el->key_[2] == el->mat.EA && el->key_[3] == el->mat.EI) { /* tabulated by init */
         if (m)
-            for (i = 0; i < 36; ++i) m[i] = el->m_[i];
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) m[i] = el->m_[i];
         if (k0)
-            for (i = 0; i < 36; ++i) k0[i] = el->k0_[i];
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) k0[i] = el->k0_[i];
         return;
     }
     if (m || dm) {
         if (m) {
-            for (i = 0; i < 36; ++i) m[i] = VLBE_R(0.0);
-            m[0 * 6 + 0] = m[3 * 6 + 3] = VLBE_R(2.0) * ma;
-            m[0 * 6 + 3] = m[3 * 6 + 0] = ma;
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) m[i] = VLBE_R(0.0);
+            m[0 * VLBE_CR2D_NQ + 0] = m[3 * VLBE_CR2D_NQ + 3] = VLBE_R(2.0) * ma;
+            m[0 * VLBE_CR2D_NQ + 3] = m[3 * VLBE_CR2D_NQ + 0] = ma;
         }
         if (dm)
-            for (i = 0; i < 36; ++i) dm[i] = VLBE_R(0.0);
-        vlbe__cr2d_herm(VLBE__CR2D_NN, el->mat.rhoA / VLBE_R(420.0), 1, L2, ib, 6, m, dm);
-        vlbe__cr2d_herm(VLBE__CR2D_N1N1, el->mat.rhoI / VLBE_R(30.0), -1, L2, ib, 6, m, dm);
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) dm[i] = VLBE_R(0.0);
+        vlbe__cr2d_herm(VLBE__CR2D_NN, el->mat.rhoA / VLBE_R(420.0), 1, L2, ib, VLBE_CR2D_NQ, m,
+                        dm);
+        vlbe__cr2d_herm(VLBE__CR2D_N1N1, el->mat.rhoI / VLBE_R(30.0), -1, L2, ib, VLBE_CR2D_NQ, m,
+                        dm);
     }
     if (k0 || dk0) {
         if (k0) {
-            for (i = 0; i < 36; ++i) k0[i] = VLBE_R(0.0);
-            k0[0 * 6 + 0] = k0[3 * 6 + 3] = ka;
-            k0[0 * 6 + 3] = k0[3 * 6 + 0] = -ka;
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) k0[i] = VLBE_R(0.0);
+            k0[0 * VLBE_CR2D_NQ + 0] = k0[3 * VLBE_CR2D_NQ + 3] = ka;
+            k0[0 * VLBE_CR2D_NQ + 3] = k0[3 * VLBE_CR2D_NQ + 0] = -ka;
         }
         if (dk0)
-            for (i = 0; i < 36; ++i) dk0[i] = VLBE_R(0.0);
-        vlbe__cr2d_herm(VLBE__CR2D_N2N2, el->mat.EI, -3, L2, ib, 6, k0, dk0);
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) dk0[i] = VLBE_R(0.0);
+        vlbe__cr2d_herm(VLBE__CR2D_N2N2, el->mat.EI, -3, L2, ib, VLBE_CR2D_NQ, k0, dk0);
     }
 }
 
@@ -471,14 +473,15 @@ VLBE_INLINE void vlbe__cr2d_to_glob(const vlbe__cr2d_fr *f, const vlbe_real *y, 
 /* G += T^T A T (A local 6x6) */
 VLBE_INLINE void vlbe__cr2d_congr(const vlbe__cr2d_fr *f, const vlbe_real *A, vlbe_real *G)
 {
-    vlbe_real B[36], col[6], out[6];
+    vlbe_real B[VLBE_CR2D_NQ * VLBE_CR2D_NQ], col[VLBE_CR2D_NQ], out[VLBE_CR2D_NQ];
     int i, j;
     /* B = A T: row i of A T is r T = (T^T r^T)^T, r the row i of A */
-    for (i = 0; i < 6; ++i) vlbe__cr2d_to_glob(f, A + i * 6, B + i * 6);
-    for (j = 0; j < 6; ++j) {
-        for (i = 0; i < 6; ++i) col[i] = B[i * 6 + j];
+    for (i = 0; i < VLBE_CR2D_NQ; ++i)
+        vlbe__cr2d_to_glob(f, A + i * VLBE_CR2D_NQ, B + i * VLBE_CR2D_NQ);
+    for (j = 0; j < VLBE_CR2D_NQ; ++j) {
+        for (i = 0; i < VLBE_CR2D_NQ; ++i) col[i] = B[i * VLBE_CR2D_NQ + j];
         vlbe__cr2d_to_glob(f, col, out);
-        for (i = 0; i < 6; ++i) G[i * 6 + j] += out[i];
+        for (i = 0; i < VLBE_CR2D_NQ; ++i) G[i * VLBE_CR2D_NQ + j] += out[i];
     }
 }
 
@@ -491,16 +494,16 @@ VLBE_INLINE void vlbe__cr2d_frame_col(const vlbe__cr2d_fr *fr, const vlbe_real *
                                         const vlbe_real *A, const vlbe_real *u,
                                         const vlbe_real *gb, vlbe_real *K)
 {
-    vlbe_real ju[6], y[6], x[6];
+    vlbe_real ju[VLBE_CR2D_NQ], y[VLBE_CR2D_NQ], x[VLBE_CR2D_NQ];
     int i, j, k;
     for (k = 0; k < 2; ++k) {
         ju[3 * k] = fr->rot[k] ? u[3 * k + 1] : VLBE_R(0.0);
         ju[3 * k + 1] = fr->rot[k] ? -u[3 * k] : VLBE_R(0.0);
         ju[3 * k + 2] = VLBE_R(0.0);
     }
-    for (i = 0; i < 6; ++i) {
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) {
         vlbe_real t = VLBE_R(0.0);
-        for (j = 0; j < 6; ++j) t += A[i * 6 + j] * ju[j];
+        for (j = 0; j < VLBE_CR2D_NQ; ++j) t += A[i * VLBE_CR2D_NQ + j] * ju[j];
         y[i] = t;
     }
     for (k = 0; k < 2; ++k)
@@ -509,8 +512,8 @@ VLBE_INLINE void vlbe__cr2d_frame_col(const vlbe__cr2d_fr *fr, const vlbe_real *
             y[3 * k + 1] += f[3 * k];
         }
     vlbe__cr2d_to_glob(fr, y, x);
-    for (i = 0; i < 6; ++i)
-        for (j = 0; j < 6; ++j) K[i * 6 + j] += x[i] * gb[j];
+    for (i = 0; i < VLBE_CR2D_NQ; ++i)
+        for (j = 0; j < VLBE_CR2D_NQ; ++j) K[i * VLBE_CR2D_NQ + j] += x[i] * gb[j];
 }
 
 /* -- kinematics ---------------------------------------------------------- */
@@ -527,19 +530,19 @@ typedef struct vlbe__cr2d_kin {
     vlbe_real th[2];    /* deformation rotations                            */
     vlbe_real eps;      /* eps0 (eqs. 7, 24)                                */
     vlbe_real L2;       /* bending length                                   */
-    vlbe_real gl[6], gb[6]; /* gradients of l and of the chord angle b      */
-    vlbe_real gL2[6];   /* gradient of L2 (transition; else 0)              */
+    vlbe_real gl[VLBE_CR2D_NQ], gb[VLBE_CR2D_NQ]; /* gradients of l and of the chord angle b      */
+    vlbe_real gL2[VLBE_CR2D_NQ];   /* gradient of L2 (transition; else 0)              */
     /* transition only: y = (l1, l2, theta3, theta2), B = dy/dq (4 x 6), L1
        and its y-derivatives, eps_v (eq. 25) */
     int tr;
     vlbe_real l1, L1, ev;
-    vlbe_real B[4][6], L1y[4], L1yy[16];
+    vlbe_real B[4][VLBE_CR2D_NQ], L1y[4], L1yy[16];
 } vlbe__cr2d_kin;
 
 VLBE_INLINE vlbe_status vlbe__cr2d_check(const vlbe_real *q, const vlbe_real *qd)
 {
-    if (!vlbe_all_finite(q, 6)) return VLBE_ENONFINITE;
-    if (qd && !vlbe_all_finite(qd, 6)) return VLBE_ENONFINITE;
+    if (!vlbe_all_finite(q, VLBE_CR2D_NQ)) return VLBE_ENONFINITE;
+    if (qd && !vlbe_all_finite(qd, VLBE_CR2D_NQ)) return VLBE_ENONFINITE;
     return VLBE_OK;
 }
 
@@ -563,7 +566,7 @@ VLBE_INLINE vlbe_real vlbe__cr2d_theta(const vlbe_cr2d_elem *el, vlbe_real ph, v
 VLBE_INLINE void vlbe__cr2d_chord_grad(vlbe__cr2d_kin *k, int both)
 {
     int i;
-    for (i = 0; i < 6; ++i) k->gl[i] = k->gb[i] = k->gL2[i] = VLBE_R(0.0);
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) k->gl[i] = k->gb[i] = k->gL2[i] = VLBE_R(0.0);
     k->gl[3] = k->c;
     k->gl[4] = k->s;
     k->gb[3] = -k->s / k->l;
@@ -586,7 +589,7 @@ VLBE_INLINE vlbe_status vlbe__cr2d_kin_eval(const vlbe_cr2d_elem *el, int lin, i
     k->tr = 0;
     k->L2 = L;
     if (lin) {
-        vlbe_real u[6];
+        vlbe_real u[VLBE_CR2D_NQ];
         vlbe__cr2d_fr_set(&k->fr, el->c0, el->s0, 0, el->c0, el->s0, 0);
         vlbe__cr2d_to_loc(&k->fr, q, u);
         k->c = el->c0;
@@ -696,7 +699,7 @@ VLBE_INLINE vlbe_status vlbe__cr2d_kin_tr(const vlbe_cr2d_elem *el, const vlbe_c
     k->L1yy[2 * 4 + 3] -= Lw[2] * VLBE_R(2.0) / VLBE_R(60.0);
     k->L1yy[3 * 4 + 2] -= Lw[2] * VLBE_R(2.0) / VLBE_R(60.0);
     vlbe__cr2d_chord_grad(k, 0);
-    for (i = 0; i < 6; ++i) {
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) {
         k->B[0][i] = VLBE_R(0.0);
         k->B[1][i] = k->gl[i];
         k->B[2][i] = -k->gb[i];
@@ -705,7 +708,7 @@ VLBE_INLINE vlbe_status vlbe__cr2d_kin_tr(const vlbe_cr2d_elem *el, const vlbe_c
     k->B[0][0] = -ax;
     k->B[0][1] = -ay;
     k->B[3][5] = VLBE_R(1.0);
-    for (i = 0; i < 6; ++i) {
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) {
         vlbe_real v = VLBE_R(0.0);
         for (a = 0; a < 4; ++a) v -= k->L1y[a] * k->B[a][i];
         k->gL2[i] = v;
@@ -722,9 +725,10 @@ VLBE_INLINE void vlbe__cr2d_bthb(int nl, const vlbe_real *B, const vlbe_real *H,
         for (b = 0; b < nl; ++b) {
             const vlbe_real h = H[a * nl + b];
             if (h == VLBE_R(0.0)) continue;
-            for (i = 0; i < 6; ++i) {
-                const vlbe_real hb = h * B[a * 6 + i];
-                for (j = 0; j < 6; ++j) K[i * 6 + j] += hb * B[b * 6 + j];
+            for (i = 0; i < VLBE_CR2D_NQ; ++i) {
+                const vlbe_real hb = h * B[a * VLBE_CR2D_NQ + i];
+                for (j = 0; j < VLBE_CR2D_NQ; ++j)
+                    K[i * VLBE_CR2D_NQ + j] += hb * B[b * VLBE_CR2D_NQ + j];
             }
         }
 }
@@ -745,11 +749,11 @@ VLBE_INLINE void vlbe__cr2d_chord_hess(vlbe_real c, vlbe_real s, vlbe_real l, vl
     P[1][1] = gl * c * c / l + gt * VLBE_R(2.0) * c * s / l2;
     for (a = 0; a < 2; ++a)
         for (b = 0; b < 2; ++b) {
-            K[(3 + a) * 6 + 3 + b] += P[a][b];
+            K[(3 + a) * VLBE_CR2D_NQ + 3 + b] += P[a][b];
             if (both) {
-                K[a * 6 + b] += P[a][b];
-                K[a * 6 + 3 + b] -= P[a][b];
-                K[(3 + a) * 6 + b] -= P[a][b];
+                K[a * VLBE_CR2D_NQ + b] += P[a][b];
+                K[a * VLBE_CR2D_NQ + 3 + b] -= P[a][b];
+                K[(3 + a) * VLBE_CR2D_NQ + b] -= P[a][b];
             }
         }
 }
@@ -766,16 +770,16 @@ VLBE_INLINE void vlbe__cr2d_elastic(const vlbe_cr2d_elem *el, const vlbe__cr2d_k
     const vlbe_real gl = EA * eps; /* f_a^d (eq. 16) */
     const vlbe_real g1 = EA * L * eps * a1 + EI / L * (VLBE_R(4.0) * t1 + VLBE_R(2.0) * t2);
     const vlbe_real g2 = EA * L * eps * a2 + EI / L * (VLBE_R(2.0) * t1 + VLBE_R(4.0) * t2);
-    vlbe_real B[3][6];
+    vlbe_real B[3][VLBE_CR2D_NQ];
     int i;
-    for (i = 0; i < 6; ++i) {
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) {
         B[0][i] = k->gl[i];
         B[1][i] = -k->gb[i];
         B[2][i] = -k->gb[i];
     }
     B[1][2] += VLBE_R(1.0);
     B[2][5] += VLBE_R(1.0);
-    for (i = 0; i < 6; ++i) F[i] += gl * B[0][i] + g1 * B[1][i] + g2 * B[2][i];
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) F[i] += gl * B[0][i] + g1 * B[1][i] + g2 * B[2][i];
     if (!K) return;
     {
         /* Hessian in (l, theta1, theta2) (eq. 21 plus the terms it drops) */
@@ -817,7 +821,7 @@ VLBE_INLINE void vlbe__cr2d_elastic_tr(const vlbe_cr2d_elem *el, const vlbe__cr2
     ey[2] += (VLBE_R(8.0) * t3 - VLBE_R(2.0) * t2) / VLBE_R(60.0);
     ey[3] += (VLBE_R(8.0) * t2 - VLBE_R(2.0) * t3) / VLBE_R(60.0);
     for (i = 0; i < 4; ++i) Uy[i] = EA * L * eps * ey[i] + EI * (By[i] * iL + Bt * iLy[i]);
-    for (i = 0; i < 6; ++i)
+    for (i = 0; i < VLBE_CR2D_NQ; ++i)
         F[i] += Uy[0] * k->B[0][i] + Uy[1] * k->B[1][i] + Uy[2] * k->B[2][i] +
                 Uy[3] * k->B[3][i];
     if (!K) return;
@@ -865,7 +869,7 @@ VLBE_INLINE void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, vlbe_real L2, const vl
     const vlbe_real L = el->L, L1 = L - L2, rA = el->mat.rhoA, rI = el->mat.rhoI;
     const vlbe_real w = (u[4] - u[1]) / L2, ed = (u[3] - u[0]) / L;
     const int *ib = vlbe__cr2d_ib;
-    vlbe_real cc[3], dcL[3], dc[3][6], Q[2][3][3], QL[2][3][3], Qc[2][3];
+    vlbe_real cc[3], dcL[3], dc[3][VLBE_CR2D_NQ], Q[2][3][3], QL[2][3][3], Qc[2][3];
     vlbe_real Gb[16], GL[16], gu[4], gL[4], ub[4];
     int r, i, j, k;
     cc[0] = u[2];
@@ -902,7 +906,7 @@ VLBE_INLINE void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, vlbe_real L2, const vl
         for (i = 0; i < 3; ++i)
             Qc[r][i] = rA * (Q[r][i][0] * cc[0] + Q[r][i][1] * cc[1] + Q[r][i][2] * cc[2]);
     }
-    for (i = 0; i < 6; ++i) f[i] = VLBE_R(0.0);
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) f[i] = VLBE_R(0.0);
     f[0] = cc[0] * Qc[0][0] + cc[1] * Qc[0][1] + cc[2] * Qc[0][2];
     f[3] = cc[0] * Qc[1][0] + cc[1] * Qc[1][1] + cc[2] * Qc[1][2];
     ub[0] = u[1];
@@ -916,7 +920,7 @@ VLBE_INLINE void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, vlbe_real L2, const vl
         f[ib[i]] = -VLBE_R(2.0) * rI * ed * gu[i];
     }
     if (fL) {
-        for (i = 0; i < 6; ++i) fL[i] = VLBE_R(0.0);
+        for (i = 0; i < VLBE_CR2D_NQ; ++i) fL[i] = VLBE_R(0.0);
         for (r = 0; r < 2; ++r) {
             vlbe_real t = VLBE_R(0.0);
             for (i = 0; i < 3; ++i) {
@@ -932,9 +936,9 @@ VLBE_INLINE void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, vlbe_real L2, const vl
         }
     }
     if (!A) return;
-    for (i = 0; i < 36; ++i) A[i] = VLBE_R(0.0);
+    for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) A[i] = VLBE_R(0.0);
     for (i = 0; i < 3; ++i)
-        for (j = 0; j < 6; ++j) dc[i][j] = VLBE_R(0.0);
+        for (j = 0; j < VLBE_CR2D_NQ; ++j) dc[i][j] = VLBE_R(0.0);
     dc[0][2] = VLBE_R(1.0);
     dc[1][1] = -VLBE_R(6.0) / L2;
     dc[1][2] = -VLBE_R(4.0);
@@ -945,13 +949,14 @@ VLBE_INLINE void vlbe__cr2d_nli(const vlbe_cr2d_elem *el, vlbe_real L2, const vl
     dc[2][4] = -VLBE_R(6.0) / L2;
     dc[2][5] = VLBE_R(3.0);
     for (r = 0; r < 2; ++r)
-        for (j = 0; j < 6; ++j)
-            A[3 * r * 6 + j] = VLBE_R(2.0) * (Qc[r][0] * dc[0][j] + Qc[r][1] * dc[1][j] +
+        for (j = 0; j < VLBE_CR2D_NQ; ++j)
+            A[3 * r * VLBE_CR2D_NQ + j] = VLBE_R(2.0) * (Qc[r][0] * dc[0][j] + Qc[r][1] * dc[1][j] +
                                               Qc[r][2] * dc[2][j]);
     for (i = 0; i < 4; ++i) {
-        A[ib[i] * 6 + 0] += VLBE_R(2.0) * rI * gu[i] / L;
-        A[ib[i] * 6 + 3] -= VLBE_R(2.0) * rI * gu[i] / L;
-        for (j = 0; j < 4; ++j) A[ib[i] * 6 + ib[j]] -= VLBE_R(2.0) * rI * ed * Gb[i * 4 + j];
+        A[ib[i] * VLBE_CR2D_NQ + 0] += VLBE_R(2.0) * rI * gu[i] / L;
+        A[ib[i] * VLBE_CR2D_NQ + 3] -= VLBE_R(2.0) * rI * gu[i] / L;
+        for (j = 0; j < 4; ++j)
+            A[ib[i] * VLBE_CR2D_NQ + ib[j]] -= VLBE_R(2.0) * rI * ed * Gb[i * 4 + j];
     }
 }
 
@@ -990,12 +995,13 @@ VLBE_INLINE void vlbe__cr2d_forces(const vlbe_cr2d_elem *el, unsigned mode,
                      (el->mat.ray_a != VLBE_R(0.0) || el->mat.ray_b != VLBE_R(0.0));
     int i, j;
     if (lin) {
-        vlbe_real k0[36], u[6], f[6], g[6];
+        vlbe_real k0[VLBE_CR2D_NQ * VLBE_CR2D_NQ], u[VLBE_CR2D_NQ], f[VLBE_CR2D_NQ],
+            g[VLBE_CR2D_NQ];
         vlbe__cr2d_lmat(el, 0, el->L, NULL, k0, NULL, NULL);
         vlbe__cr2d_to_loc(&k->fr, q, u);
-        vlbe_mat_vec(6, 6, k0, u, f);
+        vlbe_mat_vec(VLBE_CR2D_NQ, VLBE_CR2D_NQ, k0, u, f);
         vlbe__cr2d_to_glob(&k->fr, f, g);
-        for (i = 0; i < 6; ++i) F[i] += g[i];
+        for (i = 0; i < VLBE_CR2D_NQ; ++i) F[i] += g[i];
         if (K) vlbe__cr2d_congr(&k->fr, k0, K);
     } else if (k->tr)
         vlbe__cr2d_elastic_tr(el, k, F, K);
@@ -1004,42 +1010,44 @@ VLBE_INLINE void vlbe__cr2d_forces(const vlbe_cr2d_elem *el, unsigned mode,
     if (nli || damp) {
         /* local rate u = T q', local force f = f_nl(u) + C u, A = df/du,
            fL = df/dL2 (transition: L2 depends on q) */
-        vlbe_real u[6], f[6], A[36], fL[6], g[6];
+        vlbe_real u[VLBE_CR2D_NQ], f[VLBE_CR2D_NQ], A[VLBE_CR2D_NQ * VLBE_CR2D_NQ],
+            fL[VLBE_CR2D_NQ], g[VLBE_CR2D_NQ];
         vlbe__cr2d_rates(k, qd, u);
-        for (i = 0; i < 6; ++i) f[i] = fL[i] = VLBE_R(0.0);
-        for (i = 0; i < 36; ++i) A[i] = VLBE_R(0.0);
+        for (i = 0; i < VLBE_CR2D_NQ; ++i) f[i] = fL[i] = VLBE_R(0.0);
+        for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) A[i] = VLBE_R(0.0);
         if (nli) vlbe__cr2d_nli(el, k->L2, u, f, A, k->tr ? fL : NULL);
         if (damp) { /* m, k0, then (transition) their L2-derivatives in the same pair */
-            vlbe_real m[36], k0[36];
+            vlbe_real m[VLBE_CR2D_NQ * VLBE_CR2D_NQ], k0[VLBE_CR2D_NQ * VLBE_CR2D_NQ];
             vlbe__cr2d_lmat(el, k->tr, k->L2, m, k0, NULL, NULL);
-            for (i = 0; i < 6; ++i)
-                for (j = 0; j < 6; ++j) {
-                    const int e = i * 6 + j;
+            for (i = 0; i < VLBE_CR2D_NQ; ++i)
+                for (j = 0; j < VLBE_CR2D_NQ; ++j) {
+                    const int e = i * VLBE_CR2D_NQ + j;
                     const vlbe_real c = el->mat.ray_a * m[e] + el->mat.ray_b * k0[e];
                     f[i] += c * u[j];
                     A[e] += c;
                 }
             if (k->tr) {
                 vlbe__cr2d_lmat(el, 1, k->L2, NULL, NULL, m, k0);
-                for (i = 0; i < 6; ++i)
-                    for (j = 0; j < 6; ++j)
-                        fL[i] += (el->mat.ray_a * m[i * 6 + j] + el->mat.ray_b * k0[i * 6 + j]) * u[j];
+                for (i = 0; i < VLBE_CR2D_NQ; ++i)
+                    for (j = 0; j < VLBE_CR2D_NQ; ++j)
+                        fL[i] += (el->mat.ray_a * m[i * VLBE_CR2D_NQ + j] + el->mat.ray_b * k0[i * VLBE_CR2D_NQ + j]) * u[j];
             }
         }
         if (k->tr) { /* eq. 46: f_b on v2, phi2 only; no node-1 lateral rates */
             f[1] = f[2] = fL[1] = fL[2] = VLBE_R(0.0);
-            for (i = 0; i < 6; ++i)
-                A[1 * 6 + i] = A[2 * 6 + i] = A[i * 6 + 1] = A[i * 6 + 2] = VLBE_R(0.0);
+            for (i = 0; i < VLBE_CR2D_NQ; ++i)
+                A[1 * VLBE_CR2D_NQ + i] = A[2 * VLBE_CR2D_NQ + i] = A[i * VLBE_CR2D_NQ + 1] =
+                    A[i * VLBE_CR2D_NQ + 2] = VLBE_R(0.0);
         }
         vlbe__cr2d_to_glob(&k->fr, f, g);
-        for (i = 0; i < 6; ++i) F[i] += g[i];
+        for (i = 0; i < VLBE_CR2D_NQ; ++i) F[i] += g[i];
         if (D) vlbe__cr2d_congr(&k->fr, A, D);
         if (K && !lin) {
             vlbe__cr2d_frame_col(&k->fr, f, A, u, k->gb, K);
             if (k->tr) {
                 vlbe__cr2d_to_glob(&k->fr, fL, g);
-                for (i = 0; i < 6; ++i)
-                    for (j = 0; j < 6; ++j) K[i * 6 + j] += g[i] * k->gL2[j];
+                for (i = 0; i < VLBE_CR2D_NQ; ++i)
+                    for (j = 0; j < VLBE_CR2D_NQ; ++j) K[i * VLBE_CR2D_NQ + j] += g[i] * k->gL2[j];
             }
         }
     }
@@ -1059,7 +1067,7 @@ VLBE_INLINE vlbe_status vlbe__cr2d_float(const vlbe_cr2d_elem *el, const vlbe_re
 {
     const vlbe_real c = vlbe_cos(fth[0]), s = vlbe_sin(fth[0]);
     const vlbe_real sh = vlbe_sin(VLBE_R(0.5) * fth[0]), cm = -VLBE_R(2.0) * sh * sh;
-    vlbe_real off[6], w[6];
+    vlbe_real off[VLBE_CR2D_NQ], w[VLBE_CR2D_NQ];
     int k;
     if (!vlbe_all_finite(fth, 2)) return VLBE_ENONFINITE;
     if ((vlbe__cr2d_check(q, qd)) != VLBE_OK) return VLBE_ENONFINITE;
@@ -1089,8 +1097,10 @@ VLBE_INLINE vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
                                                vlbe_real *VLBE_RESTRICT K,
                                                vlbe_real *VLBE_RESTRICT D)
 {
-    vlbe_real FKD[78], d[6], dd[6];
-    vlbe_real *const F = FKD, *const Kt = FKD + 6, *const Dt = FKD + 42;
+    vlbe_real FKD[VLBE_CR2D_NQ + 2 * VLBE_CR2D_NQ * VLBE_CR2D_NQ], d[VLBE_CR2D_NQ],
+        dd[VLBE_CR2D_NQ];
+    vlbe_real *const F = FKD, *const Kt = FKD + VLBE_CR2D_NQ,
+                     *const Dt = FKD + VLBE_CR2D_NQ + VLBE_CR2D_NQ * VLBE_CR2D_NQ;
     vlbe__cr2d_fr fr;
     vlbe__cr2d_kin k;
     vlbe_status st;
@@ -1107,40 +1117,42 @@ VLBE_INLINE vlbe_status vlbe__cr2d_force_any(const vlbe_cr2d_elem *el,
         qd = dd;
     }
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, qd, &k)) != VLBE_OK) return st;
-    for (i = 0; i < 6; ++i) F[i] = VLBE_R(0.0);
-    for (i = 0; i < 36; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) F[i] = VLBE_R(0.0);
+    for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) Kt[i] = Dt[i] = VLBE_R(0.0);
     vlbe__cr2d_forces(el, mode, &k, q, qd, F, K ? Kt : NULL, D ? Dt : NULL);
     if (fth) {
         /* Q = -T^T F(d, dd), K = T^T K_d T + D J theta' (dd depends on q
            through theta' J u), D = T^T D_d T */
-        vlbe_real G[36];
+        vlbe_real G[VLBE_CR2D_NQ * VLBE_CR2D_NQ];
         vlbe__cr2d_to_glob(&fr, F, d);
-        for (i = 0; i < 6; ++i) F[i] = d[i];
+        for (i = 0; i < VLBE_CR2D_NQ; ++i) F[i] = d[i];
         if (K || D) {
-            for (i = 0; i < 36; ++i) G[i] = VLBE_R(0.0);
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) G[i] = VLBE_R(0.0);
             vlbe__cr2d_congr(&fr, Dt, G);
-            for (i = 0; i < 36; ++i) Dt[i] = G[i];
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) Dt[i] = G[i];
         }
         if (K) {
-            for (i = 0; i < 36; ++i) G[i] = VLBE_R(0.0);
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) G[i] = VLBE_R(0.0);
             vlbe__cr2d_congr(&fr, Kt, G);
-            for (i = 0; i < 6; ++i)
+            for (i = 0; i < VLBE_CR2D_NQ; ++i)
                 for (j = 0; j < 2; ++j) {
-                    G[i * 6 + 3 * j] -= fth[1] * Dt[i * 6 + 3 * j + 1];
-                    G[i * 6 + 3 * j + 1] += fth[1] * Dt[i * 6 + 3 * j];
+                    G[i * VLBE_CR2D_NQ + 3 * j] -= fth[1] * Dt[i * VLBE_CR2D_NQ + 3 * j + 1];
+                    G[i * VLBE_CR2D_NQ + 3 * j + 1] += fth[1] * Dt[i * VLBE_CR2D_NQ + 3 * j];
                 }
-            for (i = 0; i < 36; ++i) Kt[i] = G[i];
+            for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) Kt[i] = G[i];
         }
     }
     /* finite input can overflow (huge rates, stiffness): nothing written.
        F, Kt, Dt are one buffer, scanned in one pass (Q only: F alone) */
-    if (vlbe__fin_bits(FKD, K || D ? 78 : 6) & VLBE__BITS_SIGN)
+    if (vlbe__fin_bits(FKD,
+                       K || D ? VLBE_CR2D_NQ + 2 * VLBE_CR2D_NQ * VLBE_CR2D_NQ : VLBE_CR2D_NQ) &
+        VLBE__BITS_SIGN)
         return VLBE_ENONFINITE;
-    for (i = 0; i < 6; ++i) Q[i] = -F[i];
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) Q[i] = -F[i];
     if (K)
-        for (i = 0; i < 36; ++i) K[i] = -Kt[i];
+        for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) K[i] = -Kt[i];
     if (D)
-        for (i = 0; i < 36; ++i) D[i] = -Dt[i];
+        for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) D[i] = -Dt[i];
     return VLBE_OK;
 }
 
@@ -1149,7 +1161,7 @@ VLBE_INLINE vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vlbe
                                               vlbe_real *VLBE_RESTRICT M)
 {
     vlbe__cr2d_kin k;
-    vlbe_real m[36];
+    vlbe_real m[VLBE_CR2D_NQ * VLBE_CR2D_NQ];
     vlbe_status st;
     int i;
     VLBE_ASSERT(el != NULL && M != NULL);
@@ -1169,14 +1181,14 @@ VLBE_INLINE vlbe_status vlbe__cr2d_mass_any(const vlbe_cr2d_elem *el, const vlbe
         const vlbe_real lim = VLBE_R(0.125) * VLBE_REAL_MAX;
         vlbe__bits bl, u, b = 0;
         memcpy(&bl, &lim, sizeof bl);
-        for (i = 0; i < 36; ++i) {
+        for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) {
             memcpy(&u, &m[i], sizeof u);
             u &= VLBE__BITS_ABS;
             b = u > b ? u : b;
         }
         if (b > bl) return VLBE_ENONFINITE;
     }
-    for (i = 0; i < 36; ++i) M[i] = VLBE_R(0.0);
+    for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) M[i] = VLBE_R(0.0);
     vlbe__cr2d_congr(&k.fr, m, M);
     return VLBE_OK;
 }
@@ -1189,27 +1201,28 @@ VLBE_INLINE vlbe_status vlbe__cr2d_mass_jac_any(const vlbe_cr2d_elem *el,
                                                   vlbe_real *VLBE_RESTRICT Mq)
 {
     vlbe__cr2d_kin k;
-    vlbe_real m[36], dm[36], u[6], f[6], g[6], J[36];
+    vlbe_real m[VLBE_CR2D_NQ * VLBE_CR2D_NQ], dm[VLBE_CR2D_NQ * VLBE_CR2D_NQ], u[VLBE_CR2D_NQ],
+        f[VLBE_CR2D_NQ], g[VLBE_CR2D_NQ], J[VLBE_CR2D_NQ * VLBE_CR2D_NQ];
     vlbe_status st;
     int i, j;
     VLBE_ASSERT(el != NULL && a != NULL && Mq != NULL);
     mode |= el->flags | VLBE__CR2D_FRAME_ONLY;
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, a, &k)) != VLBE_OK) return st;
-    for (i = 0; i < 36; ++i) J[i] = VLBE_R(0.0);
+    for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) J[i] = VLBE_R(0.0);
     if (!(mode & VLBE_CR2D_LINEAR)) { /* LINEAR: M constant, J = 0 */
         vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, k.tr ? dm : NULL, NULL);
         vlbe__cr2d_to_loc(&k.fr, a, u);
-        vlbe_mat_vec(6, 6, m, u, f);
+        vlbe_mat_vec(VLBE_CR2D_NQ, VLBE_CR2D_NQ, m, u, f);
         vlbe__cr2d_frame_col(&k.fr, f, m, u, k.gb, J);
         if (k.tr) {
-            vlbe_mat_vec(6, 6, dm, u, f);
+            vlbe_mat_vec(VLBE_CR2D_NQ, VLBE_CR2D_NQ, dm, u, f);
             vlbe__cr2d_to_glob(&k.fr, f, g);
-            for (i = 0; i < 6; ++i)
-                for (j = 0; j < 6; ++j) J[i * 6 + j] += g[i] * k.gL2[j];
+            for (i = 0; i < VLBE_CR2D_NQ; ++i)
+                for (j = 0; j < VLBE_CR2D_NQ; ++j) J[i * VLBE_CR2D_NQ + j] += g[i] * k.gL2[j];
         }
-        if (!vlbe_all_finite(J, 36)) return VLBE_ENONFINITE;
+        if (!vlbe_all_finite(J, VLBE_CR2D_NQ * VLBE_CR2D_NQ)) return VLBE_ENONFINITE;
     }
-    for (i = 0; i < 36; ++i) Mq[i] = J[i];
+    for (i = 0; i < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++i) Mq[i] = J[i];
     return VLBE_OK;
 }
 
@@ -1222,7 +1235,8 @@ VLBE_INLINE vlbe_status vlbe__cr2d_energy_any(const vlbe_cr2d_elem *el,
 {
     vlbe__cr2d_kin k;
     vlbe__cr2d_fr fr;
-    vlbe_real m[36], u[6], mu[6], d[6], T, U;
+    vlbe_real m[VLBE_CR2D_NQ * VLBE_CR2D_NQ], u[VLBE_CR2D_NQ], mu[VLBE_CR2D_NQ], d[VLBE_CR2D_NQ], T,
+        U;
     vlbe_status st;
     VLBE_ASSERT(el != NULL && qd != NULL && E != NULL);
     mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
@@ -1234,8 +1248,8 @@ VLBE_INLINE vlbe_status vlbe__cr2d_energy_any(const vlbe_cr2d_elem *el,
     if ((st = vlbe__cr2d_kin_any(el, jt, mode, q, qd, &k)) != VLBE_OK) return st;
     vlbe__cr2d_lmat(el, k.tr, k.L2, m, NULL, NULL, NULL);
     vlbe__cr2d_rates(&k, qd, u);
-    vlbe_mat_vec(6, 6, m, u, mu);
-    T = VLBE_R(0.5) * vlbe_vec_dot(6, u, mu);
+    vlbe_mat_vec(VLBE_CR2D_NQ, VLBE_CR2D_NQ, m, u, mu);
+    T = VLBE_R(0.5) * vlbe_vec_dot(VLBE_CR2D_NQ, u, mu);
     /* LINEAR: k.eps, k.th are the linear measures, and U = q^T K0 q / 2 has
        the same form without the quadratic part of eps0 */
     U = VLBE_R(0.5) * el->mat.EA * el->L * k.eps * k.eps +
@@ -1302,7 +1316,7 @@ VLBE_API vlbe_status vlbe_cr2d_local_ff(const vlbe_cr2d_elem *el, unsigned mode,
 {
     vlbe__cr2d_kin k;
     vlbe__cr2d_fr fr;
-    vlbe_real d[6];
+    vlbe_real d[VLBE_CR2D_NQ];
     vlbe_status st;
     VLBE_ASSERT(el != NULL && loc != NULL);
     mode = (mode | el->flags) & ~VLBE__CR2D_FRAME_ONLY;
@@ -1650,7 +1664,7 @@ VLBE_API vlbe_status vlbe_cr2d_beam_band(vlbe_cr2d_beam *b, int *order, int orde
     w = 0;
     for (e = 0; e < b->ne; ++e) {
         int lo = order[3 * e], hi = lo;
-        for (i = 1; i < 6; ++i) {
+        for (i = 1; i < VLBE_CR2D_NQ; ++i) {
             const int o = order[3 * e + i];
             lo = o < lo ? o : lo;
             hi = o > hi ? o : hi;
@@ -1709,9 +1723,9 @@ VLBE_INLINE int vlbe__cr2d_fail(vlbe_cr2d_beam *b, vlbe_status st, int e)
    < 6, is the beam matrix's A[map[i] + map[6 + j]]; coordinates 3e .. 3e + 5. */
 VLBE_INLINE void vlbe__cr2d_map(const vlbe_cr2d_beam *b, int e, size_t *map)
 {
-    int g[6], i;
-    for (i = 0; i < 6; ++i) g[i] = 3 * e + i;
-    vlbe__scatter_map(6, g, b->n, b->order, b->kl, b->ku, map, map + 6);
+    int g[VLBE_CR2D_NQ], i;
+    for (i = 0; i < VLBE_CR2D_NQ; ++i) g[i] = 3 * e + i;
+    vlbe__scatter_map(VLBE_CR2D_NQ, g, b->n, b->order, b->kl, b->ku, map, map + VLBE_CR2D_NQ);
 }
 
 /* entries of an n x n matrix of the beam (rows m = nfix for Cq): dense n
@@ -1752,8 +1766,9 @@ VLBE_INLINE int vlbe__cr2d_in_check(vlbe_cr2d_beam *b, const vlbe_real *q, const
         (!a || vlbe_all_finite(a, b->n)))
         return 0;
     for (e = 0; e < b->ne; ++e)
-        if (!vlbe_all_finite(q + 3 * e, 6) || (v && !vlbe_all_finite(v + 3 * e, 6)) ||
-            (a && !vlbe_all_finite(a + 3 * e, 6)))
+        if (!vlbe_all_finite(q + 3 * e, VLBE_CR2D_NQ) ||
+            (v && !vlbe_all_finite(v + 3 * e, VLBE_CR2D_NQ)) ||
+            (a && !vlbe_all_finite(a + 3 * e, VLBE_CR2D_NQ)))
             break;
     return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e < b->ne ? e : -1);
 }
@@ -1774,8 +1789,8 @@ VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, co
                                  vlbe_real *M)
 {
     vlbe_cr2d_beam *b = (vlbe_cr2d_beam *)user;
-    vlbe_real Me[36];
-    size_t map[12];
+    vlbe_real Me[VLBE_CR2D_NQ * VLBE_CR2D_NQ];
+    size_t map[2 * VLBE_CR2D_NQ];
     vlbe_status st;
     int e, rc;
     (void)t;
@@ -1789,7 +1804,8 @@ VLBE_API int vlbe_cr2d_beam_mass(void *user, vlbe_real t, const vlbe_real *q, co
             VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
         vlbe__cr2d_map(b, e, map);
-        if (!vlbe__scatter(6, map, map + 6, Me, M)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
+        if (!vlbe__scatter(VLBE_CR2D_NQ, map, map + VLBE_CR2D_NQ, Me, M))
+            return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
 }
@@ -1854,17 +1870,17 @@ VLBE_INLINE void vlbe__cr2d_lhess(const vlbe_real *Hdd, const vlbe_real *Hdp, vl
     for (a = 0; a < 2; ++a) {
         for (c = 0; c < 2; ++c) {
             const vlbe_real h = Hdd[a * 2 + c];
-            K[a * 6 + c] += h;
-            K[a * 6 + 3 + c] -= h;
-            K[(3 + a) * 6 + c] -= h;
-            K[(3 + a) * 6 + 3 + c] += h;
+            K[a * VLBE_CR2D_NQ + c] += h;
+            K[a * VLBE_CR2D_NQ + 3 + c] -= h;
+            K[(3 + a) * VLBE_CR2D_NQ + c] -= h;
+            K[(3 + a) * VLBE_CR2D_NQ + 3 + c] += h;
         }
         for (j = 0; j < 2; ++j) {
             const vlbe_real h = Hdp[a * 2 + j];
-            K[a * 6 + 3 * j + 2] -= h;
-            K[(3 * j + 2) * 6 + a] -= h;
-            K[(3 + a) * 6 + 3 * j + 2] += h;
-            K[(3 * j + 2) * 6 + 3 + a] += h;
+            K[a * VLBE_CR2D_NQ + 3 * j + 2] -= h;
+            K[(3 * j + 2) * VLBE_CR2D_NQ + a] -= h;
+            K[(3 + a) * VLBE_CR2D_NQ + 3 * j + 2] += h;
+            K[(3 * j + 2) * VLBE_CR2D_NQ + 3 + a] += h;
         }
     }
 }
@@ -2015,15 +2031,16 @@ VLBE_INLINE vlbe_status vlbe__cr2d_load_elem(const vlbe_cr2d_beam *b, const vlbe
     const vlbe_real s = b->load;
     vlbe__cr2d_lf fr;
     vlbe_real h[4], f[2] = {0, 0}, dfr[4] = {0, 0, 0, 0}, dfv[4] = {0, 0, 0, 0};
-    vlbe_real Gr[12], G[12], W[12];
+    vlbe_real Gr[2 * VLBE_CR2D_NQ], G[2 * VLBE_CR2D_NQ], W[2 * VLBE_CR2D_NQ];
     unsigned mode;
     vlbe_status st;
     int a, c, j;
     if ((st = vlbe__cr2d_lmode(b, e, &mode)) != VLBE_OK) return st;
     if ((st = vlbe__cr2d_lframe(&b->el[e], mode, q, &fr)) != VLBE_OK) return st;
     vlbe__cr2d_lherm(xi, h);
-    for (a = 0; a < 12; ++a) Gr[a] = G[a] = VLBE_R(0.0);
-    for (c = 0; c < 2; ++c) vlbe__cr2d_lfield(&fr, 1, xi, h[0], h[1], ex[c], 1, Gr + 6 * c, NULL);
+    for (a = 0; a < 2 * VLBE_CR2D_NQ; ++a) Gr[a] = G[a] = VLBE_R(0.0);
+    for (c = 0; c < 2; ++c)
+        vlbe__cr2d_lfield(&fr, 1, xi, h[0], h[1], ex[c], 1, Gr + VLBE_CR2D_NQ * c, NULL);
     if (ld->fun) { /* position and velocity of the point */
         vlbe_real r[2], rd[2];
         const vlbe_real Wv = h[0] * fr.th[0] + h[1] * fr.th[1];
@@ -2031,7 +2048,7 @@ VLBE_INLINE vlbe_status vlbe__cr2d_load_elem(const vlbe_cr2d_beam *b, const vlbe
         for (c = 0; c < 2; ++c) {
             r[c] = b->el[e].X[c] + q[c] + xi * fr.d[c] + fr.L * Wv * fr.e2[c];
             rd[c] = (fr.d[c] + fr.L * Wx * fr.e2[c]) * xd;
-            for (a = 0; a < 6; ++a) rd[c] += Gr[6 * c + a] * v[a];
+            for (a = 0; a < VLBE_CR2D_NQ; ++a) rd[c] += Gr[VLBE_CR2D_NQ * c + a] * v[a];
         }
         if (ld->fun(ld->user, t, r, rd, f, jac ? dfr : NULL, jac ? dfv : NULL))
             return VLBE_ECALLBACK;
@@ -2041,50 +2058,56 @@ VLBE_INLINE vlbe_status vlbe__cr2d_load_elem(const vlbe_cr2d_beam *b, const vlbe
         for (c = 0; c < nc; ++c) f[c] = ld->f[c];
     }
     if (Ke)
-        for (a = 0; a < 36; ++a) Ke[a] = VLBE_R(0.0);
+        for (a = 0; a < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++a) Ke[a] = VLBE_R(0.0);
     if (De)
-        for (a = 0; a < 36; ++a) De[a] = VLBE_R(0.0);
-    for (a = 0; a < 6; ++a) Qe[a] = VLBE_R(0.0);
+        for (a = 0; a < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++a) De[a] = VLBE_R(0.0);
+    for (a = 0; a < VLBE_CR2D_NQ; ++a) Qe[a] = VLBE_R(0.0);
     if (mom) {
         vlbe__cr2d_lrot(&fr, h[2], h[3], f[0], s, Qe, Ke);
         vlbe__cr2d_lrot(&fr, h[2], h[3], 1, 1, G, NULL);
     } else {
         vlbe__cr2d_lfield(&fr, 1, xi, h[0], h[1], f, s, Qe, Ke);
-        for (a = 0; a < 12; ++a) G[a] = Gr[a];
+        for (a = 0; a < 2 * VLBE_CR2D_NQ; ++a) G[a] = Gr[a];
     }
     if (!jac || !ld->fun) return VLBE_OK;
     if (De) { /* df/drd dr/dv */
         for (c = 0; c < nc; ++c)
-            for (a = 0; a < 6; ++a) {
+            for (a = 0; a < VLBE_CR2D_NQ; ++a) {
                 vlbe_real x = VLBE_R(0.0);
-                for (j = 0; j < 2; ++j) x += dfv[c * 2 + j] * Gr[6 * j + a];
-                W[6 * c + a] = x;
+                for (j = 0; j < 2; ++j) x += dfv[c * 2 + j] * Gr[VLBE_CR2D_NQ * j + a];
+                W[VLBE_CR2D_NQ * c + a] = x;
             }
         for (c = 0; c < nc; ++c)
-            for (a = 0; a < 6; ++a)
-                for (j = 0; j < 6; ++j) De[a * 6 + j] += s * G[6 * c + a] * W[6 * c + j];
+            for (a = 0; a < VLBE_CR2D_NQ; ++a)
+                for (j = 0; j < VLBE_CR2D_NQ; ++j)
+                    De[a * VLBE_CR2D_NQ + j] +=
+                        s * G[VLBE_CR2D_NQ * c + a] * W[VLBE_CR2D_NQ * c + j];
     }
     if (Ke) { /* df/dr dr/dq + df/drd drd/dq, drd/dq = d^2 r/dq^2 v + xi' d(dr/dxi)/dq */
-        vlbe_real Grd[12], Hc[36];
-        for (a = 0; a < 12; ++a) W[a] = VLBE_R(0.0);
+        vlbe_real Grd[2 * VLBE_CR2D_NQ], Hc[VLBE_CR2D_NQ * VLBE_CR2D_NQ];
+        for (a = 0; a < 2 * VLBE_CR2D_NQ; ++a) W[a] = VLBE_R(0.0);
         for (c = 0; c < 2; ++c) {
-            for (a = 0; a < 36; ++a) Hc[a] = VLBE_R(0.0);
-            for (a = 0; a < 6; ++a) Grd[6 * c + a] = VLBE_R(0.0);
+            for (a = 0; a < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++a) Hc[a] = VLBE_R(0.0);
+            for (a = 0; a < VLBE_CR2D_NQ; ++a) Grd[VLBE_CR2D_NQ * c + a] = VLBE_R(0.0);
             vlbe__cr2d_lfield(&fr, 1, xi, h[0], h[1], ex[c], 1, W, Hc); /* W: scratch */
-            for (a = 0; a < 6; ++a)
-                for (j = 0; j < 6; ++j) Grd[6 * c + a] += Hc[a * 6 + j] * v[j];
-            vlbe__cr2d_lfield(&fr, 0, 1, h[2], h[3], ex[c], xd, Grd + 6 * c, NULL);
+            for (a = 0; a < VLBE_CR2D_NQ; ++a)
+                for (j = 0; j < VLBE_CR2D_NQ; ++j)
+                    Grd[VLBE_CR2D_NQ * c + a] += Hc[a * VLBE_CR2D_NQ + j] * v[j];
+            vlbe__cr2d_lfield(&fr, 0, 1, h[2], h[3], ex[c], xd, Grd + VLBE_CR2D_NQ * c, NULL);
         }
         for (c = 0; c < nc; ++c)
-            for (a = 0; a < 6; ++a) {
+            for (a = 0; a < VLBE_CR2D_NQ; ++a) {
                 vlbe_real x = VLBE_R(0.0);
                 for (j = 0; j < 2; ++j)
-                    x += dfr[c * 2 + j] * Gr[6 * j + a] + dfv[c * 2 + j] * Grd[6 * j + a];
-                W[6 * c + a] = x;
+                    x += dfr[c * 2 + j] * Gr[VLBE_CR2D_NQ * j + a] +
+                         dfv[c * 2 + j] * Grd[VLBE_CR2D_NQ * j + a];
+                W[VLBE_CR2D_NQ * c + a] = x;
             }
         for (c = 0; c < nc; ++c)
-            for (a = 0; a < 6; ++a)
-                for (j = 0; j < 6; ++j) Ke[a * 6 + j] += s * G[6 * c + a] * W[6 * c + j];
+            for (a = 0; a < VLBE_CR2D_NQ; ++a)
+                for (j = 0; j < VLBE_CR2D_NQ; ++j)
+                    Ke[a * VLBE_CR2D_NQ + j] +=
+                        s * G[VLBE_CR2D_NQ * c + a] * W[VLBE_CR2D_NQ * c + j];
     }
     return VLBE_OK;
 }
@@ -2104,9 +2127,9 @@ VLBE_INLINE vlbe_status vlbe__cr2d_dist_elem(const vlbe_cr2d_beam *b, int e, con
     if ((st = vlbe__cr2d_lmode(b, e, &mode)) != VLBE_OK) return st;
     if ((st = vlbe__cr2d_lframe(&b->el[e], mode, q, &fr)) != VLBE_OK) return st;
     if ((st = vlbe_gl_rule(3, &x, &wg)) != VLBE_OK) return st;
-    for (a = 0; a < 6; ++a) Qe[a] = VLBE_R(0.0);
+    for (a = 0; a < VLBE_CR2D_NQ; ++a) Qe[a] = VLBE_R(0.0);
     if (Ke)
-        for (a = 0; a < 36; ++a) Ke[a] = VLBE_R(0.0);
+        for (a = 0; a < VLBE_CR2D_NQ * VLBE_CR2D_NQ; ++a) Ke[a] = VLBE_R(0.0);
     for (g = 0; g < 3; ++g) {
         const vlbe_real xi = VLBE_R(0.5) * (x[g] + VLBE_R(1.0));
         vlbe_real h[4];
@@ -2168,7 +2191,7 @@ VLBE_INLINE int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vlbe
                                         vlbe_real *D, vlbe_real *Qe, vlbe_real *Ke, vlbe_real *De)
 {
     vlbe_real w[2], ss[2], xi;
-    size_t map[12];
+    size_t map[2 * VLBE_CR2D_NQ];
     vlbe_status st;
     int e, i, k;
     for (e = 0; e < b->ne; ++e) {
@@ -2176,10 +2199,10 @@ VLBE_INLINE int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vlbe
         if ((st = vlbe__cr2d_dist_elem(b, e, w, q + 3 * e, Qe, K ? Ke : NULL)) != VLBE_OK)
             return vlbe__cr2d_load_fail(b, st, e, -1);
         if (Q)
-            for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
+            for (i = 0; i < VLBE_CR2D_NQ; ++i) Q[3 * e + i] += Qe[i];
         if (K) {
             vlbe__cr2d_map(b, e, map);
-            if (!vlbe__scatter(6, map, map + 6, Ke, K))
+            if (!vlbe__scatter(VLBE_CR2D_NQ, map, map + VLBE_CR2D_NQ, Ke, K))
                 return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
         }
     }
@@ -2191,10 +2214,10 @@ VLBE_INLINE int vlbe__cr2d_beam_loads(vlbe_cr2d_beam *b, vlbe_real t, const vlbe
                                        v + 3 * e, Qe, K ? Ke : NULL, D ? De : NULL)) != VLBE_OK)
             return vlbe__cr2d_load_fail(b, st, e, k);
         if (Q)
-            for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
+            for (i = 0; i < VLBE_CR2D_NQ; ++i) Q[3 * e + i] += Qe[i];
         if (K || D) vlbe__cr2d_map(b, e, map);
-        if ((K && !vlbe__scatter(6, map, map + 6, Ke, K)) ||
-            (D && !vlbe__scatter(6, map, map + 6, De, D)))
+        if ((K && !vlbe__scatter(VLBE_CR2D_NQ, map, map + VLBE_CR2D_NQ, Ke, K)) ||
+            (D && !vlbe__scatter(VLBE_CR2D_NQ, map, map + VLBE_CR2D_NQ, De, D)))
             return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
@@ -2204,8 +2227,9 @@ VLBE_INLINE int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const vlb
                                          const vlbe_real *v, vlbe_real *Q, vlbe_real *K,
                                          vlbe_real *D)
 {
-    vlbe_real Qe[6], Ke[36], De[36], fth[2];
-    size_t map[12];
+    vlbe_real Qe[VLBE_CR2D_NQ], Ke[VLBE_CR2D_NQ * VLBE_CR2D_NQ], De[VLBE_CR2D_NQ * VLBE_CR2D_NQ],
+        fth[2];
+    size_t map[2 * VLBE_CR2D_NQ];
     vlbe_status st;
     int e, i, rc;
     VLBE_ASSERT(b != NULL && q != NULL && v != NULL);
@@ -2225,10 +2249,10 @@ VLBE_INLINE int vlbe__cr2d_beam_forces(vlbe_cr2d_beam *b, vlbe_real t, const vlb
                                        Qe, K ? Ke : NULL, D ? De : NULL)) != VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
         if (Q)
-            for (i = 0; i < 6; ++i) Q[3 * e + i] += Qe[i];
+            for (i = 0; i < VLBE_CR2D_NQ; ++i) Q[3 * e + i] += Qe[i];
         if (K || D) vlbe__cr2d_map(b, e, map);
-        if ((K && !vlbe__scatter(6, map, map + 6, Ke, K)) ||
-            (D && !vlbe__scatter(6, map, map + 6, De, D)))
+        if ((K && !vlbe__scatter(VLBE_CR2D_NQ, map, map + VLBE_CR2D_NQ, Ke, K)) ||
+            (D && !vlbe__scatter(VLBE_CR2D_NQ, map, map + VLBE_CR2D_NQ, De, D)))
             return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     if ((rc = vlbe__cr2d_beam_loads(b, t, q, v, Q, K, D, Qe, Ke, De)) != 0) return rc;
@@ -2254,8 +2278,8 @@ VLBE_API int vlbe_cr2d_beam_mass_jac(void *user, vlbe_real t, const vlbe_real *q
                                      vlbe_real *Mv)
 {
     vlbe_cr2d_beam *b = (vlbe_cr2d_beam *)user;
-    vlbe_real Me[36];
-    size_t map[12];
+    vlbe_real Me[VLBE_CR2D_NQ * VLBE_CR2D_NQ];
+    size_t map[2 * VLBE_CR2D_NQ];
     vlbe_status st;
     int e, rc;
     (void)t;
@@ -2270,7 +2294,8 @@ VLBE_API int vlbe_cr2d_beam_mass_jac(void *user, vlbe_real t, const vlbe_real *q
                                           a + 3 * e, Me)) != VLBE_OK)
             return vlbe__cr2d_fail(b, st, e);
         vlbe__cr2d_map(b, e, map);
-        if (!vlbe__scatter(6, map, map + 6, Me, Mq)) return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
+        if (!vlbe__scatter(VLBE_CR2D_NQ, map, map + VLBE_CR2D_NQ, Me, Mq))
+            return vlbe__cr2d_fail(b, VLBE_ENONFINITE, e);
     }
     return 0;
 }
