@@ -41,6 +41,14 @@ CONVENTIONS
    length (gravity: f = rhoA g).  Rates eps', kap' are material rates (at
    fixed p), equal to eps_q q', kap_q q'.  Units: any consistent set.
    Matrices 10x10 row-major in the same order.  K = dQ/dq, D = dQ/dq'.
+   Arguments, the same order in the planar, 3D and rational elements
+   (rancf.h): what fixes the element's basis first (nothing for the planar
+   Hermite element, the mode for the 3D one, whose layout it sets, the
+   element with its weights for the rational one), then q (and q', a), the
+   material point p, the outputs last:  vlbe_ale_point(q, p, r, rp),
+   vlbe_ale3_point(mode, q, p, r, rp, th), vlbe_rancf_point(el, q, p, r,
+   rp); element calls take the element and mode first: vlbe_ale_force(el,
+   mode, q, qd, Q, K, D).
 
    Mode flags (vlbe_ale_elem_init: defaults of the element type; the eval
    functions OR their `mode` argument into them):
