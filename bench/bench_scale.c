@@ -20,8 +20,7 @@
    (default out/bench), and ends with the line
      chain scale: slope S (64-1024 el.), T us/step at 256 el., W MB at 1024 el. */
 #define _POSIX_C_SOURCE 199309L
-#include "bench_util.h"
-#include "../scenes/clamped_chain.h"
+#include "bench_chain.h"
 #include "../scenes/svgplot.h"
 
 #include <stdio.h>

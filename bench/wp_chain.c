@@ -19,8 +19,7 @@
    Writes outdir/wp_chain.csv, wp_chain.svg, chain_scale.csv,
    chain_scale.svg (default outdir: out). */
 #define _POSIX_C_SOURCE 199309L
-#include "bench_util.h"
-#include "../scenes/clamped_chain.h"
+#include "bench_chain.h"
 #include "../scenes/svgplot.h"
 
 #include <stdio.h>

@@ -8,9 +8,8 @@
    settings), CC_BAND_REUSE (banded, vlbe_hht_params.reuse_max = 2: a stale
    iteration matrix refreshed when it needs more than two further
    iterations).
-   -- part of vlbe                                  SPDX-License-Identifier: MIT
-   Include after bench/bench_util.h (its timer benchu_now and
-   benchu_cmp_double). */
+   Timed by bench/bench_chain.h.
+   -- part of vlbe                                  SPDX-License-Identifier: MIT */
 #ifndef VLBE_SCENE_CLAMPED_CHAIN_H
 #define VLBE_SCENE_CLAMPED_CHAIN_H
 
@@ -20,7 +19,7 @@
 #include <stdlib.h>
 
 enum { CC_DENSE, CC_BAND, CC_BAND_REUSE };
-enum { CC_NMAX = 1024, CC_WARM = 20, CC_BLOCKS = 5, CC_DENSE_MAX = 256 };
+enum { CC_NMAX = 1024, CC_DENSE_MAX = 256 };
 
 typedef struct cc_scene {
     vlbe_ale_mat mat;
@@ -35,11 +34,6 @@ typedef struct cc_scene {
     int *iw;
     size_t lw, liw;
 } cc_scene;
-
-typedef struct cc_result {
-    double us, newton, lu, mb;
-    int kl, n;
-} cc_result;
 
 static inline void cc_free(cc_scene *s)
 {
@@ -94,61 +88,6 @@ static inline int cc_init(cc_scene *s, int ne, int variant)
     par.reuse_max = variant == CC_BAND_REUSE ? 2 : 0;
     return vlbe_hht_init(&s->st, &s->sys, &par, 0, s->q0, s->v0, s->w, s->lw, s->iw, s->liw) ? -1
                                                                                             : 0;
-}
-
-static inline int cc_time(int ne, int variant, cc_result *r)
-{
-    cc_scene *s = (cc_scene *)malloc(sizeof *s);
-    double t[CC_BLOCKS];
-    long it0, lu0, steps = 0;
-    int b, k, ok = 0;
-    if (!s) return -1;
-    if (cc_init(s, ne, variant)) goto out;
-    for (k = 0; k < CC_WARM; ++k)
-        if (vlbe_hht_step(&s->st, VLBE_R(1e-3))) goto out;
-    it0 = s->st.stats.newton_iters;
-    lu0 = s->st.stats.lu_factors;
-    for (b = 0; b < CC_BLOCKS; ++b) {
-        double t0 = benchu_now(), el;
-        int nk = 0;
-        do {
-            for (k = 0; k < 10; ++k)
-                if (vlbe_hht_step(&s->st, VLBE_R(1e-3))) goto out;
-            nk += 10;
-            el = benchu_now() - t0;
-        } while (el < 0.2 / CC_BLOCKS && nk < 100000);
-        t[b] = el / nk;
-        steps += nk;
-    }
-    qsort(t, CC_BLOCKS, sizeof *t, benchu_cmp_double);
-    r->us = 1e6 * t[CC_BLOCKS / 2];
-    r->newton = (double)(s->st.stats.newton_iters - it0) / (double)steps;
-    r->lu = (double)(s->st.stats.lu_factors - lu0) / (double)steps;
-    r->mb = ((double)s->lw * sizeof(vlbe_real) + (double)s->liw * sizeof(int) +
-             (variant != CC_DENSE ? (double)(5 * (ne + 1) + 4) * sizeof(int) : 0.0)) /
-            1048576.0;
-    r->kl = variant != CC_DENSE ? s->ch.kl : -1;
-    r->n = s->ch.n;
-    ok = 1;
-out:
-    cc_free(s);
-    free(s);
-    return ok ? 0 : -1;
-}
-
-/* least-squares slope of log y against log x */
-static inline double cc_slope(int n, const double *x, const double *y)
-{
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int i;
-    for (i = 0; i < n; ++i) {
-        double a = log(x[i]), b = log(y[i]);
-        sx += a;
-        sy += b;
-        sxx += a * a;
-        sxy += a * b;
-    }
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 #endif /* VLBE_SCENE_CLAMPED_CHAIN_H */
