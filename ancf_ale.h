@@ -143,6 +143,9 @@ API
    vlbe_status vlbe_ale_chain_layout(ch)                    coordinates n, equations m
    vlbe_status vlbe_ale_chain_band(ch, order, cap)          banded callbacks in the augmented
                                                             order (order NULL: dense)
+   size_t vlbe_ale_chain_at(ch, i, j)                       place of entry (i, j) in the
+                                                            chain's matrices (dense or band)
+   size_t vlbe_ale_chain_mat_len(ch)                        reals of one such matrix
    vlbe_status vlbe_ale_chain_pnode(ch, i, t, q, v, p3)     p, p', p'' of a node
    vlbe_status vlbe_ale_chain_gather(ch, e, t, q, v, qe, ve, idx, mode)  element view
    void vlbe_ale_chain_straight(ch, r0, dir, q)             straight start state
@@ -607,6 +610,8 @@ VLBE_API vlbe_status vlbe_ale_chain_types(vlbe_ale_chain *ch, const vlbe_ale_ety
 VLBE_API vlbe_status vlbe_ale_chain_add(vlbe_ale_chain *ch, const vlbe_ale_con *c);
 VLBE_API vlbe_status vlbe_ale_chain_layout(vlbe_ale_chain *ch);
 VLBE_API vlbe_status vlbe_ale_chain_band(vlbe_ale_chain *ch, int *order, int order_cap);
+VLBE_API size_t vlbe_ale_chain_at(const vlbe_ale_chain *ch, int i, int j);
+VLBE_API size_t vlbe_ale_chain_mat_len(const vlbe_ale_chain *ch);
 VLBE_API vlbe_status vlbe_ale_chain_pnode(const vlbe_ale_chain *ch, int i, vlbe_real t,
                                           const vlbe_real *q, const vlbe_real *v, vlbe_real *p3);
 VLBE_API vlbe_status vlbe_ale_chain_gather(const vlbe_ale_chain *ch, int e, vlbe_real t,
@@ -4866,10 +4871,11 @@ VLBE_INLINE vlbe_status vlbe__ale_el_force(const vlbe_ale_chain *ch, int e, unsi
 
 /* The index map of the chain's matrices: entry (i, j) -- i, j < n
    coordinates, or n + k for constraint row k in banded mode -- at
-   A[vlbe__ale_at(ch, i, j)]: dense i n + j, banded VLBE_BAND_IDX(ld, kl,
+   A[vlbe_ale_chain_at(ch, i, j)]: dense i n + j, banded VLBE_BAND_IDX(ld, kl,
    order[i], order[j]) with ld = kl + ku + 1 (see vlbe_ale_chain).  Every
-   assembly below goes through it. */
-VLBE_INLINE size_t vlbe__ale_at(const vlbe_ale_chain *ch, int i, int j)
+   assembly below goes through it, and a caller adding terms of its own to
+   M, K or D (after the layout) does the same. */
+VLBE_API size_t vlbe_ale_chain_at(const vlbe_ale_chain *ch, int i, int j)
 {
     if (!ch->order) return (size_t)i * (size_t)ch->n + (size_t)j;
     return VLBE_BAND_IDX(ch->kl + ch->ku + 1, ch->kl, ch->order[i], ch->order[j]);
@@ -4879,12 +4885,12 @@ VLBE_INLINE size_t vlbe__ale_at(const vlbe_ale_chain *ch, int i, int j)
    constraint k in the augmented order */
 VLBE_INLINE size_t vlbe__ale_cq_at(const vlbe_ale_chain *ch, int k, int j)
 {
-    return vlbe__ale_at(ch, ch->order ? ch->n + k : k, j);
+    return vlbe_ale_chain_at(ch, ch->order ? ch->n + k : k, j);
 }
 
-/* reals of one of the chain's matrices: n * n dense, (n + m) ld banded (the
-   layout checked that it fits in a size_t) */
-VLBE_INLINE size_t vlbe__ale_mat_len(const vlbe_ale_chain *ch)
+/* reals of one of the chain's matrices (after the layout): n * n dense,
+   (n + m) ld banded (the layout checked that it fits in a size_t) */
+VLBE_API size_t vlbe_ale_chain_mat_len(const vlbe_ale_chain *ch)
 {
     if (!ch->order) return (size_t)ch->n * (size_t)ch->n;
     VLBE_ASSERT(ch->kl >= 0); /* vlbe_ale_chain_band is followed by a layout */
@@ -4943,16 +4949,16 @@ VLBE_INLINE int vlbe__ale_mdiag_finite(const vlbe_ale_chain *ch, const vlbe_real
     int i, ok = 1;
     if (!ch->order) return vlbe__ale_diag_finite(ch->n, A);
     for (i = 0; i < ch->n; ++i) {
-        const vlbe_real a = A[vlbe__ale_at(ch, i, i)];
+        const vlbe_real a = A[vlbe_ale_chain_at(ch, i, i)];
         ok &= a - a == VLBE_R(0.0);
     }
     return ok;
 }
 
-/* zero one of the chain's matrices (vlbe__ale_mat_len reals) */
+/* zero one of the chain's matrices (vlbe_ale_chain_mat_len reals) */
 VLBE_INLINE void vlbe__ale_zero_mat(const vlbe_ale_chain *ch, vlbe_real *A)
 {
-    const size_t len = vlbe__ale_mat_len(ch);
+    const size_t len = vlbe_ale_chain_mat_len(ch);
     size_t i;
     for (i = 0; i < len; ++i) A[i] = VLBE_R(0.0);
 }
@@ -5043,7 +5049,7 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
     for (i = 0; i < ch->nn; ++i)
         for (k = 0; k < ch->d; ++k) {
             const int r = ch->node[i].ofs + k;
-            M[vlbe__ale_at(ch, r, r)] += ch->node[i].mass;
+            M[vlbe_ale_chain_at(ch, r, r)] += ch->node[i].mass;
         }
     return vlbe__ale_mdiag_finite(ch, M) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
@@ -5580,7 +5586,7 @@ VLBE_INLINE vlbe_status vlbe__ale_chain_con(const vlbe_ale_chain *ch, vlbe_real 
                                               const vlbe_real *q, vlbe_real *C, vlbe_real *Cq,
                                               vlbe_real *Ct)
 {
-    const size_t nm = ch->order ? vlbe__ale_mat_len(ch) : (size_t)ch->n * (size_t)ch->m;
+    const size_t nm = ch->order ? vlbe_ale_chain_mat_len(ch) : (size_t)ch->n * (size_t)ch->m;
     size_t iz;
     int k, r = 0, i, b;
     vlbe_status st;
@@ -5808,7 +5814,7 @@ VLBE_API int vlbe_ale_chain_constr_hess(void *user, vlbe_real t, const vlbe_real
                 if (!(na > VLBE_R(0.0))) return vlbe__ale_fail(ch, VLBE_ESINGULAR, c->node);
                 for (i = 0; i < 2; ++i)
                     for (j = 0; j < 2; ++j) {
-                        vlbe_real *h = &H[vlbe__ale_at(ch, b + i, b + j)];
+                        vlbe_real *h = &H[vlbe_ale_chain_at(ch, b + i, b + j)];
                         *h += f * ((i == j ? VLBE_R(1.0) : VLBE_R(0.0)) - a[i] * a[j] / (na * na));
                         if (!isfinite(*h)) return vlbe__ale_fail(ch, VLBE_ENONFINITE, c->node);
                     }

@@ -105,6 +105,8 @@ API
                                             curve as elements (exact geometry)
    vlbe_status vlbe_rancf_chain_init(ch, els, nodes, nn, cap, cons, ccap)  a planar
                                             chain of ALE-RANCF elements (vlbe_ale_chain)
+   const vlbe_ale_etype *vlbe_rancf_etype()  the element-type table of such a
+                                            chain (to wrap in a table of one's own)
 
 REFERENCES
    [R] Z. Ding, B. Ouyang, A variable-length rational finite element based on
@@ -190,6 +192,7 @@ VLBE_API vlbe_status vlbe_rancf_nurbs(int d, int deg, int nc, const vlbe_real *P
 VLBE_API vlbe_status vlbe_rancf_chain_init(vlbe_ale_chain *ch, vlbe_rancf_elem *els,
                                            vlbe_ale_node *nodes, int nn, int nn_cap,
                                            vlbe_ale_con *cons, int ncon_cap);
+VLBE_API const vlbe_ale_etype *vlbe_rancf_etype(void);
 
 /* ===== implementation =================================================== */
 
@@ -970,7 +973,10 @@ VLBE_INLINE void vlbe__rancf_et_commit(void *els, int ne, int e, int op, const v
     }
 }
 
-VLBE_INLINE const vlbe_ale_etype *vlbe__rancf_etype(void)
+/* The element-type table of rational elements (vlbe_ale_etype; els: an
+   array of vlbe_rancf_elem), the one vlbe_rancf_chain_init installs: a
+   caller's table may wrap its calls, e.g. to watch segmentation's commits. */
+VLBE_API const vlbe_ale_etype *vlbe_rancf_etype(void)
 {
     static const vlbe_ale_etype t = {vlbe__rancf_et_elem, vlbe__rancf_et_basis,
                                      vlbe__rancf_et_split, vlbe__rancf_et_merge,
@@ -997,7 +1003,7 @@ VLBE_API vlbe_status vlbe_rancf_chain_init(vlbe_ale_chain *ch, vlbe_rancf_elem *
     if ((st = vlbe_ale_chain_init(ch, &els[0].ale, nodes, nn, nn_cap, cons, ncon_cap)) !=
         VLBE_OK)
         return st;
-    return vlbe_ale_chain_types(ch, vlbe__rancf_etype(), els);
+    return vlbe_ale_chain_types(ch, vlbe_rancf_etype(), els);
 }
 
 #endif /* VLBE_RANCF_H */

@@ -176,7 +176,7 @@ static inline void ex_slide_commit(void *els, int ne, int e, int op, const vlbe_
         ex_slide_wadd(&m->wmerge, aux);
         if (aux[4] != VLBE_R(0.0)) m->merge_fallbacks++;
     }
-    vlbe__rancf_etype()->commit(els, ne, e, op, aux);
+    vlbe_rancf_etype()->commit(els, ne, e, op, aux);
 }
 
 /* A scene on the paper's beam (ale-rancf 6.1 and 6.2: L = 1 m, r = 0.01 m,
@@ -322,7 +322,7 @@ static inline int ex_slide_build(ex_slide *m, const ex_slide_cfg *c, vlbe_real *
             if (vlbe_rancf_elem_init(&m->els[i], &m->mat, w[i], VLBE_ALE_NO_DAMP | c->flags, 0, 0,
                                      0))
                 return -1;
-        m->et = *vlbe__rancf_etype();
+        m->et = *vlbe_rancf_etype();
         m->et.commit = ex_slide_commit;
         st = vlbe_rancf_chain_init(&m->ch, m->els, m->node, nn, EX_SLIDE_NMAX + 2, m->con, 4) ||
              vlbe_ale_chain_types(&m->ch, &m->et, m->els);

@@ -213,7 +213,7 @@ static inline void sp_band_add(const vlbe_ale_chain *ch, const vlbe_real *B, vlb
                     VLBE_ASSERT(b == VLBE_R(0.0));
                     continue;
                 }
-                A[vlbe__ale_at(ch, i, j)] += b;
+                A[vlbe_ale_chain_at(ch, i, j)] += b;
             }
 }
 
@@ -256,7 +256,7 @@ static inline int sp_ancf_force_jac(void *user, vlbe_real t, const vlbe_real *q,
                                     const vlbe_real *v, vlbe_real *K, vlbe_real *D)
 {
     sp_model *m = (sp_model *)((vlbe_ale_chain *)user)->user;
-    const size_t len = vlbe__ale_mat_len(&m->ch); /* n x n, or the band */
+    const size_t len = vlbe_ale_chain_mat_len(&m->ch); /* n x n, or the band */
     size_t i;
     int rc;
     if ((rc = vlbe_ale_chain_force_jac(&m->ch, t, q, v, K, D)) != 0) return rc;
@@ -329,7 +329,7 @@ static inline vlbe_status sp_init_ancf(sp_model *m, const sp_cfg *c)
     if (c->abs_a > 0.0 || c->abs_b > 0.0) {
         /* -(abs_a M + abs_b K0) = -abs_a M + abs_b dQ/dq of the straight
            beam at rest (dQ/dq at v = 0 does not depend on c_kv) */
-        const size_t nn = vlbe__ale_mat_len(&m->ch); /* n x n, or the band */
+        const size_t nn = vlbe_ale_chain_mat_len(&m->ch); /* n x n, or the band */
         /* r0, dir static: gcc 12 at -O3 -march=native reports automatic
            arrays here as maybe-uninitialized (as in sp_rest) */
         static const vlbe_real r0[2] = {VLBE_R(0.0), VLBE_R(0.0)};

@@ -342,8 +342,8 @@ static inline int xc_ale_mass_damping(xc_ale *m, vlbe_real t, const vlbe_real *q
             if (K)
                 for (j = 0; j < 10; ++j)
                     if (idx[j] >= 0) {
-                        K[vlbe__ale_at(&m->ch, idx[i], idx[j])] -= a * Je[i * 10 + j];
-                        D[vlbe__ale_at(&m->ch, idx[i], idx[j])] -= a * Me[i * 10 + j];
+                        K[vlbe_ale_chain_at(&m->ch, idx[i], idx[j])] -= a * Je[i * 10 + j];
+                        D[vlbe_ale_chain_at(&m->ch, idx[i], idx[j])] -= a * Me[i * 10 + j];
                     }
         }
     }
