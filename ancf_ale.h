@@ -3168,6 +3168,20 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
    vanish), its rate k' is defined everywhere, and for motion in a plane it
    is the planar element's signed curvature times the plane's normal: in
    plane, with theta = 0 and no twist, the element is vlbe_ale_force's.
+   Shared with the planar element, through the layout (vlbe__ale_lay):
+   mass, mass Jacobian, kinetic energy and load potential (section "mass,
+   mass Jacobian, kinetic energy: both elements"), the scaling identity
+   (vlbe__ale_degree, _pcols), the basis tables.  Kept apart: the strain
+   kernels.  The planar one works on the scalar signed curvature and 2-
+   vectors; the 3D one on the curvature vector, the twist and 3-vectors,
+   and costs twice as much on the same planar state (bench/bench_ale3.c,
+   NO_SPIN Lagrangian against vlbe_ale_force's Lagrangian: 2.0 for Q, 2.0
+   for Q+K+D), so the planar element, the hot path of most scenes, keeps
+   its own.  A chain calls the 3D element directly (ch->el3: mass, mass
+   Jacobian, force, energy, point), not through the element-type table
+   (vlbe_ale_etype), whose split and merge serve segmentation, which 3D
+   chains do not have: the table would add indirect calls and remove none
+   of the chain's dimension and spin branches.
    Switches (VLBE_ALE_* as for the planar element, OR-ed like there):
      VLBE_ALE3_NO_SPIN   no spin angle: 14 coordinates, no rhoI, GI terms
      VLBE_ALE_NO_BEND    no Q_sk (string/cable)
