@@ -3204,8 +3204,8 @@ VLBE_API vlbe_status vlbe_ale_inv_sys_force(const vlbe_ale_inv_sys *sys, const v
    written on failure.  Stack (float, Cortex-M4F, gcc -O2,
    tests/m4/stack.awk; double about twice): vlbe_ale3_force with K and D
    4.5 kB (local Q, K, D of 16 x 16, which the failure contract needs),
-   vlbe_ale3_mass_jac 2.4 kB (the 16 x 16 mass matrix), the other calls
-   at most 1.9 kB. */
+   vlbe_ale3_mass_jac 2.0 kB (the 16 x 16 mass matrix), the other calls
+   at most 1.5 kB. */
 
 /* -- 3D element: definitions ------------------------------------------- */
 
@@ -4911,14 +4911,18 @@ VLBE_API size_t vlbe_ale_chain_mat_len(const vlbe_ale_chain *ch)
     return (size_t)(ch->n + ch->m) * (size_t)(ch->kl + ch->ku + 1);
 }
 
-/* scatter an ne x ne element matrix (global coordinates idx, < 0: none)
-   into the chain's matrix A (vlbe__scatter) */
-VLBE_INLINE void vlbe__ale_scatter(const vlbe_ale_chain *ch, int ne, const int *idx,
-                                   const vlbe_real *Ae, vlbe_real *A)
+/* scatter the ne x ne element matrix Ae into the chain's matrix A and,
+   when given, Be into B (global coordinates idx, < 0: none; map: the
+   caller's 2 ne scratch for vlbe__scatter_map); the finiteness of the sums
+   is vlbe__ale_band_finite's, after the assembly */
+VLBE_INLINE void vlbe__ale_scatter(const vlbe_ale_chain *ch, int ne, const int *idx, size_t *map,
+                                   const vlbe_real *Ae, vlbe_real *A, const vlbe_real *Be,
+                                   vlbe_real *B)
 {
-    size_t r[VLBE_ALE3_NQ], c[VLBE_ALE3_NQ];
-    vlbe__scatter_map(ne, idx, ch->n, ch->order, ch->kl, ch->ku, r, c);
-    (void)vlbe__scatter(ne, r, c, Ae, A); /* finiteness: vlbe__ale_band_finite after */
+    if (!A && !B) return;
+    vlbe__scatter_map(ne, idx, ch->n, ch->order, ch->kl, ch->ku, map, map + ne);
+    if (A) (void)vlbe__scatter(ne, map, map + ne, Ae, A);
+    if (B) (void)vlbe__scatter(ne, map, map + ne, Be, B);
 }
 
 /* 1 when every entry an element can touch in the assembled matrix A is
@@ -5046,6 +5050,7 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
     vlbe_real qe[VLBE_ALE3_NQ], Me[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    size_t map[2 * VLBE_ALE3_NQ];
     int e, i, k, rc, ne, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
@@ -5058,7 +5063,7 @@ VLBE_API int vlbe_ale_chain_mass(void *user, vlbe_real t, const vlbe_real *q, co
         if ((st = vlbe__ale_gather(ch, e, t, q, NULL, qe, NULL, idx, &md)) != VLBE_OK ||
             (st = vlbe__ale_el_mass(ch, e, md, qe, Me)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
-        vlbe__ale_scatter(ch, ne, idx, Me, M);
+        vlbe__ale_scatter(ch, ne, idx, map, Me, M, NULL, NULL);
     }
     for (i = 0; i < ch->nn; ++i)
         for (k = 0; k < ch->d; ++k) {
@@ -5415,6 +5420,7 @@ VLBE_INLINE int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const vl
 {
     vlbe_real qe[VLBE_ALE3_NQ], ve[VLBE_ALE3_NQ], Qe[VLBE_ALE3_NQ], ae[VLBE_ALE3_NQ];
     vlbe_real Ke[VLBE_ALE3_NQ * VLBE_ALE3_NQ], De[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    size_t map[2 * VLBE_ALE3_NQ];
     int e, i, k, rc, ne, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
@@ -5445,8 +5451,7 @@ VLBE_INLINE int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const vl
         if (Q)
             for (i = 0; i < ne; ++i)
                 if (idx[i] >= 0) Q[idx[i]] += Qe[i];
-        if (K) vlbe__ale_scatter(ch, ne, idx, Ke, K);
-        if (D) vlbe__ale_scatter(ch, ne, idx, De, D);
+        vlbe__ale_scatter(ch, ne, idx, map, Ke, K, De, D);
     }
     for (k = 0; k < ch->nloads; ++k) { /* point loads, on their elements */
         vlbe_real pp[2];
@@ -5460,8 +5465,7 @@ VLBE_INLINE int vlbe__ale_chain_forces(vlbe_ale_chain *ch, vlbe_real t, const vl
         if (Q)
             for (i = 0; i < ne; ++i)
                 if (idx[i] >= 0) Q[idx[i]] += Qe[i];
-        if (K) vlbe__ale_scatter(ch, ne, idx, Ke, K);
-        if (D) vlbe__ale_scatter(ch, ne, idx, De, D);
+        vlbe__ale_scatter(ch, ne, idx, map, Ke, K, De, D);
     }
     if ((K && !vlbe__ale_band_finite(ch, K)) || (D && !vlbe__ale_band_finite(ch, D)))
         return vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
@@ -5493,6 +5497,7 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
 {
     vlbe_ale_chain *ch = (vlbe_ale_chain *)user;
     vlbe_real qe[VLBE_ALE3_NQ], ae[VLBE_ALE3_NQ], Je[VLBE_ALE3_NQ * VLBE_ALE3_NQ];
+    size_t map[2 * VLBE_ALE3_NQ];
     int e, i, rc, ne, idx[VLBE_ALE3_NQ];
     unsigned md;
     vlbe_status st;
@@ -5508,7 +5513,7 @@ VLBE_API int vlbe_ale_chain_mass_jac(void *user, vlbe_real t, const vlbe_real *q
         for (i = 0; i < ne; ++i) ae[i] = idx[i] >= 0 ? a[idx[i]] : VLBE_R(0.0);
         if ((st = vlbe__ale_el_mass_jac(ch, e, md, qe, ae, Je)) != VLBE_OK)
             return vlbe__ale_fail(ch, st, e);
-        vlbe__ale_scatter(ch, ne, idx, Je, Mq);
+        vlbe__ale_scatter(ch, ne, idx, map, Je, Mq, NULL, NULL);
     }
     return vlbe__ale_band_finite(ch, Mq) ? 0 : vlbe__ale_fail(ch, VLBE_ENONFINITE, -1);
 }
