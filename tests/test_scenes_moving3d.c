@@ -67,7 +67,7 @@ static double tol_hist(void) { return 82.0 * EPS / prestretch(); }
 /* The frequencies of two histories that agree to tol_hist: a phase drift
    of at most tol_hist over the record's 2 pi f1 t_end radians, plus the
    estimator's floor (ex_peak_freq on the 3D and planar histories, which
-   agree to a few 1e-12: measured 1.5e-9 (m~:ps_fdiff) and
+   agree to a few 1e-12: measured 0.0e0 (m~:ps_fdiff) and
    1.0e-9 (m~:pb_fdiff) apart, the rounding of the DFT power near its flat
    peak; held to 1e-7). */
 static double tol_freq(double f1, double t_end)

@@ -57,7 +57,7 @@ static st_eig_out g_eo;
      the largest, 1/w_1^2: relative to 1/w_i^2, (f_i/f_1)^2.
    - The closed form and the rest: a few EPS, the 16.
    Measured up to 0.10 (m:cf_worst) of it in double (one element: 1.8 EPS
-   against 18), 0.07 (m@flt:cf_worst) in float; mode 1 of 40 elements:
+   against 18), 0.06 (m@flt:cf_worst) in float; mode 1 of 40 elements:
    131 (m~:cf_n40m1_eps) EPS in double, 189 (m@flt~:cf_n40m1_eps) EPS in
    float against 7800 EPS; mode 12 of 12: 32 (m~:cf_n12m12_eps) EPS
    against 700. */
