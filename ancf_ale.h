@@ -3406,52 +3406,19 @@ VLBE_INLINE vlbe_status vlbe__ale3_bend(const vlbe_real *a, const vlbe_real *b,
     return VLBE_OK;
 }
 
-/* X -= w Z^T T at one strain point (X = K with T = A Z_e + Ad Zd_e, or
-   X = D with T = Ad Z; the Jacobians of eqs. 31-40 of [V]): the rows of the
-   positions and slopes (Z = N', N'' against the strain rows 0..2, 3..5),
-   of the spin angles (H' against the twist row) and, for a free p_k, the
-   part Y_k^T T of its row (Y: 2 rows of 7, the p_k-partials of the
-   strains; T: nr rows of VLBE_ALE3_NQ, those of the strain rows in use). */
-VLBE_INLINE void vlbe__ale3_sub_ztt(const vlbe__ale_lay *ly, const vlbe__ale_lpt *pt,
-                                    vlbe_real w, int bend, int twist, int pm, int nr,
-                                    const int *rows, const vlbe_real *Y,
-                                    const vlbe_real *VLBE_RESTRICT T, vlbe_real *VLBE_RESTRICT X)
-{
-    const int n = ly->n;
-    int i, j, c, k;
-    for (j = 0; j < 4; ++j)
-        for (c = 0; c < 3; ++c) {
-            vlbe_real *Xr = X + (ly->e[j] + c) * n;
-            const vlbe_real m1 = w * pt->N[1][0][j], m2 = bend ? w * pt->N[2][0][j] : VLBE_R(0.0);
-            const vlbe_real *T1 = T + c * VLBE_ALE3_NQ, *T2 = T + (bend ? 3 + c : c) * VLBE_ALE3_NQ;
-            for (i = 0; i < n; ++i) Xr[i] -= m1 * T1[i] + m2 * T2[i];
-        }
-    if (twist)
-        for (j = 0; j < 2; ++j) {
-            vlbe_real *Xr = X + ly->th[j] * n;
-            const vlbe_real m = w * pt->H[1][0][j], *T6 = T + (nr - 1) * VLBE_ALE3_NQ;
-            for (i = 0; i < n; ++i) Xr[i] -= m * T6[i];
-        }
-    for (k = 0; k < 2; ++k)
-        if (pm & (1 << k)) {
-            vlbe_real *Xr = X + ly->p[k] * n;
-            for (c = 0; c < nr; ++c) {
-                const vlbe_real m = w * Y[k * 7 + rows[c]], *Tc = T + c * VLBE_ALE3_NQ;
-                for (i = 0; i < n; ++i) Xr[i] -= m * Tc[i];
-            }
-        }
-}
-
 /* Axial, bending and twist terms at one strain point (eqs. 31-40 of [V]):
    Q -= w Z^T G with Z = dz/dq, z = (r', r'', phi) and the generalized
    stresses G of the strains eps, k, phi (eqs. 21-23: the axial part here,
    the bending part in vlbe__ale3_bend, the twist part here); with K: the
    e- and theta-columns of -w d(Z^T G)/dq into K, -w Z^T Ad Z into D (all
-   columns, vlbe__ale3_sub_ztt for both) and the degree extras into dQ
-   (the scaling identity, see the 3D section's notes).  About 165 lines:
-   one pass over the strain point, whose rows z, Y and stresses G, A, Ad
-   every part of Q, K and D shares; split, they would be recomputed or
-   handed through a dozen arguments. */
+   columns) and the degree extras into dQ (the scaling identity, see the
+   3D section's notes).  About 200 lines: one pass over the strain point,
+   whose rows z, Y and stresses G, A, Ad every part of Q, K and D shares;
+   split, they would be recomputed or handed through a dozen arguments.
+   The update X -= w Z^T T is written twice on purpose, for K and for D:
+   as one routine called for both (or one loop over the two) the 3D
+   Q + K + D costs 4 to 10 % more (bench/bench_ale3.c, gcc 12 -O3, least
+   of 6 runs: 2780 against 2585 ns per element with spin, ALE). */
 VLBE_INLINE vlbe_status vlbe__ale3_strain_gp(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
                                              const vlbe_ale_gp *gp, const vlbe_real *Lp, int pm,
                                              const vlbe_real *pd, int bend, int twist, int damp,
@@ -3578,10 +3545,26 @@ VLBE_INLINE vlbe_status vlbe__ale3_strain_gp(const vlbe_ale3_elem *el, const vlb
         Ti[ly->p[0]] = Ti[ly->p[1]] = VLBE_R(0.0);
     }
     /* K rows -= w Z^T T (the p-columns of T are zero: filled later) */
-    vlbe__ale3_sub_ztt(ly, &pt, w, bend, twist, pm, nr, rows, &Y[0][0], &T[0][0], K);
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < 3; ++c) {
+            vlbe_real *Kr = K + (ly->e[j] + c) * n;
+            const vlbe_real m1 = w * pt.N[1][0][j], m2 = bend ? w * pt.N[2][0][j] : VLBE_R(0.0);
+            const vlbe_real *T1 = T[c], *T2 = T[bend ? 3 + c : c];
+            for (i = 0; i < n; ++i) Kr[i] -= m1 * T1[i] + m2 * T2[i];
+        }
+    if (twist)
+        for (j = 0; j < 2; ++j) {
+            vlbe_real *Kr = K + ly->th[j] * n;
+            const vlbe_real m = w * pt.H[1][0][j], *T6 = T[nr - 1];
+            for (i = 0; i < n; ++i) Kr[i] -= m * T6[i];
+        }
     for (k = 0; k < 2; ++k)
         if (pm & (1 << k)) {
             vlbe_real *Kr = K + ly->p[k] * n;
+            for (c = 0; c < nr; ++c) {
+                const vlbe_real m = w * Y[k][rows[c]], *Tc = T[c];
+                for (i = 0; i < n; ++i) Kr[i] -= m * Tc[i];
+            }
             /* mix: d(Y_k . G)/de at fixed G */
             for (j = 0; j < 4; ++j)
                 for (c = 0; c < 3; ++c) {
@@ -3614,7 +3597,27 @@ VLBE_INLINE vlbe_status vlbe__ale3_strain_gp(const vlbe_ale3_elem *el, const vlb
             Ti[ly->p[k]] = v;
         }
     }
-    vlbe__ale3_sub_ztt(ly, &pt, w, bend, twist, pm, nr, rows, &Y[0][0], &T[0][0], D);
+    for (j = 0; j < 4; ++j)
+        for (c = 0; c < 3; ++c) {
+            vlbe_real *Dr = D + (ly->e[j] + c) * n;
+            const vlbe_real m1 = w * pt.N[1][0][j], m2 = bend ? w * pt.N[2][0][j] : VLBE_R(0.0);
+            const vlbe_real *T1 = T[c], *T2 = T[bend ? 3 + c : c];
+            for (i = 0; i < n; ++i) Dr[i] -= m1 * T1[i] + m2 * T2[i];
+        }
+    if (twist)
+        for (j = 0; j < 2; ++j) {
+            vlbe_real *Dr = D + ly->th[j] * n;
+            const vlbe_real m = w * pt.H[1][0][j], *T6 = T[nr - 1];
+            for (i = 0; i < n; ++i) Dr[i] -= m * T6[i];
+        }
+    for (k = 0; k < 2; ++k)
+        if (pm & (1 << k)) {
+            vlbe_real *Dr = D + ly->p[k] * n;
+            for (c = 0; c < nr; ++c) {
+                const vlbe_real m = w * Y[k][rows[c]], *Tc = T[c];
+                for (i = 0; i < n; ++i) Dr[i] -= m * Tc[i];
+            }
+        }
     return VLBE_OK;
 }
 
