@@ -3416,9 +3416,10 @@ VLBE_INLINE vlbe_status vlbe__ale3_bend(const vlbe_real *a, const vlbe_real *b,
    whose rows z, Y and stresses G, A, Ad every part of Q, K and D shares;
    split, they would be recomputed or handed through a dozen arguments.
    The update X -= w Z^T T is written twice on purpose, for K and for D:
-   as one routine called for both (or one loop over the two) the 3D
-   Q + K + D costs 4 to 10 % more (bench/bench_ale3.c, gcc 12 -O3, least
-   of 6 runs: 2780 against 2585 ns per element with spin, ALE). */
+   as one routine called for both, the 3D Q + K + D executes 3.5 % more
+   instructions (callgrind, gcc 12 -O3, with spin, ALE: 145.4 M against
+   140.3 M for 2000 calls), as one loop over the two passes it ran 4 %
+   (ALE) to 11 % (Lagrangian) longer in bench/bench_ale3.c. */
 VLBE_INLINE vlbe_status vlbe__ale3_strain_gp(const vlbe_ale3_elem *el, const vlbe__ale_lay *ly,
                                              const vlbe_ale_gp *gp, const vlbe_real *Lp, int pm,
                                              const vlbe_real *pd, int bend, int twist, int damp,
